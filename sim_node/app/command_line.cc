@@ -1,0 +1,144 @@
+#include "app/command_line.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace towsim::app {
+namespace {
+
+// a finite number that uses the whole string
+bool ParseNumber(const std::string& text, double* value) {
+  if (text.empty()) return false;
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(text.c_str(), &end);
+  if (errno != 0 || end != text.c_str() + text.size() || !std::isfinite(x)) return false;
+  *value = x;
+  return true;
+}
+
+bool ParseMode(const std::string& text, Mode* mode) {
+  for (Mode m : {Mode::kRealtime, Mode::kFast, Mode::kLockstep, Mode::kOffline}) {
+    if (text == ModeName(m)) {
+      *mode = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+const char* ModeName(Mode mode) {
+  switch (mode) {
+    case Mode::kRealtime:
+      return "realtime";
+    case Mode::kFast:
+      return "fast";
+    case Mode::kLockstep:
+      return "lockstep";
+    case Mode::kOffline:
+      return "offline";
+  }
+  return "?";
+}
+
+std::string Usage() {
+  return "usage: sim_node --scene FILE [options]\n"
+         "\n"
+         "Simulates the towed system of a scene file.\n"
+         "\n"
+         "options:\n"
+         "  --scene FILE          scene YAML file (required)\n"
+         "  --mode MODE           realtime (default), fast, lockstep or offline; this build\n"
+         "                        implements offline only (no DDS)\n"
+         "  --duration S          simulated time [s] (default: the scene's time.duration)\n"
+         "  --rate R              wall-clock pacing factor in realtime mode (default 1)\n"
+         "  --set KEY.PATH=VALUE  override a scalar scene key, e.g. --set cable.elements=40\n"
+         "                        (repeatable)\n"
+         "  --csv DIR             write bodies.csv, cable.csv, forces.csv, status.csv to DIR\n"
+         "                        at the scene's time.output_rate\n"
+         "  --record FILE.mcap    record to MCAP (not built yet)\n"
+         "  -h, --help            print this help and exit\n"
+         "  --version             print the version and exit\n"
+         "\n"
+         "exit codes: 0 ok, 1 unexpected error (e.g. disk full), 2 bad input,\n"
+         "            3 solver failure, 130 / 143 stopped by SIGINT / SIGTERM\n";
+}
+
+ParseResult ParseCommandLine(int argc, const char* const* argv) {
+  ParseResult result;
+  Options& o = result.options;
+  auto fail = [&result](const std::string& message) {
+    result.error = message;
+    return result;
+  };
+
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      o.help = true;
+      continue;
+    }
+    if (arg == "--version") {
+      o.version = true;
+      continue;
+    }
+    static const char* const kWithValue[] = {"--scene", "--mode", "--duration", "--rate",
+                                             "--set",   "--csv",  "--record"};
+    // split --name=value
+    std::string name = arg;
+    std::optional<std::string> value;
+    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      name = arg.substr(0, eq);
+      value = arg.substr(eq + 1);
+    }
+    bool known = false;
+    for (const char* option : kWithValue) known = known || name == option;
+    if (!known) {
+      if (arg.rfind("-", 0) == 0) return fail("unknown option '" + arg + "'");
+      return fail("unexpected argument '" + arg + "'");
+    }
+    if (!value) {
+      if (i + 1 >= argc) return fail("option " + name + " needs a value");
+      value = argv[++i];
+    }
+    const std::string& v = *value;
+
+    if (name == "--scene") {
+      if (v.empty()) return fail("--scene needs a file name");
+      o.scene = v;
+    } else if (name == "--mode") {
+      if (!ParseMode(v, &o.mode)) {
+        return fail("--mode " + v + ": must be one of realtime, fast, lockstep, offline");
+      }
+    } else if (name == "--duration") {
+      double s = 0.0;
+      if (!ParseNumber(v, &s) || s < 0.0) {
+        return fail("--duration " + v + ": must be a number of seconds >= 0");
+      }
+      o.duration = s;
+    } else if (name == "--rate") {
+      double r = 0.0;
+      if (!ParseNumber(v, &r) || r <= 0.0) return fail("--rate " + v + ": must be a number > 0");
+      o.rate = r;
+    } else if (name == "--set") {
+      const auto eq = v.find('=');
+      if (eq == std::string::npos || eq == 0) {
+        return fail("--set " + v + ": must have the form key.path=value");
+      }
+      o.overrides.push_back(v);
+    } else if (name == "--csv") {
+      if (v.empty()) return fail("--csv needs a directory");
+      o.csv_dir = v;
+    } else if (name == "--record") {
+      if (v.empty()) return fail("--record needs a file name");
+      o.record_file = v;
+    }
+  }
+  if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
+  return result;
+}
+
+}  // namespace towsim::app

@@ -1,0 +1,89 @@
+// sim_node: the towsim simulation node (DESIGN §4-5). Parses the command line, loads the
+// scene, and runs it; this build offers the offline mode only (no DDS yet).
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "app/command_line.h"
+#include "app/offline_run.h"
+#include "app/stop_signal.h"
+#include "core/model.h"
+#include "io/csv_writer.h"
+#include "scene/load_scene.h"
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitError = 1;  // unexpected (e.g. a CSV write failed: disk full)
+constexpr int kExitBadInput = 2;
+
+int Run(const towsim::app::Options& options) {
+  using towsim::app::Mode;
+  if (options.mode != Mode::kOffline) {
+    std::fprintf(stderr,
+                 "sim_node: error: --mode %s: the DDS modes (realtime, fast, lockstep) are not "
+                 "built yet; use --mode offline\n",
+                 towsim::app::ModeName(options.mode));
+    return kExitBadInput;
+  }
+  if (!options.record_file.empty()) {
+    std::fprintf(stderr,
+                 "sim_node: error: --record %s: MCAP recording is not built yet; use --csv DIR\n",
+                 options.record_file.c_str());
+    return kExitBadInput;
+  }
+
+  towsim::core::Model model;
+  try {
+    model = towsim::scene::LoadScene(options.scene, options.overrides);
+  } catch (const std::exception& e) {  // scene::ConfigError: what() is the full message
+    std::fprintf(stderr, "sim_node: error: %s\n", e.what());
+    return kExitBadInput;
+  }
+  if (model.name.empty()) model.name = std::filesystem::path(options.scene).stem().string();
+  const double duration = options.duration.value_or(model.time.duration);
+  model.time.duration = duration;
+
+  std::unique_ptr<towsim::io::CsvWriter> csv;
+  if (!options.csv_dir.empty()) {
+    try {
+      csv = std::make_unique<towsim::io::CsvWriter>(options.csv_dir);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
+      return kExitBadInput;
+    }
+  }
+
+  towsim::app::InstallStopHandlers();
+  const int code = towsim::app::RunOffline(model, duration, csv.get());
+  if (csv) csv->Close();
+  return code;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const towsim::app::ParseResult parsed = towsim::app::ParseCommandLine(argc, argv);
+  if (!parsed.ok()) {
+    std::fprintf(stderr, "sim_node: error: %s\n\n%s", parsed.error.c_str(),
+                 towsim::app::Usage().c_str());
+    return kExitBadInput;
+  }
+  if (parsed.options.help) {
+    std::fputs(towsim::app::Usage().c_str(), stdout);
+    return kExitOk;
+  }
+  if (parsed.options.version) {
+    std::printf("sim_node (towsim) %s\n", TOWSIM_VERSION);
+    return kExitOk;
+  }
+  try {
+    return Run(parsed.options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sim_node: error: %s\n", e.what());
+    return kExitError;
+  }
+}

@@ -1,0 +1,35 @@
+#include "app/run_stats.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace towsim::app {
+
+void RunStats::Add(const core::StepStatus& status) {
+  ++steps;
+  iterations_sum += status.iterations;
+  iterations_max = std::max(iterations_max, status.iterations);
+  if (status.substeps > 1) ++substepped_steps;
+}
+
+double RunStats::iterations_mean() const {
+  return steps > 0 ? static_cast<double>(iterations_sum) / static_cast<double>(steps) : 0.0;
+}
+
+double RunStats::real_time_factor() const {
+  return wall_time > 0.0 ? sim_time / wall_time : 0.0;
+}
+
+std::string SummaryLine(const std::string& scene_name, const RunStats& stats) {
+  const double rtf = stats.real_time_factor();
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "sim_node: %s: %ld steps, %.6g s simulated in %.3f s (RTF %.*f), "
+                "Newton iterations mean %.2f max %d, substeps %ld",
+                scene_name.c_str(), stats.steps, stats.sim_time, stats.wall_time,
+                rtf < 10.0 ? 2 : 0, rtf, stats.iterations_mean(), stats.iterations_max,
+                stats.substepped_steps);
+  return line;
+}
+
+}  // namespace towsim::app

@@ -1,0 +1,161 @@
+#include "core/ancf_element.h"
+
+namespace towsim::core {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+// Energy density u(a, b) of the bending term with a = r', b = r'':
+//   u = 1/2 EI g w,  g = A B - C^2,  w = A^-3,  A = a.a, B = b.b, C = a.b
+// and its gradient and Hessian in (a, b).
+struct BendingDensity {
+  double u;
+  Vec3 u_a, u_b;
+  Mat3 u_aa, u_ab, u_bb;  // u_ab: rows a, columns b
+};
+
+BendingDensity Bending(double ei, const Vec3& a, const Vec3& b, bool hessian) {
+  BendingDensity d;
+  const double A = a.squaredNorm(), B = b.squaredNorm(), C = a.dot(b);
+  const double g = A * B - C * C;
+  const double w = 1.0 / (A * A * A);
+  const Vec3 g_a = 2.0 * B * a - 2.0 * C * b;
+  const Vec3 g_b = 2.0 * A * b - 2.0 * C * a;
+  const Vec3 w_a = (-6.0 * w / A) * a;
+  const double k = 0.5 * ei;
+  d.u = k * g * w;
+  d.u_a = k * (w * g_a + g * w_a);
+  d.u_b = k * w * g_b;
+  if (hessian) {
+    const Mat3 I = Mat3::Identity();
+    // g_aa = 2B I - 2 b b^T, g_ab = 4 a b^T - 2 b a^T - 2C I, g_bb = 2A I - 2 a a^T
+    const Mat3 g_aa = 2.0 * B * I - 2.0 * b * b.transpose();
+    const Mat3 g_ab = 4.0 * a * b.transpose() - 2.0 * b * a.transpose() - 2.0 * C * I;
+    const Mat3 g_bb = 2.0 * A * I - 2.0 * a * a.transpose();
+    // w_aa = -6 A^-4 I + 48 A^-5 a a^T
+    const Mat3 w_aa = (-6.0 * w / A) * I + (48.0 * w / (A * A)) * a * a.transpose();
+    d.u_aa = k * (w * g_aa + g_a * w_a.transpose() + w_a * g_a.transpose() + g * w_aa);
+    d.u_ab = k * (w * g_ab + w_a * g_b.transpose());
+    d.u_bb = k * w * g_bb;
+  }
+  return d;
+}
+
+}  // namespace
+
+ShapeAtPoint EvaluateShape(double xi, double l) {
+  ShapeAtPoint s;
+  const double x2 = xi * xi, x3 = x2 * xi;
+  // paper Eq. 4
+  s.n = {1.0 - 3.0 * x2 + 2.0 * x3, l * (xi - 2.0 * x2 + x3), 3.0 * x2 - 2.0 * x3,
+         l * (x3 - x2)};
+  // d/dx = (1/l) d/dxi
+  s.dn = {(-6.0 * xi + 6.0 * x2) / l, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) / l,
+          3.0 * x2 - 2.0 * xi};
+  s.ddn = {(-6.0 + 12.0 * xi) / (l * l), (-4.0 + 6.0 * xi) / l, (6.0 - 12.0 * xi) / (l * l),
+           (6.0 * xi - 2.0) / l};
+  s.weight_dx = 0.0;
+  return s;
+}
+
+AncfElement::AncfElement(const ElementProperties& props) : props_(props) {
+  const double l = props_.length;
+  const GaussRule<5> rule = Gauss5();
+  for (int g = 0; g < 5; ++g) {
+    points_[g] = EvaluateShape(rule.xi[g], l);
+    points_[g].weight_dx = rule.weight[g] * l;
+  }
+  ends_[0] = EvaluateShape(0.0, l);
+  ends_[1] = EvaluateShape(1.0, l);
+
+  // M = rho A l / 420 [156, 22l, 54, -13l; 22l, 4l^2, 13l, -3l^2; ...] (x) I3  (Eq. 7)
+  Eigen::Matrix4d m;
+  m << 156, 22 * l, 54, -13 * l,  //
+      22 * l, 4 * l * l, 13 * l, -3 * l * l,  //
+      54, 13 * l, 156, -22 * l,  //
+      -13 * l, -3 * l * l, -22 * l, 4 * l * l;
+  m *= props_.mass_per_length * l / 420.0;
+  mass_.setZero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) mass_.block<3, 3>(3 * i, 3 * j) = m(i, j) * Mat3::Identity();
+}
+
+double AncfElement::StrainEnergy(const Vec12& e) const {
+  double u = 0.0;
+  for (const ShapeAtPoint& p : points_) {
+    const Vec3 a = Interpolate(p.dn, e);
+    const double eps = 0.5 * (a.squaredNorm() - 1.0);
+    double density = 0.5 * props_.ea * eps * eps;
+    if (props_.ei > 0.0) density += Bending(props_.ei, a, Interpolate(p.ddn, e), false).u;
+    u += p.weight_dx * density;
+  }
+  return u;
+}
+
+void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force,
+                                Mat12* stiffness, Mat12* damping) const {
+  force->setZero();
+  if (stiffness) stiffness->setZero();
+  if (damping) damping->setZero();
+  const double ea = props_.ea, c = props_.axial_damping;
+  const bool bending = props_.ei > 0.0;
+  for (const ShapeAtPoint& p : points_) {
+    const double wdx = p.weight_dx;
+    const Vec3 a = Interpolate(p.dn, e);
+    const double eps = 0.5 * (a.squaredNorm() - 1.0);
+    // axial: u_a = EA (eps + c eps_dot) a, eps_dot = a . a_dot
+    double n = ea * eps;
+    Vec3 a_dot = Vec3::Zero();
+    if (c > 0.0) {
+      a_dot = Interpolate(p.dn, e_dot);
+      n += ea * c * a.dot(a_dot);
+    }
+    Vec3 f_a = n * a;
+    Vec3 f_b = Vec3::Zero();
+    Mat3 k_aa = n * Mat3::Identity() + ea * a * a.transpose();
+    if (c > 0.0) k_aa += ea * c * a * a_dot.transpose();
+    Mat3 k_ab = Mat3::Zero(), k_bb = Mat3::Zero();
+    if (bending) {
+      const BendingDensity bd = Bending(props_.ei, a, Interpolate(p.ddn, e), stiffness);
+      f_a += bd.u_a;
+      f_b = bd.u_b;
+      if (stiffness) {
+        k_aa += bd.u_aa;
+        k_ab = bd.u_ab;
+        k_bb = bd.u_bb;
+      }
+    }
+    // F_k = int ( S'_k u_a + S''_k u_b ) dx
+    for (int k = 0; k < 4; ++k)
+      force->segment<3>(3 * k) += wdx * (p.dn[k] * f_a + p.ddn[k] * f_b);
+    if (stiffness) {
+      // K_kj = int ( S'_k S'_j u_aa + S'_k S''_j u_ab + S''_k S'_j u_ba + S''_k S''_j u_bb ) dx
+      for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j) {
+          Mat3 blk = (p.dn[k] * p.dn[j]) * k_aa;
+          if (bending)
+            blk += (p.dn[k] * p.ddn[j]) * k_ab + (p.ddn[k] * p.dn[j]) * k_ab.transpose() +
+                   (p.ddn[k] * p.ddn[j]) * k_bb;
+          stiffness->block<3, 3>(3 * k, 3 * j) += wdx * blk;
+        }
+    }
+    if (damping && c > 0.0) {
+      // C_kj = int S'_k S'_j EA c a a^T dx
+      const Mat3 c_aa = ea * c * a * a.transpose();
+      for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 4; ++j)
+          damping->block<3, 3>(3 * k, 3 * j) += (wdx * p.dn[k] * p.dn[j]) * c_aa;
+    }
+  }
+}
+
+double AncfElement::AxialForce(const Vec12& e, const Vec12& e_dot, double xi) const {
+  const ShapeAtPoint& p = ends_[xi < 0.5 ? 0 : 1];
+  const Vec3 a = Interpolate(p.dn, e);
+  double n = props_.ea * 0.5 * (a.squaredNorm() - 1.0);
+  if (props_.axial_damping > 0.0)
+    n += props_.ea * props_.axial_damping * a.dot(Interpolate(p.dn, e_dot));
+  return n * a.norm();
+}
+
+}  // namespace towsim::core

@@ -1,0 +1,77 @@
+#pragma once
+// Lower-order (gradient-deficient) 3D ANCF cable element, Gerstmayr & Shabana (2006).
+//
+// Element coordinates e (12 x 1) = [r_0, r'_0, r_1, r'_1] (paper Eq. 1), r' = dr/dx with x the
+// unstretched arc length. r(x) = S(xi) e with the cubic Hermite shape functions of paper Eq. 4,
+// xi = x / l. Strain energy (paper Eq. 8)
+//   U = 1/2 int_0^l ( EA eps^2 + EI kappa^2 ) dx,
+// with the Green strain eps = (r'.r' - 1) / 2 (Eq. 10) and the exact curvature
+//   kappa^2 = |r' x r''|^2 / |r'|^6 = ((r'.r')(r''.r'') - (r'.r'')^2) / (r'.r')^3,
+// not the small-deflection form of Eq. 12-13. Forces are exact gradients of U and the tangent is
+// the exact Hessian (tests check both against finite differences).
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "core/gauss_quadrature.h"
+
+namespace towsim::core {
+
+using Vec12 = Eigen::Matrix<double, 12, 1>;
+using Mat12 = Eigen::Matrix<double, 12, 12>;
+using Mat3 = Eigen::Matrix3d;
+
+// Scalar Hermite weights at one point: r = sum_k n[k] e_k, r' = sum_k dn[k] e_k, r'' = ...
+struct ShapeAtPoint {
+  std::array<double, 4> n;    // S_1..S_4 (Eq. 4)
+  std::array<double, 4> dn;   // dS_k/dx  [1/m]
+  std::array<double, 4> ddn;  // d2S_k/dx2 [1/m^2]
+  double weight_dx;           // Gauss weight times l [m]
+};
+
+ShapeAtPoint EvaluateShape(double xi, double l);
+
+struct ElementProperties {
+  double length = 1.0;          // l [m]
+  double ea = 0.0;              // E A [N]
+  double ei = 0.0;              // E I [N m^2] (0 switches bending off)
+  double axial_damping = 0.0;   // c [s]: N = EA (eps + c deps/dt)
+  double mass_per_length = 0.0; // rho_c A [kg/m]
+};
+
+// Precomputed shape tables of one element length (all elements of a cable share them).
+class AncfElement {
+ public:
+  explicit AncfElement(const ElementProperties& props);
+
+  const ElementProperties& props() const { return props_; }
+  // consistent mass matrix M = int rho A S^T S dx (Eq. 7), constant
+  const Mat12& mass() const { return mass_; }
+  const std::array<ShapeAtPoint, 5>& points() const { return points_; }
+
+  // strain energy U(e) (Eq. 8)
+  double StrainEnergy(const Vec12& e) const;
+
+  // internal force F = dU/de + damping force, and optionally its Jacobians
+  //   K = dF/de (12 x 12), C = dF/de_dot (12 x 12).
+  void InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
+                     Mat12* damping) const;
+
+  // true axial force N |r'| = EA eps |r'| (+ damping) at xi in {0, 1} [N]
+  double AxialForce(const Vec12& e, const Vec12& e_dot, double xi) const;
+
+ private:
+  ElementProperties props_;
+  Mat12 mass_;
+  std::array<ShapeAtPoint, 5> points_;
+  std::array<ShapeAtPoint, 2> ends_;
+};
+
+// r, r', r'' at a point from element coordinates
+inline Eigen::Vector3d Interpolate(const std::array<double, 4>& w, const Vec12& e) {
+  return w[0] * e.segment<3>(0) + w[1] * e.segment<3>(3) + w[2] * e.segment<3>(6) +
+         w[3] * e.segment<3>(9);
+}
+
+}  // namespace towsim::core

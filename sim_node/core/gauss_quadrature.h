@@ -1,0 +1,32 @@
+#pragma once
+// Gauss-Legendre points on [0, 1] (xi) with weights summing to 1.
+
+#include <array>
+
+namespace towsim::core {
+
+template <int N>
+struct GaussRule {
+  std::array<double, N> xi;
+  std::array<double, N> weight;
+};
+
+// 5 points: exact for polynomials of degree 9 (the Green-strain axial force integrand of the
+// cubic ANCF element is of degree 8 in xi).
+inline GaussRule<5> Gauss5() {
+  constexpr double a = 0.9061798459386640;  // roots of P5 on [-1, 1]
+  constexpr double b = 0.5384693101056831;
+  constexpr double wa = 0.2369268850561891;
+  constexpr double wb = 0.4786286704993665;
+  constexpr double wc = 0.5688888888888889;
+  GaussRule<5> g;
+  const double x[5] = {-a, -b, 0.0, b, a};
+  const double w[5] = {wa, wb, wc, wb, wa};
+  for (int i = 0; i < 5; ++i) {
+    g.xi[i] = 0.5 * (x[i] + 1.0);
+    g.weight[i] = 0.5 * w[i];
+  }
+  return g;
+}
+
+}  // namespace towsim::core

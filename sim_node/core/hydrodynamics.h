@@ -1,0 +1,50 @@
+#pragma once
+// Hydrodynamic laws of the cable: Choo & Casarella (1971) drag (paper Eq. 17-20) and the
+// normal added mass (Eq. 22-23), as force densities per unit length with their Jacobians.
+
+#include <Eigen/Core>
+
+namespace towsim::core {
+
+// Normal drag coefficient C_Dn(Re) of paper Eq. 18; beyond Re = 1e5 the value at 1e5.
+double NormalDragCoefficient(double re);
+// Nusselt number of paper Eq. 19, Nu = 0.55 Re^1/2 + 0.084 Re^2/3.
+double NusseltNumber(double re);
+
+// G(Re) = Re C_Dn(Re), so that the normal drag of Eq. 17 reads F_n = -1/2 mu G(Re_n) V_n, which
+// stays finite as Re -> 0 (Stokes-Oseen regime, G ~ 8 pi / S). Also returns Re G'(Re).
+struct DragLaw {
+  double g;      // G(Re)
+  double re_dg;  // Re dG/dRe
+};
+DragLaw NormalDragLaw(double re);
+// Nu(Re) and Re dNu/dRe
+DragLaw TangentialDragLaw(double re);
+
+struct FluidProperties {
+  double density = 1025.0;     // rho_w [kg/m^3]
+  double viscosity = 1.0e-3;   // mu [Pa s]
+};
+
+// Drag per unit *stretched* length at a cable point (Eq. 17, 20), on the velocity relative to
+// the water V = r_dot - U. With a = r' (so the stretch is |a| and the unit tangent t = a/|a|),
+// the force per unit unstretched length is
+//   f = |a| ( -1/2 mu G(Re_n) V_n - pi mu Nu(Re_t) V_t ),
+//   V_t = (V.t) t, V_n = V - V_t, Re_n = rho |V_n| d / mu, Re_t = rho |V_t| d / mu.
+// (s_c / d = pi for a circular section.) Jacobians df/dV and df/da (3 x 3) when asked.
+struct DragResult {
+  Eigen::Vector3d f;
+  Eigen::Matrix3d df_dv;
+  Eigen::Matrix3d df_da;
+};
+DragResult CableDrag(const FluidProperties& fluid, double diameter, const Eigen::Vector3d& a,
+                     const Eigen::Vector3d& v_rel, bool jacobians);
+
+// Normal added-mass force per unit unstretched length (Eq. 22-23):
+//   f = -m_a (I - t t^T) r_ddot,  m_a = C_a rho_w A,
+// and df/da at fixed acceleration (the projector turns with the tangent).
+Eigen::Matrix3d NormalProjector(const Eigen::Vector3d& a);
+Eigen::Matrix3d AddedMassTangentDerivative(double m_a, const Eigen::Vector3d& a,
+                                           const Eigen::Vector3d& acc);
+
+}  // namespace towsim::core

@@ -1,0 +1,143 @@
+#include "core/integrator.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace towsim::core {
+
+using Eigen::VectorXd;
+
+AlphaParameters AlphaParameters::FromSettings(const IntegratorSettings& s) {
+  const double rho = s.scheme == Scheme::kTrapezoidal ? 1.0 : s.rho_inf;
+  AlphaParameters p;
+  p.alpha_m = (2.0 * rho - 1.0) / (rho + 1.0);
+  p.alpha_f = rho / (rho + 1.0);
+  p.gamma = 0.5 + p.alpha_f - p.alpha_m;
+  p.beta = 0.25 * (p.gamma + 0.5) * (p.gamma + 0.5);
+  return p;
+}
+
+Integrator::Integrator(const System& system)
+    : system_(system),
+      ap_(AlphaParameters::FromSettings(system.model().integrator)),
+      q_scale_(std::max(1.0, system.model().cable.length)),
+      jac_(system.MakeMatrix()) {
+  const int n = system_.num_q(), m = system_.num_lambda();
+  r_.setZero(n);
+  phi_.setZero(m);
+  rhs_.setZero(n + m);
+  dq_.setZero(n);
+  dl_.setZero(m);
+  backup_.resize(system.model().integrator.max_substep_level + 1);
+}
+
+bool Integrator::InitializeAcceleration(State* s) {
+  const int n = system_.num_q(), m = system_.num_lambda();
+  s->a.setZero(n);
+  s->lambda.setZero(m);
+  JacobianCoefficients cf{0.0, 0.0, 1.0};
+  system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_);
+  // acceleration-level constraints: Phi_q a = 0 (linear joints, constant driven velocity)
+  phi_.setZero();
+  system_.ToBlocks(-r_, phi_, &rhs_);
+  if (!jac_.Solve(&rhs_)) return false;
+  system_.FromBlocks(rhs_, &s->a, &s->lambda);
+  s->a_alpha = s->a;
+  return s->a.allFinite();
+}
+
+Integrator::Attempt Integrator::Newton(State* s, double h) {
+  Attempt at;
+  const AlphaParameters& p = ap_;
+  const IntegratorSettings& settings = system_.model().integrator;
+  const double h2 = h * h;
+  State& st = *s;
+  const double t1 = st.t + h;
+  // q_{n+1} = q* + beta h^2 a^_{n+1}, v_{n+1} = v* + gamma h a^_{n+1}
+  const VectorXd q_star = st.q + h * st.v + (h2 * (0.5 - p.beta)) * st.a_alpha;
+  const VectorXd v_star = st.v + (h * (1.0 - p.gamma)) * st.a_alpha;
+  const VectorXd a_const = (p.alpha_m * st.a_alpha - p.alpha_f * st.a) / (1.0 - p.alpha_f);
+  const double a_fac = (1.0 - p.alpha_m) / (1.0 - p.alpha_f);
+  VectorXd a_hat = st.a_alpha;  // predictor a^_{n+1} = a^_n
+  st.q = q_star + (p.beta * h2) * a_hat;
+  st.v = v_star + (p.gamma * h) * a_hat;
+  st.a = a_const + a_fac * a_hat;
+  const JacobianCoefficients cf{1.0, p.gamma / (p.beta * h), a_fac / (p.beta * h2)};
+  for (int it = 1; it <= settings.max_iterations; ++it) {
+    at.iterations = it;
+    system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_, &jac_);
+    if (!r_.allFinite() || !phi_.allFinite()) {
+      at.non_finite = true;
+      return at;
+    }
+    at.residual = r_.lpNorm<Eigen::Infinity>();
+    r_.cwiseAbs().maxCoeff(&at.worst_dof);
+    system_.ToBlocks(-r_, -phi_, &rhs_);
+    if (!jac_.Solve(&rhs_)) {
+      at.non_finite = true;
+      return at;
+    }
+    system_.FromBlocks(rhs_, &dq_, &dl_);
+    st.q += dq_;
+    st.lambda += dl_;
+    a_hat += dq_ / (p.beta * h2);
+    st.v = v_star + (p.gamma * h) * a_hat;
+    st.a = a_const + a_fac * a_hat;
+    if (dq_.lpNorm<Eigen::Infinity>() <= settings.tolerance * q_scale_) {
+      at.ok = true;
+      st.a_alpha = a_hat;
+      st.t = t1;
+      return at;
+    }
+  }
+  return at;
+}
+
+StepStatus Integrator::Advance(State* s, double h, int level) {
+  StepStatus status;
+  backup_[level] = *s;
+  const Attempt at = Newton(s, h);
+  status.iterations = at.iterations;
+  status.residual = at.residual;
+  if (at.ok) return status;
+  last_failure_ = at;
+  *s = backup_[level];
+  if (level >= system_.model().integrator.max_substep_level) {
+    status.code = at.non_finite ? StepStatus::kNonFinite : StepStatus::kNotConverged;
+    return status;
+  }
+  StepStatus total;
+  total.substeps = 0;
+  total.iterations = at.iterations;
+  for (int half = 0; half < 2; ++half) {
+    const StepStatus sub = Advance(s, 0.5 * h, level + 1);
+    total.iterations += sub.iterations;
+    total.substeps += sub.substeps;
+    total.residual = std::max(total.residual, sub.residual);
+    if (!sub.ok()) {
+      total.code = sub.code;
+      return total;
+    }
+  }
+  return total;
+}
+
+StepStatus Integrator::Step(State* s, double h) {
+  const double t0 = s->t;
+  StepStatus status = Advance(s, h, 0);
+  if (status.ok() && !(s->q.allFinite() && s->v.allFinite())) status.code = StepStatus::kNonFinite;
+  if (!status.ok()) {
+    const int levels = system_.model().integrator.max_substep_level;
+    std::ostringstream m;
+    m << (status.code == StepStatus::kNonFinite ? "non-finite state" : "Newton did not converge")
+      << " in the step from t = " << t0 << " s (h = " << h << " s, halved up to " << levels
+      << " times, smallest substep " << h / (1 << levels) << " s) at t = " << s->t
+      << " s; last attempt: " << last_failure_.iterations << " iterations, residual "
+      << last_failure_.residual << " N, largest at "
+      << system_.DescribeDof(last_failure_.worst_dof, s->q);
+    status.message = m.str();
+  }
+  return status;
+}
+
+}  // namespace towsim::core

@@ -1,0 +1,128 @@
+#pragma once
+// The immutable description of a scene, as the core sees it. Built and validated by
+// scene/ (yaml -> Model); the core trusts it. SI units, world frame NED (z down).
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace towsim::core {
+
+using Vec3 = Eigen::Vector3d;
+
+struct TimeSettings {
+  double step = 0.01;        // fixed step h [s]
+  double duration = 10.0;    // default run length [s]
+  double output_rate = 10.0; // CSV / publish rate [Hz]
+};
+
+struct Environment {
+  double water_density = 1025.0;      // rho_w [kg/m^3]
+  double dynamic_viscosity = 1.0e-3;  // mu [Pa s]
+  double gravity = 9.81;              // g [m/s^2], acts along +z (NED)
+  Vec3 current = Vec3::Zero();        // uniform current U_W [m/s]
+};
+
+// Each cable load can be switched off per scene (paper Eq. 15-23, Eq. 8 bending term).
+struct CableLoads {
+  bool gravity = true;     // Eq. 15
+  bool buoyancy = true;    // Eq. 16
+  bool drag = true;        // Eq. 17-21
+  bool added_mass = true;  // Eq. 22-23
+  bool bending = true;     // EI kappa^2 term of Eq. 8
+};
+
+enum class EndKind {
+  kFree,    // no constraint
+  kFixed,   // r = position (Eq. 24 against the ground)
+  kDriven,  // r = position + velocity * t
+  kBody,    // r = p_WB + R_WB * at_B (Eq. 24)
+};
+
+struct CableEnd {
+  EndKind kind = EndKind::kFree;
+  Vec3 position = Vec3::Zero();  // fixed point, or driven position at t = 0 [m]
+  Vec3 velocity = Vec3::Zero();  // driven velocity [m/s]
+  // clamped ends also hold the cable direction: r' x slope = 0 (cantilever roots).
+  bool clamped = false;
+  Vec3 slope = Vec3::UnitX();  // unit direction, used when clamped
+  int body = -1;               // index into Model::bodies when kind == kBody
+  Vec3 at_B = Vec3::Zero();    // attachment point in the body frame [m]
+};
+
+enum class InitialShape {
+  kVertical,  // hanging straight down (+z) from the start end
+  kStraight,  // straight line from the start end to the end's position
+  kStatic,    // static equilibrium solved before t = 0
+};
+
+struct CableParams {
+  double length = 200.0;           // unstretched length L [m]
+  int elements = 20;               // number of ANCF elements
+  double diameter = 0.041;         // d [m]
+  double density = 1300.0;         // rho_c [kg/m^3]
+  double youngs_modulus = 7.0e8;   // E [Pa]
+  double axial_damping = 0.0;      // c in N = EA (eps + c deps/dt) [s]
+  double added_mass_coefficient = 1.0;  // C_a, normal direction only (Eq. 23 has C_a = 1)
+  CableLoads loads;
+  InitialShape initial = InitialShape::kVertical;
+  // velocity of every node at t = 0; for kStatic, the static shape is solved in the frame
+  // moving at this velocity (steady towing) [m/s]
+  Vec3 initial_velocity = Vec3::Zero();
+  CableEnd start;
+  CableEnd end;
+
+  double area() const { return 0.25 * kPi * diameter * diameter; }
+  double second_moment() const { return kPi * diameter * diameter * diameter * diameter / 64.0; }
+  static constexpr double kPi = 3.14159265358979323846;
+};
+
+// A point-mass body: translational dynamics with weight, buoyancy, quadratic drag and added
+// mass. Its body frame stays aligned with the world frame.
+struct SphereBody {
+  std::string name;
+  double mass = 1.0;                    // m [kg]
+  double volume = 0.0;                  // displaced volume V [m^3]
+  double drag_coefficient = 0.5;        // C_D on the frontal area pi r^2, r = (3V/4pi)^(1/3)
+  double added_mass_coefficient = 0.5;  // C_a, added mass = C_a rho_w V
+  Vec3 position = Vec3::Zero();         // initial p_WB [m]
+  Vec3 velocity = Vec3::Zero();         // initial v_WB [m/s]
+};
+
+enum class Scheme {
+  kGeneralizedAlpha,  // Chung & Hulbert with rho_inf
+  kTrapezoidal,       // Newmark average acceleration (= generalized-alpha, rho_inf = 1)
+};
+
+enum class Coupling { kStrong, kStaggered };
+
+struct IntegratorSettings {
+  Scheme scheme = Scheme::kGeneralizedAlpha;
+  double rho_inf = 0.8;      // spectral radius at infinite frequency, [0, 1]
+  Coupling coupling = Coupling::kStrong;
+  double tolerance = 1.0e-8; // Newton: relative increment and residual tolerance
+  int max_iterations = 20;   // Newton iterations per (sub)step
+  int max_substep_level = 6; // halve the step at most this many times (2^6 substeps)
+};
+
+// Scripted command, for bodies with actuators (none yet for spheres).
+struct ScriptEntry {
+  double at = 0.0;
+  std::string body;
+  double thrust = 0.0;       // [N]
+  double rudder = 0.0;       // [rad]
+  double elevator = 0.0;     // [rad]
+};
+
+struct Model {
+  std::string name;
+  TimeSettings time;
+  Environment environment;
+  CableParams cable;
+  std::vector<SphereBody> bodies;
+  IntegratorSettings integrator;
+  std::vector<ScriptEntry> script;
+};
+
+}  // namespace towsim::core

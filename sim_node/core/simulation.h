@@ -1,0 +1,86 @@
+#pragma once
+// The public face of the core: a Model in, a stepped State out. No I/O, no clocks.
+//
+//   Simulation sim(model);          // builds the initial state (solves statics if asked)
+//   while (sim.time() < T) {
+//     StepStatus s = sim.Step();    // one fixed step model.time.step
+//     if (!s.ok()) { ... s.message ... }
+//   }
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "core/model.h"
+
+namespace towsim::core {
+
+// Thrown when the initial state cannot be built (e.g. the static solve fails).
+class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct StepStatus {
+  enum Code { kOk, kNotConverged, kNonFinite };
+  Code code = kOk;
+  int iterations = 0;     // Newton iterations summed over substeps
+  int substeps = 1;       // 1 when the full step converged
+  double residual = 0.0;  // final force residual, inf-norm [N]
+  std::string message;    // diagnosis when !ok(): where and when
+  bool ok() const { return code == kOk; }
+};
+
+class System;  // core/system.h
+struct State;  // core/state.h
+
+class Simulation {
+ public:
+  explicit Simulation(const Model& model);  // throws SolverError
+  ~Simulation();
+  Simulation(Simulation&&) noexcept;
+  Simulation& operator=(Simulation&&) noexcept;
+
+  // advance one fixed step h = model().time.step
+  StepStatus Step();
+  // advance one step of an arbitrary size (tests, convergence studies)
+  StepStatus StepBy(double h);
+
+  const Model& model() const;
+  const System& system() const;
+  const State& state() const;
+  // replace the state (tests: perturbations); accelerations and multipliers are recomputed
+  // from the equations of motion so that the next step starts consistent
+  void SetState(const State& state);
+  int cable_dof(int node) const;  // offset of node's e = [r, r'] in q
+  int body_dof(int body) const;   // offset of body's p_WB in q
+  double time() const;
+  long step_count() const;
+
+  // --- outputs (world NED, SI) ---
+  int num_nodes() const;                 // elements + 1
+  Vec3 node_position(int i) const;       // r at node i [m]
+  Vec3 node_velocity(int i) const;       // dr/dt at node i [m/s]
+  double node_tension(int i) const;      // axial force at node i [N] (element average)
+  int num_bodies() const;
+  Vec3 body_position(int b) const;       // p_WB [m]
+  Vec3 body_velocity(int b) const;       // v_WB_W [m/s]
+  // force the cable exerts on body b (its joint multiplier, Eq. 29-30), world frame [N];
+  // zero if b is not attached
+  Vec3 body_cable_force(int b) const;
+  // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
+  // world frame [N]; zero for a free end
+  Vec3 end_force(int end) const;
+
+  // energies for conservation checks [J]: kinetic (cable + bodies, with added mass),
+  // potential of gravity and buoyancy, elastic strain energy
+  double KineticEnergy() const;
+  double PotentialEnergy() const;
+  double StrainEnergy() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace towsim::core

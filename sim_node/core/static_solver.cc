@@ -1,0 +1,88 @@
+#include "core/static_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace towsim::core {
+
+using Eigen::VectorXd;
+
+namespace {
+
+// force scale for the convergence test: weight of cable and bodies plus a drag scale
+double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity) {
+  const Model& m = sys.model();
+  const CableParams& c = m.cable;
+  const Environment& env = m.environment;
+  const double rel = (frame_velocity - env.current).norm();
+  double f = std::abs(c.density - env.water_density) * c.area() * env.gravity * c.length;
+  f += 0.5 * env.water_density * c.diameter * 1.2 * rel * rel * c.length;
+  for (const SphereBody& b : m.bodies)
+    f += std::abs(b.mass - env.water_density * b.volume) * env.gravity +
+         0.5 * env.water_density * b.drag_coefficient * rel * rel *
+             std::pow(b.volume, 2.0 / 3.0) * 1.21;
+  return std::max(f, 1.0);
+}
+
+}  // namespace
+
+StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s) {
+  StaticResult res;
+  const int n = sys.num_q(), m = sys.num_lambda();
+  const double tol = sys.model().integrator.tolerance;
+  const double f_tol = tol * ForceScale(sys, frame_velocity);
+  const double q_scale = std::max(1.0, sys.model().cable.length);
+  s->v.setZero(n);
+  for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.cable_dof(i)) = frame_velocity;
+  for (int b = 0; b < sys.num_bodies(); ++b) s->v.segment<3>(sys.body_dof(b)) = frame_velocity;
+  s->a.setZero(n);
+  s->lambda.setZero(m);
+
+  BlockTridiagonal jac = sys.MakeMatrix();
+  VectorXd r, phi, rhs, dq, dl;
+  constexpr int kMaxIterations = 2000;
+  double delta = 1.0e-2;  // pseudo time step squared [s^2]
+  double prev_norm = -1.0;
+  for (int it = 1; it <= kMaxIterations; ++it) {
+    res.iterations = it;
+    // J = K + M_eff / delta (c_a = 1/delta, a = 0 in R); plain Newton once delta is huge
+    const JacobianCoefficients cf{1.0, 0.0, delta > 1e12 ? 0.0 : 1.0 / delta};
+    sys.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r, &phi, &jac);
+    const double norm = r.lpNorm<Eigen::Infinity>();
+    res.residual = norm;
+    if (!std::isfinite(norm) || !phi.allFinite()) break;
+    if (norm <= f_tol && phi.lpNorm<Eigen::Infinity>() <= tol * q_scale) {
+      res.ok = true;
+      return res;
+    }
+    // switched evolution relaxation for the next iteration
+    if (prev_norm > 0.0) delta *= std::clamp(prev_norm / norm, 0.2, 100.0);
+    prev_norm = norm;
+    sys.ToBlocks(-r, -phi, &rhs);
+    if (!jac.Solve(&rhs)) {
+      // singular (e.g. a slack cable without bending): damp harder
+      delta = std::min(delta, 1e6) * 0.01;
+      prev_norm = -1.0;
+      continue;
+    }
+    sys.FromBlocks(rhs, &dq, &dl);
+    // limit the step to a tenth of the cable length per iteration
+    const double step = dq.lpNorm<Eigen::Infinity>();
+    const double limit = 0.1 * q_scale;
+    const double scale = step > limit ? limit / step : 1.0;
+    s->q += scale * dq;
+    s->lambda += scale * dl;
+    if (!s->q.allFinite()) break;
+  }
+  std::ostringstream msg;
+  int worst = 0;
+  if (r.size()) r.cwiseAbs().maxCoeff(&worst);
+  msg << "static equilibrium not found after " << res.iterations << " iterations: residual "
+      << res.residual << " N (tolerance " << f_tol << " N), largest at "
+      << sys.DescribeDof(worst, s->q);
+  res.message = msg.str();
+  return res;
+}
+
+}  // namespace towsim::core

@@ -1,0 +1,313 @@
+#include "core/system.h"
+
+#include <cmath>
+#include <sstream>
+
+#include <Eigen/Geometry>
+
+namespace towsim::core {
+namespace {
+
+using Eigen::VectorXd;
+
+ElementProperties MakeElementProperties(const CableParams& c) {
+  ElementProperties p;
+  p.length = c.length / c.elements;
+  p.ea = c.youngs_modulus * c.area();
+  p.ei = c.loads.bending ? c.youngs_modulus * c.second_moment() : 0.0;
+  p.axial_damping = c.axial_damping;
+  p.mass_per_length = c.density * c.area();
+  return p;
+}
+
+CableLoadContext MakeLoadContext(const Model& m) {
+  const CableParams& c = m.cable;
+  const Environment& env = m.environment;
+  CableLoadContext ctx;
+  ctx.fluid = {env.water_density, env.dynamic_viscosity};
+  ctx.diameter = c.diameter;
+  ctx.drag = c.loads.drag;
+  ctx.current = env.current;
+  ctx.added_mass_per_length =
+      c.loads.added_mass ? c.added_mass_coefficient * env.water_density * c.area() : 0.0;
+  // Eq. 15-16: rho_c A g e_z (gravity) and -rho_w A g e_z (buoyancy), NED z down
+  double w = 0.0;
+  if (c.loads.gravity) w += c.density * c.area() * env.gravity;
+  if (c.loads.buoyancy) w -= env.water_density * c.area() * env.gravity;
+  ctx.weight_per_length = Vec3(0.0, 0.0, w);
+  return ctx;
+}
+
+// two unit vectors normal to s
+void Normals(const Vec3& s, Vec3* n1, Vec3* n2) {
+  const Vec3 t = s.normalized();
+  const Vec3 trial = std::abs(t.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  *n1 = (trial - trial.dot(t) * t).normalized();
+  *n2 = t.cross(*n1);
+}
+
+}  // namespace
+
+System::System(const Model& model)
+    : model_(model),
+      element_(MakeElementProperties(model.cable)),
+      loads_(MakeLoadContext(model)) {
+  const int nb = num_bodies();
+  const int nn = num_nodes();
+  cable_offset_ = 3 * nb;
+  num_q_ = cable_offset_ + 6 * nn;
+  const CableEnd* ends[2] = {&model_.cable.start, &model_.cable.end};
+  for (int k = 0; k < 2; ++k) {
+    const CableEnd& end = *ends[k];
+    lambda_count_[k] = end.kind == EndKind::kFree ? 0 : 3 + (end.clamped ? 2 : 0);
+    if (end.clamped) Normals(end.slope, &clamp_dirs_[k][0], &clamp_dirs_[k][1]);
+  }
+  num_lambda_ = lambda_count_[0] + lambda_count_[1];
+
+  for (const SphereBody& b : model_.bodies) {
+    const double rho = model_.environment.water_density;
+    const double radius = std::cbrt(3.0 * b.volume / (4.0 * CableParams::kPi));
+    body_mass_eff_.push_back(b.mass + b.added_mass_coefficient * rho * b.volume);
+    body_drag_k_.push_back(0.5 * rho * b.drag_coefficient * CableParams::kPi * radius * radius);
+  }
+
+  // block layout
+  q_index_.assign(num_q_, {-1, -1});
+  lambda_index_.assign(num_lambda_, {-1, -1});
+  const int body_at[2] = {ends[0]->kind == EndKind::kBody ? ends[0]->body : -1,
+                          ends[1]->kind == EndKind::kBody ? ends[1]->body : -1};
+  auto place_body = [&](int b, int block, int* local) {
+    for (int i = 0; i < 3; ++i) q_index_[body_dof(b) + i] = {block, (*local)++};
+  };
+  auto place_lambda = [&](int end, int block, int* local) {
+    for (int i = 0; i < lambda_count_[end]; ++i)
+      lambda_index_[end_lambda(end) + i] = {block, (*local)++};
+  };
+  auto place_node = [&](int node, int block, int* local) {
+    for (int i = 0; i < 6; ++i) q_index_[cable_dof(node) + i] = {block, (*local)++};
+  };
+  for (int node = 0; node < nn; ++node) {
+    int local = 0;
+    if (node == 0) {
+      if (body_at[0] >= 0) place_body(body_at[0], node, &local);
+      place_lambda(0, node, &local);
+    }
+    place_node(node, node, &local);
+    if (node == nn - 1) {
+      place_lambda(1, node, &local);
+      if (body_at[1] >= 0) place_body(body_at[1], node, &local);
+    }
+    block_sizes_.push_back(local);
+  }
+  for (int b = 0; b < nb; ++b) {
+    if (b == body_at[0] || b == body_at[1]) continue;
+    int local = 0;
+    place_body(b, static_cast<int>(block_sizes_.size()), &local);
+    block_sizes_.push_back(local);
+  }
+  block_offsets_.assign(block_sizes_.size(), 0);
+  for (size_t i = 1; i < block_sizes_.size(); ++i)
+    block_offsets_[i] = block_offsets_[i - 1] + block_sizes_[i - 1];
+}
+
+BlockTridiagonal System::MakeMatrix() const { return BlockTridiagonal(block_sizes_); }
+
+void System::Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m) const {
+  const BlockIndex bi = q_index_[i], bj = q_index_[j];
+  if (bi.block == bj.block) {
+    jac->diag(bi.block).block<3, 3>(bi.local, bj.local) += m;
+  } else if (bj.block == bi.block + 1) {
+    jac->upper(bi.block).block<3, 3>(bi.local, bj.local) += m;
+  } else {  // bj.block == bi.block - 1: L_{bj} holds rows of block bj + 1
+    jac->lower(bj.block).block<3, 3>(bi.local, bj.local) += m;
+  }
+}
+
+void System::AddQL(BlockTridiagonal* jac, int qi, int li, const Vec3& col) const {
+  // a multiplier sits in the block of the node / body it constrains
+  const BlockIndex bq = q_index_[qi], bl = lambda_index_[li];
+  Eigen::MatrixXd& d = jac->diag(bq.block);
+  d.block<3, 1>(bq.local, bl.local) += col;
+  d.block<1, 3>(bl.local, bq.local) += col.transpose();
+}
+
+Vec3 System::SupportPosition(int end, const VectorXd& q, double t) const {
+  const CableEnd& e = end == 0 ? model_.cable.start : model_.cable.end;
+  switch (e.kind) {
+    case EndKind::kFixed:
+      return e.position;
+    case EndKind::kDriven:
+      return e.position + t * e.velocity;
+    case EndKind::kBody:
+      return q.segment<3>(body_dof(e.body)) + e.at_B;  // sphere frames stay world-aligned
+    case EndKind::kFree:
+      break;
+  }
+  return Vec3::Constant(std::nan(""));
+}
+
+void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
+                      const VectorXd& lambda, double t, double load_scale,
+                      const JacobianCoefficients& cf, VectorXd* residual, VectorXd* phi,
+                      BlockTridiagonal* jac) const {
+  residual->setZero(num_q_);
+  phi->setZero(num_lambda_);
+  if (jac) jac->SetZero();
+  const Mat12& mass = element_.mass();
+
+  // cable elements: M e_ddot + F_int + R_load (Eq. 25)
+  Vec12 force;
+  Mat12 k, c, j;
+  ElementLoadJacobians lj;
+  for (int e = 0; e < num_elements(); ++e) {
+    const int o = cable_dof(e);
+    const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
+    element_.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
+    const Vec12 rl =
+        ElementLoadResidual(element_, loads_, ee, ed, ea, load_scale, jac ? &lj : nullptr);
+    residual->segment<12>(o) += mass * ea + force + rl;
+    if (!jac) continue;
+    // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
+    j = cf.c_a * (mass + lj.added_mass) + cf.c_q * (k + lj.d_de);
+    if (cf.c_v != 0.0) j += cf.c_v * (c + lj.d_dedot);
+    for (int r = 0; r < 4; ++r)
+      for (int s = 0; s < 4; ++s) Add3(jac, o + 3 * r, o + 3 * s, j.block<3, 3>(3 * r, 3 * s));
+  }
+
+  // bodies: (m + m_a) a - (m - rho V) g e_z * scale + k |V| V * scale, V = v - U
+  const Environment& env = model_.environment;
+  for (int b = 0; b < num_bodies(); ++b) {
+    const SphereBody& body = model_.bodies[b];
+    const int o = body_dof(b);
+    const Vec3 vr = v.segment<3>(o) - env.current;
+    const double speed = vr.norm();
+    const double net_weight = (body.mass - env.water_density * body.volume) * env.gravity;
+    Vec3 r = body_mass_eff_[b] * a.segment<3>(o) + load_scale * body_drag_k_[b] * speed * vr;
+    r.z() -= load_scale * net_weight;
+    residual->segment<3>(o) += r;
+    if (!jac) continue;
+    Mat3 jb = cf.c_a * body_mass_eff_[b] * Mat3::Identity();
+    if (speed > 0.0 && cf.c_v != 0.0)
+      jb += cf.c_v * load_scale * body_drag_k_[b] *
+            (speed * Mat3::Identity() + vr * vr.transpose() / speed);
+    Add3(jac, o, o, jb);
+  }
+
+  // joints (Eq. 24): Phi = r_end - p_support; R += Phi_q^T lambda
+  for (int end = 0; end < 2; ++end) {
+    const int nl = lambda_count_[end];
+    if (nl == 0) continue;
+    const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
+    const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
+    const int lo = end_lambda(end);
+    phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t);
+    residual->segment<3>(nd) += lambda.segment<3>(lo);
+    const bool body = ce.kind == EndKind::kBody;
+    if (body) residual->segment<3>(body_dof(ce.body)) -= lambda.segment<3>(lo);
+    if (ce.clamped) {
+      // direction held: n_k . r' = 0 for the two normals of the slope
+      for (int i = 0; i < 2; ++i) {
+        const Vec3& n = clamp_dirs_[end][i];
+        (*phi)(lo + 3 + i) = n.dot(q.segment<3>(nd + 3));
+        residual->segment<3>(nd + 3) += lambda(lo + 3 + i) * n;
+      }
+    }
+    if (!jac) continue;
+    for (int i = 0; i < 3; ++i) {
+      AddQL(jac, nd, lo + i, Vec3::Unit(i));
+      if (body) AddQL(jac, body_dof(ce.body), lo + i, -Vec3::Unit(i));
+    }
+    if (ce.clamped)
+      for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
+  }
+}
+
+void System::ToBlocks(const VectorXd& r, const VectorXd& phi, VectorXd* x) const {
+  x->resize(num_q_ + num_lambda_);
+  const std::vector<int>& offsets = block_offsets_;
+  for (int i = 0; i < num_q_; ++i) (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+  for (int i = 0; i < num_lambda_; ++i)
+    (*x)(offsets[lambda_index_[i].block] + lambda_index_[i].local) = phi(i);
+}
+
+void System::FromBlocks(const VectorXd& x, VectorXd* dq, VectorXd* dlambda) const {
+  dq->resize(num_q_);
+  dlambda->resize(num_lambda_);
+  const std::vector<int>& offsets = block_offsets_;
+  for (int i = 0; i < num_q_; ++i) (*dq)(i) = x(offsets[q_index_[i].block] + q_index_[i].local);
+  for (int i = 0; i < num_lambda_; ++i)
+    (*dlambda)(i) = x(offsets[lambda_index_[i].block] + lambda_index_[i].local);
+}
+
+double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
+  double ke = 0.0;
+  ElementLoadJacobians lj;
+  CableLoadContext am_only = loads_;
+  am_only.drag = false;
+  am_only.weight_per_length.setZero();
+  for (int e = 0; e < num_elements(); ++e) {
+    const int o = cable_dof(e);
+    const Vec12 ed = v.segment<12>(o);
+    Mat12 m = element_.mass();
+    if (loads_.added_mass_per_length > 0.0) {
+      ElementLoadResidual(element_, am_only, q.segment<12>(o), ed, Vec12::Zero(), 1.0, &lj);
+      m += lj.added_mass;
+    }
+    ke += 0.5 * ed.dot(m * ed);
+  }
+  for (int b = 0; b < num_bodies(); ++b)
+    ke += 0.5 * body_mass_eff_[b] * v.segment<3>(body_dof(b)).squaredNorm();
+  return ke;
+}
+
+double System::PotentialEnergy(const VectorXd& q) const {
+  // V = - int w . r dx (uniform load) - sum (m - rho V) g z_b
+  double pe = 0.0;
+  const Vec12 qw = UniformLoad(loads_.weight_per_length, element_.props().length);
+  for (int e = 0; e < num_elements(); ++e) pe -= qw.dot(q.segment<12>(cable_dof(e)));
+  const Environment& env = model_.environment;
+  for (int b = 0; b < num_bodies(); ++b) {
+    const SphereBody& body = model_.bodies[b];
+    pe -= (body.mass - env.water_density * body.volume) * env.gravity * q(body_dof(b) + 2);
+  }
+  return pe;
+}
+
+double System::StrainEnergy(const VectorXd& q) const {
+  double u = 0.0;
+  for (int e = 0; e < num_elements(); ++e)
+    u += element_.StrainEnergy(q.segment<12>(cable_dof(e)));
+  return u;
+}
+
+double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const {
+  // average of the adjacent elements' end values
+  double sum = 0.0;
+  int n = 0;
+  if (node > 0) {
+    const int o = cable_dof(node - 1);
+    sum += element_.AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
+    ++n;
+  }
+  if (node < num_elements()) {
+    const int o = cable_dof(node);
+    sum += element_.AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
+    ++n;
+  }
+  return sum / n;
+}
+
+std::string System::DescribeDof(int i, const VectorXd& q) const {
+  std::ostringstream s;
+  if (i < cable_offset_) {
+    s << "body '" << model_.bodies[i / 3].name << "'";
+    return s.str();
+  }
+  const int node = (i - cable_offset_) / 6;
+  const Vec3 r = q.segment<3>(cable_dof(node));
+  s << "cable node " << node << " (s = " << node * element_.props().length << " m, at ["
+    << r.x() << ", " << r.y() << ", " << r.z() << "])";
+  return s.str();
+}
+
+}  // namespace towsim::core

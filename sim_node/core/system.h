@@ -1,0 +1,99 @@
+#pragma once
+// The coupled cable-body system: DOF layout, residual, constraints (paper Eq. 24-26) and the
+// Newton matrix in block-tridiagonal form.
+//
+// Equations of motion with the joint multipliers lambda (Eq. 26, at position level):
+//   R(q, v, a, lambda) = M_eff(q) a + F_int(q, v) - Q_ext(q, v) + Phi_q^T lambda = 0   (n x 1)
+//   Phi(q, t) = 0                                                                    (m x 1)
+// M_eff = cable mass (Eq. 7) + normal added mass (Eq. 23) + body masses. The constraints hold a
+// cable end's position to a fixed point, a driven point or a body point (Eq. 24) and, for a
+// clamped end, its direction. With Phi = r_end - p_support, lambda is the force the cable
+// exerts on its support (on a body: the interaction force of Eq. 29-30).
+//
+// Block ordering for the linear solve: [start body | start multipliers | node 0], node 1, ...,
+// node N-1, [node N | end multipliers | end body], then one block per unattached body.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/ancf_element.h"
+#include "core/block_tridiagonal.h"
+#include "core/cable_loads.h"
+#include "core/model.h"
+
+namespace towsim::core {
+
+// Newton matrix = c_a dR/da + c_q dR/dq + c_v dR/dv (with the constraint Jacobian blocks)
+struct JacobianCoefficients {
+  double c_q = 1.0;
+  double c_v = 0.0;
+  double c_a = 0.0;
+};
+
+class System {
+ public:
+  explicit System(const Model& model);
+
+  const Model& model() const { return model_; }
+  int num_q() const { return num_q_; }
+  int num_lambda() const { return num_lambda_; }
+  int num_nodes() const { return model_.cable.elements + 1; }
+  int num_elements() const { return model_.cable.elements; }
+  int num_bodies() const { return static_cast<int>(model_.bodies.size()); }
+  int cable_dof(int node) const { return cable_offset_ + 6 * node; }
+  int body_dof(int body) const { return 3 * body; }
+  // multiplier offset and count of a cable end (0 = start, 1 = end)
+  int end_lambda(int end) const { return end == 0 ? 0 : lambda_count_[0]; }
+  int end_lambda_count(int end) const { return lambda_count_[end]; }
+  const AncfElement& element() const { return element_; }
+
+  // Evaluates R and Phi; fills the Newton matrix when jac != nullptr. `load_scale` scales the
+  // external loads (weight, buoyancy, drag) for the static load continuation.
+  void Evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
+                const Eigen::VectorXd& lambda, double t, double load_scale,
+                const JacobianCoefficients& coeffs, Eigen::VectorXd* residual,
+                Eigen::VectorXd* phi, BlockTridiagonal* jac) const;
+
+  // an empty Newton matrix with this system's block structure
+  BlockTridiagonal MakeMatrix() const;
+  // rhs (block order) from the global residual and constraint vectors, and back
+  void ToBlocks(const Eigen::VectorXd& r, const Eigen::VectorXd& phi, Eigen::VectorXd* x) const;
+  void FromBlocks(const Eigen::VectorXd& x, Eigen::VectorXd* dq, Eigen::VectorXd* dlambda) const;
+
+  // element e's 12 coordinates from q
+  Vec12 ElementCoordinates(const Eigen::VectorXd& q, int e) const {
+    return q.segment<12>(cable_dof(e));
+  }
+  // world position of the support of a cable end at time t (fixed / driven / body point)
+  Vec3 SupportPosition(int end, const Eigen::VectorXd& q, double t) const;
+
+  double KineticEnergy(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+  double PotentialEnergy(const Eigen::VectorXd& q) const;
+  double StrainEnergy(const Eigen::VectorXd& q) const;
+  double NodeTension(const Eigen::VectorXd& q, const Eigen::VectorXd& v, int node) const;
+  // describes DOF i for diagnostics ("cable node 12 (x = 118.2 m)", "body towfish")
+  std::string DescribeDof(int i, const Eigen::VectorXd& q) const;
+
+ private:
+  struct BlockIndex {
+    int block;
+    int local;
+  };
+  // adds a 3 x 3 block at global q indices (i, j) into the Newton matrix
+  void Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m) const;
+  void AddQL(BlockTridiagonal* jac, int qi, int li, const Eigen::Vector3d& col) const;
+
+  Model model_;
+  AncfElement element_;
+  CableLoadContext loads_;
+  int num_q_ = 0, num_lambda_ = 0, cable_offset_ = 0;
+  int lambda_count_[2] = {0, 0};
+  Eigen::Vector3d clamp_dirs_[2][2];  // two normals to the slope of a clamped end
+  std::vector<int> block_sizes_, block_offsets_;
+  std::vector<BlockIndex> q_index_, lambda_index_;
+  std::vector<double> body_mass_eff_, body_drag_k_;  // m + C_a rho V, 1/2 rho C_D pi r^2
+};
+
+}  // namespace towsim::core

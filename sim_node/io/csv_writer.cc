@@ -1,0 +1,134 @@
+#include "io/csv_writer.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+#include "core/model.h"
+
+namespace towsim::io {
+namespace {
+
+constexpr char kBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
+constexpr char kCableHeader[] = "t,node,x,y,z,tension";
+constexpr char kForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
+constexpr char kStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+
+// a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
+std::string Field(const std::string& name) {
+  if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
+  std::string quoted = "\"";
+  for (char c : name) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+// a cable end held by the ground or a kinematic driver carries a support reaction of its own
+bool IsHeldSupport(const core::CableEnd& end) {
+  return end.kind == core::EndKind::kFixed || end.kind == core::EndKind::kDriven;
+}
+
+}  // namespace
+
+CsvWriter::CsvWriter(const std::string& dir) : dir_(dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir_, ec);
+  if (ec) {
+    throw std::runtime_error("cannot create CSV directory '" + dir_ + "': " + ec.message());
+  }
+  try {
+    Open(bodies_, "bodies.csv", kBodiesHeader);
+    Open(cable_, "cable.csv", kCableHeader);
+    Open(forces_, "forces.csv", kForcesHeader);
+    Open(status_, "status.csv", kStatusHeader);
+  } catch (...) {
+    for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
+      if (file->f != nullptr) std::fclose(file->f);
+      file->f = nullptr;
+    }
+    throw;
+  }
+}
+
+CsvWriter::~CsvWriter() {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
+    if (file->f != nullptr) std::fclose(file->f);
+  }
+}
+
+void CsvWriter::Open(File& file, const char* name, const char* header) {
+  file.path = (std::filesystem::path(dir_) / name).string();
+  file.f = std::fopen(file.path.c_str(), "w");
+  if (file.f == nullptr) {
+    throw std::runtime_error("cannot open '" + file.path + "' for writing: " +
+                             std::strerror(errno));
+  }
+  std::fprintf(file.f, "%s\n", header);
+  Check(file);
+}
+
+void CsvWriter::Check(const File& file) const {
+  if (std::fflush(file.f) != 0 || std::ferror(file.f)) {
+    throw std::runtime_error("writing '" + file.path + "' failed: " + std::strerror(errno));
+  }
+}
+
+void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status,
+                      long wall_us) {
+  if (bodies_.f == nullptr) throw std::runtime_error("CsvWriter::Write after Close");
+  const core::Model& model = sim.model();
+  const double t = sim.time();
+
+  // bodies: spheres keep a world-aligned frame, so attitude and rates are zero
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    const core::Vec3 p_WB = sim.body_position(b);
+    const core::Vec3 v_WB = sim.body_velocity(b);
+    std::fprintf(bodies_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0,%.9g,%.9g,%.9g,0,0,0\n", t,
+                 Field(model.bodies[b].name).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), v_WB.x(),
+                 v_WB.y(), v_WB.z());
+  }
+
+  for (int i = 0; i < sim.num_nodes(); ++i) {
+    const core::Vec3 r = sim.node_position(i);
+    std::fprintf(cable_.f, "%.9g,%d,%.9g,%.9g,%.9g,%.9g\n", t, i, r.x(), r.y(), r.z(),
+                 sim.node_tension(i));
+  }
+
+  // forces: cable force on each body (world = body frame for spheres), then held supports
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    const core::Vec3 f = sim.body_cable_force(b);
+    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t,
+                 Field(model.bodies[b].name).c_str(), f.x(), f.y(), f.z());
+  }
+  const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
+  const char* end_names[2] = {"cable.start", "cable.end"};
+  for (int e = 0; e < 2; ++e) {
+    if (!IsHeldSupport(*ends[e])) continue;
+    const core::Vec3 f = sim.end_force(e);
+    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t, end_names[e], f.x(), f.y(),
+                 f.z());
+  }
+
+  std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld\n", t, sim.step_count(), status.iterations,
+               status.residual, wall_us);
+
+  for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
+}
+
+void CsvWriter::Close() {
+  std::string error;
+  for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
+    if (file->f == nullptr) continue;
+    if (std::fclose(file->f) != 0 && error.empty()) {
+      error = "closing '" + file->path + "' failed: " + std::strerror(errno);
+    }
+    file->f = nullptr;
+  }
+  if (!error.empty()) throw std::runtime_error(error);
+}
+
+}  // namespace towsim::io

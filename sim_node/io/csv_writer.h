@@ -1,0 +1,66 @@
+#pragma once
+// CSV output of a run (DESIGN §5): four files in one directory, one row set per Write().
+//
+//   bodies.csv  t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
+//               position p_WB in world NED [m], Euler angles [rad], velocity v_WB_B and
+//               angular rate w_WB_B in the body frame [m/s, rad/s]
+//   cable.csv   t,node,x,y,z,tension
+//               node position r in world NED [m], axial force at the node [N]
+//   forces.csv  t,body,fx,fy,fz,mx,my,mz
+//               force and moment the cable exerts on each body, body frame [N, N m]; plus
+//               rows "cable.start" / "cable.end" for a cable end held by a fixed or driven
+//               support (not a body): the force the cable exerts on the support, world frame
+//   status.csv  t,step,newton_iterations,residual,wall_us
+//               Newton iterations and final residual [N] of the step that led here, and its
+//               wall time [us] as measured by the caller
+//
+// Spheres: their frame stays aligned with the world, so roll = pitch = yaw = 0, p = q = r = 0,
+// (u, v, w) is the world velocity and the moment is 0.
+//
+// Numbers are written with 9 significant digits ("%.9g"). Every Write() is flushed to the
+// operating system, so the files survive Ctrl-C or a kill of the process.
+
+#include <cstdio>
+#include <string>
+
+#include "core/simulation.h"
+
+namespace towsim::io {
+
+class CsvWriter {
+ public:
+  // creates `dir` (and its parents) if needed, truncates the four files and writes their
+  // headers; throws std::runtime_error naming the path if a file cannot be opened
+  explicit CsvWriter(const std::string& dir);
+  ~CsvWriter();  // closes, ignoring errors
+  CsvWriter(const CsvWriter&) = delete;
+  CsvWriter& operator=(const CsvWriter&) = delete;
+
+  // appends one row set for the current state of `sim`: one row per body, one per cable node,
+  // one per body and held cable end in forces.csv, one status row. `status` is the status of
+  // the step that produced the state (a default StepStatus at t = 0), `wall_us` its wall time.
+  // Throws std::runtime_error if writing fails (e.g. disk full).
+  void Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us);
+
+  // flushes and closes the files; further Write() calls throw. Throws std::runtime_error if
+  // the final flush fails.
+  void Close();
+
+  const std::string& dir() const { return dir_; }
+
+ private:
+  struct File {
+    std::string path;
+    std::FILE* f = nullptr;
+  };
+  void Open(File& file, const char* name, const char* header);
+  void Check(const File& file) const;
+
+  std::string dir_;
+  File bodies_;
+  File cable_;
+  File forces_;
+  File status_;
+};
+
+}  // namespace towsim::io

@@ -1,0 +1,209 @@
+#include "scene/cable_reader.h"
+
+#include <cmath>
+#include <string>
+
+#include "scene/body_reader.h"
+
+namespace towsim::scene::internal {
+namespace {
+
+constexpr double kStraightMaxStretch = 0.01;  // initial: straight may stretch the cable by 1%
+constexpr double kVerticalTolerance = 1e-3;   // initial: vertical end offset, relative to length
+
+struct EndInput {
+  core::CableEnd end;
+  Field field;  // cable.start or cable.end, for messages
+};
+
+core::CableLoads ReadLoads(const Field& field) {
+  // a list naming the loads that are on; each at most once
+  if (!field.node().IsSequence()) field.Fail("must be a list, e.g. [gravity, buoyancy, drag]");
+  static const std::vector<std::string> kNames = {"gravity", "buoyancy", "drag", "added_mass",
+                                                  "bending"};
+  core::CableLoads loads{false, false, false, false, false};
+  bool* const flags[] = {&loads.gravity, &loads.buoyancy, &loads.drag, &loads.added_mass,
+                         &loads.bending};
+  for (const Field& item : field.Items()) {
+    bool& on = *flags[item.Choice(kNames)];
+    if (on) item.Fail("duplicate load (already listed)");
+    on = true;
+  }
+  return loads;
+}
+
+EndInput ReadEnd(const Field& field, const std::vector<core::SphereBody>& bodies) {
+  const MapReader map(field, MapKind::kEnd);
+  EndInput input{core::CableEnd{}, field};
+  core::CableEnd& end = input.end;
+
+  // exactly one of fixed, driven, free, body
+  std::string kinds;
+  int count = 0;
+  for (const char* kind : {"fixed", "driven", "free", "body"}) {
+    if (!map.Has(kind)) continue;
+    kinds += (count++ ? " and " : "") + std::string(kind);
+  }
+  if (count != 1) {
+    field.Fail("must be exactly one of {fixed: [x, y, z]}, {driven: {position, velocity}}, "
+               "{free: true}, {body: <name>, at: [x, y, z]}" +
+               (count > 1 ? " (it has " + kinds + ")" : std::string()));
+  }
+  // slope goes with fixed, at with body
+  if (map.Has("slope") && !map.Has("fixed")) map.Get("slope").Fail("applies only to a fixed end");
+  if (map.Has("at") && !map.Has("body")) map.Get("at").Fail("applies only to a body end");
+
+  if (map.Has("fixed")) {
+    end.kind = core::EndKind::kFixed;
+    end.position = map.Vector("fixed");
+    if (map.Has("slope")) {
+      // a clamped end holds the cable direction: a non-zero vector, normalized
+      const Field slope = map.Get("slope");
+      const core::Vec3 direction = slope.Vector();
+      if (direction.norm() == 0.0) slope.Fail("must be a non-zero direction");
+      end.clamped = true;
+      end.slope = direction.normalized();
+    }
+  } else if (map.Has("driven")) {
+    end.kind = core::EndKind::kDriven;
+    const MapReader driven(map.Get("driven"), MapKind::kDriven);
+    if (!driven.field().node().IsMap()) driven.field().Fail("must be a map {position, velocity}");
+    end.position = driven.Vector("position");
+    end.velocity = driven.Vector("velocity");
+  } else if (map.Has("free")) {
+    // free: true (false would hold nothing)
+    const Field free = map.Get("free");
+    if (!free.Boolean()) free.Fail("must be true (to hold the end use fixed, driven or body)");
+    end.kind = core::EndKind::kFree;
+  } else {
+    // the body must exist
+    const Field body = map.Get("body");
+    end.kind = core::EndKind::kBody;
+    end.body = FindBody(bodies, body.String());
+    if (end.body < 0) body.Fail("no such body (bodies: " + BodyNames(bodies) + ")");
+    end.at_B = map.Vector("at", core::Vec3::Zero());
+  }
+  return input;
+}
+
+bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; }
+
+// world position of a held end at t = 0; a sphere's body frame is aligned with the world
+core::Vec3 EndPosition(const core::CableEnd& end, const std::vector<core::SphereBody>& bodies) {
+  if (end.kind == core::EndKind::kBody) return bodies[end.body].position + end.at_B;
+  return end.position;
+}
+
+void CheckEnds(const EndInput& start, const EndInput& end,
+               const std::vector<core::SphereBody>& bodies) {
+  // at least one end held
+  if (!Held(start.end) && !Held(end.end)) {
+    end.field.Fail("both ends are free; hold at least one end (fixed, driven or body)");
+  }
+  // start and end on different bodies
+  if (start.end.kind == core::EndKind::kBody && end.end.kind == core::EndKind::kBody &&
+      start.end.body == end.end.body) {
+    end.field.Fail("start and end are both on body " + bodies[end.end.body].name +
+                   "; attach them to different bodies");
+  }
+  // at most one driven end
+  if (start.end.kind == core::EndKind::kDriven && end.end.kind == core::EndKind::kDriven) {
+    end.field.Fail("both ends are driven; drive at most one end");
+  }
+}
+
+void CheckInitialShape(const core::CableParams& cable, const EndInput& start, const EndInput& end,
+                       const std::vector<core::SphereBody>& bodies) {
+  const double length = cable.length;
+  switch (cable.initial) {
+    case core::InitialShape::kVertical: {
+      // the cable hangs straight down (+z) from a held start
+      if (!Held(start.end)) {
+        start.field.Fail("initial: vertical hangs the cable from the start, so the start must be "
+                         "held (fixed, driven or body); use initial: static");
+      }
+      // a held end sits at start + [0, 0, length]
+      if (!Held(end.end)) return;
+      const core::Vec3 expected = EndPosition(start.end, bodies) + core::Vec3(0.0, 0.0, length);
+      const core::Vec3 actual = EndPosition(end.end, bodies);
+      const double offset = (actual - expected).norm();
+      if (offset > kVerticalTolerance * length) {
+        end.field.Fail("with initial: vertical the end must sit at start + [0, 0, length] = " +
+                       FormatVector(expected) + " (within " +
+                       FormatNumber(kVerticalTolerance * length) + " m), but it is at " +
+                       FormatVector(actual) + ", " + FormatNumber(offset) + " m away");
+      }
+      return;
+    }
+    case core::InitialShape::kStraight: {
+      // a straight line between two known points
+      for (const EndInput* e : {&start, &end}) {
+        if (!Held(e->end)) {
+          e->field.Fail("initial: straight needs both ends at known positions (fixed, driven or "
+                        "body); use initial: vertical or static");
+        }
+      }
+      const core::Vec3 p_start = EndPosition(start.end, bodies);
+      const core::Vec3 p_end = EndPosition(end.end, bodies);
+      const double span = (p_end - p_start).norm();
+      // the span is > 0 and stretches the cable by at most 1%
+      if (span == 0.0) {
+        end.field.Fail("with initial: straight the end must not coincide with the start " +
+                       FormatVector(p_start));
+      }
+      if (span > (1.0 + kStraightMaxStretch) * length) {
+        end.field.Fail("with initial: straight the span from start " + FormatVector(p_start) +
+                       " to end " + FormatVector(p_end) + " is " + FormatNumber(span) +
+                       " m, which would stretch the " + FormatNumber(length) + " m cable by " +
+                       FormatNumber(100.0 * (span / length - 1.0)) + "% (at most " +
+                       FormatNumber(100.0 * kStraightMaxStretch) + "%)");
+      }
+      return;
+    }
+    case core::InitialShape::kStatic:
+      // the solver finds the shape; both-free is already excluded
+      return;
+  }
+}
+
+}  // namespace
+
+CableInput ReadCable(const Field& field, const std::vector<core::SphereBody>& bodies) {
+  const MapReader cable(field, MapKind::kCable);
+  CableInput input;
+  core::CableParams& c = input.params;
+
+  // material and discretization
+  c.length = cable.Number("length", Range::Above(0.0));
+  c.elements = cable.Integer("elements", Range::Closed(1, 10000));
+  c.diameter = cable.Number("diameter", Range::Above(0.0));
+  c.density = cable.Number("density", Range::Above(0.0));
+  c.youngs_modulus = cable.Number("youngs_modulus", Range::Above(0.0));
+  c.axial_damping = cable.Number("axial_damping", Range::AtLeast(0.0), 0.0);
+  c.added_mass_coefficient =
+      cable.Number("added_mass_coefficient", Range::AtLeast(0.0), c.added_mass_coefficient);
+  // loads: absent means all on
+  if (cable.Has("loads")) c.loads = ReadLoads(cable.Get("loads"));
+  if (cable.Has("initial")) {
+    static const std::vector<core::InitialShape> kShapes = {
+        core::InitialShape::kVertical, core::InitialShape::kStraight, core::InitialShape::kStatic};
+    c.initial = kShapes[cable.Get("initial").Choice({"vertical", "straight", "static"})];
+  }
+
+  // ends, then the rules between them
+  const EndInput start = ReadEnd(cable.Require("start"), bodies);
+  const EndInput end = ReadEnd(cable.Require("end"), bodies);
+  c.start = start.end;
+  c.end = end.end;
+  CheckEnds(start, end, bodies);
+  CheckInitialShape(c, start, end, bodies);
+
+  // initial velocity: given, else that of a driven end, else zero
+  core::Vec3 velocity = core::Vec3::Zero();
+  if (c.start.kind == core::EndKind::kDriven) velocity = c.start.velocity;
+  if (c.end.kind == core::EndKind::kDriven) velocity = c.end.velocity;
+  input.initial_velocity = cable.Vector("initial_velocity", velocity);
+  return input;
+}
+
+}  // namespace towsim::scene::internal

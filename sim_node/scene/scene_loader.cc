@@ -1,0 +1,162 @@
+#include "scene/scene_loader.h"
+
+#include <filesystem>
+#include <memory>
+
+#include <yaml-cpp/yaml.h>
+
+#include "scene/body_reader.h"
+#include "scene/cable_reader.h"
+#include "scene/overrides.h"
+#include "scene/yaml_reader.h"
+
+namespace towsim::scene {
+namespace {
+
+using internal::Field;
+using internal::MapKind;
+using internal::MapReader;
+using internal::Range;
+
+core::TimeSettings ReadTime(const Field& field) {
+  const MapReader time(field, MapKind::kTime);
+  core::TimeSettings t;
+  // all > 0 and finite
+  t.step = time.Number("step", Range::Above(0.0));
+  t.duration = time.Number("duration", Range::Above(0.0));
+  t.output_rate = time.Number("output_rate", Range::Above(0.0));
+  // at least one step
+  if (t.step > t.duration) {
+    time.Get("step").Fail("must be <= time.duration (" + internal::FormatNumber(t.duration) + ")");
+  }
+  return t;
+}
+
+core::Environment ReadEnvironment(const Field& field) {
+  const MapReader env(field, MapKind::kEnvironment);
+  core::Environment e;
+  e.water_density = env.Number("water_density", Range::Above(0.0), e.water_density);
+  e.dynamic_viscosity = env.Number("dynamic_viscosity", Range::Above(0.0), e.dynamic_viscosity);
+  e.gravity = env.Number("gravity", Range::AtLeast(0.0), e.gravity);
+  e.current = env.Vector("current", e.current);
+  return e;
+}
+
+core::IntegratorSettings ReadIntegrator(const Field& field) {
+  const MapReader integrator(field, MapKind::kIntegrator);
+  core::IntegratorSettings s;
+  if (integrator.Has("scheme")) {
+    const size_t scheme = integrator.Get("scheme").Choice({"generalized_alpha", "trapezoidal"});
+    s.scheme = scheme == 0 ? core::Scheme::kGeneralizedAlpha : core::Scheme::kTrapezoidal;
+  }
+  s.rho_inf = integrator.Number("rho_inf", Range::Closed(0.0, 1.0), s.rho_inf);
+  if (integrator.Has("coupling")) {
+    // only the strong coupling until the 6-DOF vehicles arrive
+    const Field coupling = integrator.Get("coupling");
+    if (coupling.Choice({"strong", "staggered"}) == 1) {
+      coupling.Fail("the staggered scheme comes with the 6-DOF vehicles; sphere scenes use "
+                    "coupling: strong");
+    }
+    s.coupling = core::Coupling::kStrong;
+  }
+  s.tolerance = integrator.Number("tolerance", Range::LeftOpen(0.0, 1e-2), s.tolerance);
+  s.max_iterations = integrator.Integer("max_iterations", Range::Closed(1, 1000), s.max_iterations);
+  s.max_substep_level =
+      integrator.Integer("max_substep_level", Range::Closed(0, 20), s.max_substep_level);
+  return s;
+}
+
+// Actuated bodies take scripted commands; a sphere has no actuators.
+bool TakesCommands(const core::SphereBody& /*sphere*/) { return false; }
+
+std::vector<core::ScriptEntry> ReadScript(const Field& field,
+                                          const std::vector<core::SphereBody>& bodies) {
+  std::vector<core::ScriptEntry> script;
+  for (const Field& item : field.Items()) {
+    const MapReader map(item, MapKind::kScriptEntry);
+    core::ScriptEntry entry;
+    entry.at = map.Number("at", Range::AtLeast(0.0));
+    // the body must exist and take commands
+    const Field body = map.Require("body");
+    entry.body = body.String();
+    const int index = internal::FindBody(bodies, entry.body);
+    if (index < 0) body.Fail("no such body (bodies: " + internal::BodyNames(bodies) + ")");
+    entry.thrust = map.Number("thrust", Range::Any(), 0.0);
+    entry.rudder = map.Number("rudder", Range::Any(), 0.0);
+    entry.elevator = map.Number("elevator", Range::Any(), 0.0);
+    if (!TakesCommands(bodies[index])) {
+      body.Fail(entry.body + " is a sphere, and spheres take no commands (thrust, rudder, "
+                "elevator); remove this script entry");
+    }
+    script.push_back(entry);
+  }
+  return script;
+}
+
+core::Model BuildModel(const Field& root, const std::string& base_dir) {
+  const MapReader scene(root, MapKind::kScene);
+  core::Model model;
+  // name: a non-empty string
+  const Field name = scene.Require("name");
+  model.name = name.String();
+  if (model.name.empty()) name.Fail("must not be empty");
+  model.time = ReadTime(scene.Require("time"));
+  model.environment = ReadEnvironment(scene.Get("environment"));
+
+  // bodies first: cable ends and script entries refer to them
+  const std::vector<internal::BodyInput> bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
+  for (const internal::BodyInput& body : bodies) model.bodies.push_back(body.body);
+  const internal::CableInput cable = internal::ReadCable(scene.Require("cable"), model.bodies);
+  model.cable = cable.params;
+  // bodies that give no velocity start with the cable
+  for (size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].velocity_given) model.bodies[i].velocity = cable.initial_velocity;
+  }
+
+  model.integrator = ReadIntegrator(scene.Get("integrator"));
+  model.script = ReadScript(scene.Get("script"), model.bodies);
+  return model;
+}
+
+}  // namespace
+
+core::Model LoadScene(const std::string& path, const std::vector<std::string>& overrides) {
+  std::string text;
+  std::string why;
+  if (!internal::ReadTextFile(path, &text, &why)) {
+    throw ConfigError("scene", path, path, "cannot read the scene file (" + why + ")");
+  }
+  // messages name the file by its basename; model paths are relative to its folder
+  const std::filesystem::path file(path);
+  const std::string base_dir = file.has_parent_path() ? file.parent_path().string() : ".";
+  return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+}
+
+core::Model LoadSceneFromString(const std::string& yaml, const std::string& name_for_messages,
+                                const std::string& base_dir,
+                                const std::vector<std::string>& overrides) {
+  auto source = std::make_shared<internal::Source>();
+  source->name = name_for_messages;
+
+  // the text is YAML
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
+    throw ConfigError(name_for_messages, "<not YAML>", name_for_messages + line,
+                      "not valid YAML: " + e.msg);
+  }
+  // a scene is a map of keys
+  if (!root.IsMap()) {
+    throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
+                      name_for_messages,
+                      "a scene must be a map of keys (name, time, environment, cable, bodies, "
+                      "integrator, script)");
+  }
+
+  internal::ApplyOverrides(overrides, root, source.get());
+  return BuildModel(Field(root, root.Mark(), "", source), base_dir);
+}
+
+}  // namespace towsim::scene

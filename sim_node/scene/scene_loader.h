@@ -1,0 +1,27 @@
+#pragma once
+// Scene file (YAML, DESIGN.md §5) -> validated core::Model. Every rule broken throws
+// ConfigError naming the key path, the value, file:line and the rule, e.g.
+//   cable.elements = 0 (catenary.yaml:14): must be >= 1
+// The app maps ConfigError to exit code 2.
+
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+#include "scene/config_error.h"
+
+namespace towsim::scene {
+
+// Loads the scene file at `path`. `overrides` are "key.path=value" strings from --set, applied
+// to the YAML tree before validation (value parsed as YAML; location "--set" in messages).
+// Vehicle model paths resolve against the scene file's folder. Messages name files by basename.
+// Throws ConfigError.
+core::Model LoadScene(const std::string& path, const std::vector<std::string>& overrides = {});
+
+// The same from text (tests): `name_for_messages` stands in for the file name, relative model
+// paths resolve against `base_dir`. Throws ConfigError.
+core::Model LoadSceneFromString(const std::string& yaml, const std::string& name_for_messages,
+                                const std::string& base_dir,
+                                const std::vector<std::string>& overrides = {});
+
+}  // namespace towsim::scene

@@ -1,0 +1,40 @@
+#pragma once
+// The keys a scene file and a vehicle model file may hold. One table serves the loader (reject
+// unknown keys) and the --set overrides (reject paths the loader would not read).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace towsim::scene::internal {
+
+// The map-shaped parts of a scene (and of a vehicle model file).
+enum class MapKind {
+  kScene,        // top level
+  kTime,         // time
+  kEnvironment,  // environment
+  kCable,        // cable
+  kEnd,          // cable.start, cable.end
+  kDriven,       // cable.<end>.driven
+  kBodies,       // bodies: user-chosen names -> kBody
+  kBody,         // bodies.<name>
+  kModelFile,    // the file named by bodies.<name>.model
+  kIntegrator,   // integrator
+  kScriptEntry,  // script[i]
+};
+
+// Keys a map of this kind may hold, in documentation order (empty for kBodies: any valid name).
+const std::vector<std::string>& AllowedKeys(MapKind kind);
+
+// The kind of map found under `key` in a map of kind `parent`; nullopt if that key holds a
+// value (number, string, vector or list) rather than a map of named keys.
+std::optional<MapKind> ChildMap(MapKind parent, const std::string& key);
+
+// Body names become topic and CSV names: [A-Za-z_][A-Za-z0-9_]*.
+bool IsValidName(const std::string& name);
+inline constexpr const char* kNameRule = "must match [A-Za-z_][A-Za-z0-9_]*";
+
+// "unknown key; did you mean length? (allowed: length, elements, ...)"
+std::string UnknownKeyRule(const std::string& key, const std::vector<std::string>& allowed);
+
+}  // namespace towsim::scene::internal

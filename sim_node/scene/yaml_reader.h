@@ -1,0 +1,123 @@
+#pragma once
+// Typed, located reads from a yaml-cpp tree. Every failed read throws ConfigError with the key
+// path, the value as written, where it was written (file:line, or --set) and the rule.
+// Private to the scene layer: the core and the app never see yaml-cpp.
+
+#include <limits>
+#include <memory>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "core/model.h"
+#include "scene/scene_schema.h"
+
+namespace towsim::scene::internal {
+
+// One YAML document being read: the scene file or a vehicle model file.
+struct Source {
+  std::string name;                   // file name used in messages
+  std::set<std::string> set_paths;    // key paths whose value (subtree) came from --set
+
+  // true if `path` or a key above it was given by --set
+  bool FromSet(const std::string& path) const;
+};
+
+// An interval a number must lie in; open or closed at each end.
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false;
+  bool hi_open = false;
+
+  static Range Any() { return {}; }
+  static Range Above(double lo) { return {lo, Range{}.hi, true, false}; }   // x > lo
+  static Range AtLeast(double lo) { return {lo, Range{}.hi, false, false}; }  // x >= lo
+  static Range Closed(double lo, double hi) { return {lo, hi, false, false}; }  // lo <= x <= hi
+  static Range LeftOpen(double lo, double hi) { return {lo, hi, true, false}; }  // lo < x <= hi
+
+  // the broken rule ("must be >= 1"), or empty when x lies in the range
+  std::string Violation(double x) const;
+};
+
+// Reads the file at `path` into `text`; false with the reason in `why` when it cannot.
+bool ReadTextFile(const std::string& path, std::string* text, std::string* why);
+
+// "a.b" from "a" and "b"; "b" when the parent is the root ("").
+std::string JoinPath(const std::string& parent, const std::string& key);
+// a number for messages: %g
+std::string FormatNumber(double x);
+// a vector for messages: [x, y, z]
+std::string FormatVector(const core::Vec3& v);
+// a YAML value for messages: scalars as written, collections in flow style (shortened)
+std::string FormatNode(const YAML::Node& node);
+
+// A value at a key path, present or not, with where it came from.
+class Field {
+ public:
+  Field(YAML::Node node, YAML::Mark mark, std::string path, std::shared_ptr<const Source> source);
+  // an absent key: value <missing>, location that of `parent`
+  static Field Missing(std::string path, const Field& parent);
+  // YAML::Node::operator= writes through to the tree; a Field rebinds instead
+  Field(const Field& other) = default;
+  Field& operator=(const Field& other);
+
+  bool present() const { return present_; }
+  const YAML::Node& node() const { return node_; }
+  const std::string& path() const { return path_; }
+  const std::shared_ptr<const Source>& source() const { return source_; }
+  std::string location() const;  // "file:line", "file", or "--set"
+  std::string text() const;      // the value as written, or <missing>
+
+  // throws ConfigError(path, text, location, rule)
+  [[noreturn]] void Fail(const std::string& rule) const;
+
+  // typed reads: each throws, naming the expected type, when the value does not fit
+  double Number(const Range& range = Range::Any()) const;  // a finite number in range
+  int Integer(const Range& range) const;                   // an integer in range
+  bool Boolean() const;                                    // true or false
+  std::string String() const;                              // any scalar, as text
+  core::Vec3 Vector() const;                               // [x, y, z], finite numbers
+  // one of `choices`; returns its index
+  size_t Choice(const std::vector<std::string>& choices) const;
+  // a list (null reads as empty); entries have paths "path[i]"
+  std::vector<Field> Items() const;
+
+ private:
+  YAML::Node node_;
+  YAML::Mark mark_;  // of the key for map entries, of the entry for list items
+  std::string path_;
+  std::shared_ptr<const Source> source_;
+  bool present_ = true;
+};
+
+// A map whose keys have been checked: allowed for its kind, plain names, no duplicates.
+// An absent field or a null value reads as an empty map.
+class MapReader {
+ public:
+  MapReader(const Field& field, MapKind kind);
+
+  const Field& field() const { return field_; }
+  const std::vector<std::pair<std::string, Field>>& entries() const { return entries_; }
+  bool Has(const std::string& key) const;
+  Field Get(const std::string& key) const;      // Field::Missing when absent
+  Field Require(const std::string& key) const;  // throws "is required" when absent
+
+  // required values
+  double Number(const std::string& key, const Range& range) const;
+  int Integer(const std::string& key, const Range& range) const;
+  core::Vec3 Vector(const std::string& key) const;
+  // optional values: `fallback` when the key is absent
+  double Number(const std::string& key, const Range& range, double fallback) const;
+  int Integer(const std::string& key, const Range& range, int fallback) const;
+  core::Vec3 Vector(const std::string& key, const core::Vec3& fallback) const;
+
+ private:
+  Field field_;
+  std::vector<std::pair<std::string, Field>> entries_;  // document order
+};
+
+}  // namespace towsim::scene::internal

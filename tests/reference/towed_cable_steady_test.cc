@@ -1,0 +1,143 @@
+// Self-checks of the steady towed-cable reference (towed_cable_steady.h).
+
+#include "towed_cable_steady.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "elastic_catenary.h"
+
+namespace towsim::reference {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// the paper's system at 6 m/s (the shipped steady_tow scene)
+TowedCableProblem PaperTow() { return TowedCableProblem{}; }
+
+// sphere force by hand: r = (3 * 0.2 / 4 pi)^(1/3) = 0.362783 m, pi r^2 = 0.413470 m^2,
+// drag = 0.5 * 1025 * 0.5 * 0.413470 * 36 = 3814.26 N, net weight (416 - 205) 9.81 = 2069.91 N
+TEST(TowedCableSteady, SphereForceHandValues) {
+  const Eigen::Vector3d f = SphereExternalForce(PaperTow());
+  EXPECT_NEAR(f.x(), -3814.26, 0.01);
+  EXPECT_NEAR(f.y(), 0.0, 1e-12);
+  EXPECT_NEAR(f.z(), 2069.91, 0.01);
+}
+
+// no cable loads: the cable is a straight line along the sphere's pull, stretched by
+// lambda(T) (Hooke): layback / depth = drag / net weight, length L (1 + T/EA)
+TEST(TowedCableSteady, UnloadedCableIsStraight) {
+  TowedCableProblem p = PaperTow();
+  p.cable_drag = false;
+  p.cable_weight = false;
+  p.stretch_law = StretchLaw::kHooke;
+  const TowedCableSolution s = SolveTowedCableSteady(p, 200, 20);
+  const Eigen::Vector3d f = -SphereExternalForce(p);
+  const double ea = p.youngs_modulus * 0.25 * kPi * p.diameter * p.diameter;
+  const double stretched = p.length * (1.0 + f.norm() / ea);
+  EXPECT_NEAR(s.layback, stretched * f.x() / f.norm(), 1e-9);
+  EXPECT_NEAR(s.depth, -stretched * f.z() / f.norm(), 1e-9);
+  EXPECT_NEAR(s.top_tension, f.norm(), 1e-9);
+}
+
+// weight but no cable drag: an elastic catenary hanging from the tow point with the sphere's
+// pull at its lower end; Irvine's closed form (elastic_catenary.h) with A = the sphere,
+// H = sphere drag, V_A = -(sphere net weight) must give the same top point
+TEST(TowedCableSteady, WeightOnlyIsElasticCatenary) {
+  TowedCableProblem p = PaperTow();
+  p.cable_drag = false;
+  p.stretch_law = StretchLaw::kHooke;
+  const TowedCableSolution s = SolveTowedCableSteady(p, 2000, 20);
+  const Eigen::Vector3d f_sphere = SphereExternalForce(p);
+  CatenaryProblem c;
+  c.length = p.length;
+  c.weight = (p.density - p.fluid.density) * 0.25 * kPi * p.diameter * p.diameter * p.gravity;
+  c.ea = p.youngs_modulus * 0.25 * kPi * p.diameter * p.diameter;
+  const CatenaryPoint top = CatenaryShape(c, -f_sphere.x(), -f_sphere.z(), p.length);
+  constexpr double kRk4Tol = 1e-8;  // [m], RK4 with 2000 steps on a smooth solution
+  EXPECT_NEAR(s.layback, top.x, kRk4Tol);
+  EXPECT_NEAR(s.depth, top.y, kRk4Tol);
+  EXPECT_NEAR(s.top_tension, top.tension, 1e-7);
+}
+
+// a long cable approaches the critical angle phi_c, where the normal drag balances the
+// normal component of the weight: w cos(phi) = 1/2 rho d C_Dn(Re_n) V^2 sin^2(phi)
+// (tangential drag changes T but not the angle of a straight cable). Inextensible (E huge).
+TEST(TowedCableSteady, LongCableReachesCriticalAngle) {
+  TowedCableProblem p = PaperTow();
+  p.length = 3000.0;
+  p.youngs_modulus = 1e20;
+  const TowedCableSolution s = SolveTowedCableSteady(p, 60000, 300);
+  const Eigen::Vector3d d = s.shape.back().r - s.shape[s.shape.size() - 2].r;
+  const double phi_top = std::atan2(-d.z(), d.x());
+  const double w = (p.density - p.fluid.density) * 0.25 * kPi * p.diameter * p.diameter *
+                   p.gravity;
+  const double v = p.tow_velocity.norm();
+  auto balance = [&](double phi) {
+    const double vn = v * std::sin(phi);
+    const double re = p.fluid.density * vn * p.diameter / p.fluid.dynamic_viscosity;
+    return 0.5 * p.fluid.density * p.diameter * NormalDragCoefficient(re) * vn * vn -
+           w * std::cos(phi);
+  };
+  double lo = 1e-6;
+  double hi = 0.5 * kPi;
+  for (int i = 0; i < 100; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (balance(mid) > 0.0 ? hi : lo) = mid;
+  }
+  const double phi_c = 0.5 * (lo + hi);
+  // the approach is exponential in s; after 3000 m the remaining difference is round-off
+  constexpr double kAngleTol = 1e-6;  // [rad]
+  EXPECT_NEAR(phi_top, phi_c, kAngleTol) << "phi_c = " << phi_c;
+}
+
+// RK4 convergence by halving: the paper tow at 5000 and 10000 steps
+TEST(TowedCableSteady, ConvergedInSteps) {
+  const TowedCableSolution a = SolveTowedCableSteady(PaperTow(), 5000, 20);
+  const TowedCableSolution b = SolveTowedCableSteady(PaperTow(), 10000, 20);
+  const TowedCableSolution c = SolveTowedCableSteady(PaperTow(), 20000, 20);
+  constexpr double kConvergedRel = 1e-9;  // far below the 1% the core is held to
+  EXPECT_NEAR(b.layback, c.layback, kConvergedRel * c.layback);
+  EXPECT_NEAR(b.depth, c.depth, kConvergedRel * c.depth);
+  EXPECT_NEAR(b.top_tension, c.top_tension, kConvergedRel * c.top_tension);
+  // and the error falls at order 4 (a factor ~16 per halving) unless already at round-off
+  const double e_ab = std::abs(a.depth - b.depth);
+  const double e_bc = std::abs(b.depth - c.depth);
+  std::printf("RK4 depth change 5000->10000 steps %.3e m, 10000->20000 %.3e m\n", e_ab, e_bc);
+  std::printf("paper tow 6 m/s: layback %.6f m, depth %.6f m, top tension %.4f N, "
+              "bottom tension %.4f N\n", c.layback, c.depth, c.top_tension, c.bottom_tension);
+}
+
+// Green (the core's law) vs Hooke stretch: a second-order difference, ~1.5 (T/EA)^2
+TEST(TowedCableSteady, StretchLawDifferenceIsSecondOrder) {
+  TowedCableProblem p = PaperTow();
+  const TowedCableSolution green = SolveTowedCableSteady(p);
+  p.stretch_law = StretchLaw::kHooke;
+  const TowedCableSolution hooke = SolveTowedCableSteady(p);
+  const double ea = p.youngs_modulus * 0.25 * kPi * p.diameter * p.diameter;
+  const double e = green.top_tension / ea;
+  const double bound = 1.5 * e * e;  // relative, at the largest tension
+  EXPECT_LT(std::abs(green.layback / hooke.layback - 1.0), bound);
+  EXPECT_LT(std::abs(green.depth / hooke.depth - 1.0), 10.0 * bound);
+  std::printf("stretch law: Green vs Hooke layback %.3e, depth %.3e, tension %.3e "
+              "(relative; 1.5 e_max^2 = %.3e)\n",
+              green.layback / hooke.layback - 1.0, green.depth / hooke.depth - 1.0,
+              green.top_tension / hooke.top_tension - 1.0, bound);
+}
+
+// towing along y gives the same answer, rotated (no hidden x-axis assumption)
+TEST(TowedCableSteady, RotationInvariant) {
+  TowedCableProblem p = PaperTow();
+  const TowedCableSolution x = SolveTowedCableSteady(p, 2000, 20);
+  p.tow_velocity = {0.0, 6.0, 0.0};
+  const TowedCableSolution y = SolveTowedCableSteady(p, 2000, 20);
+  EXPECT_NEAR(y.top_minus_sphere.y(), x.top_minus_sphere.x(), 1e-9);
+  EXPECT_NEAR(y.depth, x.depth, 1e-9);
+  EXPECT_NEAR(y.top_tension, x.top_tension, 1e-8);
+}
+
+}  // namespace
+}  // namespace towsim::reference

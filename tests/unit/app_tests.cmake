@@ -1,0 +1,19 @@
+# tests of the app layer: io/, app/ (sim_node) and the layering rule of the core.
+# Included from tests/unit/CMakeLists.txt.
+
+# the core includes the standard library, Eigen and itself only (reads the sources)
+towsim_add_test(core_isolation_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/core_isolation_test.cc)
+
+towsim_add_test(csv_writer_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/csv_writer_test.cc
+  LIBS towsim::io towsim::core)
+
+# runs the built sim_node binary (TOWSIM_SIM_NODE) as a process
+towsim_add_test(sim_node_cli_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sim_node_cli_test.cc)
+
+# TOWSIM_SIM_NODE names the binary in every test: build it first
+foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
+  add_dependencies(${t} sim_node)
+endforeach()

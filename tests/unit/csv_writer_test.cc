@@ -1,0 +1,225 @@
+// CsvWriter writes the four files of DESIGN §5 with exactly the documented headers and one row
+// set per Write(): a row per body, per cable node, per body and held end, and a status row.
+
+#include "io/csv_writer.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/model.h"
+#include "core/simulation.h"
+
+namespace towsim::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr char kBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
+constexpr char kCableHeader[] = "t,node,x,y,z,tension";
+constexpr char kForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
+constexpr char kStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+
+// "%.9g" keeps 9 significant digits: values read back agree to ~1e-8 relative
+constexpr double kPrintRelTol = 1e-8;
+constexpr double kPrintAbsTol = 1e-9;
+
+// a directory of its own under the system temp dir, removed at the end of the test
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            ("towsim_csv_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+using Rows = std::vector<std::vector<std::string>>;
+
+// header line and the rows split at commas (the names used here hold none)
+Rows ReadCsv(const fs::path& path, std::string* header) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::getline(in, *header);
+  Rows rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream ss(line);
+    std::string field;
+    while (std::getline(ss, field, ',')) fields.push_back(field);
+    if (!line.empty() && line.back() == ',') fields.push_back("");
+    rows.push_back(fields);
+  }
+  return rows;
+}
+
+// a 10 m, 2-element cable hanging from a fixed point with a sphere at its lower end
+core::Model TinyModel() {
+  core::Model model;
+  model.name = "tiny";
+  model.time.step = 0.01;
+  model.time.duration = 0.1;
+  model.cable.length = 10.0;
+  model.cable.elements = 2;
+  model.cable.initial = core::InitialShape::kVertical;
+  model.cable.start.kind = core::EndKind::kFixed;
+  model.cable.start.position = core::Vec3(0.0, 0.0, 0.0);
+  model.cable.end.kind = core::EndKind::kBody;
+  model.cable.end.body = 0;
+  model.cable.end.at_B = core::Vec3::Zero();
+  core::SphereBody sphere;
+  sphere.name = "ball";
+  sphere.mass = 50.0;
+  sphere.volume = 0.01;
+  sphere.position = core::Vec3(0.0, 0.0, 10.0);
+  model.bodies.push_back(sphere);
+  return model;
+}
+
+void ExpectNear(const std::string& field, double expected, const std::string& what) {
+  const double value = std::stod(field);
+  EXPECT_NEAR(value, expected, kPrintAbsTol + kPrintRelTol * std::abs(expected)) << what;
+}
+
+TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
+  TempDir tmp;
+  const fs::path dir = tmp.path() / "nested" / "out";  // created by the writer
+  const core::Model model = TinyModel();
+  core::Simulation sim(model);
+
+  CsvWriter csv(dir.string());
+  csv.Write(sim, core::StepStatus{}, 0);
+  const core::StepStatus status = sim.Step();
+  ASSERT_TRUE(status.ok()) << status.message;
+  csv.Write(sim, status, 1234);
+  csv.Close();
+
+  const int writes = 2;
+  const int nodes = model.cable.elements + 1;
+  std::string header;
+
+  const Rows bodies = ReadCsv(dir / "bodies.csv", &header);
+  EXPECT_EQ(header, kBodiesHeader);
+  ASSERT_EQ(bodies.size(), static_cast<size_t>(writes));
+  for (const auto& row : bodies) {
+    ASSERT_EQ(row.size(), 14u);
+    EXPECT_EQ(row[1], "ball");
+    for (int c : {5, 6, 7, 11, 12, 13}) EXPECT_EQ(std::stod(row[c]), 0.0) << "column " << c;
+  }
+  EXPECT_EQ(std::stod(bodies[0][0]), 0.0);
+  ExpectNear(bodies[1][0], sim.time(), "t");
+  for (int k = 0; k < 3; ++k) {
+    ExpectNear(bodies[1][2 + k], sim.body_position(0)[k], "body position");
+    ExpectNear(bodies[1][8 + k], sim.body_velocity(0)[k], "body velocity");
+  }
+
+  const Rows cable = ReadCsv(dir / "cable.csv", &header);
+  EXPECT_EQ(header, kCableHeader);
+  ASSERT_EQ(cable.size(), static_cast<size_t>(writes * nodes));
+  for (int w = 0; w < writes; ++w) {
+    for (int i = 0; i < nodes; ++i) {
+      const auto& row = cable[w * nodes + i];
+      ASSERT_EQ(row.size(), 6u);
+      EXPECT_EQ(row[1], std::to_string(i));
+    }
+  }
+  for (int i = 0; i < nodes; ++i) {
+    const auto& row = cable[nodes + i];
+    for (int k = 0; k < 3; ++k) ExpectNear(row[2 + k], sim.node_position(i)[k], "node position");
+    ExpectNear(row[5], sim.node_tension(i), "tension");
+  }
+
+  // the sphere (attached at the end) and the fixed start support
+  const Rows forces = ReadCsv(dir / "forces.csv", &header);
+  EXPECT_EQ(header, kForcesHeader);
+  ASSERT_EQ(forces.size(), static_cast<size_t>(writes * 2));
+  for (int w = 0; w < writes; ++w) {
+    EXPECT_EQ(forces[2 * w][1], "ball");
+    EXPECT_EQ(forces[2 * w + 1][1], "cable.start");
+  }
+  for (const auto& row : forces) {
+    ASSERT_EQ(row.size(), 8u);
+    for (int c : {5, 6, 7}) EXPECT_EQ(std::stod(row[c]), 0.0) << "sphere moment column " << c;
+  }
+  for (int k = 0; k < 3; ++k) {
+    ExpectNear(forces[2][2 + k], sim.body_cable_force(0)[k], "force on the body");
+    ExpectNear(forces[3][2 + k], sim.end_force(0)[k], "force on the start support");
+  }
+
+  const Rows status_rows = ReadCsv(dir / "status.csv", &header);
+  EXPECT_EQ(header, kStatusHeader);
+  ASSERT_EQ(status_rows.size(), static_cast<size_t>(writes));
+  for (const auto& row : status_rows) ASSERT_EQ(row.size(), 5u);
+  EXPECT_EQ(status_rows[0][1], "0");
+  EXPECT_EQ(status_rows[0][4], "0");
+  EXPECT_EQ(status_rows[1][1], "1");
+  EXPECT_EQ(status_rows[1][2], std::to_string(status.iterations));
+  EXPECT_EQ(status_rows[1][4], "1234");
+}
+
+TEST(CsvWriterTest, FreeEndHasNoSupportRow) {
+  TempDir tmp;
+  core::Model model = TinyModel();
+  model.cable.end = core::CableEnd{};  // free; the sphere is not attached
+  core::Simulation sim(model);
+  CsvWriter csv(tmp.path().string());
+  csv.Write(sim, core::StepStatus{}, 0);
+  csv.Close();
+
+  std::string header;
+  const Rows forces = ReadCsv(tmp.path() / "forces.csv", &header);
+  ASSERT_EQ(forces.size(), 2u);  // the (unattached) body, then the start support
+  EXPECT_EQ(forces[0][1], "ball");
+  EXPECT_EQ(forces[1][1], "cable.start");
+  for (int c : {2, 3, 4}) EXPECT_EQ(std::stod(forces[0][c]), 0.0) << "unattached body";
+}
+
+TEST(CsvWriterTest, RowsAreOnDiskBeforeClose) {
+  TempDir tmp;
+  const core::Model model = TinyModel();
+  core::Simulation sim(model);
+  CsvWriter csv(tmp.path().string());
+  csv.Write(sim, core::StepStatus{}, 0);
+  // not closed: a killed process must still leave its rows behind
+  std::string header;
+  EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), 1u);
+  EXPECT_EQ(ReadCsv(tmp.path() / "cable.csv", &header).size(), 3u);
+  csv.Close();
+  EXPECT_THROW(csv.Write(sim, core::StepStatus{}, 0), std::runtime_error);
+}
+
+TEST(CsvWriterTest, UncreatableDirectoryThrowsNamingIt) {
+  TempDir tmp;
+  const fs::path file = tmp.path() / "a_file";
+  std::ofstream(file) << "x";
+  const std::string dir = (file / "sub").string();  // below a regular file
+  try {
+    CsvWriter csv(dir);
+    FAIL() << "expected std::runtime_error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(dir), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace towsim::io

@@ -1,0 +1,166 @@
+#include "core/hydrodynamics.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/cable_loads.h"
+
+namespace towsim::core {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// paper Eq. 18, written out independently
+double Eq18(double re) {
+  if (re <= 1.0) {
+    const double s = -0.07721 + std::log(8.0 / re);
+    return 8.0 * kPi / (re * s) * (1.0 - 0.87 / (s * s));
+  }
+  if (re < 30.0) return 1.45 + 8.55 * std::pow(re, -0.9);
+  return 1.1 + 4.0 * std::pow(std::min(re, 1e5), -0.5);
+}
+
+TEST(ChooCasarella, NormalDragCoefficientMatchesEq18) {
+  constexpr double kCoefRelTol = 1e-12;
+  for (double re : {1e-6, 0.01, 0.5, 1.0, 1.5, 10.0, 29.9, 30.0, 1000.0, 1e5, 2.5e5, 1e7}) {
+    EXPECT_NEAR(NormalDragCoefficient(re), Eq18(re), kCoefRelTol * Eq18(re)) << "Re = " << re;
+  }
+  // hand-checked values: Re = 10 -> 1.45 + 8.55 * 10^-0.9 = 2.526381; Re = 1e4 -> 1.14
+  EXPECT_NEAR(NormalDragCoefficient(10.0), 2.526381, 1e-6);
+  EXPECT_NEAR(NormalDragCoefficient(1e4), 1.14, 1e-12);
+  // beyond 1e5 the 1e5 value
+  EXPECT_DOUBLE_EQ(NormalDragCoefficient(3e6), NormalDragCoefficient(1e5));
+}
+
+TEST(ChooCasarella, NusseltNumberMatchesEq19) {
+  for (double re : {0.1, 1.0, 100.0, 1e5}) {
+    const double nu = 0.55 * std::sqrt(re) + 0.084 * std::pow(re, 2.0 / 3.0);
+    EXPECT_NEAR(NusseltNumber(re), nu, 1e-12 * nu);
+  }
+  EXPECT_EQ(NusseltNumber(0.0), 0.0);
+}
+
+TEST(ChooCasarella, DragStaysFiniteAndVanishesAsTheSpeedGoesToZero) {
+  const FluidProperties fluid;
+  const Eigen::Vector3d a = Eigen::Vector3d::UnitX();
+  for (double v : {1e-9, 1e-15, 1e-200, 0.0}) {
+    const Eigen::Vector3d vel(0.3 * v, 0, v);
+    const DragResult d = CableDrag(fluid, 0.041, a, vel, true);
+    EXPECT_TRUE(d.f.allFinite() && d.df_dv.allFinite() && d.df_da.allFinite()) << v;
+    // Re < 1 (Stokes-Oseen): |f| = mu G |V_n| / 2 with G = 8 pi (1/S - 0.87/S^3) < 10
+    EXPECT_LE(d.f.norm(), 5.0 * fluid.viscosity * vel.norm()) << v;
+  }
+}
+
+TEST(CableDrag, JacobiansMatchFiniteDifferences) {
+  const FluidProperties fluid;
+  const Eigen::Vector3d a(1.003, 0.2, -0.1);
+  for (const Eigen::Vector3d& v : {Eigen::Vector3d(0.5, -1.2, 2.0),      // Re ~ 1e5
+                                   Eigen::Vector3d(1e-4, 2e-4, -1e-4),   // Re ~ 10
+                                   Eigen::Vector3d(3e-6, -1e-6, 5e-6)}) {  // Re < 1
+    const DragResult d = CableDrag(fluid, 0.041, a, v, true);
+    Eigen::Matrix3d fv, fa;
+    for (int i = 0; i < 3; ++i) {
+      const double hv = 1e-7 * v.norm(), ha = 1e-7;
+      const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
+      fv.col(i) = (CableDrag(fluid, 0.041, a, v + hv * e, false).f -
+                   CableDrag(fluid, 0.041, a, v - hv * e, false).f) / (2 * hv);
+      fa.col(i) = (CableDrag(fluid, 0.041, a + ha * e, v, false).f -
+                   CableDrag(fluid, 0.041, a - ha * e, v, false).f) / (2 * ha);
+    }
+    constexpr double kJacRelTol = 1e-5;  // central differences on a smooth branch
+    EXPECT_LT((d.df_dv - fv).norm(), kJacRelTol * fv.norm()) << v.transpose();
+    EXPECT_LT((d.df_da - fa).norm(), kJacRelTol * fa.norm() + 1e-12) << v.transpose();
+  }
+}
+
+// a straight cable along x translating along z: every point has the same relative velocity
+TEST(CableLoads, NormalTranslationGetsDragAndAddedMassOfTheRightSize) {
+  const double d = 0.041, l = 10.0, rho = 1025.0, mu = 1e-3, area = kPi * d * d / 4;
+  ElementProperties p;
+  p.length = l;
+  p.ea = 1e6;
+  const AncfElement el(p);
+  CableLoadContext ctx;
+  ctx.fluid = {rho, mu};
+  ctx.diameter = d;
+  ctx.drag = true;
+  ctx.added_mass_per_length = rho * area;  // C_a = 1
+  Vec12 e, ed, edd;
+  e << 0, 0, 0, 1, 0, 0, l, 0, 0, 1, 0, 0;
+  const double u = 2.0;
+  ed << 0, 0, u, 0, 0, 0, 0, 0, u, 0, 0, 0;
+  edd.setZero();
+  Vec12 r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  // the resultant force on the element is the sum of the position components of -R
+  const Eigen::Vector3d drag = -(r.segment<3>(0) + r.segment<3>(6));
+  const double re = rho * u * d / mu;
+  const double expected = 0.5 * rho * d * Eq18(re) * u * u * l;
+  constexpr double kLoadRelTol = 1e-12;  // the load is uniform: quadrature is exact
+  EXPECT_NEAR(drag.z(), -expected, kLoadRelTol * expected);
+  EXPECT_NEAR(drag.x(), 0.0, 1e-12 * expected);
+  EXPECT_NEAR(drag.y(), 0.0, 1e-12 * expected);
+
+  // added mass: normal acceleration -> -rho A a L; tangential acceleration -> nothing
+  ed.setZero();
+  edd << 0, 0, 3.0, 0, 0, 0, 0, 0, 3.0, 0, 0, 0;
+  r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  const Eigen::Vector3d am = -(r.segment<3>(0) + r.segment<3>(6));
+  EXPECT_NEAR(am.z(), -rho * area * 3.0 * l, kLoadRelTol * rho * area * 3.0 * l);
+  edd << 3.0, 0, 0, 0, 0, 0, 3.0, 0, 0, 0, 0, 0;
+  r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  EXPECT_LT(r.norm(), 1e-12);
+
+  // tangential towing: pi mu V_t Nu(Re_t) per unit length
+  edd.setZero();
+  ed << u, 0, 0, 0, 0, 0, u, 0, 0, 0, 0, 0;
+  r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  const double nu = 0.55 * std::sqrt(re) + 0.084 * std::pow(re, 2.0 / 3.0);
+  EXPECT_NEAR(-(r(0) + r(6)), -kPi * mu * u * nu * l, 1e-9 * kPi * mu * u * nu * l);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferences) {
+  ElementProperties p;
+  p.length = 10.0;
+  const AncfElement el(p);
+  CableLoadContext ctx;
+  ctx.diameter = 0.041;
+  ctx.drag = true;
+  ctx.added_mass_per_length = 1.35;
+  ctx.current = Eigen::Vector3d(0.3, -0.2, 0.0);
+  ctx.weight_per_length = Eigen::Vector3d(0, 0, 3.5);
+  Vec12 e, ed, edd;
+  e << 0.1, -0.2, 0.3, 0.95, 0.2, -0.1, 9.7, 1.1, -0.8, 0.9, 0.05, -0.25;
+  ed << 1.0, -0.5, 2.0, 0.1, 0.0, 0.05, 1.5, 0.2, -1.0, 0.0, 0.1, 0.0;
+  edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
+  ElementLoadJacobians jac;
+  const Vec12 r0 = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, &jac);
+  Mat12 de, dv, da;
+  const double h = 1e-6;
+  for (int i = 0; i < 12; ++i) {
+    Vec12 p1 = e, m1 = e;
+    p1(i) += h;
+    m1(i) -= h;
+    de.col(i) = (ElementLoadResidual(el, ctx, p1, ed, edd, 1.0, nullptr) -
+                 ElementLoadResidual(el, ctx, m1, ed, edd, 1.0, nullptr)) / (2 * h);
+    p1 = ed, m1 = ed;
+    p1(i) += h;
+    m1(i) -= h;
+    dv.col(i) = (ElementLoadResidual(el, ctx, e, p1, edd, 1.0, nullptr) -
+                 ElementLoadResidual(el, ctx, e, m1, edd, 1.0, nullptr)) / (2 * h);
+    p1 = edd, m1 = edd;
+    p1(i) += h;
+    m1(i) -= h;
+    da.col(i) = (ElementLoadResidual(el, ctx, e, ed, p1, 1.0, nullptr) -
+                 ElementLoadResidual(el, ctx, e, ed, m1, 1.0, nullptr)) / (2 * h);
+  }
+  constexpr double kJacRelTol = 1e-6;
+  EXPECT_LT((jac.d_de - de).norm(), kJacRelTol * de.norm());
+  EXPECT_LT((jac.d_dedot - dv).norm(), kJacRelTol * dv.norm());
+  EXPECT_LT((jac.added_mass - da).norm(), kJacRelTol * da.norm());
+  EXPECT_TRUE(r0.allFinite());
+}
+
+}  // namespace
+}  // namespace towsim::core

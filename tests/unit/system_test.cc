@@ -1,0 +1,115 @@
+#include "core/system.h"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+#include "core/initial_shape.h"
+#include "core/state.h"
+
+namespace towsim::core {
+namespace {
+
+// a sphere-ended cable with every load on, a current, a clamped start and axial damping
+Model FullModel() {
+  Model m;
+  m.cable.length = 30.0;
+  m.cable.elements = 4;
+  m.cable.axial_damping = 0.01;
+  m.cable.initial = InitialShape::kStraight;
+  m.cable.start.kind = EndKind::kDriven;
+  m.cable.start.position = Vec3(0, 0, 2);
+  m.cable.start.velocity = Vec3(1.5, 0, 0);
+  m.cable.start.clamped = true;
+  m.cable.start.slope = Vec3(-1, 0, 2).normalized();
+  m.cable.end.kind = EndKind::kBody;
+  m.cable.end.body = 0;
+  m.environment.current = Vec3(0.2, 0.4, 0.0);
+  SphereBody b;
+  b.name = "fish";
+  b.mass = 50;
+  b.volume = 0.02;
+  b.position = Vec3(-12, 1, 28);
+  m.bodies.push_back(b);
+  SphereBody free_body = b;  // unattached: its own block
+  free_body.name = "buoy";
+  free_body.position = Vec3(5, 5, 5);
+  m.bodies.push_back(free_body);
+  return m;
+}
+
+Eigen::MatrixXd Dense(BlockTridiagonal& m) {
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(m.size(), m.size());
+  for (int i = 0; i < m.num_blocks(); ++i) {
+    d.block(m.block_offset(i), m.block_offset(i), m.block_size(i), m.block_size(i)) = m.diag(i);
+    if (i + 1 < m.num_blocks()) {
+      d.block(m.block_offset(i), m.block_offset(i + 1), m.block_size(i), m.block_size(i + 1)) =
+          m.upper(i);
+      d.block(m.block_offset(i + 1), m.block_offset(i), m.block_size(i + 1), m.block_size(i)) =
+          m.lower(i);
+    }
+  }
+  return d;
+}
+
+// The assembled Newton matrix c_a dR/da + c_q dR/dq + c_v dR/dv (with Phi_q) equals finite
+// differences of the residual and constraints: checks every element, load, body and joint
+// term and the block placement.
+TEST(System, NewtonMatrixMatchesFiniteDifferences) {
+  const System sys(FullModel());
+  State s;
+  BuildInitialState(sys, &s);
+  const int n = sys.num_q(), m = sys.num_lambda();
+  // perturb away from symmetry
+  for (int i = 0; i < n; ++i) {
+    s.q(i) += 0.01 * std::sin(1.3 * i);
+    s.v(i) += 0.3 * std::cos(0.7 * i);
+    s.a(i) = 0.2 * std::sin(0.4 * i + 1);
+  }
+  s.lambda = Eigen::VectorXd::LinSpaced(m, -50, 80);
+  const JacobianCoefficients cf{1.0, 7.0, 300.0};
+  BlockTridiagonal jac = sys.MakeMatrix();
+  Eigen::VectorXd r, phi;
+  sys.Evaluate(s.q, s.v, s.a, s.lambda, 0.3, 1.0, cf, &r, &phi, &jac);
+  const Eigen::MatrixXd analytic = Dense(jac);
+
+  // finite differences in block order: x = [q; lambda] mapped through ToBlocks
+  auto stacked = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
+                     const Eigen::VectorXd& l) {
+    Eigen::VectorXd rr, pp, x;
+    sys.Evaluate(q, v, a, l, 0.3, 1.0, cf, &rr, &pp, nullptr);
+    sys.ToBlocks(rr, pp, &x);
+    return x;
+  };
+  Eigen::MatrixXd fd(n + m, n + m);
+  const double h = 1e-6;
+  for (int j = 0; j < n + m; ++j) {
+    Eigen::VectorXd unit_blocks = Eigen::VectorXd::Zero(n + m), dq, dl;
+    unit_blocks(j) = 1.0;
+    sys.FromBlocks(unit_blocks, &dq, &dl);
+    // moving q by dq moves v by c_v dq and a by c_a dq (the integrator's chain rule)
+    const Eigen::VectorXd xp = stacked(s.q + h * dq, s.v + cf.c_v * h * dq,
+                                       s.a + cf.c_a * h * dq, s.lambda + h * dl);
+    const Eigen::VectorXd xm = stacked(s.q - h * dq, s.v - cf.c_v * h * dq,
+                                       s.a - cf.c_a * h * dq, s.lambda - h * dl);
+    fd.col(j) = (xp - xm) / (2 * h);
+  }
+  constexpr double kJacRelTol = 1e-6;  // central differences
+  EXPECT_LT((analytic - fd).norm(), kJacRelTol * fd.norm())
+      << "max entry error " << (analytic - fd).cwiseAbs().maxCoeff();
+}
+
+TEST(System, ConstraintHoldsTheEndAtTheSupport) {
+  const System sys(FullModel());
+  State s;
+  BuildInitialState(sys, &s);
+  Eigen::VectorXd r, phi;
+  sys.Evaluate(s.q, s.v, s.a, s.lambda, 2.0, 1.0, {}, &r, &phi, nullptr);
+  // the driven start has moved 2 s * 1.5 m/s along x since t = 0
+  EXPECT_NEAR(phi(0), 0.0 - 3.0, 1e-12);
+  // body end: cable end at the body initially
+  const Vec3 end = s.q.segment<3>(sys.cable_dof(sys.num_nodes() - 1));
+  EXPECT_TRUE((end - Vec3(-12, 1, 28)).norm() < 1e-12);
+}
+
+}  // namespace
+}  // namespace towsim::core
