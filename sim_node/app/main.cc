@@ -12,7 +12,7 @@
 #include "app/stop_signal.h"
 #include "core/model.h"
 #include "io/csv_writer.h"
-#include "scene/load_scene.h"
+#include "scene/scene_loader.h"
 
 namespace {
 

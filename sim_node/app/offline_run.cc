@@ -62,14 +62,14 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
 
     if (!step_status.ok()) {
       progress.Finish();
-      std::fprintf(stderr, "sim_node: solver failure at t = %.9g s (step %ld): %s\n", t_before,
-                   k, step_status.message.c_str());
+      std::fprintf(stderr, "sim_node: solver failure at t = %.9g s (step %ld): %s\n", t_before, k,
+                   step_status.message.c_str());
       exit_code = 3;
       break;
     }
     status = step_status;
-    wall_us = static_cast<long>(
-        std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
+    wall_us =
+        static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
     stats.Add(status);
     t_reached = sim->time();
     if (csv != nullptr && k % stride == 0) {

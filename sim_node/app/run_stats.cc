@@ -16,9 +16,7 @@ double RunStats::iterations_mean() const {
   return steps > 0 ? static_cast<double>(iterations_sum) / static_cast<double>(steps) : 0.0;
 }
 
-double RunStats::real_time_factor() const {
-  return wall_time > 0.0 ? sim_time / wall_time : 0.0;
-}
+double RunStats::real_time_factor() const { return wall_time > 0.0 ? sim_time / wall_time : 0.0; }
 
 std::string SummaryLine(const std::string& scene_name, const RunStats& stats) {
   const double rtf = stats.real_time_factor();

@@ -64,8 +64,8 @@ void CsvWriter::Open(File& file, const char* name, const char* header) {
   file.path = (std::filesystem::path(dir_) / name).string();
   file.f = std::fopen(file.path.c_str(), "w");
   if (file.f == nullptr) {
-    throw std::runtime_error("cannot open '" + file.path + "' for writing: " +
-                             std::strerror(errno));
+    throw std::runtime_error("cannot open '" + file.path +
+                             "' for writing: " + std::strerror(errno));
   }
   std::fprintf(file.f, "%s\n", header);
   Check(file);
@@ -77,8 +77,7 @@ void CsvWriter::Check(const File& file) const {
   }
 }
 
-void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status,
-                      long wall_us) {
+void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us) {
   if (bodies_.f == nullptr) throw std::runtime_error("CsvWriter::Write after Close");
   const core::Model& model = sim.model();
   const double t = sim.time();
@@ -109,8 +108,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   for (int e = 0; e < 2; ++e) {
     if (!IsHeldSupport(*ends[e])) continue;
     const core::Vec3 f = sim.end_force(e);
-    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t, end_names[e], f.x(), f.y(),
-                 f.z());
+    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t, end_names[e], f.x(), f.y(), f.z());
   }
 
   std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld\n", t, sim.step_count(), status.iterations,

@@ -1,6 +1,7 @@
 #include "scene/cable_reader.h"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "scene/body_reader.h"
@@ -10,6 +11,13 @@ namespace {
 
 constexpr double kStraightMaxStretch = 0.01;  // initial: straight may stretch the cable by 1%
 constexpr double kVerticalTolerance = 1e-3;   // initial: vertical end offset, relative to length
+
+// a percentage for messages, 3 significant digits: 33.3
+std::string FormatPercent(double fraction) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3g", 100.0 * fraction);
+  return buffer;
+}
 
 struct EndInput {
   core::CableEnd end;
@@ -45,9 +53,10 @@ EndInput ReadEnd(const Field& field, const std::vector<core::SphereBody>& bodies
     kinds += (count++ ? " and " : "") + std::string(kind);
   }
   if (count != 1) {
-    field.Fail("must be exactly one of {fixed: [x, y, z]}, {driven: {position, velocity}}, "
-               "{free: true}, {body: <name>, at: [x, y, z]}" +
-               (count > 1 ? " (it has " + kinds + ")" : std::string()));
+    field.Fail(
+        "must be exactly one of {fixed: [x, y, z]}, {driven: {position, velocity}}, "
+        "{free: true}, {body: <name>, at: [x, y, z]}" +
+        (count > 1 ? " (it has " + kinds + ")" : std::string()));
   }
   // slope goes with fixed, at with body
   if (map.Has("slope") && !map.Has("fixed")) map.Get("slope").Fail("applies only to a fixed end");
@@ -119,8 +128,9 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
     case core::InitialShape::kVertical: {
       // the cable hangs straight down (+z) from a held start
       if (!Held(start.end)) {
-        start.field.Fail("initial: vertical hangs the cable from the start, so the start must be "
-                         "held (fixed, driven or body); use initial: static");
+        start.field.Fail(
+            "initial: vertical hangs the cable from the start, so the start must be "
+            "held (fixed, driven or body); use initial: static");
       }
       // a held end sits at start + [0, 0, length]
       if (!Held(end.end)) return;
@@ -139,8 +149,9 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
       // a straight line between two known points
       for (const EndInput* e : {&start, &end}) {
         if (!Held(e->end)) {
-          e->field.Fail("initial: straight needs both ends at known positions (fixed, driven or "
-                        "body); use initial: vertical or static");
+          e->field.Fail(
+              "initial: straight needs both ends at known positions (fixed, driven or "
+              "body); use initial: vertical or static");
         }
       }
       const core::Vec3 p_start = EndPosition(start.end, bodies);
@@ -155,8 +166,8 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
         end.field.Fail("with initial: straight the span from start " + FormatVector(p_start) +
                        " to end " + FormatVector(p_end) + " is " + FormatNumber(span) +
                        " m, which would stretch the " + FormatNumber(length) + " m cable by " +
-                       FormatNumber(100.0 * (span / length - 1.0)) + "% (at most " +
-                       FormatNumber(100.0 * kStraightMaxStretch) + "%)");
+                       FormatPercent(span / length - 1.0) + "% (at most " +
+                       FormatPercent(kStraightMaxStretch) + "%)");
       }
       return;
     }
@@ -168,10 +179,9 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
 
 }  // namespace
 
-CableInput ReadCable(const Field& field, const std::vector<core::SphereBody>& bodies) {
+core::CableParams ReadCable(const Field& field, const std::vector<core::SphereBody>& bodies) {
   const MapReader cable(field, MapKind::kCable);
-  CableInput input;
-  core::CableParams& c = input.params;
+  core::CableParams c;
 
   // material and discretization
   c.length = cable.Number("length", Range::Above(0.0));
@@ -202,8 +212,8 @@ CableInput ReadCable(const Field& field, const std::vector<core::SphereBody>& bo
   core::Vec3 velocity = core::Vec3::Zero();
   if (c.start.kind == core::EndKind::kDriven) velocity = c.start.velocity;
   if (c.end.kind == core::EndKind::kDriven) velocity = c.end.velocity;
-  input.initial_velocity = cable.Vector("initial_velocity", velocity);
-  return input;
+  c.initial_velocity = cable.Vector("initial_velocity", velocity);
+  return c;
 }
 
 }  // namespace towsim::scene::internal

@@ -9,14 +9,8 @@
 
 namespace towsim::scene::internal {
 
-struct CableInput {
-  core::CableParams params;
-  // cable.initial_velocity, or the driven end's velocity, or zero; also the velocity of bodies
-  // that give none (core::CableParams has no field for it yet)
-  core::Vec3 initial_velocity = core::Vec3::Zero();
-};
-
 // Reads and checks the cable map; `bodies` are the scene's bodies (for body ends).
-CableInput ReadCable(const Field& cable, const std::vector<core::SphereBody>& bodies);
+// initial_velocity: given, else that of a driven end, else zero.
+core::CableParams ReadCable(const Field& cable, const std::vector<core::SphereBody>& bodies);
 
 }  // namespace towsim::scene::internal

@@ -4,8 +4,7 @@
 
 namespace towsim::scene {
 
-ConfigError::ConfigError(std::string key, std::string value, std::string location,
-                         std::string rule)
+ConfigError::ConfigError(std::string key, std::string value, std::string location, std::string rule)
     : std::runtime_error(key + " = " + value + " (" + location + "): " + rule),
       key_(std::move(key)),
       value_(std::move(value)),

@@ -68,7 +68,8 @@ void ApplyOverrides(const std::vector<std::string>& overrides, YAML::Node root, 
     const std::string text = Trim(override_text.substr(equals + 1));
     const std::vector<std::string> parts = SplitPath(key);
     if (std::any_of(parts.begin(), parts.end(), [](const auto& p) { return p.empty(); })) {
-      throw ConfigError(key, text, kSet, "key path must be names joined by dots, e.g. cable.length");
+      throw ConfigError(key, text, kSet,
+                        "key path must be names joined by dots, e.g. cable.length");
     }
 
     // the value is YAML: 40, static, [0.5, 0, 0], {fixed: [0, 0, 10]}
@@ -90,11 +91,14 @@ void ApplyOverrides(const std::vector<std::string>& overrides, YAML::Node root, 
       path = JoinPath(path, part);
       // the key must be one the schema allows here
       if (kind == MapKind::kBodies) {
-        if (!IsValidName(part)) throw ConfigError(key, text, kSet, "body name " + part + " " + kNameRule);
+        if (!IsValidName(part)) {
+          throw ConfigError(key, text, kSet, "body name " + part + " " + kNameRule);
+        }
         // keys of a body need the body; a whole new body may be given as a map
         if (!last && !FindChild(node, part).IsDefined()) {
-          throw ConfigError(key, text, kSet,
-                            "no body named " + part + " in the scene (bodies: " + BodyList(node) + ")");
+          throw ConfigError(
+              key, text, kSet,
+              "no body named " + part + " in the scene (bodies: " + BodyList(node) + ")");
         }
       } else {
         const std::vector<std::string>& allowed = AllowedKeys(kind);
@@ -110,7 +114,8 @@ void ApplyOverrides(const std::vector<std::string>& overrides, YAML::Node root, 
       // only maps of named keys can be walked into
       const std::optional<MapKind> child_kind = ChildMap(kind, part);
       if (!child_kind) {
-        throw ConfigError(key, text, kSet, path + " holds a value, not keys; set it whole: " + path + "=...");
+        throw ConfigError(key, text, kSet,
+                          path + " holds a value, not keys; set it whole: " + path + "=...");
       }
       YAML::Node child = FindChild(node, part);
       if (!child.IsDefined() || child.IsNull()) {

@@ -1,10 +1,10 @@
 #pragma once
 // --set overrides: "key.path=value" strings applied to the scene tree before validation.
 
+#include <yaml-cpp/yaml.h>
+
 #include <string>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "scene/yaml_reader.h"
 

@@ -1,9 +1,9 @@
 #include "scene/scene_loader.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <filesystem>
 #include <memory>
-
-#include <yaml-cpp/yaml.h>
 
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
@@ -54,8 +54,9 @@ core::IntegratorSettings ReadIntegrator(const Field& field) {
     // only the strong coupling until the 6-DOF vehicles arrive
     const Field coupling = integrator.Get("coupling");
     if (coupling.Choice({"strong", "staggered"}) == 1) {
-      coupling.Fail("the staggered scheme comes with the 6-DOF vehicles; sphere scenes use "
-                    "coupling: strong");
+      coupling.Fail(
+          "the staggered scheme comes with the 6-DOF vehicles; sphere scenes use "
+          "coupling: strong");
     }
     s.coupling = core::Coupling::kStrong;
   }
@@ -85,7 +86,8 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field,
     entry.rudder = map.Number("rudder", Range::Any(), 0.0);
     entry.elevator = map.Number("elevator", Range::Any(), 0.0);
     if (!TakesCommands(bodies[index])) {
-      body.Fail(entry.body + " is a sphere, and spheres take no commands (thrust, rudder, "
+      body.Fail(entry.body +
+                " is a sphere, and spheres take no commands (thrust, rudder, "
                 "elevator); remove this script entry");
     }
     script.push_back(entry);
@@ -104,13 +106,13 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   model.environment = ReadEnvironment(scene.Get("environment"));
 
   // bodies first: cable ends and script entries refer to them
-  const std::vector<internal::BodyInput> bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
+  const std::vector<internal::BodyInput> bodies =
+      internal::ReadBodies(scene.Get("bodies"), base_dir);
   for (const internal::BodyInput& body : bodies) model.bodies.push_back(body.body);
-  const internal::CableInput cable = internal::ReadCable(scene.Require("cable"), model.bodies);
-  model.cable = cable.params;
+  model.cable = internal::ReadCable(scene.Require("cable"), model.bodies);
   // bodies that give no velocity start with the cable
   for (size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].velocity_given) model.bodies[i].velocity = cable.initial_velocity;
+    if (!bodies[i].velocity_given) model.bodies[i].velocity = model.cable.initial_velocity;
   }
 
   model.integrator = ReadIntegrator(scene.Get("integrator"));

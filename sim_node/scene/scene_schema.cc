@@ -72,7 +72,9 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
 
 bool IsValidName(const std::string& name) {
   if (name.empty()) return false;
-  const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  const auto letter = [](char c) {
+    return std::isalpha(static_cast<unsigned char>(c)) || c == '_';
+  };
   const auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   if (!letter(name[0])) return false;
   return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || digit(c); });

@@ -63,8 +63,12 @@ bool Source::FromSet(const std::string& path) const {
 }
 
 std::string Range::Violation(double x) const {
-  if (lo_open ? !(x > lo) : !(x >= lo)) return (lo_open ? "must be > " : "must be >= ") + FormatNumber(lo);
-  if (hi_open ? !(x < hi) : !(x <= hi)) return (hi_open ? "must be < " : "must be <= ") + FormatNumber(hi);
+  if (lo_open ? !(x > lo) : !(x >= lo)) {
+    return (lo_open ? "must be > " : "must be >= ") + FormatNumber(lo);
+  }
+  if (hi_open ? !(x < hi) : !(x <= hi)) {
+    return (hi_open ? "must be < " : "must be <= ") + FormatNumber(hi);
+  }
   return {};
 }
 
@@ -106,7 +110,8 @@ std::string FormatVector(const core::Vec3& v) {
 std::string FormatNode(const YAML::Node& node) {
   if (!node.IsDefined()) return kMissing;
   if (node.IsNull()) return "null";
-  if (node.IsScalar()) return node.Scalar().empty() ? "\"\"" : node.Scalar();
+  // quoted strings keep their quotes, so "100" is seen to be a string
+  if (node.IsScalar()) return IsQuoted(node) ? "\"" + node.Scalar() + "\"" : node.Scalar();
   YAML::Emitter out;
   out.SetMapFormat(YAML::Flow);
   out.SetSeqFormat(YAML::Flow);
@@ -227,7 +232,7 @@ MapReader::MapReader(const Field& field, MapKind kind) : field_(field) {
   if (!field.node().IsMap()) field.Fail("must be a map of keys");
   const std::vector<std::string>& allowed = AllowedKeys(kind);
   for (auto it = field.node().begin(); it != field.node().end(); ++it) {
-    const YAML::Node& key = it->first;
+    const YAML::Node key = it->first;  // a copy: it-> yields a temporary proxy
     const std::string name = key.IsScalar() ? key.Scalar() : FormatNode(key);
     Field entry(it->second, key.Mark(), JoinPath(field.path(), name), field.source());
     // keys are plain names

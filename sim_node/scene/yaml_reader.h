@@ -3,14 +3,14 @@
 // path, the value as written, where it was written (file:line, or --set) and the rule.
 // Private to the scene layer: the core and the app never see yaml-cpp.
 
+#include <yaml-cpp/yaml.h>
+
 #include <limits>
 #include <memory>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "core/model.h"
 #include "scene/scene_schema.h"
@@ -19,8 +19,8 @@ namespace towsim::scene::internal {
 
 // One YAML document being read: the scene file or a vehicle model file.
 struct Source {
-  std::string name;                   // file name used in messages
-  std::set<std::string> set_paths;    // key paths whose value (subtree) came from --set
+  std::string name;                 // file name used in messages
+  std::set<std::string> set_paths;  // key paths whose value (subtree) came from --set
 
   // true if `path` or a key above it was given by --set
   bool FromSet(const std::string& path) const;
@@ -34,9 +34,9 @@ struct Range {
   bool hi_open = false;
 
   static Range Any() { return {}; }
-  static Range Above(double lo) { return {lo, Range{}.hi, true, false}; }   // x > lo
-  static Range AtLeast(double lo) { return {lo, Range{}.hi, false, false}; }  // x >= lo
-  static Range Closed(double lo, double hi) { return {lo, hi, false, false}; }  // lo <= x <= hi
+  static Range Above(double lo) { return {lo, Range{}.hi, true, false}; }        // x > lo
+  static Range AtLeast(double lo) { return {lo, Range{}.hi, false, false}; }     // x >= lo
+  static Range Closed(double lo, double hi) { return {lo, hi, false, false}; }   // lo <= x <= hi
   static Range LeftOpen(double lo, double hi) { return {lo, hi, true, false}; }  // lo < x <= hi
 
   // the broken rule ("must be >= 1"), or empty when x lies in the range

@@ -3,12 +3,13 @@
 //
 // 200 m of the paper's cable (d 0.041 m, rho_c 1300, E 7e8) in water, pins at equal depth
 // 150 m apart. Loads: gravity, buoyancy and bending. Bending is absent from the reference;
-// it is negligible here: EI = E pi d^4 / 64 = 97.1 N m^2 against H ~ 190 N gives a bending
-// length sqrt(EI / T) ~ 0.5-0.7 m. Away from the pins the bending load EI kappa'' ~
-// EI kappa / a^2 ~ 6e-4 N/m is 2e-4 of w = 3.56 N/m; at the pins (zero moment) the catenary
-// curvature kappa_end = w H / T_end^2 ~ 4e-3 1/m is released over ~0.5 m, moving the shape by
-// ~kappa_end sqrt(EI/T)^2 ~ 1e-3 m, 2e-5 of the 60 m sag. The test also prints the core's
-// own bending-on / bending-off difference.
+// it is negligible here: EI = E pi d^4 / 64 = 97.1 N m^2 against H = 197.5 N and the catenary
+// parameter a = H / w = 55.5 m. The bending energy EI kappa^2 / 2 with kappa ~ 1 / a changes
+// the global equilibrium (H, sag) by a relative O(EI / (H a^2)) = 1.6e-4; at the pins (zero
+// moment) the end curvature w H / T_end^2 = 4e-3 1/m is released over the bending length
+// sqrt(EI / T) ~ 0.5 m, a local shape change of ~1e-3 m (2e-5 of the 59 m sag). Both are an
+// order below the 2e-3 tolerance; the test also measures the core's bending-on / -off
+// difference.
 //
 // Constitutive law: the reference uses Hooke on the engineering strain, the core Green strain
 // with true tension; at the strains here (T / EA ~ 4.5e-4) the two differ by 1.5 (T/EA)^2 ~
@@ -128,8 +129,9 @@ TEST(CatenaryCore, BendingIsNegligible) {
   Print("20 elements, no bending", b, ref);
   std::printf("bending on - off: sag %+.2e m (%+.2e rel), H %+.2e N (%+.2e rel)\n",
               a.sag - b.sag, a.sag / b.sag - 1.0, a.h - b.h, a.h / b.h - 1.0);
-  // estimate above: ~2e-5 relative; 10x margin, still 20x below the 2e-3 test tolerance
-  constexpr double kBendingRelEffect = 2e-4;
+  // estimate above: EI / (H a^2) = 1.6e-4 relative; 3x that, still 4x below the 2e-3 test
+  // tolerance
+  constexpr double kBendingRelEffect = 5e-4;
   EXPECT_NEAR(a.sag, b.sag, kBendingRelEffect * ref.sag_mid_span);
   EXPECT_NEAR(a.h, b.h, kBendingRelEffect * ref.horizontal_tension);
 }

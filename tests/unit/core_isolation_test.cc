@@ -3,6 +3,8 @@
 // This test reads every file under sim_node/core/ and names the file and line of each include
 // (or use of a thread / clock facility) that breaks the rule.
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -10,8 +12,6 @@
 #include <set>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 namespace {
 
@@ -24,8 +24,8 @@ const std::set<std::string>& StandardHeaders() {
       "algorithm", "any", "array", "atomic", "bit", "bitset", "charconv", "codecvt", "compare",
       "complex", "concepts", "deque", "exception", "execution", "filesystem", "forward_list",
       "fstream", "functional", "initializer_list", "iomanip", "ios", "iosfwd", "iostream",
-      "istream", "iterator", "limits", "list", "locale", "map", "memory", "memory_resource",
-      "new", "numbers", "numeric", "optional", "ostream", "queue", "random", "ratio", "regex",
+      "istream", "iterator", "limits", "list", "locale", "map", "memory", "memory_resource", "new",
+      "numbers", "numeric", "optional", "ostream", "queue", "random", "ratio", "regex",
       "scoped_allocator", "set", "span", "sstream", "stack", "stdexcept", "streambuf", "string",
       "string_view", "system_error", "tuple", "type_traits", "typeindex", "typeinfo",
       "unordered_map", "unordered_set", "utility", "valarray", "variant", "vector", "version",
@@ -33,20 +33,21 @@ const std::set<std::string>& StandardHeaders() {
       "thread", "chrono", "mutex", "shared_mutex", "future", "condition_variable", "stop_token",
       "semaphore", "latch", "barrier", "ctime",
       // C compatibility
-      "cassert", "cctype", "cerrno", "cfenv", "cfloat", "cinttypes", "climits", "clocale",
-      "cmath", "csetjmp", "csignal", "cstdarg", "cstddef", "cstdint", "cstdio", "cstdlib",
-      "cstring", "cuchar", "cwchar", "cwctype", "assert.h", "ctype.h", "errno.h", "fenv.h",
-      "float.h", "inttypes.h", "limits.h", "locale.h", "math.h", "setjmp.h", "signal.h",
-      "stdarg.h", "stddef.h", "stdint.h", "stdio.h", "stdlib.h", "string.h", "time.h",
-      "uchar.h", "wchar.h", "wctype.h"};
+      "cassert", "cctype", "cerrno", "cfenv", "cfloat", "cinttypes", "climits", "clocale", "cmath",
+      "csetjmp", "csignal", "cstdarg", "cstddef", "cstdint", "cstdio", "cstdlib", "cstring",
+      "cuchar", "cwchar", "cwctype", "assert.h", "ctype.h", "errno.h", "fenv.h", "float.h",
+      "inttypes.h", "limits.h", "locale.h", "math.h", "setjmp.h", "signal.h", "stdarg.h",
+      "stddef.h", "stdint.h", "stdio.h", "stdlib.h", "string.h", "time.h", "uchar.h", "wchar.h",
+      "wctype.h"};
   return kHeaders;
 }
 
 // threads and clocks: the core is a pure function of (Model, State); the app owns time
 const std::set<std::string>& ForbiddenStandardHeaders() {
   static const std::set<std::string> kHeaders = {
-      "thread", "chrono", "mutex", "shared_mutex", "future", "condition_variable", "stop_token",
-      "semaphore", "latch", "barrier", "ctime", "time.h", "signal.h", "csignal"};
+      "thread",     "chrono",    "mutex", "shared_mutex", "future", "condition_variable",
+      "stop_token", "semaphore", "latch", "barrier",      "ctime",  "time.h",
+      "signal.h",   "csignal"};
   return kHeaders;
 }
 
@@ -117,9 +118,8 @@ std::vector<Violation> ScanCore(const fs::path& core_dir, int* files_scanned) {
       if (line.find("/*") != std::string::npos && line.find("*/") == std::string::npos) {
         in_block_comment = true;
       }
-      const std::string where =
-          "sim_node/core/" + fs::relative(path, core_dir).generic_string() + ":" +
-          std::to_string(number);
+      const std::string where = "sim_node/core/" + fs::relative(path, core_dir).generic_string() +
+                                ":" + std::to_string(number);
       std::smatch match;
       if (std::regex_search(line, match, kInclude)) {
         const std::string problem = CheckInclude(match[2].str(), core_files);
@@ -151,10 +151,10 @@ TEST(CoreIsolationTest, ClassifiesIncludes) {
                          "unsupported/Eigen/AutoDiff", "core/model.h", "state.h"}) {
     EXPECT_EQ(CheckInclude(ok, core_files), "") << ok;
   }
-  for (const char* bad : {"thread", "chrono", "mutex", "future", "ctime", "dds/dds.h",
-                          "yaml-cpp/yaml.h", "io/csv_writer.h", "scene/load_scene.h",
-                          "app/progress.h", "boost/optional.hpp", "core/missing.h",
-                          "msgs/CableState.h"}) {
+  for (const char* bad :
+       {"thread", "chrono", "mutex", "future", "ctime", "dds/dds.h", "yaml-cpp/yaml.h",
+        "io/csv_writer.h", "scene/load_scene.h", "app/progress.h", "boost/optional.hpp",
+        "core/missing.h", "msgs/CableState.h"}) {
     EXPECT_NE(CheckInclude(bad, core_files), "") << bad;
   }
   EXPECT_NE(CheckCode("  auto t0 = std::chrono::steady_clock::now();"), "");

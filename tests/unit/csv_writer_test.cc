@@ -3,6 +3,7 @@
 
 #include "io/csv_writer.h"
 
+#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -13,8 +14,6 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "core/model.h"
 #include "core/simulation.h"

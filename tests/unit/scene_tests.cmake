@@ -1,0 +1,4 @@
+# tests of the scene layer (YAML -> core::Model). Included from tests/unit/CMakeLists.txt.
+towsim_add_test(scene_loader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/scene_loader_test.cc
+  LIBS towsim::scene)

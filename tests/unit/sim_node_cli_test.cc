@@ -1,0 +1,368 @@
+// The sim_node command line as scripts and users meet it (DESIGN §5): the real binary runs as
+// a process; exit codes, messages and the CSV files are checked.
+//   0 ok, 2 bad input (the message names the key), 3 solver failure, 128 + signal when stopped.
+
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <ostream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kSourceDir = TOWSIM_SOURCE_DIR;
+const std::string kSimNode = TOWSIM_SIM_NODE;
+
+// a directory of its own under the system temp dir, removed at the end of the test
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
+    for (char& c : name) {
+      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    }
+    path_ = fs::temp_directory_path() / ("towsim_cli_" + name + "_" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string ReadFile(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void WriteFile(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+std::string Quote(const std::string& s) {
+  std::string quoted = "'";
+  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+
+struct Result {
+  int exit_code = -1;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+// runs sim_node with `args`, stdout and stderr captured in files of `tmp`
+Result RunSimNode(const std::vector<std::string>& args, const fs::path& tmp) {
+  std::string command = Quote(kSimNode);
+  for (const std::string& arg : args) command += " " + Quote(arg);
+  const fs::path out = tmp / "stdout.txt";
+  const fs::path err = tmp / "stderr.txt";
+  command += " </dev/null >" + Quote(out.string()) + " 2>" + Quote(err.string());
+  const int status = std::system(command.c_str());
+  Result result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = ReadFile(out);
+  result.err = ReadFile(err);
+  return result;
+}
+
+std::vector<std::string> Lines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::stringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(line);
+  return lines;
+}
+
+size_t CountFields(const std::string& line) {
+  return static_cast<size_t>(std::count(line.begin(), line.end(), ',')) + 1;
+}
+
+// the first field (t) of every data row
+std::vector<std::string> Times(const std::vector<std::string>& lines) {
+  std::vector<std::string> times;
+  for (size_t i = 1; i < lines.size(); ++i) times.push_back(lines[i].substr(0, lines[i].find(',')));
+  return times;
+}
+
+// a small valid scene: 20 m of cable from a fixed point down to a sphere
+constexpr char kGoodScene[] = R"(name: cli_test
+time: {step: 0.05, duration: 1, output_rate: 10}
+cable:
+  length: 20
+  elements: 4
+  diameter: 0.041
+  density: 1300
+  youngs_modulus: 7.0e8
+  start: {fixed: [0, 0, 0]}
+  end: {body: ball, at: [0, 0, 0]}
+bodies:
+  ball: {type: sphere, mass: 50, volume: 0.01, position: [0, 0, 20]}
+)";
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(SimNodeCliTest, GoodSceneRuns) {
+  // the base of the broken scenes below is itself valid
+  TempDir tmp;
+  WriteFile(tmp.path() / "good.yaml", kGoodScene);
+  const Result r =
+      RunSimNode({"--scene", (tmp.path() / "good.yaml").string(), "--mode", "offline"}, tmp.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("sim_node: cli_test: 20 steps, 1 s simulated"), std::string::npos) << r.out;
+}
+
+// --- bad input: exit 2 and a message naming what is wrong ----------------------------------
+
+struct BadScene {
+  const char* name;
+  std::string yaml;  // the scene file's text
+  std::vector<std::string> extra_args;
+  std::vector<std::string> expected;  // substrings of stderr
+};
+
+// test names for ctest, instead of a byte dump
+void PrintTo(const BadScene& c, std::ostream* os) { *os << c.name; }
+
+std::vector<BadScene> BadScenes() {
+  const std::string good = kGoodScene;
+  return {
+      {"MissingKey", Replace(good, "  length: 20\n", ""), {}, {"cable.length", "is required"}},
+      {"WrongType",
+       Replace(good, "elements: 4", "elements: four"),
+       {},
+       {"cable.elements = four", "must be an integer"}},
+      {"NegativeLength",
+       Replace(good, "length: 20", "length: -20"),
+       {},
+       {"cable.length = -20", "must be > 0"}},
+      {"UnknownKey",
+       Replace(good, "length: 20", "lenght: 20"),
+       {},
+       {"cable.lenght", "unknown key", "did you mean length"}},
+      {"UnknownBody",
+       Replace(good, "body: ball", "body: fish"),
+       {},
+       {"cable.end.body = fish", "no such body"}},
+      {"NotYaml", "name: [unclosed\ncable: {length: 3\n", {}, {"scene.yaml", "not valid YAML"}},
+      {"UnknownKeyBySet", good, {"--set", "cable.lenght=3"}, {"cable.lenght", "--set"}},
+      {"WrongTypeBySet",
+       good,
+       {"--set", "cable.elements=abc"},
+       {"cable.elements = abc", "--set", "must be an integer"}},
+  };
+}
+
+class BadSceneTest : public ::testing::TestWithParam<BadScene> {};
+
+TEST_P(BadSceneTest, ExitsTwoNamingTheKey) {
+  const BadScene& c = GetParam();
+  TempDir tmp;
+  const fs::path scene = tmp.path() / "scene.yaml";
+  WriteFile(scene, c.yaml);
+  std::vector<std::string> args = {"--scene", scene.string(), "--mode",
+                                   "offline", "--csv",        (tmp.path() / "csv").string()};
+  args.insert(args.end(), c.extra_args.begin(), c.extra_args.end());
+  const Result r = RunSimNode(args, tmp.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.err.rfind("sim_node: error: ", 0), 0u) << r.err;
+  for (const std::string& text : c.expected) {
+    EXPECT_NE(r.err.find(text), std::string::npos) << "expected '" << text << "' in: " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(tmp.path() / "csv")) << "no output for a scene that does not load";
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BadSceneTest, ::testing::ValuesIn(BadScenes()),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+struct BadArgs {
+  const char* name;
+  std::vector<std::string> args;
+  std::vector<std::string> expected;  // substrings of stderr
+};
+
+void PrintTo(const BadArgs& c, std::ostream* os) { *os << c.name; }
+
+class BadArgsTest : public ::testing::TestWithParam<BadArgs> {};
+
+TEST_P(BadArgsTest, ExitsTwoWithMessage) {
+  const BadArgs& c = GetParam();
+  TempDir tmp;
+  const Result r = RunSimNode(c.args, tmp.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  for (const std::string& text : c.expected) {
+    EXPECT_NE(r.err.find(text), std::string::npos) << "expected '" << text << "' in: " << r.err;
+  }
+}
+
+const std::string kCatenary = (kSourceDir / "config/scenes/catenary.yaml").string();
+
+INSTANTIATE_TEST_SUITE_P(
+    CommandLine, BadArgsTest,
+    ::testing::Values(
+        BadArgs{"MissingScene", {"--mode", "offline"}, {"missing --scene", "usage:"}},
+        BadArgs{"UnknownFlag", {"--scene", kCatenary, "--bogus"}, {"'--bogus'", "usage:"}},
+        BadArgs{"MissingValue", {"--scene"}, {"--scene needs a value", "usage:"}},
+        BadArgs{"BadMode", {"--scene", kCatenary, "--mode", "turbo"}, {"--mode turbo"}},
+        BadArgs{"NegativeDuration", {"--scene", kCatenary, "--duration", "-1"}, {"--duration"}},
+        BadArgs{
+            "MalformedSet", {"--scene", kCatenary, "--set", "cable.elements"}, {"key.path=value"}},
+        BadArgs{"NonexistentSceneFile",
+                {"--scene", "/nonexistent/towsim/scene.yaml", "--mode", "offline"},
+                {"/nonexistent/towsim/scene.yaml", "cannot read"}},
+        BadArgs{"RealtimeNotBuilt",
+                {"--scene", kCatenary, "--mode", "realtime"},
+                {"not built yet", "--mode offline"}},
+        BadArgs{"DefaultModeIsRealtime", {"--scene", kCatenary}, {"--mode realtime"}},
+        BadArgs{"RecordNotBuilt",
+                {"--scene", kCatenary, "--mode", "offline", "--record", "x.mcap"},
+                {"--record", "not built yet"}}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SimNodeCliTest, HelpAndVersionExitZero) {
+  TempDir tmp;
+  Result r = RunSimNode({"--help"}, tmp.path());
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("usage: sim_node --scene FILE"), std::string::npos) << r.out;
+  r = RunSimNode({"--version"}, tmp.path());
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.out.find("sim_node (towsim) "), std::string::npos) << r.out;
+}
+
+// --- a good run -----------------------------------------------------------------------------
+
+TEST(SimNodeCliTest, OfflineCatenaryWritesTheFourCsvFiles) {
+  TempDir tmp;
+  const fs::path csv = tmp.path() / "csv";
+  const Result r = RunSimNode(
+      {"--scene", kCatenary, "--mode", "offline", "--duration", "1", "--csv", csv.string()},
+      tmp.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  // catenary.yaml: h = 0.05 s, so 1 s is 20 steps
+  EXPECT_NE(r.out.find("sim_node: catenary: 20 steps, 1 s simulated in "), std::string::npos)
+      << r.out;
+  EXPECT_TRUE(std::regex_search(
+      r.out,
+      std::regex(R"(\(RTF [0-9.]+\), Newton iterations mean [0-9.]+ max \d+, substeps \d+)")))
+      << r.out;
+
+  struct Expected {
+    const char* file;
+    const char* header;
+    size_t rows_per_time;  // catenary: no bodies, 21 nodes, two fixed ends
+  };
+  for (const Expected& e :
+       {Expected{"bodies.csv", "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r", 0},
+        Expected{"cable.csv", "t,node,x,y,z,tension", 21},
+        Expected{"forces.csv", "t,body,fx,fy,fz,mx,my,mz", 2},
+        Expected{"status.csv", "t,step,newton_iterations,residual,wall_us", 1}}) {
+    SCOPED_TRACE(e.file);
+    const std::vector<std::string> lines = Lines(ReadFile(csv / e.file));
+    ASSERT_FALSE(lines.empty());
+    EXPECT_EQ(lines[0], e.header);
+    // output_rate 10 Hz: t = 0, 0.1, ..., 1 -> 11 row sets
+    EXPECT_EQ(lines.size(), 1 + 11 * e.rows_per_time);
+    for (const std::string& line : lines) EXPECT_EQ(CountFields(line), CountFields(e.header));
+    if (e.rows_per_time == 0) continue;
+    const std::vector<std::string> times = Times(lines);
+    EXPECT_EQ(times.front(), "0");
+    EXPECT_EQ(times.back(), "1");
+  }
+  const std::vector<std::string> forces = Lines(ReadFile(csv / "forces.csv"));
+  EXPECT_EQ(forces[1].rfind("0,cable.start,", 0), 0u) << forces[1];
+  EXPECT_EQ(forces[2].rfind("0,cable.end,", 0), 0u) << forces[2];
+  const std::vector<std::string> status = Lines(ReadFile(csv / "status.csv"));
+  EXPECT_EQ(status[1].rfind("0,0,0,", 0), 0u) << status[1];
+  EXPECT_EQ(status.back().rfind("1,20,", 0), 0u) << status.back();
+}
+
+// --- solver failure -------------------------------------------------------------------------
+
+// One Newton iteration, no sub-stepping and a 1e-14 tolerance cannot converge on the first
+// step of the steady tow (the towing point starts moving at 6 m/s: drag makes the step
+// strongly nonlinear, the first Newton update leaves a residual of ~1e3 N), so step 1 fails,
+// deterministically.
+TEST(SimNodeCliTest, SolverFailureExitsThree) {
+  TempDir tmp;
+  const fs::path csv = tmp.path() / "csv";
+  const Result r = RunSimNode(
+      {"--scene", (kSourceDir / "config/scenes/steady_tow.yaml").string(), "--mode", "offline",
+       "--duration", "1", "--csv", csv.string(), "--set", "integrator.max_iterations=1", "--set",
+       "integrator.max_substep_level=0", "--set", "integrator.tolerance=1e-14"},
+      tmp.path());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("sim_node: solver failure at t = "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(step 1)"), std::string::npos) << r.err;
+  // the CSV holds what was written before the failure: the state at t = 0
+  const std::vector<std::string> status = Lines(ReadFile(csv / "status.csv"));
+  ASSERT_EQ(status.size(), 2u);
+  EXPECT_EQ(status[1].rfind("0,0,", 0), 0u);
+}
+
+// --- stopped by a signal --------------------------------------------------------------------
+
+// SIGTERM stops the loop at a step boundary: exit 143, summary printed, CSV complete.
+TEST(SimNodeCliTest, SigtermStopsCleanly) {
+  TempDir tmp;
+  const fs::path csv = tmp.path() / "csv";
+  const fs::path out = tmp.path() / "stdout.txt";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // a run far longer than the test: 1e6 s of steady tow
+    std::freopen(out.c_str(), "w", stdout);
+    std::freopen((tmp.path() / "stderr.txt").c_str(), "w", stderr);
+    const std::string scene = (kSourceDir / "config/scenes/steady_tow.yaml").string();
+    const std::string dir = csv.string();
+    ::execl(kSimNode.c_str(), "sim_node", "--scene", scene.c_str(), "--mode", "offline",
+            "--duration", "1e6", "--csv", dir.c_str(), static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  // wait until it is stepping (a few rows in status.csv), at most 30 s
+  constexpr auto kStartTimeout = std::chrono::seconds(30);
+  const auto deadline = std::chrono::steady_clock::now() + kStartTimeout;
+  while (Lines(ReadFile(csv / "status.csv")).size() < 3 &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ::kill(pid, SIGTERM);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 143);
+  EXPECT_NE(ReadFile(out).find("sim_node: steady_tow: "), std::string::npos) << ReadFile(out);
+  // every file ends with a complete row
+  for (const char* file : {"bodies.csv", "cable.csv", "forces.csv", "status.csv"}) {
+    const std::string text = ReadFile(csv / file);
+    ASSERT_FALSE(text.empty()) << file;
+    EXPECT_EQ(text.back(), '\n') << file;
+  }
+}
+
+}  // namespace
