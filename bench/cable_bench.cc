@@ -17,9 +17,8 @@ using towsim::core::Simulation;
 void RunScene(benchmark::State& bench, const std::string& scene, double settle_s) {
   const int elements = static_cast<int>(bench.range(0));
   const std::vector<std::string> overrides = {"cable.elements=" + std::to_string(elements)};
-  const towsim::core::Model model =
-      towsim::scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/" + scene,
-                               overrides);
+  const towsim::core::Model model = towsim::scene::LoadScene(
+      std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/" + scene, overrides);
   Simulation sim(model);
   // start from the settled state so that the measured seconds are representative
   while (sim.time() < settle_s) sim.Step();
@@ -33,8 +32,8 @@ void RunScene(benchmark::State& bench, const std::string& scene, double settle_s
       if (!s.ok()) bench.SkipWithError(s.message.c_str());
     }
   }
-  bench.counters["RTF"] = benchmark::Counter(static_cast<double>(bench.iterations()),
-                                             benchmark::Counter::kIsRate);
+  bench.counters["RTF"] =
+      benchmark::Counter(static_cast<double>(bench.iterations()), benchmark::Counter::kIsRate);
   bench.counters["newton/step"] = static_cast<double>(newton) / steps;
   bench.SetLabel(scene + ", h = " + std::to_string(model.time.step) + " s");
 }

@@ -47,8 +47,7 @@ ShapeAtPoint EvaluateShape(double xi, double l) {
   ShapeAtPoint s;
   const double x2 = xi * xi, x3 = x2 * xi;
   // paper Eq. 4
-  s.n = {1.0 - 3.0 * x2 + 2.0 * x3, l * (xi - 2.0 * x2 + x3), 3.0 * x2 - 2.0 * x3,
-         l * (x3 - x2)};
+  s.n = {1.0 - 3.0 * x2 + 2.0 * x3, l * (xi - 2.0 * x2 + x3), 3.0 * x2 - 2.0 * x3, l * (x3 - x2)};
   // d/dx = (1/l) d/dxi
   s.dn = {(-6.0 * xi + 6.0 * x2) / l, 1.0 - 4.0 * xi + 3.0 * x2, (6.0 * xi - 6.0 * x2) / l,
           3.0 * x2 - 2.0 * xi};
@@ -70,9 +69,9 @@ AncfElement::AncfElement(const ElementProperties& props) : props_(props) {
 
   // M = rho A l / 420 [156, 22l, 54, -13l; 22l, 4l^2, 13l, -3l^2; ...] (x) I3  (Eq. 7)
   Eigen::Matrix4d m;
-  m << 156, 22 * l, 54, -13 * l,  //
+  m << 156, 22 * l, 54, -13 * l,              //
       22 * l, 4 * l * l, 13 * l, -3 * l * l,  //
-      54, 13 * l, 156, -22 * l,  //
+      54, 13 * l, 156, -22 * l,               //
       -13 * l, -3 * l * l, -22 * l, 4 * l * l;
   m *= props_.mass_per_length * l / 420.0;
   mass_.setZero();
@@ -92,8 +91,8 @@ double AncfElement::StrainEnergy(const Vec12& e) const {
   return u;
 }
 
-void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force,
-                                Mat12* stiffness, Mat12* damping) const {
+void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
+                                Mat12* damping) const {
   force->setZero();
   if (stiffness) stiffness->setZero();
   if (damping) damping->setZero();
@@ -126,8 +125,7 @@ void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force
       }
     }
     // F_k = int ( S'_k u_a + S''_k u_b ) dx
-    for (int k = 0; k < 4; ++k)
-      force->segment<3>(3 * k) += wdx * (p.dn[k] * f_a + p.ddn[k] * f_b);
+    for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += wdx * (p.dn[k] * f_a + p.ddn[k] * f_b);
     if (stiffness) {
       // K_kj = int ( S'_k S'_j u_aa + S'_k S''_j u_ab + S''_k S'_j u_ba + S''_k S''_j u_bb ) dx
       for (int k = 0; k < 4; ++k)

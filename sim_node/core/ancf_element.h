@@ -33,11 +33,11 @@ struct ShapeAtPoint {
 ShapeAtPoint EvaluateShape(double xi, double l);
 
 struct ElementProperties {
-  double length = 1.0;          // l [m]
-  double ea = 0.0;              // E A [N]
-  double ei = 0.0;              // E I [N m^2] (0 switches bending off)
-  double axial_damping = 0.0;   // c [s]: N = EA (eps + c deps/dt)
-  double mass_per_length = 0.0; // rho_c A [kg/m]
+  double length = 1.0;           // l [m]
+  double ea = 0.0;               // E A [N]
+  double ei = 0.0;               // E I [N m^2] (0 switches bending off)
+  double axial_damping = 0.0;    // c [s]: N = EA (eps + c deps/dt)
+  double mass_per_length = 0.0;  // rho_c A [kg/m]
 };
 
 // Precomputed shape tables of one element length (all elements of a cable share them).

@@ -10,8 +10,8 @@ Vec12 UniformLoad(const Vec3& f, double l) {
   return q;
 }
 
-Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
-                          const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx, const Vec12& e,
+                          const Vec12& e_dot, const Vec12& e_ddot, double scale,
                           ElementLoadJacobians* jac) {
   const double l = element.props().length;
   Vec12 r = -scale * UniformLoad(ctx.weight_per_length, l);
@@ -25,10 +25,10 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
 
   for (const ShapeAtPoint& p : element.points()) {
     const Vec3 a = Interpolate(p.dn, e);
-    Vec3 f = Vec3::Zero();       // load per unit length, enters R with a minus sign
-    Mat3 f_a = Mat3::Zero();     // df/da
-    Mat3 f_v = Mat3::Zero();     // df/dr_dot
-    Mat3 m_pt = Mat3::Zero();    // added mass per length at this point
+    Vec3 f = Vec3::Zero();     // load per unit length, enters R with a minus sign
+    Mat3 f_a = Mat3::Zero();   // df/da
+    Mat3 f_v = Mat3::Zero();   // df/dr_dot
+    Mat3 m_pt = Mat3::Zero();  // added mass per length at this point
     if (ctx.drag) {
       const Vec3 v_rel = Interpolate(p.n, e_dot) - ctx.current;
       const DragResult d = CableDrag(ctx.fluid, ctx.diameter, a, v_rel, jac != nullptr);

@@ -15,10 +15,10 @@ namespace towsim::core {
 
 struct CableLoadContext {
   FluidProperties fluid;
-  double diameter = 0.0;                  // d [m]
-  double added_mass_per_length = 0.0;     // m_a = C_a rho_w A [kg/m] (0: off)
+  double diameter = 0.0;               // d [m]
+  double added_mass_per_length = 0.0;  // m_a = C_a rho_w A [kg/m] (0: off)
   bool drag = false;
-  Eigen::Vector3d current = Eigen::Vector3d::Zero();   // U [m/s]
+  Eigen::Vector3d current = Eigen::Vector3d::Zero();            // U [m/s]
   Eigen::Vector3d weight_per_length = Eigen::Vector3d::Zero();  // (rho_c - rho_w) A g e_z [N/m]
 };
 
@@ -30,8 +30,8 @@ struct ElementLoadJacobians {
 
 // Generalized load residual of one element; `scale` multiplies weight and drag (static load
 // continuation). Jacobians are filled when jac != nullptr.
-Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
-                          const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx, const Vec12& e,
+                          const Vec12& e_dot, const Vec12& e_ddot, double scale,
                           ElementLoadJacobians* jac);
 
 // Consistent generalized force of a uniform load f per unit unstretched length:

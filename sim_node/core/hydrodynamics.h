@@ -22,8 +22,8 @@ DragLaw NormalDragLaw(double re);
 DragLaw TangentialDragLaw(double re);
 
 struct FluidProperties {
-  double density = 1025.0;     // rho_w [kg/m^3]
-  double viscosity = 1.0e-3;   // mu [Pa s]
+  double density = 1025.0;    // rho_w [kg/m^3]
+  double viscosity = 1.0e-3;  // mu [Pa s]
 };
 
 // Drag per unit *stretched* length at a cable point (Eq. 17, 20), on the velocity relative to

@@ -12,9 +12,9 @@ namespace towsim::core {
 using Vec3 = Eigen::Vector3d;
 
 struct TimeSettings {
-  double step = 0.01;        // fixed step h [s]
-  double duration = 10.0;    // default run length [s]
-  double output_rate = 10.0; // CSV / publish rate [Hz]
+  double step = 0.01;         // fixed step h [s]
+  double duration = 10.0;     // default run length [s]
+  double output_rate = 10.0;  // CSV / publish rate [Hz]
 };
 
 struct Environment {
@@ -58,12 +58,12 @@ enum class InitialShape {
 };
 
 struct CableParams {
-  double length = 200.0;           // unstretched length L [m]
-  int elements = 20;               // number of ANCF elements
-  double diameter = 0.041;         // d [m]
-  double density = 1300.0;         // rho_c [kg/m^3]
-  double youngs_modulus = 7.0e8;   // E [Pa]
-  double axial_damping = 0.0;      // c in N = EA (eps + c deps/dt) [s]
+  double length = 200.0;                // unstretched length L [m]
+  int elements = 20;                    // number of ANCF elements
+  double diameter = 0.041;              // d [m]
+  double density = 1300.0;              // rho_c [kg/m^3]
+  double youngs_modulus = 7.0e8;        // E [Pa]
+  double axial_damping = 0.0;           // c in N = EA (eps + c deps/dt) [s]
   double added_mass_coefficient = 1.0;  // C_a, normal direction only (Eq. 23 has C_a = 1)
   CableLoads loads;
   InitialShape initial = InitialShape::kVertical;
@@ -99,20 +99,20 @@ enum class Coupling { kStrong, kStaggered };
 
 struct IntegratorSettings {
   Scheme scheme = Scheme::kGeneralizedAlpha;
-  double rho_inf = 0.8;      // spectral radius at infinite frequency, [0, 1]
+  double rho_inf = 0.8;  // spectral radius at infinite frequency, [0, 1]
   Coupling coupling = Coupling::kStrong;
-  double tolerance = 1.0e-8; // Newton: relative increment and residual tolerance
-  int max_iterations = 20;   // Newton iterations per (sub)step
-  int max_substep_level = 6; // halve the step at most this many times (2^6 substeps)
+  double tolerance = 1.0e-8;  // Newton: relative increment and residual tolerance
+  int max_iterations = 20;    // Newton iterations per (sub)step
+  int max_substep_level = 6;  // halve the step at most this many times (2^6 substeps)
 };
 
 // Scripted command, for bodies with actuators (none yet for spheres).
 struct ScriptEntry {
   double at = 0.0;
   std::string body;
-  double thrust = 0.0;       // [N]
-  double rudder = 0.0;       // [rad]
-  double elevator = 0.0;     // [rad]
+  double thrust = 0.0;    // [N]
+  double rudder = 0.0;    // [rad]
+  double elevator = 0.0;  // [rad]
 };
 
 struct Model {

@@ -25,8 +25,9 @@ Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)
     if (!r.ok) throw SolverError(r.message);
   }
   if (!impl_->integrator.InitializeAcceleration(&s))
-    throw SolverError("initial accelerations could not be computed: singular or non-finite "
-                      "system at t = 0 (check the cable ends and masses)");
+    throw SolverError(
+        "initial accelerations could not be computed: singular or non-finite "
+        "system at t = 0 (check the cable ends and masses)");
 }
 
 Simulation::~Simulation() = default;
@@ -58,12 +59,8 @@ int Simulation::body_dof(int body) const { return impl_->system.body_dof(body); 
 int Simulation::num_nodes() const { return impl_->system.num_nodes(); }
 int Simulation::num_bodies() const { return impl_->system.num_bodies(); }
 
-Vec3 Simulation::node_position(int i) const {
-  return impl_->state.q.segment<3>(cable_dof(i));
-}
-Vec3 Simulation::node_velocity(int i) const {
-  return impl_->state.v.segment<3>(cable_dof(i));
-}
+Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
+Vec3 Simulation::node_velocity(int i) const { return impl_->state.v.segment<3>(cable_dof(i)); }
 double Simulation::node_tension(int i) const {
   return impl_->system.NodeTension(impl_->state.q, impl_->state.v, i);
 }
@@ -88,9 +85,7 @@ Vec3 Simulation::end_force(int end) const {
 double Simulation::KineticEnergy() const {
   return impl_->system.KineticEnergy(impl_->state.q, impl_->state.v);
 }
-double Simulation::PotentialEnergy() const {
-  return impl_->system.PotentialEnergy(impl_->state.q);
-}
+double Simulation::PotentialEnergy() const { return impl_->system.PotentialEnergy(impl_->state.q); }
 double Simulation::StrainEnergy() const { return impl_->system.StrainEnergy(impl_->state.q); }
 
 }  // namespace towsim::core

@@ -58,13 +58,13 @@ class Simulation {
   long step_count() const;
 
   // --- outputs (world NED, SI) ---
-  int num_nodes() const;                 // elements + 1
-  Vec3 node_position(int i) const;       // r at node i [m]
-  Vec3 node_velocity(int i) const;       // dr/dt at node i [m/s]
-  double node_tension(int i) const;      // axial force at node i [N] (element average)
+  int num_nodes() const;             // elements + 1
+  Vec3 node_position(int i) const;   // r at node i [m]
+  Vec3 node_velocity(int i) const;   // dr/dt at node i [m/s]
+  double node_tension(int i) const;  // axial force at node i [N] (element average)
   int num_bodies() const;
-  Vec3 body_position(int b) const;       // p_WB [m]
-  Vec3 body_velocity(int b) const;       // v_WB_W [m/s]
+  Vec3 body_position(int b) const;  // p_WB [m]
+  Vec3 body_velocity(int b) const;  // v_WB_W [m/s]
   // force the cable exerts on body b (its joint multiplier, Eq. 29-30), world frame [N];
   // zero if b is not attached
   Vec3 body_cable_force(int b) const;

@@ -11,12 +11,12 @@
 namespace towsim::core {
 
 struct State {
-  double t = 0.0;          // [s]
-  Eigen::VectorXd q;       // generalized positions
-  Eigen::VectorXd v;       // generalized velocities
-  Eigen::VectorXd a;       // generalized accelerations
-  Eigen::VectorXd a_alpha; // generalized-alpha pseudo acceleration (equals a for trapezoidal)
-  Eigen::VectorXd lambda;  // constraint multipliers: start end, then end end [N]
+  double t = 0.0;           // [s]
+  Eigen::VectorXd q;        // generalized positions
+  Eigen::VectorXd v;        // generalized velocities
+  Eigen::VectorXd a;        // generalized accelerations
+  Eigen::VectorXd a_alpha;  // generalized-alpha pseudo acceleration (equals a for trapezoidal)
+  Eigen::VectorXd lambda;   // constraint multipliers: start end, then end end [N]
 };
 
 }  // namespace towsim::core

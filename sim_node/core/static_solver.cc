@@ -20,8 +20,8 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity) {
   f += 0.5 * env.water_density * c.diameter * 1.2 * rel * rel * c.length;
   for (const SphereBody& b : m.bodies)
     f += std::abs(b.mass - env.water_density * b.volume) * env.gravity +
-         0.5 * env.water_density * b.drag_coefficient * rel * rel *
-             std::pow(b.volume, 2.0 / 3.0) * 1.21;
+         0.5 * env.water_density * b.drag_coefficient * rel * rel * std::pow(b.volume, 2.0 / 3.0) *
+             1.21;
   return std::max(f, 1.0);
 }
 

@@ -24,7 +24,6 @@ struct StaticResult {
 
 // *state holds the initial guess (q) and is overwritten with the equilibrium, v = V_f on every
 // node position and body, lambda the support reactions.
-StaticResult SolveStatic(const System& system, const Eigen::Vector3d& frame_velocity,
-                         State* state);
+StaticResult SolveStatic(const System& system, const Eigen::Vector3d& frame_velocity, State* state);
 
 }  // namespace towsim::core

@@ -49,9 +49,7 @@ void Normals(const Vec3& s, Vec3* n1, Vec3* n2) {
 }  // namespace
 
 System::System(const Model& model)
-    : model_(model),
-      element_(MakeElementProperties(model.cable)),
-      loads_(MakeLoadContext(model)) {
+    : model_(model), element_(MakeElementProperties(model.cable)), loads_(MakeLoadContext(model)) {
   const int nb = num_bodies();
   const int nn = num_nodes();
   cable_offset_ = 3 * nb;
@@ -275,8 +273,7 @@ double System::PotentialEnergy(const VectorXd& q) const {
 
 double System::StrainEnergy(const VectorXd& q) const {
   double u = 0.0;
-  for (int e = 0; e < num_elements(); ++e)
-    u += element_.StrainEnergy(q.segment<12>(cable_dof(e)));
+  for (int e = 0; e < num_elements(); ++e) u += element_.StrainEnergy(q.segment<12>(cable_dof(e)));
   return u;
 }
 
@@ -305,8 +302,8 @@ std::string System::DescribeDof(int i, const VectorXd& q) const {
   }
   const int node = (i - cable_offset_) / 6;
   const Vec3 r = q.segment<3>(cable_dof(node));
-  s << "cable node " << node << " (s = " << node * element_.props().length << " m, at ["
-    << r.x() << ", " << r.y() << ", " << r.z() << "])";
+  s << "cable node " << node << " (s = " << node * element_.props().length << " m, at [" << r.x()
+    << ", " << r.y() << ", " << r.z() << "])";
   return s.str();
 }
 

@@ -53,8 +53,8 @@ class System {
   // external loads (weight, buoyancy, drag) for the static load continuation.
   void Evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
                 const Eigen::VectorXd& lambda, double t, double load_scale,
-                const JacobianCoefficients& coeffs, Eigen::VectorXd* residual,
-                Eigen::VectorXd* phi, BlockTridiagonal* jac) const;
+                const JacobianCoefficients& coeffs, Eigen::VectorXd* residual, Eigen::VectorXd* phi,
+                BlockTridiagonal* jac) const;
 
   // an empty Newton matrix with this system's block structure
   BlockTridiagonal MakeMatrix() const;

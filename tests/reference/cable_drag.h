@@ -30,7 +30,6 @@ struct Fluid {
 // drag per unit stretched length [N/m] on a cable of diameter d [m] whose unit tangent is
 // t_hat, moving with velocity V [m/s] relative to the water (cable velocity minus current)
 Eigen::Vector3d CableDragPerStretchedLength(const Fluid& fluid, double diameter,
-                                            const Eigen::Vector3d& t_hat,
-                                            const Eigen::Vector3d& V);
+                                            const Eigen::Vector3d& t_hat, const Eigen::Vector3d& V);
 
 }  // namespace towsim::reference

@@ -87,8 +87,8 @@ TEST(CantileverCore, LargeLoadIsElastica) {
   constexpr double kLargeRelTol = 5e-3;  // issue requirement, 20 elements
   const Tip tip = Solve(20, alpha);
   std::printf("alpha 5, 20 elements: v/L %.6f (ref %.6f, %+.2e), u/L %.6f (ref %.6f, %+.2e)\n",
-              tip.deflection, ref.deflection, tip.deflection / ref.deflection - 1.0,
-              tip.shortening, ref.shortening, tip.shortening / ref.shortening - 1.0);
+              tip.deflection, ref.deflection, tip.deflection / ref.deflection - 1.0, tip.shortening,
+              ref.shortening, tip.shortening / ref.shortening - 1.0);
   EXPECT_NEAR(tip.deflection, ref.deflection, kLargeRelTol * ref.deflection);
   EXPECT_NEAR(tip.shortening, ref.shortening, kLargeRelTol * ref.shortening);
 }

@@ -68,10 +68,10 @@ CatenaryProblem ReferenceProblem(const core::Model& m) {
 }
 
 struct Measured {
-  double sag;         // z of the middle node (z down: the sag below the pins) [m]
-  double h;           // |x| of the force on the start pin [N]
-  double tension;     // |force on the start pin| [N]
-  double shape_error; // max over nodes of |r_core - r_reference| [m]
+  double sag;          // z of the middle node (z down: the sag below the pins) [m]
+  double h;            // |x| of the force on the start pin [N]
+  double tension;      // |force on the start pin| [N]
+  double shape_error;  // max over nodes of |r_core - r_reference| [m]
 };
 
 Measured Measure(const core::Simulation& sim, const CatenaryProblem& p,
@@ -93,11 +93,12 @@ Measured Measure(const core::Simulation& sim, const CatenaryProblem& p,
 }
 
 void Print(const char* label, const Measured& m, const CatenarySolution& ref) {
-  std::printf("%s: sag %.5f m (ref %.5f, %+.2e), H %.4f N (ref %.4f, %+.2e), "
-              "T_end %.4f N (ref %.4f, %+.2e), max node offset %.2e m\n",
-              label, m.sag, ref.sag_mid_span, m.sag / ref.sag_mid_span - 1.0, m.h,
-              ref.horizontal_tension, m.h / ref.horizontal_tension - 1.0, m.tension,
-              ref.tension_a, m.tension / ref.tension_a - 1.0, m.shape_error);
+  std::printf(
+      "%s: sag %.5f m (ref %.5f, %+.2e), H %.4f N (ref %.4f, %+.2e), "
+      "T_end %.4f N (ref %.4f, %+.2e), max node offset %.2e m\n",
+      label, m.sag, ref.sag_mid_span, m.sag / ref.sag_mid_span - 1.0, m.h, ref.horizontal_tension,
+      m.h / ref.horizontal_tension - 1.0, m.tension, ref.tension_a, m.tension / ref.tension_a - 1.0,
+      m.shape_error);
 }
 
 TEST(CatenaryCore, TwentyElementsMatchIrvine) {
@@ -127,8 +128,8 @@ TEST(CatenaryCore, BendingIsNegligible) {
   const Measured a = Measure(core::Simulation(with), p, ref);
   const Measured b = Measure(core::Simulation(without), p, ref);
   Print("20 elements, no bending", b, ref);
-  std::printf("bending on - off: sag %+.2e m (%+.2e rel), H %+.2e N (%+.2e rel)\n",
-              a.sag - b.sag, a.sag / b.sag - 1.0, a.h - b.h, a.h / b.h - 1.0);
+  std::printf("bending on - off: sag %+.2e m (%+.2e rel), H %+.2e N (%+.2e rel)\n", a.sag - b.sag,
+              a.sag / b.sag - 1.0, a.h - b.h, a.h / b.h - 1.0);
   // estimate above: EI / (H a^2) = 1.6e-4 relative; 3x that, still 4x below the 2e-3 test
   // tolerance
   constexpr double kBendingRelEffect = 5e-4;

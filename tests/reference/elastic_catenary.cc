@@ -50,8 +50,8 @@ CatenaryPoint CatenaryShape(const CatenaryProblem& p, double h, double v, double
   const double vs = v - w * s;  // upward component of the tension at s
   CatenaryPoint pt;
   pt.x = h * s * c + (h / w) * (std::asinh(v / h) - std::asinh(vs / h));
-  pt.y = (0.5 * w * s * s - v * s) * c +
-         (h / w) * (std::hypot(1.0, vs / h) - std::hypot(1.0, v / h));
+  pt.y =
+      (0.5 * w * s * s - v * s) * c + (h / w) * (std::hypot(1.0, vs / h) - std::hypot(1.0, v / h));
   pt.tension = std::hypot(h, vs);
   return pt;
 }

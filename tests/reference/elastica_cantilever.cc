@@ -47,8 +47,7 @@ ElasticaTip SolveCantileverElastica(double alpha, int steps) {
   double r_lo = residual(lo);
   double r_hi = residual(hi);
   if (alpha > 0.0 && !(r_lo <= 0.0 && r_hi >= 0.0)) {
-    throw std::runtime_error("elastica: root not bracketed for alpha = " +
-                             std::to_string(alpha));
+    throw std::runtime_error("elastica: root not bracketed for alpha = " + std::to_string(alpha));
   }
   // bisection to near machine precision, then secant polish
   double k0 = 0.5 * (lo + hi);

@@ -13,9 +13,9 @@
 namespace towsim::reference {
 
 struct ElasticaTip {
-  double deflection = 0.0;  // v / L, tip displacement along the load
-  double shortening = 0.0;  // u / L = 1 - x_tip / L
-  double tip_angle = 0.0;   // theta(1) [rad]
+  double deflection = 0.0;      // v / L, tip displacement along the load
+  double shortening = 0.0;      // u / L = 1 - x_tip / L
+  double tip_angle = 0.0;       // theta(1) [rad]
   double root_curvature = 0.0;  // theta'(0) = alpha x_tip / L (dimensionless)
 };
 

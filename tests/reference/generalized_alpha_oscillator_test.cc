@@ -42,9 +42,10 @@ TEST(GeneralizedAlphaOscillator, SpectralRadius) {
 TEST(GeneralizedAlphaOscillator, DissipativeButNotMonotone) {
   const OscillatorEnergy a = GeneralizedAlphaOscillator(0.6, 0.05, 20000);
   const OscillatorEnergy b = GeneralizedAlphaOscillator(0.6, 0.1, 10000);
-  std::printf("rho_inf 0.6: max one-step energy rise %.3e (omega h 0.05), %.3e (0.1); "
-              "E_end / E_0 %.4f, %.4f\n", a.max_step_rise, b.max_step_rise, a.final_ratio,
-              b.final_ratio);
+  std::printf(
+      "rho_inf 0.6: max one-step energy rise %.3e (omega h 0.05), %.3e (0.1); "
+      "E_end / E_0 %.4f, %.4f\n",
+      a.max_step_rise, b.max_step_rise, a.final_ratio, b.final_ratio);
   EXPECT_LT(b.final_ratio, 1.0);
   EXPECT_NEAR(b.max_step_rise, 1.4003e-5, 1e-8);
   EXPECT_NEAR(b.max_step_rise / a.max_step_rise, 8.0, 0.5);

@@ -105,9 +105,10 @@ TEST(SwingingCableCore, TrapezoidalConservesEnergy) {
     pe_min = std::min(pe_min, sim.PotentialEnergy());
   }
   const double drift = Energy(sim) - e0;
-  std::printf("trapezoidal, h 1e-4, 20 s: energy drift at end %+.3e J, max |E - E0| %.3e J "
-              "(%.2e of dPE %.2f J); lowest PE reached %.2f J below start\n",
-              drift, max_dev, max_dev / swing, swing, e0 - pe_min);
+  std::printf(
+      "trapezoidal, h 1e-4, 20 s: energy drift at end %+.3e J, max |E - E0| %.3e J "
+      "(%.2e of dPE %.2f J); lowest PE reached %.2f J below start\n",
+      drift, max_dev, max_dev / swing, swing, e0 - pe_min);
   // the cable did swing through most of the potential drop
   EXPECT_GT(e0 - pe_min, 0.5 * swing);
   // issue requirement: below 0.1% of the potential-energy swing over 20 s
@@ -145,11 +146,12 @@ TEST(SwingingCableCore, GeneralizedAlphaDissipates) {
     e_max = std::max(e_max, e);
     e_prev = e;
   }
-  std::printf("generalized-alpha rho_inf 0.6, h 1e-3, 20 s: E_end - E0 %+.3e J (%.1f%% of dPE); "
-              "max E - E0 %+.3e J; largest one-step rise %.3e J (%.2e of dPE) at t = %.3f s; "
-              "%d of 20000 steps rose by more than %.0e dPE\n",
-              e_prev - e0, 100.0 * (e_prev - e0) / swing, e_max - e0, max_rise,
-              max_rise / swing, t_max_rise, rises, kRoundOffRel);
+  std::printf(
+      "generalized-alpha rho_inf 0.6, h 1e-3, 20 s: E_end - E0 %+.3e J (%.1f%% of dPE); "
+      "max E - E0 %+.3e J; largest one-step rise %.3e J (%.2e of dPE) at t = %.3f s; "
+      "%d of 20000 steps rose by more than %.0e dPE\n",
+      e_prev - e0, 100.0 * (e_prev - e0) / swing, e_max - e0, max_rise, max_rise / swing,
+      t_max_rise, rises, kRoundOffRel);
   EXPECT_LT(e_prev, e0);
   // never a net gain: E(t) - E0 below the round-off of a sum of ~77 J terms
   EXPECT_LE(e_max - e0, kRoundOffRel * swing);
@@ -182,8 +184,8 @@ void ConvergenceOrder(core::Scheme scheme, double rho_inf, const char* label) {
     std::printf("%s: h %.5f s, free-end error at 1 s %.3e m\n", label, h, errors.back());
   }
   const double order = FitConvergenceOrder(hs, errors);
-  std::printf("%s: fitted order %.3f (tip at 1 s: %.4f %.4f %.4f)\n", label, order,
-              reference.x(), reference.y(), reference.z());
+  std::printf("%s: fitted order %.3f (tip at 1 s: %.4f %.4f %.4f)\n", label, order, reference.x(),
+              reference.y(), reference.z());
   // issue requirement: second order; the band allows the pre-asymptotic h = 1e-2 point and
   // the reference's own error ((1/64)^2 = 2.4e-4 of the h error)
   EXPECT_GE(order, 1.8) << label;

@@ -10,14 +10,14 @@
 namespace towsim::reference {
 
 struct TautString {
-  double length = 10.0;   // unstretched L [m]
-  double span = 10.1;     // distance between the pins ell [m]
-  double ea = 1.0;        // axial stiffness EA [N]
-  double rho_a = 1.0;     // mass per unit unstretched length rho A [kg/m]
+  double length = 10.0;  // unstretched L [m]
+  double span = 10.1;    // distance between the pins ell [m]
+  double ea = 1.0;       // axial stiffness EA [N]
+  double rho_a = 1.0;    // mass per unit unstretched length rho A [kg/m]
 };
 
-double TautStringTension(const TautString& s);           // T [N]
-double TautStringMassPerLength(const TautString& s);     // mu [kg/m]
-double TautStringFirstFrequency(const TautString& s);    // f1 [Hz]
+double TautStringTension(const TautString& s);         // T [N]
+double TautStringMassPerLength(const TautString& s);   // mu [kg/m]
+double TautStringFirstFrequency(const TautString& s);  // f1 [Hz]
 
 }  // namespace towsim::reference

@@ -28,8 +28,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kLength = 10.0;  // unstretched L [m]
 constexpr double kSpan = 10.1;    // ell [m]
 constexpr double kDiameter = 0.01;
-constexpr double kEA = 1.0e4;     // [N]
-constexpr double kRhoA = 0.1;     // [kg/m]
+constexpr double kEA = 1.0e4;  // [N]
+constexpr double kRhoA = 0.1;  // [kg/m]
 
 core::Model String() {
   core::Model m;

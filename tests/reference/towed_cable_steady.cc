@@ -14,7 +14,7 @@ using Y = Eigen::Matrix<double, 6, 1>;
 
 struct Rhs {
   const TowedCableProblem& p;
-  double w;        // weight in water per unstretched length [N/m]
+  double w;  // weight in water per unstretched length [N/m]
   Eigen::Vector3d v_rel;
 
   Y operator()(const Y& y) const {
@@ -65,8 +65,7 @@ TowedCableSolution SolveTowedCableSteady(const TowedCableProblem& p, int steps, 
     throw std::runtime_error("towed cable: steps must be a positive multiple of samples");
   }
   const double area = 0.25 * kPi * p.diameter * p.diameter;
-  const Rhs rhs{p, (p.density - p.fluid.density) * area * p.gravity,
-                p.tow_velocity - p.current};
+  const Rhs rhs{p, (p.density - p.fluid.density) * area * p.gravity, p.tow_velocity - p.current};
 
   // the sphere is in equilibrium: the cable pulls it with F(0) = -(its external force)
   Y y;

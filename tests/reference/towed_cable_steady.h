@@ -26,25 +26,25 @@
 namespace towsim::reference {
 
 enum class StretchLaw {
-  kHooke,          // lambda = 1 + T / EA (engineering strain)
+  kHooke,             // lambda = 1 + T / EA (engineering strain)
   kGreenTrueTension,  // T = EA eps lambda, eps = (lambda^2 - 1) / 2 (the core's law)
 };
 
 struct TowedCableProblem {
   // cable
-  double length = 200.0;         // unstretched L [m]
-  double diameter = 0.041;       // d [m]
-  double density = 1300.0;       // rho_c [kg/m^3]
-  double youngs_modulus = 7e8;   // E [Pa]
+  double length = 200.0;        // unstretched L [m]
+  double diameter = 0.041;      // d [m]
+  double density = 1300.0;      // rho_c [kg/m^3]
+  double youngs_modulus = 7e8;  // E [Pa]
   // sphere at the lower end
-  double sphere_mass = 416.0;    // m [kg]
-  double sphere_volume = 0.2;    // V [m^3]
-  double sphere_cd = 0.5;        // C_D on pi r^2, r = (3V / 4pi)^(1/3)
+  double sphere_mass = 416.0;  // m [kg]
+  double sphere_volume = 0.2;  // V [m^3]
+  double sphere_cd = 0.5;      // C_D on pi r^2, r = (3V / 4pi)^(1/3)
   // environment and motion
   Fluid fluid;
-  double gravity = 9.81;                                 // g [m/s^2], along +z
-  Eigen::Vector3d current = Eigen::Vector3d::Zero();     // U_current [m/s]
-  Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};           // U_tow [m/s]
+  double gravity = 9.81;                              // g [m/s^2], along +z
+  Eigen::Vector3d current = Eigen::Vector3d::Zero();  // U_current [m/s]
+  Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};        // U_tow [m/s]
   // switches (for self-checks)
   bool cable_drag = true;
   bool cable_weight = true;
@@ -52,19 +52,19 @@ struct TowedCableProblem {
 };
 
 struct TowedCablePoint {
-  double s = 0.0;                                   // unstretched arc length from the sphere
-  Eigen::Vector3d r = Eigen::Vector3d::Zero();      // position relative to the sphere [m]
-  double tension = 0.0;                             // T [N]
+  double s = 0.0;                               // unstretched arc length from the sphere
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();  // position relative to the sphere [m]
+  double tension = 0.0;                         // T [N]
 };
 
 struct TowedCableSolution {
   Eigen::Vector3d top_minus_sphere = Eigen::Vector3d::Zero();  // r(L) - r(0) [m]
-  double layback = 0.0;          // x_top - x_sphere [m] (> 0: the sphere trails behind)
-  double depth = 0.0;            // z_sphere - z_top [m] (> 0: the sphere below the tow point)
-  double top_tension = 0.0;      // T(L), magnitude of the force on the tow point [N]
-  double bottom_tension = 0.0;   // T(0) [N]
+  double layback = 0.0;         // x_top - x_sphere [m] (> 0: the sphere trails behind)
+  double depth = 0.0;           // z_sphere - z_top [m] (> 0: the sphere below the tow point)
+  double top_tension = 0.0;     // T(L), magnitude of the force on the tow point [N]
+  double bottom_tension = 0.0;  // T(0) [N]
   Eigen::Vector3d top_force = Eigen::Vector3d::Zero();  // force of the cable on the tow point
-  std::vector<TowedCablePoint> shape;                    // samples, s from 0 to L
+  std::vector<TowedCablePoint> shape;                   // samples, s from 0 to L
 };
 
 // the sphere's net external force (weight - buoyancy + drag) at relative velocity V [N]

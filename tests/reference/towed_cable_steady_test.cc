@@ -73,8 +73,7 @@ TEST(TowedCableSteady, LongCableReachesCriticalAngle) {
   const TowedCableSolution s = SolveTowedCableSteady(p, 60000, 300);
   const Eigen::Vector3d d = s.shape.back().r - s.shape[s.shape.size() - 2].r;
   const double phi_top = std::atan2(-d.z(), d.x());
-  const double w = (p.density - p.fluid.density) * 0.25 * kPi * p.diameter * p.diameter *
-                   p.gravity;
+  const double w = (p.density - p.fluid.density) * 0.25 * kPi * p.diameter * p.diameter * p.gravity;
   const double v = p.tow_velocity.norm();
   auto balance = [&](double phi) {
     const double vn = v * std::sin(phi);
@@ -107,8 +106,10 @@ TEST(TowedCableSteady, ConvergedInSteps) {
   const double e_ab = std::abs(a.depth - b.depth);
   const double e_bc = std::abs(b.depth - c.depth);
   std::printf("RK4 depth change 5000->10000 steps %.3e m, 10000->20000 %.3e m\n", e_ab, e_bc);
-  std::printf("paper tow 6 m/s: layback %.6f m, depth %.6f m, top tension %.4f N, "
-              "bottom tension %.4f N\n", c.layback, c.depth, c.top_tension, c.bottom_tension);
+  std::printf(
+      "paper tow 6 m/s: layback %.6f m, depth %.6f m, top tension %.4f N, "
+      "bottom tension %.4f N\n",
+      c.layback, c.depth, c.top_tension, c.bottom_tension);
 }
 
 // Green (the core's law) vs Hooke stretch: a second-order difference, ~1.5 (T/EA)^2
@@ -122,10 +123,11 @@ TEST(TowedCableSteady, StretchLawDifferenceIsSecondOrder) {
   const double bound = 1.5 * e * e;  // relative, at the largest tension
   EXPECT_LT(std::abs(green.layback / hooke.layback - 1.0), bound);
   EXPECT_LT(std::abs(green.depth / hooke.depth - 1.0), 10.0 * bound);
-  std::printf("stretch law: Green vs Hooke layback %.3e, depth %.3e, tension %.3e "
-              "(relative; 1.5 e_max^2 = %.3e)\n",
-              green.layback / hooke.layback - 1.0, green.depth / hooke.depth - 1.0,
-              green.top_tension / hooke.top_tension - 1.0, bound);
+  std::printf(
+      "stretch law: Green vs Hooke layback %.3e, depth %.3e, tension %.3e "
+      "(relative; 1.5 e_max^2 = %.3e)\n",
+      green.layback / hooke.layback - 1.0, green.depth / hooke.depth - 1.0,
+      green.top_tension / hooke.top_tension - 1.0, bound);
 }
 
 // towing along y gives the same answer, rotated (no hidden x-axis assumption)

@@ -72,8 +72,8 @@ TEST(AncfElement, ForceIsTheGradientOfTheStrainEnergy) {
     fd(i) = (el.StrainEnergy(ep) - el.StrainEnergy(em)) / (2 * h);
   }
   constexpr double kGradRelTol = 1e-6;  // round-off of U (~1e5 J) over 2h
-  EXPECT_LT((f - fd).norm(), kGradRelTol * f.norm()) << "F = " << f.transpose()
-                                                     << "\nFD = " << fd.transpose();
+  EXPECT_LT((f - fd).norm(), kGradRelTol * f.norm())
+      << "F = " << f.transpose() << "\nFD = " << fd.transpose();
 }
 
 TEST(AncfElement, TangentIsTheDerivativeOfTheForce) {
@@ -120,8 +120,7 @@ TEST(AncfElement, ExactCurvatureOfACircularArc) {
   const AncfElement el(p);
   const double R = 50.0, l = p.length, th = l / R;
   Vec12 e;
-  e << 0, 0, 0, 1, 0, 0, R * std::sin(th), R * (1 - std::cos(th)), 0, std::cos(th),
-      std::sin(th), 0;
+  e << 0, 0, 0, 1, 0, 0, R * std::sin(th), R * (1 - std::cos(th)), 0, std::cos(th), std::sin(th), 0;
   const double expected = 0.5 * p.ei * l / (R * R);
   constexpr double kArcRelTol = 1e-3;  // (l/R)^4 = 1.6e-3 bound on the interpolation error
   EXPECT_NEAR(el.StrainEnergy(e), expected, kArcRelTol * expected);

@@ -3,7 +3,7 @@
 // This test reads every file under sim_node/core/ and names the file and line of each include
 // (or use of a thread / clock facility) that breaks the rule.
 
-#include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -12,6 +12,8 @@
 #include <set>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace {
 
@@ -142,6 +144,29 @@ TEST(CoreIsolationTest, CoreIncludesOnlyStandardLibraryEigenAndItself) {
   ASSERT_TRUE(fs::exists(core_dir / "model.h"));
   ASSERT_GE(files, 3) << "expected the core sources under " << core_dir;
   for (const Violation& v : violations) ADD_FAILURE() << v.where << ": " << v.what;
+}
+
+// the scan names file and line, on a made-up core tree
+TEST(CoreIsolationTest, ScanNamesFileAndLine) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("towsim_core_isolation_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir / "sub");
+  std::ofstream(dir / "ok.h") << "#pragma once\n#include <vector>\n#include <Eigen/Core>\n";
+  std::ofstream(dir / "sub" / "bad.cc") << "#include \"core/ok.h\"\n"
+                                           "/* #include <thread> in a comment is fine\n"
+                                           "   still a comment */\n"
+                                           "#include <chrono>\n"
+                                           "#include \"scene/scene_loader.h\"\n";
+  int files = 0;
+  const std::vector<Violation> violations = ScanCore(dir, &files);
+  fs::remove_all(dir);
+  EXPECT_EQ(files, 2);
+  ASSERT_EQ(violations.size(), 2u);
+  EXPECT_EQ(violations[0].where, "sim_node/core/sub/bad.cc:4");
+  EXPECT_NE(violations[0].what.find("<chrono>"), std::string::npos) << violations[0].what;
+  EXPECT_EQ(violations[1].where, "sim_node/core/sub/bad.cc:5");
+  EXPECT_NE(violations[1].what.find("scene/"), std::string::npos) << violations[1].what;
 }
 
 // the rule itself, on known lines

@@ -3,7 +3,6 @@
 
 #include "io/csv_writer.h"
 
-#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -14,6 +13,8 @@
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "core/model.h"
 #include "core/simulation.h"

@@ -56,8 +56,8 @@ TEST(ChooCasarella, DragStaysFiniteAndVanishesAsTheSpeedGoesToZero) {
 TEST(CableDrag, JacobiansMatchFiniteDifferences) {
   const FluidProperties fluid;
   const Eigen::Vector3d a(1.003, 0.2, -0.1);
-  for (const Eigen::Vector3d& v : {Eigen::Vector3d(0.5, -1.2, 2.0),      // Re ~ 1e5
-                                   Eigen::Vector3d(1e-4, 2e-4, -1e-4),   // Re ~ 10
+  for (const Eigen::Vector3d& v : {Eigen::Vector3d(0.5, -1.2, 2.0),        // Re ~ 1e5
+                                   Eigen::Vector3d(1e-4, 2e-4, -1e-4),     // Re ~ 10
                                    Eigen::Vector3d(3e-6, -1e-6, 5e-6)}) {  // Re < 1
     const DragResult d = CableDrag(fluid, 0.041, a, v, true);
     Eigen::Matrix3d fv, fa;
@@ -65,9 +65,11 @@ TEST(CableDrag, JacobiansMatchFiniteDifferences) {
       const double hv = 1e-7 * v.norm(), ha = 1e-7;
       const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
       fv.col(i) = (CableDrag(fluid, 0.041, a, v + hv * e, false).f -
-                   CableDrag(fluid, 0.041, a, v - hv * e, false).f) / (2 * hv);
+                   CableDrag(fluid, 0.041, a, v - hv * e, false).f) /
+                  (2 * hv);
       fa.col(i) = (CableDrag(fluid, 0.041, a + ha * e, v, false).f -
-                   CableDrag(fluid, 0.041, a - ha * e, v, false).f) / (2 * ha);
+                   CableDrag(fluid, 0.041, a - ha * e, v, false).f) /
+                  (2 * ha);
     }
     constexpr double kJacRelTol = 1e-5;  // central differences on a smooth branch
     EXPECT_LT((d.df_dv - fv).norm(), kJacRelTol * fv.norm()) << v.transpose();
@@ -143,17 +145,20 @@ TEST(CableLoads, JacobiansMatchFiniteDifferences) {
     p1(i) += h;
     m1(i) -= h;
     de.col(i) = (ElementLoadResidual(el, ctx, p1, ed, edd, 1.0, nullptr) -
-                 ElementLoadResidual(el, ctx, m1, ed, edd, 1.0, nullptr)) / (2 * h);
+                 ElementLoadResidual(el, ctx, m1, ed, edd, 1.0, nullptr)) /
+                (2 * h);
     p1 = ed, m1 = ed;
     p1(i) += h;
     m1(i) -= h;
     dv.col(i) = (ElementLoadResidual(el, ctx, e, p1, edd, 1.0, nullptr) -
-                 ElementLoadResidual(el, ctx, e, m1, edd, 1.0, nullptr)) / (2 * h);
+                 ElementLoadResidual(el, ctx, e, m1, edd, 1.0, nullptr)) /
+                (2 * h);
     p1 = edd, m1 = edd;
     p1(i) += h;
     m1(i) -= h;
     da.col(i) = (ElementLoadResidual(el, ctx, e, ed, p1, 1.0, nullptr) -
-                 ElementLoadResidual(el, ctx, e, ed, m1, 1.0, nullptr)) / (2 * h);
+                 ElementLoadResidual(el, ctx, e, ed, m1, 1.0, nullptr)) /
+                (2 * h);
   }
   constexpr double kJacRelTol = 1e-6;
   EXPECT_LT((jac.d_de - de).norm(), kJacRelTol * de.norm());

@@ -3,13 +3,14 @@
 
 #include "scene/scene_loader.h"
 
-#include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 namespace towsim::scene {
 namespace {

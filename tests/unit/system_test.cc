@@ -87,10 +87,10 @@ TEST(System, NewtonMatrixMatchesFiniteDifferences) {
     unit_blocks(j) = 1.0;
     sys.FromBlocks(unit_blocks, &dq, &dl);
     // moving q by dq moves v by c_v dq and a by c_a dq (the integrator's chain rule)
-    const Eigen::VectorXd xp = stacked(s.q + h * dq, s.v + cf.c_v * h * dq,
-                                       s.a + cf.c_a * h * dq, s.lambda + h * dl);
-    const Eigen::VectorXd xm = stacked(s.q - h * dq, s.v - cf.c_v * h * dq,
-                                       s.a - cf.c_a * h * dq, s.lambda - h * dl);
+    const Eigen::VectorXd xp =
+        stacked(s.q + h * dq, s.v + cf.c_v * h * dq, s.a + cf.c_a * h * dq, s.lambda + h * dl);
+    const Eigen::VectorXd xm =
+        stacked(s.q - h * dq, s.v - cf.c_v * h * dq, s.a - cf.c_a * h * dq, s.lambda - h * dl);
     fd.col(j) = (xp - xm) / (2 * h);
   }
   constexpr double kJacRelTol = 1e-6;  // central differences
