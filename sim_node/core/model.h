@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "core/vehicle_model.h"
+
 namespace towsim::core {
 
 using Vec3 = Eigen::Vector3d;
@@ -37,7 +39,8 @@ enum class EndKind {
   kFree,    // no constraint
   kFixed,   // r = position (Eq. 24 against the ground)
   kDriven,  // r = position + velocity * t
-  kBody,    // r = p_WB + R_WB * at_B (Eq. 24)
+  kBody,    // r = p_WB + at_B on a sphere body (Eq. 24)
+  kVehicle, // r = p_WB + R_WB * at_B on a 6-DOF vehicle (Eq. 24)
 };
 
 struct CableEnd {
@@ -47,7 +50,7 @@ struct CableEnd {
   // clamped ends also hold the cable direction: r' x slope = 0 (cantilever roots).
   bool clamped = false;
   Vec3 slope = Vec3::UnitX();  // unit direction, used when clamped
-  int body = -1;               // index into Model::bodies when kind == kBody
+  int body = -1;  // index into Model::bodies (kBody) or Model::vehicles (kVehicle)
   Vec3 at_B = Vec3::Zero();    // attachment point in the body frame [m]
 };
 
@@ -95,6 +98,10 @@ enum class Scheme {
   kTrapezoidal,       // Newmark average acceleration (= generalized-alpha, rho_inf = 1)
 };
 
+// How 6-DOF vehicles and the cable are coupled within a step:
+//   kStaggered: the paper's Fig. 7: vehicles advance with the previous step's joint force, then
+//               the cable with the vehicles' attachment points as boundary conditions;
+//   kStrong:    the same two solves iterated to convergence of the joint force within the step.
 enum class Coupling { kStrong, kStaggered };
 
 struct IntegratorSettings {
@@ -120,7 +127,8 @@ struct Model {
   TimeSettings time;
   Environment environment;
   CableParams cable;
-  std::vector<SphereBody> bodies;
+  std::vector<SphereBody> bodies;  // simple bodies, coupled in the cable's Newton solve
+  std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;
 };

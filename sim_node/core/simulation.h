@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/model.h"
+#include "core/vehicle_model.h"
 
 namespace towsim::core {
 
@@ -71,6 +72,9 @@ class Simulation {
   // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end
   Vec3 end_force(int end) const;
+
+  // joint-force iterations of the last step (kStrong; 1 for kStaggered, 0 without vehicles)
+  int coupling_iterations() const;
 
   // energies for conservation checks [J]: kinetic (cable + bodies, with added mass),
   // potential of gravity and buoyancy, elastic strain energy

@@ -1,0 +1,136 @@
+#pragma once
+// 6-DOF vehicle: parameters, state and dynamics (paper Eq. 27-28, Kirchhoff form).
+//
+// Frames: world W is NED (z down); body B has x forward, y starboard, z down, its origin O at
+// the centre of buoyancy; r_g, r_b are the CG and CB in B. nu = [u v w p q r] is the velocity
+// of O in W expressed in B, and the angular velocity of B in W expressed in B.
+// Equations (Fossen 2011 form, identical to Kirchhoff's, see
+// ../shared/reference/vehicle_hydrodynamics.md §6):
+//   (M_RB + M_A) nu_dot + C_RB(nu) nu + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta)
+//       = tau_prop + tau_surfaces + tau_cable,
+//   p_dot_W = R_WB nu_lin,  q_dot_WB = 1/2 q_WB (x) [0, omega_B],
+// with nu_r = nu - [R_WB^T U_W; 0] the velocity relative to the current U_W.
+// Dimensional coefficients (SI), as written in config/vehicles/*.yaml.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace towsim::core {
+
+using Vec3 = Eigen::Vector3d;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+// actuator channels a command can drive
+enum class Channel { kNone, kRudder, kElevator };
+
+// A fin or a wing: lift and drag on the local flow at its centre of pressure.
+//   alpha = angle of the local relative flow in the surface's (chord, normal) plane
+//           + incidence + deflection_sign * delta(channel)
+//   CL = lift_slope * alpha, limited by stall (|alpha| > stall_angle: CL falls back linearly
+//        to 0 at 2 * stall_angle, then stays 0 (flat-plate drag takes over))
+//   L = 1/2 rho S CL U_p^2 along the normal of the flow in that plane,
+//   D = 1/2 rho S (cd0 + CL^2 / (pi e AR)) U_p^2 against the flow,
+// U_p the local speed in the plane (spanwise flow ignored).
+struct LiftingSurface {
+  std::string name;
+  Channel channel = Channel::kNone;
+  Vec3 position_B = Vec3::Zero();  // centre of pressure (quarter chord) [m]
+  Vec3 normal_B = Vec3::UnitZ();   // unit normal: lift direction at zero angle (rudder: +y)
+  double area = 0.0;               // planform area S [m^2]
+  double aspect_ratio = 2.0;       // effective AR
+  double lift_slope = 0.0;         // dCL/dalpha [1/rad]; 0: Helmbold 2 pi AR/(2+sqrt(AR^2+4))
+  double oswald = 0.8;             // span efficiency e
+  double cd0 = 0.01;               // zero-lift drag coefficient
+  double stall_angle = 0.35;       // [rad]
+  double incidence = 0.0;          // fixed incidence [rad]
+  double deflection_sign = 1.0;    // +1 or -1: maps the channel command to alpha
+};
+
+struct ActuatorLimits {
+  double max_deflection = 0.5236;  // [rad]
+  double max_rate = 0.5236;        // [rad/s]
+};
+
+struct VehicleParams {
+  std::string source;   // where the numbers come from
+  double length = 1.0;  // [m]
+  double mass = 1.0;    // [kg]
+  Vec3 inertia = Vec3::Ones();  // principal inertia about the CG, [Ixx Iyy Izz] [kg m^2]
+  Vec3 r_g = Vec3::Zero();      // CG in B [m]
+  Vec3 r_b = Vec3::Zero();      // CB in B [m] (origin: usually zero)
+  double volume = 0.0;          // displaced volume [m^3] (buoyancy rho g V at r_b)
+  Mat6 added_mass = Mat6::Zero();  // M_A (positive: -X_udot, -Y_vdot, ...)
+  bool munk_moment = true;  // false: C_A without the Munk moment terms (Fossen's recipe)
+  // viscous damping, dimensional, sign as in the force (X = x_uu u|u| ...):
+  double x_uu = 0.0;                    // [kg/m]
+  double y_vv = 0.0, z_ww = 0.0;        // crossflow [kg/m]
+  double y_rr = 0.0, z_qq = 0.0;        // [kg m / rad^2]
+  double m_ww = 0.0, n_vv = 0.0;        // [kg]
+  double m_qq = 0.0, n_rr = 0.0, k_pp = 0.0;  // [kg m^2 / rad^2]
+  double y_uv = 0.0, z_uw = 0.0;        // body lift [kg/m]
+  double m_uw = 0.0, n_uv = 0.0;        // body lift moment (viscous part) [kg]
+  double y_ur = 0.0, z_uq = 0.0;        // [kg / rad]
+  double m_uq = 0.0, n_ur = 0.0;        // [kg m / rad]
+  double k_p = 0.0;                     // linear roll damping [N m s]
+  std::vector<LiftingSurface> surfaces;  // fins and wings
+  ActuatorLimits rudder, elevator;
+  // propeller (towing vehicle only): thrust along +x_B through the origin, first-order lag
+  bool has_propeller = false;
+  double max_thrust = 0.0;             // [N] (commands clamped to [-max/4, max])
+  double thrust_time_constant = 1.0;   // [s]
+};
+
+struct VehicleCommand {
+  double thrust = 0.0;    // [N]
+  double rudder = 0.0;    // [rad], positive turns the bow to starboard
+  double elevator = 0.0;  // [rad], positive pitches the bow up... see the surface signs
+};
+
+struct VehicleState {
+  Vec3 p_W = Vec3::Zero();                               // origin O in W [m]
+  Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
+  Vec6 nu = Vec6::Zero();                                // [u v w p q r], body frame
+  double thrust = 0.0;                                   // propeller state [N]
+  double rudder = 0.0, elevator = 0.0;                   // fin positions [rad]
+};
+
+// External force at a body-fixed point: the cable's joint reaction (Eq. 29-30).
+struct PointLoad {
+  Vec3 force_W0 = Vec3::Zero();  // world-frame force at the start of the step [N]
+  Vec3 force_W1 = Vec3::Zero();  // at the end of the step (linear in between)
+  Vec3 point_B = Vec3::Zero();   // application point in B [m]
+};
+
+struct VehicleDerivative {
+  Vec3 p_dot_W;
+  Vec3 omega_B;  // attitude rate: q_dot = 1/2 q (x) [0, omega_B]
+  Vec6 nu_dot;
+  double thrust_dot = 0.0, rudder_dot = 0.0, elevator_dot = 0.0;
+};
+
+struct Environment;  // model.h
+
+// the right-hand side of the vehicle ODE, with the external wrench (force_B, moment_B about O)
+VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
+                               const VehicleState& s, const VehicleCommand& cmd,
+                               const Vec3& force_B, const Vec3& moment_B);
+
+// one explicit RK4 step of length h with the point load interpolated linearly in time;
+// the quaternion is renormalized
+void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
+                    const PointLoad& load, double h, VehicleState* s);
+
+// generalized forces for diagnostics and tests, body frame, about O
+Mat6 RigidBodyMassMatrix(const VehicleParams& p);  // M_RB
+Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s);
+double VehicleKineticEnergy(const VehicleParams& p, const VehicleState& s);  // 1/2 nu^T M nu
+
+// Euler angles (roll, pitch, yaw) [rad] of q_WB, ZYX convention
+Vec3 EulerZYX(const Eigen::Quaterniond& q_WB);
+Eigen::Quaterniond QuaternionFromEulerZYX(const Vec3& rpy);
+
+}  // namespace towsim::core
