@@ -9,6 +9,10 @@ namespace {
 Vec3 SupportAtStart(const Model& m, int end) {
   const CableEnd& e = end == 0 ? m.cable.start : m.cable.end;
   if (e.kind == EndKind::kBody) return m.bodies[e.body].position + e.at_B;
+  if (e.kind == EndKind::kVehicle) {
+    const Vehicle& v = m.vehicles[e.body];
+    return v.position + QuaternionFromEulerZYX(v.euler) * e.at_B;
+  }
   return e.position;
 }
 
@@ -27,6 +31,15 @@ void BuildInitialState(const System& sys, State* s) {
   for (int b = 0; b < sys.num_bodies(); ++b) {
     s->q.segment<3>(sys.body_dof(b)) = m.bodies[b].position;
     s->v.segment<3>(sys.body_dof(b)) = m.bodies[b].velocity;
+  }
+  s->vehicles.clear();
+  for (const Vehicle& v : m.vehicles) {
+    VehicleState vs;
+    vs.p_W = v.position;
+    vs.q_WB = QuaternionFromEulerZYX(v.euler);
+    vs.nu = v.nu;
+    // actuators start at rest (no thrust, fins centred) and follow the commands from t = 0
+    s->vehicles.push_back(vs);
   }
 
   const Vec3 p0 = SupportAtStart(m, 0);

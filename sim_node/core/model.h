@@ -102,6 +102,10 @@ enum class Scheme {
 //   kStaggered: the paper's Fig. 7: vehicles advance with the previous step's joint force, then
 //               the cable with the vehicles' attachment points as boundary conditions;
 //   kStrong:    the same two solves iterated to convergence of the joint force within the step.
+// How 6-DOF vehicles and the cable are coupled within a step (vehicle_coupling.h):
+//   kStaggered: the paper's Fig. 7: vehicles advance with the previous step's joint force, then
+//               the cable with the vehicles' attachment points as boundary conditions;
+//   kStrong:    the same two solves iterated to convergence of the joint force within the step.
 enum class Coupling { kStrong, kStaggered };
 
 struct IntegratorSettings {
@@ -111,12 +115,39 @@ struct IntegratorSettings {
   double tolerance = 1.0e-8;  // Newton: relative increment and residual tolerance
   int max_iterations = 20;    // Newton iterations per (sub)step
   int max_substep_level = 6;  // halve the step at most this many times (2^6 substeps)
+  int max_coupling_iterations = 30;  // kStrong: joint-force iterations per step
 };
 
-// Scripted command, for bodies with actuators (none yet for spheres).
+// A 6-DOF vehicle of the scene (its model from config/vehicles/*.yaml).
+struct Vehicle {
+  std::string name;
+  VehicleParams params;
+  Vec3 position = Vec3::Zero();  // initial p_WB (body origin) [m]
+  Vec3 euler = Vec3::Zero();     // initial roll, pitch, yaw (ZYX) [rad]
+  Vec6 nu = Vec6::Zero();        // initial [u v w p q r] in the body frame
+  VehicleCommand command;        // command held from t = 0 until the script or a controller
+};
+
+// Condition of a script entry: <vehicle>.<quantity> <op> <value>, e.g. tow_vehicle.yaw_deg >= 170
+struct ScriptCondition {
+  enum Quantity { kX, kY, kZ, kRollDeg, kPitchDeg, kYawDeg, kU, kV, kW, kP, kQ, kR, kSpeed };
+  enum Op { kGreaterEqual, kLessEqual, kGreater, kLess };
+  int vehicle = -1;  // index into Model::vehicles
+  Quantity quantity = kYawDeg;
+  Op op = kGreaterEqual;
+  double value = 0.0;  // in the quantity's unit (m, deg, m/s, rad/s)
+};
+
+// Scripted command (offline; controllers replace it on DDS). Fires once: at time `at`, or, when
+// has_condition, the first step at which the condition holds (and t >= at). Only the given
+// fields change the vehicle's command.
 struct ScriptEntry {
-  double at = 0.0;
+  double at = 0.0;  // [s]
+  bool has_condition = false;
+  ScriptCondition condition;
   std::string body;
+  int vehicle = -1;  // index into Model::vehicles
+  bool set_thrust = false, set_rudder = false, set_elevator = false;
   double thrust = 0.0;    // [N]
   double rudder = 0.0;    // [rad]
   double elevator = 0.0;  // [rad]

@@ -5,21 +5,27 @@
 #include "core/state.h"
 #include "core/static_solver.h"
 #include "core/system.h"
+#include "core/vehicle_coupling.h"
 
 namespace towsim::core {
 
 struct Simulation::Impl {
-  explicit Impl(const Model& m) : system(m), integrator(system) {}
+  explicit Impl(const Model& m) : system(m), integrator(system), coupling(&system, &integrator) {}
   System system;
   Integrator integrator;
+  VehicleCoupling coupling;
   State state;
+  std::vector<VehicleCommand> commands;
   long steps = 0;
+  int coupling_iterations = 0;
 };
 
 Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) {
-  const System& sys = impl_->system;
+  System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
+  for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
+  impl_->coupling.HoldSupports(s);
   if (model.cable.initial == InitialShape::kStatic) {
     const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s);
     if (!r.ok) throw SolverError(r.message);
@@ -37,7 +43,14 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); }
 
 StepStatus Simulation::StepBy(double h) {
-  StepStatus s = impl_->integrator.Step(&impl_->state, h);
+  StepStatus s;
+  if (impl_->system.model().vehicles.empty()) {
+    s = impl_->integrator.Step(&impl_->state, h);
+    impl_->coupling_iterations = 0;
+  } else {
+    s = impl_->coupling.Step(&impl_->state, impl_->commands, h);
+    impl_->coupling_iterations = impl_->coupling.last_iterations();
+  }
   if (s.ok()) ++impl_->steps;
   return s;
 }
@@ -47,9 +60,11 @@ const System& Simulation::system() const { return impl_->system; }
 const State& Simulation::state() const { return impl_->state; }
 double Simulation::time() const { return impl_->state.t; }
 long Simulation::step_count() const { return impl_->steps; }
+int Simulation::coupling_iterations() const { return impl_->coupling_iterations; }
 
 void Simulation::SetState(const State& state) {
   impl_->state = state;
+  impl_->coupling.HoldSupports(impl_->state);
   if (!impl_->integrator.InitializeAcceleration(&impl_->state))
     throw SolverError("SetState: accelerations could not be computed for the given state");
 }
@@ -57,23 +72,85 @@ void Simulation::SetState(const State& state) {
 int Simulation::cable_dof(int node) const { return impl_->system.cable_dof(node); }
 int Simulation::body_dof(int body) const { return impl_->system.body_dof(body); }
 int Simulation::num_nodes() const { return impl_->system.num_nodes(); }
-int Simulation::num_bodies() const { return impl_->system.num_bodies(); }
+int Simulation::num_spheres() const { return impl_->system.num_bodies(); }
+int Simulation::num_vehicles() const { return static_cast<int>(model().vehicles.size()); }
+int Simulation::num_bodies() const { return num_spheres() + num_vehicles(); }
+bool Simulation::body_is_vehicle(int b) const { return b >= num_spheres(); }
 
-Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
-Vec3 Simulation::node_velocity(int i) const { return impl_->state.v.segment<3>(cable_dof(i)); }
+const std::string& Simulation::body_name(int b) const {
+  return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().bodies[b].name;
+}
+
+Vec3 Simulation::node_position(int i) const {
+  return impl_->state.q.segment<3>(cable_dof(i));
+}
+Vec3 Simulation::node_velocity(int i) const {
+  return impl_->state.v.segment<3>(cable_dof(i));
+}
 double Simulation::node_tension(int i) const {
   return impl_->system.NodeTension(impl_->state.q, impl_->state.v, i);
 }
-Vec3 Simulation::body_position(int b) const { return impl_->state.q.segment<3>(body_dof(b)); }
-Vec3 Simulation::body_velocity(int b) const { return impl_->state.v.segment<3>(body_dof(b)); }
+
+Vec3 Simulation::body_position(int b) const {
+  if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).p_W;
+  return impl_->state.q.segment<3>(body_dof(b));
+}
+
+Vec3 Simulation::body_velocity(int b) const {
+  if (body_is_vehicle(b)) {
+    const VehicleState& vs = vehicle_state(b - num_spheres());
+    return vs.q_WB * Vec3(vs.nu.head<3>());
+  }
+  return impl_->state.v.segment<3>(body_dof(b));
+}
+
+Eigen::Quaterniond Simulation::body_attitude(int b) const {
+  if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).q_WB;
+  return Eigen::Quaterniond::Identity();
+}
+
+Vec6 Simulation::body_twist(int b) const {
+  if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).nu;
+  Vec6 t = Vec6::Zero();
+  t.head<3>() = body_velocity(b);  // a sphere's frame stays aligned with the world
+  return t;
+}
 
 Vec3 Simulation::body_cable_force(int b) const {
   const CableParams& c = model().cable;
+  const bool vehicle = body_is_vehicle(b);
+  const int index = vehicle ? b - num_spheres() : b;
+  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kBody;
+  Vec3 f = Vec3::Zero();
   for (int end = 0; end < 2; ++end) {
     const CableEnd& e = end == 0 ? c.start : c.end;
-    if (e.kind == EndKind::kBody && e.body == b) return end_force(end);
+    if (e.kind == kind && e.body == index) f += end_force(end);
   }
-  return Vec3::Zero();
+  return f;
+}
+
+void Simulation::body_cable_wrench(int b, Vec3* force_B, Vec3* moment_B) const {
+  // F_B = R_WB^T lambda, M_B = r_attach x F_B (Eq. 29-30)
+  const CableParams& c = model().cable;
+  const bool vehicle = body_is_vehicle(b);
+  const int index = vehicle ? b - num_spheres() : b;
+  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kBody;
+  const Eigen::Quaterniond q = body_attitude(b);
+  force_B->setZero();
+  moment_B->setZero();
+  for (int end = 0; end < 2; ++end) {
+    const CableEnd& e = end == 0 ? c.start : c.end;
+    if (e.kind != kind || e.body != index) continue;
+    const Vec3 f = q.conjugate() * end_force(end);
+    *force_B += f;
+    if (vehicle) *moment_B += e.at_B.cross(f);
+  }
+}
+
+const VehicleState& Simulation::vehicle_state(int v) const { return impl_->state.vehicles[v]; }
+const VehicleCommand& Simulation::vehicle_command(int v) const { return impl_->commands[v]; }
+void Simulation::SetVehicleCommand(int v, const VehicleCommand& command) {
+  impl_->commands[v] = command;
 }
 
 Vec3 Simulation::end_force(int end) const {
@@ -83,9 +160,25 @@ Vec3 Simulation::end_force(int end) const {
 }
 
 double Simulation::KineticEnergy() const {
-  return impl_->system.KineticEnergy(impl_->state.q, impl_->state.v);
+  double ke = impl_->system.KineticEnergy(impl_->state.q, impl_->state.v);
+  for (int v = 0; v < num_vehicles(); ++v)
+    ke += VehicleKineticEnergy(model().vehicles[v].params, vehicle_state(v));
+  return ke;
 }
-double Simulation::PotentialEnergy() const { return impl_->system.PotentialEnergy(impl_->state.q); }
+
+double Simulation::PotentialEnergy() const {
+  double pe = impl_->system.PotentialEnergy(impl_->state.q);
+  const Environment& env = model().environment;
+  for (int v = 0; v < num_vehicles(); ++v) {
+    // weight at the CG, buoyancy at the CB
+    const VehicleParams& p = model().vehicles[v].params;
+    const VehicleState& vs = vehicle_state(v);
+    pe -= p.mass * env.gravity * (vs.p_W + vs.q_WB * p.r_g).z();
+    pe += env.water_density * p.volume * env.gravity * (vs.p_W + vs.q_WB * p.r_b).z();
+  }
+  return pe;
+}
+
 double Simulation::StrainEnergy() const { return impl_->system.StrainEnergy(impl_->state.q); }
 
 }  // namespace towsim::core

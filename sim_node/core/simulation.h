@@ -8,6 +8,7 @@
 //   }
 
 #include <memory>
+#include <vector>
 #include <stdexcept>
 #include <string>
 
@@ -63,12 +64,29 @@ class Simulation {
   Vec3 node_position(int i) const;   // r at node i [m]
   Vec3 node_velocity(int i) const;   // dr/dt at node i [m/s]
   double node_tension(int i) const;  // axial force at node i [N] (element average)
+  // bodies: the spheres (Model::bodies) first, then the vehicles (Model::vehicles)
   int num_bodies() const;
-  Vec3 body_position(int b) const;  // p_WB [m]
-  Vec3 body_velocity(int b) const;  // v_WB_W [m/s]
+  int num_spheres() const;
+  int num_vehicles() const;
+  const std::string& body_name(int b) const;
+  bool body_is_vehicle(int b) const;
+  Vec3 body_position(int b) const;                // p_WB (vehicles: the body origin) [m]
+  Vec3 body_velocity(int b) const;                // v_WB expressed in W [m/s]
+  Eigen::Quaterniond body_attitude(int b) const;  // q_WB (identity for spheres)
+  Vec6 body_twist(int b) const;                   // [u v w p q r] in the body frame
   // force the cable exerts on body b (its joint multiplier, Eq. 29-30), world frame [N];
   // zero if b is not attached
   Vec3 body_cable_force(int b) const;
+  // the same force and its moment about the body origin, body frame (Eq. 29-30) [N, N m]
+  void body_cable_wrench(int b, Vec3* force_B, Vec3* moment_B) const;
+
+  // --- vehicles (index v into Model::vehicles) ---
+  const VehicleState& vehicle_state(int v) const;
+  const VehicleCommand& vehicle_command(int v) const;
+  // the command held from now on (thrust, rudder and elevator go through the actuator
+  // dynamics and limits of the vehicle model)
+  void SetVehicleCommand(int v, const VehicleCommand& command);
+
   // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end
   Vec3 end_force(int end) const;

@@ -6,7 +6,11 @@
 // where a cable node holds e = [r (3), r' = dr/dx (3)] (paper Eq. 1) and a sphere body holds
 // its position p_WB (3). Offsets come from Simulation::body_dof / cable_dof.
 
+#include <vector>
+
 #include <Eigen/Core>
+
+#include "core/vehicle_model.h"
 
 namespace towsim::core {
 
@@ -17,6 +21,7 @@ struct State {
   Eigen::VectorXd a;        // generalized accelerations
   Eigen::VectorXd a_alpha;  // generalized-alpha pseudo acceleration (equals a for trapezoidal)
   Eigen::VectorXd lambda;   // constraint multipliers: start end, then end end [N]
+  std::vector<VehicleState> vehicles;  // 6-DOF vehicles (Model::vehicles order)
 };
 
 }  // namespace towsim::core

@@ -138,10 +138,19 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t) const {
       return e.position + t * e.velocity;
     case EndKind::kBody:
       return q.segment<3>(body_dof(e.body)) + e.at_B;  // sphere frames stay world-aligned
+    case EndKind::kVehicle: {
+      const VehicleSupport& s = vehicle_support_[end];
+      if (s.t1 <= s.t0) return s.p1;
+      return s.p0 + ((t - s.t0) / (s.t1 - s.t0)) * (s.p1 - s.p0);
+    }
     case EndKind::kFree:
       break;
   }
   return Vec3::Constant(std::nan(""));
+}
+
+void System::SetVehicleSupport(int end, const Vec3& p0, double t0, const Vec3& p1, double t1) {
+  vehicle_support_[end] = {p0, p1, t0, t1};
 }
 
 void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,

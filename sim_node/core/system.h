@@ -68,6 +68,10 @@ class System {
   }
   // world position of the support of a cable end at time t (fixed / driven / body point)
   Vec3 SupportPosition(int end, const Eigen::VectorXd& q, double t) const;
+  // Motion of a vehicle attachment point over the current step, set by the coupling scheme
+  // (vehicle_coupling.h) before the cable is solved: linear from p0 at t0 to p1 at t1. The
+  // vehicles are not unknowns of the cable's Newton solve; for it they are driven supports.
+  void SetVehicleSupport(int end, const Vec3& p0, double t0, const Vec3& p1, double t1);
 
   double KineticEnergy(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   double PotentialEnergy(const Eigen::VectorXd& q) const;
@@ -91,6 +95,11 @@ class System {
   int num_q_ = 0, num_lambda_ = 0, cable_offset_ = 0;
   int lambda_count_[2] = {0, 0};
   Eigen::Vector3d clamp_dirs_[2][2];  // two normals to the slope of a clamped end
+  struct VehicleSupport {
+    Vec3 p0 = Vec3::Zero(), p1 = Vec3::Zero();
+    double t0 = 0.0, t1 = 0.0;
+  };
+  VehicleSupport vehicle_support_[2];
   std::vector<int> block_sizes_, block_offsets_;
   std::vector<BlockIndex> q_index_, lambda_index_;
   std::vector<double> body_mass_eff_, body_drag_k_;  // m + C_a rho V, 1/2 rho C_D pi r^2

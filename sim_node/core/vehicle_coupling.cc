@@ -1,0 +1,128 @@
+#include "core/vehicle_coupling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace towsim::core {
+
+VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
+    : system_(system), integrator_(integrator) {
+  const CableParams& c = system_->model().cable;
+  const CableEnd* ends[2] = {&c.start, &c.end};
+  for (int e = 0; e < 2; ++e)
+    if (ends[e]->kind == EndKind::kVehicle) vehicle_end_[e] = ends[e]->body;
+}
+
+Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
+  const CableParams& c = system_->model().cable;
+  const CableEnd& e = end == 0 ? c.start : c.end;
+  // r_attach = p_WB + R_WB at_B (Eq. 24)
+  return vs.p_W + vs.q_WB * e.at_B;
+}
+
+Vec3 VehicleCoupling::JointForce(const State& state, int v) const {
+  Vec3 f = Vec3::Zero();
+  for (int e = 0; e < 2; ++e)
+    if (vehicle_end_[e] == v) f += state.lambda.segment<3>(system_->end_lambda(e));
+  return f;
+}
+
+void VehicleCoupling::HoldSupports(const State& state) {
+  for (int e = 0; e < 2; ++e) {
+    if (vehicle_end_[e] < 0) continue;
+    const Vec3 p = AttachmentPoint(state.vehicles[vehicle_end_[e]], e);
+    system_->SetVehicleSupport(e, p, state.t, p, state.t);
+  }
+}
+
+StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>& commands,
+                                 double h) {
+  const Model& model = system_->model();
+  const int nv = static_cast<int>(model.vehicles.size());
+  const bool strong = model.integrator.coupling == Coupling::kStrong;
+  const int max_iterations = strong ? model.integrator.max_coupling_iterations : 1;
+  const double tol = model.integrator.tolerance * std::max(1.0, model.cable.length);
+  start_ = *state;
+  const double t0 = state->t;
+
+  // joint forces at t_n, and the current guess for t_{n+1}
+  std::vector<Vec3> f0(nv), f1(nv), residual(nv), residual_prev(nv);
+  for (int v = 0; v < nv; ++v) f0[v] = f1[v] = JointForce(start_, v);
+  Vec3 p_end_prev[2];
+  double omega = 0.5;  // Aitken relaxation factor, first value
+  StepStatus status;
+  status.iterations = 0;
+  for (int k = 1; k <= max_iterations; ++k) {
+    last_iterations_ = k;
+    // vehicles over [t_n, t_n + h] under the joint force (Eq. 29-30)
+    std::vector<VehicleState> vehicles = start_.vehicles;
+    for (int v = 0; v < nv; ++v) {
+      PointLoad load;
+      load.force_W0 = f0[v];
+      load.force_W1 = strong ? f1[v] : f0[v];
+      for (int e = 0; e < 2; ++e)
+        if (vehicle_end_[e] == v) load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
+      AdvanceVehicle(model.vehicles[v].params, model.environment, commands[v], load, h,
+                     &vehicles[v]);
+    }
+    // the cable with the attachment points as driven supports
+    double moved = 0.0;
+    for (int e = 0; e < 2; ++e) {
+      const int v = vehicle_end_[e];
+      if (v < 0) continue;
+      const Vec3 p0 = AttachmentPoint(start_.vehicles[v], e);
+      const Vec3 p1 = AttachmentPoint(vehicles[v], e);
+      if (k > 1) moved = std::max(moved, (p1 - p_end_prev[e]).lpNorm<Eigen::Infinity>());
+      p_end_prev[e] = p1;
+      system_->SetVehicleSupport(e, p0, t0, p1, t0 + h);
+    }
+    *state = start_;
+    const StepStatus cable = integrator_->Step(state, h);
+    status.iterations += cable.iterations;
+    status.substeps = std::max(status.substeps, cable.substeps);
+    status.residual = cable.residual;
+    if (!cable.ok()) {
+      status.code = cable.code;
+      status.message = cable.message;
+      *state = start_;
+      state->vehicles = start_.vehicles;
+      return status;
+    }
+    state->vehicles = vehicles;
+    bool finite = true;
+    for (const VehicleState& vs : vehicles)
+      finite = finite && vs.p_W.allFinite() && vs.nu.allFinite() && vs.q_WB.coeffs().allFinite();
+    if (!finite) {
+      status.code = StepStatus::kNonFinite;
+      std::ostringstream m;
+      m << "non-finite vehicle state in the step from t = " << t0 << " s (h = " << h << " s)";
+      status.message = m.str();
+      return status;
+    }
+    if (!strong || (k > 1 && moved <= tol)) return status;
+    // Aitken-relaxed update of the joint force at t_{n+1}
+    double num = 0.0, den = 0.0;
+    for (int v = 0; v < nv; ++v) {
+      residual[v] = JointForce(*state, v) - f1[v];
+      if (k > 1) {
+        const Vec3 d = residual[v] - residual_prev[v];
+        num += residual_prev[v].dot(d);
+        den += d.squaredNorm();
+      }
+    }
+    if (k > 1 && den > 0.0) omega = std::clamp(-omega * num / den, 0.05, 1.5);
+    for (int v = 0; v < nv; ++v) {
+      f1[v] += omega * residual[v];
+      residual_prev[v] = residual[v];
+    }
+  }
+  status.code = StepStatus::kNotConverged;
+  std::ostringstream m;
+  m << "vehicle-cable coupling did not converge in " << max_iterations
+    << " iterations in the step from t = " << t0 << " s (h = " << h << " s)";
+  status.message = m.str();
+  return status;
+}
+
+}  // namespace towsim::core
