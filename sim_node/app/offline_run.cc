@@ -9,6 +9,7 @@
 #include "app/progress.h"
 #include "app/run_stats.h"
 #include "app/stop_signal.h"
+#include "core/script.h"
 #include "core/simulation.h"
 
 namespace towsim::app {
@@ -39,6 +40,8 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
                           : std::max(1L, steps);  // no rate: first and last state only
 
   RunStats stats;
+  stats.has_vehicles = !model.vehicles.empty();
+  core::ScriptRunner script(model);
   Progress progress(static_cast<double>(steps) * h);
   const double t_start = sim->time();
   double t_reached = t_start;  // time of the last completed step [s]
@@ -56,6 +59,8 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
       break;
     }
     const double t_before = sim->time();
+    // the script entries due at the state reached (t = 0 first) hold during this step
+    script.Apply(&*sim);
     const Clock::time_point t0 = Clock::now();
     const core::StepStatus step_status = sim->Step();
     const Clock::time_point t1 = Clock::now();
@@ -70,7 +75,7 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
     status = step_status;
     wall_us =
         static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
-    stats.Add(status);
+    stats.Add(status, sim->coupling_iterations());
     t_reached = sim->time();
     if (csv != nullptr && k % stride == 0) {
       csv->Write(*sim, status, wall_us);

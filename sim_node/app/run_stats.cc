@@ -5,8 +5,9 @@
 
 namespace towsim::app {
 
-void RunStats::Add(const core::StepStatus& status) {
+void RunStats::Add(const core::StepStatus& status, int coupling_iterations) {
   ++steps;
+  coupling_sum += coupling_iterations;
   iterations_sum += status.iterations;
   iterations_max = std::max(iterations_max, status.iterations);
   if (status.substeps > 1) ++substepped_steps;
@@ -14,6 +15,10 @@ void RunStats::Add(const core::StepStatus& status) {
 
 double RunStats::iterations_mean() const {
   return steps > 0 ? static_cast<double>(iterations_sum) / static_cast<double>(steps) : 0.0;
+}
+
+double RunStats::coupling_mean() const {
+  return steps > 0 ? static_cast<double>(coupling_sum) / static_cast<double>(steps) : 0.0;
 }
 
 double RunStats::real_time_factor() const { return wall_time > 0.0 ? sim_time / wall_time : 0.0; }
@@ -27,7 +32,12 @@ std::string SummaryLine(const std::string& scene_name, const RunStats& stats) {
                 scene_name.c_str(), stats.steps, stats.sim_time, stats.wall_time,
                 rtf < 10.0 ? 2 : 0, rtf, stats.iterations_mean(), stats.iterations_max,
                 stats.substepped_steps);
-  return line;
+  std::string text = line;
+  if (stats.has_vehicles) {
+    std::snprintf(line, sizeof line, ", coupling iterations mean %.2f", stats.coupling_mean());
+    text += line;
+  }
+  return text;
 }
 
 }  // namespace towsim::app

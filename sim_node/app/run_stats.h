@@ -2,10 +2,12 @@
 // Statistics of a run and the one-line summary printed at its end:
 //
 //   sim_node: <scene>: <steps> steps, <sim s> s simulated in <wall s> s (RTF <x>),
-//             Newton iterations mean <m> max <M>, substeps <n>
+//             Newton iterations mean <m> max <M>, substeps <n>[, coupling iterations mean <c>]
 //
 // (one line). Newton iterations are per step, summed over its substeps (StepStatus);
-// substeps counts the steps that had to be sub-stepped (StepStatus::substeps > 1).
+// substeps counts the steps that had to be sub-stepped (StepStatus::substeps > 1). The
+// coupling iterations (vehicle-cable joint-force iterations per step,
+// Simulation::coupling_iterations) are shown when the scene has vehicles.
 
 #include <string>
 
@@ -20,10 +22,13 @@ struct RunStats {
   long iterations_sum = 0;    // Newton iterations over all completed steps
   int iterations_max = 0;     // most Newton iterations in one step
   long substepped_steps = 0;  // steps with StepStatus::substeps > 1
+  bool has_vehicles = false;  // show the coupling iterations
+  long coupling_sum = 0;      // vehicle-cable coupling iterations over all completed steps
 
-  // accounts for one completed step
-  void Add(const core::StepStatus& status);
+  // accounts for one completed step and its coupling iterations
+  void Add(const core::StepStatus& status, int coupling_iterations = 0);
   double iterations_mean() const;
+  double coupling_mean() const;
   double real_time_factor() const;  // sim_time / wall_time; 0 if no wall time elapsed
 };
 

@@ -1,1 +1,244 @@
-// (being written)
+#include "core/vehicle_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "core/lifting_surface.h"
+#include "core/model.h"
+
+namespace towsim::core {
+namespace {
+
+using Mat3 = Eigen::Matrix3d;
+
+// fin servo: delta_dot = clamp((clamp(cmd, +-max_deflection) - delta) / T_servo, +-max_rate),
+// a first-order servo with a rate limit; T_servo = 0.05 s is fast against every rigid-body
+// time constant (> 0.5 s) and keeps the right-hand side Lipschitz for RK4 (a pure rate limiter,
+// sign(cmd - delta) max_rate, chatters about the target)
+constexpr double kFinServoTimeConstant = 0.05;  // [s]
+
+// S(a) b = a x b
+Mat3 Skew(const Vec3& a) {
+  Mat3 s;
+  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return s;
+}
+
+// Fossen's m2c (Fossen 2011 Eq. 3.46 / 6.43): the Kirchhoff Coriolis-centripetal matrix of a
+// kinetic energy 1/2 nu^T M nu (M symmetrized),
+//   C(nu) = [ 0            -S(M11 nu1 + M12 nu2) ]
+//           [ -S(M11 nu1 + M12 nu2)  -S(M21 nu1 + M22 nu2) ]
+Mat6 M2C(const Mat6& m_in, const Vec6& nu) {
+  const Mat6 m = 0.5 * (m_in + m_in.transpose());
+  const Vec3 nu1 = nu.head<3>(), nu2 = nu.tail<3>();
+  const Vec3 a = m.topLeftCorner<3, 3>() * nu1 + m.topRightCorner<3, 3>() * nu2;
+  const Vec3 b = m.bottomLeftCorner<3, 3>() * nu1 + m.bottomRightCorner<3, 3>() * nu2;
+  Mat6 c = Mat6::Zero();
+  c.topRightCorner<3, 3>() = -Skew(a);
+  c.bottomLeftCorner<3, 3>() = -Skew(a);
+  c.bottomRightCorner<3, 3>() = -Skew(b);
+  return c;
+}
+
+Mat6 TotalMass(const VehicleParams& p) { return RigidBodyMassMatrix(p) + p.added_mass; }
+
+double Deflection(const VehicleState& s, Channel channel) {
+  switch (channel) {
+    case Channel::kRudder:
+      return s.rudder;
+    case Channel::kElevator:
+      return s.elevator;
+    case Channel::kNone:
+      break;
+  }
+  return 0.0;
+}
+
+// rate-limited first-order fin servo (see kFinServoTimeConstant)
+double FinRate(const ActuatorLimits& lim, double cmd, double delta) {
+  const double target = std::clamp(cmd, -lim.max_deflection, lim.max_deflection);
+  return std::clamp((target - delta) / kFinServoTimeConstant, -lim.max_rate, lim.max_rate);
+}
+
+}  // namespace
+
+Mat6 RigidBodyMassMatrix(const VehicleParams& p) {
+  // M_RB = [ m I        -m S(r_g) ]    I_O = I_g - m S(r_g)^2   (Fossen 2011 Eq. 3.44)
+  //        [ m S(r_g)    I_O      ]    I_g = diag(inertia) about the CG
+  const Mat3 s = Skew(p.r_g);
+  Mat6 m = Mat6::Zero();
+  m.topLeftCorner<3, 3>() = p.mass * Mat3::Identity();
+  m.topRightCorner<3, 3>() = -p.mass * s;
+  m.bottomLeftCorner<3, 3>() = p.mass * s;
+  m.bottomRightCorner<3, 3>() = Mat3(p.inertia.asDiagonal()) - p.mass * s * s;
+  return m;
+}
+
+Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s) {
+  const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
+  const Vec3 omega = s.nu.tail<3>();
+  // nu_r = nu - [R^T U_W; 0]: velocity relative to the (uniform, steady) current
+  const Vec3 v_c = r_wb.transpose() * env.current;
+  Vec6 nu_r = s.nu;
+  nu_r.head<3>() -= v_c;
+  const double u = nu_r(0), v = nu_r(1), w = nu_r(2);
+  const double pr = nu_r(3), q = nu_r(4), r = nu_r(5);
+  Vec6 tau = Vec6::Zero();
+
+  // -C_A(nu_r) nu_r, C_A = m2c(M_A, nu_r) (Kirchhoff; Fossen 2011 Eq. 6.43). Without the Munk
+  // moment, as in Fossen's MSS torpedo/remus100: CA(6,1:2) = CA(5,1:3) = 0 (1-based), i.e. the
+  // yaw and pitch moments proportional to the linear velocities, (X_udot - Y_vdot) u v,
+  // (Z_wdot - X_udot) u w and the coupling terms Y_rdot u r, Z_qdot u q, are dropped.
+  Mat6 c_a = M2C(p.added_mass, nu_r);
+  if (!p.munk_moment) {
+    c_a(5, 0) = c_a(5, 1) = 0.0;
+    c_a(4, 0) = c_a(4, 1) = c_a(4, 2) = 0.0;
+  }
+  tau -= c_a * nu_r;
+
+  // the added mass accelerates with the relative velocity: M_A nu_r_dot = M_A nu_dot
+  // + M_A [omega x v_c; 0] for a current steady in W (v_c_dot = -omega x v_c, Fossen 2011 §10.3)
+  Vec6 nu_c_dot = Vec6::Zero();
+  nu_c_dot.head<3>() = -omega.cross(v_c);
+  tau += p.added_mass * nu_c_dot;
+
+  // -D(nu_r) nu_r: dimensional viscous coefficients (Prestero 2001 names; forces carry the sign)
+  tau(0) += p.x_uu * u * std::abs(u);
+  tau(1) += p.y_vv * v * std::abs(v) + p.y_rr * r * std::abs(r) + p.y_uv * u * v + p.y_ur * u * r;
+  tau(2) += p.z_ww * w * std::abs(w) + p.z_qq * q * std::abs(q) + p.z_uw * u * w + p.z_uq * u * q;
+  tau(3) += p.k_pp * pr * std::abs(pr) + p.k_p * pr;
+  tau(4) += p.m_ww * w * std::abs(w) + p.m_qq * q * std::abs(q) + p.m_uw * u * w + p.m_uq * u * q;
+  tau(5) += p.n_vv * v * std::abs(v) + p.n_rr * r * std::abs(r) + p.n_uv * u * v + p.n_ur * u * r;
+
+  // -g(eta): weight m g at r_g, buoyancy rho V g at r_b, gravity along +z_W (Fossen 2011 Eq. 4.6)
+  const Vec3 down_B = r_wb.transpose() * Vec3::UnitZ();
+  const Vec3 f_weight = p.mass * env.gravity * down_B;
+  const Vec3 f_buoyancy = -env.water_density * p.volume * env.gravity * down_B;
+  tau.head<3>() += f_weight + f_buoyancy;
+  tau.tail<3>() += p.r_g.cross(f_weight) + p.r_b.cross(f_buoyancy);
+
+  // propeller: thrust along +x_B through O
+  if (p.has_propeller) tau(0) += s.thrust;
+
+  // lifting surfaces on the local relative flow v_O + omega x r - v_c
+  for (const LiftingSurface& surf : p.surfaces) {
+    const Vec3 v_point = nu_r.head<3>() + omega.cross(surf.position_B);
+    const SurfaceLoad load =
+        SurfaceForce(surf, env.water_density, v_point, Deflection(s, surf.channel));
+    tau.head<3>() += load.force_B;
+    tau.tail<3>() += load.moment_B;
+  }
+  return tau;
+}
+
+VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
+                               const VehicleState& s, const VehicleCommand& cmd,
+                               const Vec3& force_B, const Vec3& moment_B) {
+  VehicleDerivative d;
+  const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
+  // p_dot_W = R_WB nu_1, attitude rate omega_B
+  d.p_dot_W = r_wb * s.nu.head<3>();
+  d.omega_B = s.nu.tail<3>();
+
+  // (M_RB + M_A) nu_dot = tau_hyd + tau_ext - C_RB(nu) nu   (paper Eq. 27-28, Fossen form)
+  Vec6 rhs = HydrodynamicForces(p, env, s);
+  rhs.head<3>() += force_B;
+  rhs.tail<3>() += moment_B;
+  const Mat6 m_rb = RigidBodyMassMatrix(p);
+  rhs -= M2C(m_rb, s.nu) * s.nu;
+  d.nu_dot = (m_rb + p.added_mass).partialPivLu().solve(rhs);
+
+  // actuators: thrust_dot = (clamp(cmd, [-max/4, max]) - thrust) / T; fins: rate-limited servo
+  if (p.has_propeller) {
+    const double target = std::clamp(cmd.thrust, -0.25 * p.max_thrust, p.max_thrust);
+    d.thrust_dot = (target - s.thrust) / p.thrust_time_constant;
+  }
+  d.rudder_dot = FinRate(p.rudder, cmd.rudder, s.rudder);
+  d.elevator_dot = FinRate(p.elevator, cmd.elevator, s.elevator);
+  return d;
+}
+
+void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
+                    const PointLoad& load, double h, VehicleState* s) {
+  // classical RK4; stage c in {0, 1/2, 1}: f_W(c) = f_W0 + c (f_W1 - f_W0), applied at point_B
+  // with the stage attitude: force_B = R^T f_W, moment_B = point_B x force_B (paper Eq. 29-30)
+  const VehicleState s0 = *s;
+  auto rates = [&](const VehicleState& x, double c) {
+    const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
+    const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
+    return VehicleRates(p, env, x, cmd, f_b, load.point_B.cross(f_b));
+  };
+  // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
+  // components are integrated like the other states and renormalized at the end)
+  struct Stage {
+    VehicleDerivative d;
+    Eigen::Vector4d q_dot;  // (w, x, y, z)
+  };
+  auto eval = [&](const VehicleState& x, double c) {
+    Stage st;
+    st.d = rates(x, c);
+    const Eigen::Quaterniond w(0.0, st.d.omega_B.x(), st.d.omega_B.y(), st.d.omega_B.z());
+    const Eigen::Quaterniond prod = x.q_WB * w;
+    st.q_dot = 0.5 * Eigen::Vector4d(prod.w(), prod.x(), prod.y(), prod.z());
+    return st;
+  };
+  // x0 + a k
+  auto advance = [&](const Stage& k, double a) {
+    VehicleState x = s0;
+    x.p_W += a * k.d.p_dot_W;
+    const Eigen::Vector4d q0(s0.q_WB.w(), s0.q_WB.x(), s0.q_WB.y(), s0.q_WB.z());
+    const Eigen::Vector4d q = q0 + a * k.q_dot;
+    x.q_WB = Eigen::Quaterniond(q(0), q(1), q(2), q(3));
+    x.nu += a * k.d.nu_dot;
+    x.thrust += a * k.d.thrust_dot;
+    x.rudder += a * k.d.rudder_dot;
+    x.elevator += a * k.d.elevator_dot;
+    return x;
+  };
+
+  const Stage k1 = eval(s0, 0.0);
+  const Stage k2 = eval(advance(k1, 0.5 * h), 0.5);
+  const Stage k3 = eval(advance(k2, 0.5 * h), 0.5);
+  const Stage k4 = eval(advance(k3, h), 1.0);
+
+  // x1 = x0 + h/6 (k1 + 2 k2 + 2 k3 + k4)
+  const double w6 = h / 6.0;
+  VehicleState x = s0;
+  x.p_W += w6 * (k1.d.p_dot_W + 2.0 * k2.d.p_dot_W + 2.0 * k3.d.p_dot_W + k4.d.p_dot_W);
+  const Eigen::Vector4d q0(s0.q_WB.w(), s0.q_WB.x(), s0.q_WB.y(), s0.q_WB.z());
+  const Eigen::Vector4d q = q0 + w6 * (k1.q_dot + 2.0 * k2.q_dot + 2.0 * k3.q_dot + k4.q_dot);
+  x.q_WB = Eigen::Quaterniond(q(0), q(1), q(2), q(3)).normalized();
+  x.nu += w6 * (k1.d.nu_dot + 2.0 * k2.d.nu_dot + 2.0 * k3.d.nu_dot + k4.d.nu_dot);
+  x.thrust += w6 * (k1.d.thrust_dot + 2.0 * k2.d.thrust_dot + 2.0 * k3.d.thrust_dot +
+                    k4.d.thrust_dot);
+  x.rudder += w6 * (k1.d.rudder_dot + 2.0 * k2.d.rudder_dot + 2.0 * k3.d.rudder_dot +
+                    k4.d.rudder_dot);
+  x.elevator += w6 * (k1.d.elevator_dot + 2.0 * k2.d.elevator_dot + 2.0 * k3.d.elevator_dot +
+                      k4.d.elevator_dot);
+  *s = x;
+}
+
+double VehicleKineticEnergy(const VehicleParams& p, const VehicleState& s) {
+  // T = 1/2 nu^T (M_RB + M_A) nu (still water)
+  return 0.5 * s.nu.dot(TotalMass(p) * s.nu);
+}
+
+Vec3 EulerZYX(const Eigen::Quaterniond& q_WB) {
+  // R = Rz(psi) Ry(theta) Rx(phi) (Fossen 2011 Eq. 2.18); theta = -asin(R_20)
+  const Mat3 r = q_WB.normalized().toRotationMatrix();
+  const double phi = std::atan2(r(2, 1), r(2, 2));
+  const double theta = -std::asin(std::clamp(r(2, 0), -1.0, 1.0));
+  const double psi = std::atan2(r(1, 0), r(0, 0));
+  return Vec3(phi, theta, psi);
+}
+
+Eigen::Quaterniond QuaternionFromEulerZYX(const Vec3& rpy) {
+  // q = q_z(psi) q_y(theta) q_x(phi)
+  return Eigen::Quaterniond(Eigen::AngleAxisd(rpy.z(), Vec3::UnitZ()) *
+                            Eigen::AngleAxisd(rpy.y(), Vec3::UnitY()) *
+                            Eigen::AngleAxisd(rpy.x(), Vec3::UnitX()));
+}
+
+}  // namespace towsim::core

@@ -82,13 +82,15 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   const core::Model& model = sim.model();
   const double t = sim.time();
 
-  // bodies: spheres keep a world-aligned frame, so attitude and rates are zero
+  // bodies (spheres, then vehicles): origin in W, ZYX Euler angles of q_WB, body-frame twist
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const core::Vec3 p_WB = sim.body_position(b);
-    const core::Vec3 v_WB = sim.body_velocity(b);
-    std::fprintf(bodies_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0,%.9g,%.9g,%.9g,0,0,0\n", t,
-                 Field(model.bodies[b].name).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), v_WB.x(),
-                 v_WB.y(), v_WB.z());
+    const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
+    const core::Vec6 nu = sim.body_twist(b);
+    std::fprintf(bodies_.f,
+                 "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
+                 Field(sim.body_name(b)).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), rpy.x(), rpy.y(),
+                 rpy.z(), nu(0), nu(1), nu(2), nu(3), nu(4), nu(5));
   }
 
   for (int i = 0; i < sim.num_nodes(); ++i) {
@@ -97,11 +99,12 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
                  sim.node_tension(i));
   }
 
-  // forces: cable force on each body (world = body frame for spheres), then held supports
+  // forces: the cable's force and moment on each body (body frame), then held supports (world)
   for (int b = 0; b < sim.num_bodies(); ++b) {
-    const core::Vec3 f = sim.body_cable_force(b);
-    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t,
-                 Field(model.bodies[b].name).c_str(), f.x(), f.y(), f.z());
+    core::Vec3 f, m;
+    sim.body_cable_wrench(b, &f, &m);
+    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
+                 Field(sim.body_name(b)).c_str(), f.x(), f.y(), f.z(), m.x(), m.y(), m.z());
   }
   const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
   const char* end_names[2] = {"cable.start", "cable.end"};

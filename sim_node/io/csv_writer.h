@@ -2,12 +2,14 @@
 // CSV output of a run (DESIGN §5): four files in one directory, one row set per Write().
 //
 //   bodies.csv  t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
-//               position p_WB in world NED [m], Euler angles [rad], velocity v_WB_B and
-//               angular rate w_WB_B in the body frame [m/s, rad/s]
+//               one row per body, spheres then vehicles (Simulation's body order): position
+//               p_WB of the body origin in world NED [m], Euler angles (ZYX) of q_WB [rad],
+//               velocity v_WB_B and angular rate w_WB_B in the body frame [m/s, rad/s]
 //   cable.csv   t,node,x,y,z,tension
 //               node position r in world NED [m], axial force at the node [N]
 //   forces.csv  t,body,fx,fy,fz,mx,my,mz
-//               force and moment the cable exerts on each body, body frame [N, N m]; plus
+//               force and moment (about the body origin) the cable exerts on each body, body
+//               frame [N, N m] (Simulation::body_cable_wrench); plus
 //               rows "cable.start" / "cable.end" for a cable end held by a fixed or driven
 //               support (not a body): the force the cable exerts on the support, world frame
 //   status.csv  t,step,newton_iterations,residual,wall_us

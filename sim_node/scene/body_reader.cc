@@ -1,18 +1,127 @@
 #include "scene/body_reader.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include "scene/config_error.h"
+#include "scene/vehicle_reader.h"
 
 namespace towsim::scene::internal {
 namespace {
 
-// The vehicle file named by bodies.<name>.model, read as a checked map whose keys carry the
-// body's path (bodies.<name>.mass) and whose locations name the vehicle file.
-MapReader ReadModelFile(const Field& model, const std::string& body_path,
-                        const std::string& base_dir) {
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+
+bool Allowed(MapKind kind, const std::string& key) {
+  const std::vector<std::string>& keys = AllowedKeys(kind);
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+// a key of the scene's body entry that belongs to the other type of body
+void CheckKeysOfType(const MapReader& scene_keys, bool vehicle) {
+  for (const auto& [key, value] : scene_keys.entries()) {
+    const bool sphere_only = Allowed(MapKind::kModelFile, key) && !Allowed(MapKind::kVehicleFile, key);
+    const bool vehicle_only = (Allowed(MapKind::kVehicleFile, key) &&
+                               !Allowed(MapKind::kModelFile, key)) ||
+                              key == "euler_deg" || key == "command";
+    if (vehicle && sphere_only) value.Fail("applies only to type: sphere (this body is a vehicle)");
+    if (!vehicle && vehicle_only) {
+      value.Fail("applies only to type: vehicle (this body is a sphere, whose frame stays "
+                 "aligned with the world)");
+    }
+  }
+}
+
+SphereInput ReadSphere(const std::string& name, const BodyKeys& keys) {
+  SphereInput input;
+  core::SphereBody& body = input.body;
+  body.name = name;
+  body.mass = keys.Get("mass").Number(Range::Above(0.0));
+  const auto optional_number = [&](const std::string& key, double fallback) {
+    return keys.Has(key) ? keys.Get(key).Number(Range::AtLeast(0.0)) : fallback;
+  };
+  body.volume = optional_number("volume", body.volume);
+  body.drag_coefficient = optional_number("drag_coefficient", body.drag_coefficient);
+  body.added_mass_coefficient =
+      optional_number("added_mass_coefficient", body.added_mass_coefficient);
+  // position and velocity (world frame) belong to the scene, not to the model file
+  body.position = keys.scene().Vector("position");
+  input.velocity_given = keys.scene().Has("velocity");
+  if (input.velocity_given) body.velocity = keys.scene().Vector("velocity");
+  return input;
+}
+
+VehicleInput ReadVehicle(const std::string& name, const BodyKeys& keys) {
+  VehicleInput input;
+  core::Vehicle& vehicle = input.vehicle;
+  vehicle.name = name;
+  vehicle.params = ReadVehicleParams(keys);
+
+  // the initial state belongs to the scene: origin position, attitude, body-frame velocity
+  const MapReader& scene = keys.scene();
+  vehicle.position = scene.Vector("position");
+  if (scene.Has("euler_deg")) {
+    // [roll, pitch, yaw] in degrees, ZYX; pitch away from the +-90 deg singularity
+    const Field euler = scene.Get("euler_deg");
+    const core::Vec3 deg = euler.Vector();
+    euler.Items()[1].Number(Range::Open(-90.0, 90.0));
+    vehicle.euler = kDegToRad * deg;
+  }
+  input.velocity_given = scene.Has("velocity");
+  if (input.velocity_given) vehicle.nu.head<3>() = scene.Vector("velocity");
+
+  // the command held from t = 0: given fields only, each one the vehicle can carry out
+  const MapReader command(scene.Get("command"), MapKind::kCommand);
+  if (command.Has("thrust")) {
+    const Field thrust = command.Get("thrust");
+    vehicle.command.thrust = thrust.Number();
+    CheckThrust(thrust, vehicle.command.thrust, vehicle);
+  }
+  if (command.Has("rudder_deg")) {
+    const Field rudder = command.Get("rudder_deg");
+    vehicle.command.rudder = kDegToRad * rudder.Number();
+    CheckDeflection(rudder, vehicle.command.rudder, vehicle, core::Channel::kRudder);
+  }
+  if (command.Has("elevator_deg")) {
+    const Field elevator = command.Get("elevator_deg");
+    vehicle.command.elevator = kDegToRad * elevator.Number();
+    CheckDeflection(elevator, vehicle.command.elevator, vehicle, core::Channel::kElevator);
+  }
+  return input;
+}
+
+void ReadBody(const std::string& name, const Field& field, const std::string& base_dir,
+              BodiesInput* out) {
+  const MapReader scene_keys(field, MapKind::kBody);
+  std::optional<Field> file_root;
+  if (scene_keys.Has("model")) {
+    file_root.emplace(LoadModelFile(scene_keys.Get("model"), field.path(), base_dir));
+  }
+  // the type: the scene's, else the model file's
+  const Field type = scene_keys.Has("type") || !file_root ? scene_keys.Get("type")
+                                                          : FileType(*file_root);
+  if (!type.present()) {
+    type.Fail("is required (type: sphere or type: vehicle, here or in the model file)");
+  }
+  const bool vehicle = type.Choice({"sphere", "vehicle"}) == 1;
+
+  // the keys of that type, in the model file and in the scene
+  std::optional<MapReader> file_keys;
+  if (file_root) file_keys.emplace(*file_root, vehicle ? MapKind::kVehicleFile : MapKind::kModelFile);
+  CheckKeysOfType(scene_keys, vehicle);
+  const BodyKeys keys(scene_keys, file_keys);
+  if (vehicle) {
+    out->vehicles.push_back(ReadVehicle(name, keys));
+  } else {
+    out->spheres.push_back(ReadSphere(name, keys));
+  }
+}
+
+}  // namespace
+
+Field LoadModelFile(const Field& model, const std::string& body_path,
+                    const std::string& base_dir) {
   // the path is relative to the scene's folder
   std::filesystem::path path(model.String());
   if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
@@ -37,69 +146,77 @@ MapReader ReadModelFile(const Field& model, const std::string& body_path,
     throw ConfigError(model.path(), model.text(), source->name,
                       "a model file must be a map of body parameters (type, mass, ...)");
   }
-  return MapReader(Field(root, root.Mark(), body_path, source), MapKind::kModelFile);
+  return Field(root, root.Mark(), body_path, source);
 }
 
-BodyInput ReadBody(const std::string& name, const Field& field, const std::string& base_dir) {
-  const MapReader scene_keys(field, MapKind::kBody);
-  std::optional<MapReader> file_keys;
-  if (scene_keys.Has("model")) {
-    file_keys.emplace(ReadModelFile(scene_keys.Get("model"), field.path(), base_dir));
+Field FileType(const Field& root) {
+  for (auto it = root.node().begin(); it != root.node().end(); ++it) {
+    const YAML::Node key = it->first;
+    if (key.IsScalar() && key.Scalar() == "type") {
+      return Field(it->second, key.Mark(), JoinPath(root.path(), "type"), root.source());
+    }
   }
-  // a key given in the scene overrides the model file's
-  const auto pick = [&](const std::string& key) {
-    if (!scene_keys.Has(key) && file_keys && file_keys->Has(key)) return file_keys->Get(key);
-    return scene_keys.Get(key);
-  };
-
-  // only spheres in this build
-  const Field type = pick("type");
-  if (!type.present()) type.Fail("is required (type: sphere, or a model file that gives it)");
-  if (type.String() != "sphere") {
-    type.Fail("only type: sphere is supported by this build (6-DOF vehicles are not built yet)");
-  }
-
-  BodyInput input;
-  core::SphereBody& body = input.body;
-  body.name = name;
-  body.mass = pick("mass").Number(Range::Above(0.0));
-  const auto optional_number = [&](const std::string& key, double fallback) {
-    const Field value = pick(key);
-    return value.present() ? value.Number(Range::AtLeast(0.0)) : fallback;
-  };
-  body.volume = optional_number("volume", body.volume);
-  body.drag_coefficient = optional_number("drag_coefficient", body.drag_coefficient);
-  body.added_mass_coefficient =
-      optional_number("added_mass_coefficient", body.added_mass_coefficient);
-  // position and velocity belong to the scene, not to the vehicle file
-  body.position = scene_keys.Vector("position");
-  input.velocity_given = scene_keys.Has("velocity");
-  if (input.velocity_given) body.velocity = scene_keys.Vector("velocity");
-  return input;
+  return Field::Missing(JoinPath(root.path(), "type"), root);
 }
 
-}  // namespace
+bool BodyKeys::Has(const std::string& key) const {
+  return scene_.Has(key) || (file_ && file_->Has(key));
+}
 
-std::vector<BodyInput> ReadBodies(const Field& bodies, const std::string& base_dir) {
-  // a map name -> body; names are checked by the reader
+Field BodyKeys::Get(const std::string& key) const {
+  // a key given in the scene overrides the model file's; one missing in both is reported at
+  // the model file, where it belongs
+  if (scene_.Has(key) || !file_) return scene_.Get(key);
+  return file_->Get(key);
+}
+
+Field BodyKeys::Require(const std::string& key) const {
+  Field value = Get(key);
+  if (!value.present()) value.Fail("is required (in the model file or the scene)");
+  return value;
+}
+
+BodyKeys::Map BodyKeys::GetMap(const std::string& key, MapKind kind) const {
+  std::optional<MapReader> scene, file;
+  if (scene_.Has(key)) scene.emplace(scene_.Get(key), kind);
+  if (file_ && file_->Has(key)) file.emplace(file_->Get(key), kind);
+  Field field = scene ? scene->field() : file ? file->field() : scene_.Get(key);
+  return Map(std::move(scene), std::move(file), std::move(field));
+}
+
+bool BodyKeys::Map::Has(const std::string& key) const {
+  return (scene_ && scene_->Has(key)) || (file_ && file_->Has(key));
+}
+
+Field BodyKeys::Map::Get(const std::string& key) const {
+  if (scene_ && scene_->Has(key)) return scene_->Get(key);
+  if (file_ && file_->Has(key)) return file_->Get(key);
+  return Field::Missing(JoinPath(field_.path(), key), field_);
+}
+
+BodiesInput ReadBodies(const Field& bodies, const std::string& base_dir) {
+  // a map name -> body; names are checked by the reader (and unique, being keys of one map)
   const MapReader map(bodies, MapKind::kBodies);
-  std::vector<BodyInput> inputs;
-  inputs.reserve(map.entries().size());
-  for (const auto& [name, field] : map.entries()) inputs.push_back(ReadBody(name, field, base_dir));
+  BodiesInput inputs;
+  for (const auto& [name, field] : map.entries()) ReadBody(name, field, base_dir, &inputs);
   return inputs;
 }
 
-std::string BodyNames(const std::vector<core::SphereBody>& bodies) {
-  std::string names;
-  for (const core::SphereBody& body : bodies) names += (names.empty() ? "" : ", ") + body.name;
-  return names.empty() ? "none" : names;
+BodyRef FindBody(const core::Model& model, const std::string& name) {
+  for (size_t i = 0; i < model.bodies.size(); ++i) {
+    if (model.bodies[i].name == name) return {BodyRef::kSphere, static_cast<int>(i)};
+  }
+  for (size_t i = 0; i < model.vehicles.size(); ++i) {
+    if (model.vehicles[i].name == name) return {BodyRef::kVehicle, static_cast<int>(i)};
+  }
+  return {};
 }
 
-int FindBody(const std::vector<core::SphereBody>& bodies, const std::string& name) {
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    if (bodies[i].name == name) return static_cast<int>(i);
-  }
-  return -1;
+std::string BodyNames(const core::Model& model) {
+  std::string names;
+  for (const core::SphereBody& body : model.bodies) names += (names.empty() ? "" : ", ") + body.name;
+  for (const core::Vehicle& v : model.vehicles) names += (names.empty() ? "" : ", ") + v.name;
+  return names.empty() ? "none" : names;
 }
 
 }  // namespace towsim::scene::internal

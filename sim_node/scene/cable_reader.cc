@@ -40,7 +40,7 @@ core::CableLoads ReadLoads(const Field& field) {
   return loads;
 }
 
-EndInput ReadEnd(const Field& field, const std::vector<core::SphereBody>& bodies) {
+EndInput ReadEnd(const Field& field, const core::Model& model) {
   const MapReader map(field, MapKind::kEnd);
   EndInput input{core::CableEnd{}, field};
   core::CableEnd& end = input.end;
@@ -85,11 +85,12 @@ EndInput ReadEnd(const Field& field, const std::vector<core::SphereBody>& bodies
     if (!free.Boolean()) free.Fail("must be true (to hold the end use fixed, driven or body)");
     end.kind = core::EndKind::kFree;
   } else {
-    // the body must exist
+    // the body must exist: a sphere (kBody) or a vehicle (kVehicle)
     const Field body = map.Get("body");
-    end.kind = core::EndKind::kBody;
-    end.body = FindBody(bodies, body.String());
-    if (end.body < 0) body.Fail("no such body (bodies: " + BodyNames(bodies) + ")");
+    const BodyRef ref = FindBody(model, body.String());
+    if (ref.kind == BodyRef::kNone) body.Fail("no such body (bodies: " + BodyNames(model) + ")");
+    end.kind = ref.kind == BodyRef::kVehicle ? core::EndKind::kVehicle : core::EndKind::kBody;
+    end.body = ref.index;
     end.at_B = map.Vector("at", core::Vec3::Zero());
   }
   return input;
@@ -97,22 +98,35 @@ EndInput ReadEnd(const Field& field, const std::vector<core::SphereBody>& bodies
 
 bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; }
 
-// world position of a held end at t = 0; a sphere's body frame is aligned with the world
-core::Vec3 EndPosition(const core::CableEnd& end, const std::vector<core::SphereBody>& bodies) {
-  if (end.kind == core::EndKind::kBody) return bodies[end.body].position + end.at_B;
+// world position of a held end at t = 0: p_WB + R_WB at_B on a vehicle; a sphere's frame is
+// aligned with the world
+core::Vec3 EndPosition(const core::CableEnd& end, const core::Model& model) {
+  if (end.kind == core::EndKind::kBody) return model.bodies[end.body].position + end.at_B;
+  if (end.kind == core::EndKind::kVehicle) {
+    const core::Vehicle& v = model.vehicles[end.body];
+    return v.position + core::QuaternionFromEulerZYX(v.euler) * end.at_B;
+  }
   return end.position;
 }
 
-void CheckEnds(const EndInput& start, const EndInput& end,
-               const std::vector<core::SphereBody>& bodies) {
+// the name of the body an end is attached to
+const std::string& EndBodyName(const core::CableEnd& end, const core::Model& model) {
+  return end.kind == core::EndKind::kVehicle ? model.vehicles[end.body].name
+                                              : model.bodies[end.body].name;
+}
+
+bool OnBody(const core::CableEnd& end) {
+  return end.kind == core::EndKind::kBody || end.kind == core::EndKind::kVehicle;
+}
+
+void CheckEnds(const EndInput& start, const EndInput& end, const core::Model& model) {
   // at least one end held
   if (!Held(start.end) && !Held(end.end)) {
     end.field.Fail("both ends are free; hold at least one end (fixed, driven or body)");
   }
   // start and end on different bodies
-  if (start.end.kind == core::EndKind::kBody && end.end.kind == core::EndKind::kBody &&
-      start.end.body == end.end.body) {
-    end.field.Fail("start and end are both on body " + bodies[end.end.body].name +
+  if (OnBody(start.end) && start.end.kind == end.end.kind && start.end.body == end.end.body) {
+    end.field.Fail("start and end are both on body " + EndBodyName(end.end, model) +
                    "; attach them to different bodies");
   }
   // at most one driven end
@@ -122,7 +136,7 @@ void CheckEnds(const EndInput& start, const EndInput& end,
 }
 
 void CheckInitialShape(const core::CableParams& cable, const EndInput& start, const EndInput& end,
-                       const std::vector<core::SphereBody>& bodies) {
+                       const core::Model& model) {
   const double length = cable.length;
   switch (cable.initial) {
     case core::InitialShape::kVertical: {
@@ -134,8 +148,8 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
       }
       // a held end sits at start + [0, 0, length]
       if (!Held(end.end)) return;
-      const core::Vec3 expected = EndPosition(start.end, bodies) + core::Vec3(0.0, 0.0, length);
-      const core::Vec3 actual = EndPosition(end.end, bodies);
+      const core::Vec3 expected = EndPosition(start.end, model) + core::Vec3(0.0, 0.0, length);
+      const core::Vec3 actual = EndPosition(end.end, model);
       const double offset = (actual - expected).norm();
       if (offset > kVerticalTolerance * length) {
         end.field.Fail("with initial: vertical the end must sit at start + [0, 0, length] = " +
@@ -154,8 +168,8 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
               "body); use initial: vertical or static");
         }
       }
-      const core::Vec3 p_start = EndPosition(start.end, bodies);
-      const core::Vec3 p_end = EndPosition(end.end, bodies);
+      const core::Vec3 p_start = EndPosition(start.end, model);
+      const core::Vec3 p_end = EndPosition(end.end, model);
       const double span = (p_end - p_start).norm();
       // the span is > 0 and stretches the cable by at most 1%
       if (span == 0.0) {
@@ -179,7 +193,7 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
 
 }  // namespace
 
-core::CableParams ReadCable(const Field& field, const std::vector<core::SphereBody>& bodies) {
+core::CableParams ReadCable(const Field& field, const core::Model& model) {
   const MapReader cable(field, MapKind::kCable);
   core::CableParams c;
 
@@ -201,12 +215,12 @@ core::CableParams ReadCable(const Field& field, const std::vector<core::SphereBo
   }
 
   // ends, then the rules between them
-  const EndInput start = ReadEnd(cable.Require("start"), bodies);
-  const EndInput end = ReadEnd(cable.Require("end"), bodies);
+  const EndInput start = ReadEnd(cable.Require("start"), model);
+  const EndInput end = ReadEnd(cable.Require("end"), model);
   c.start = start.end;
   c.end = end.end;
-  CheckEnds(start, end, bodies);
-  CheckInitialShape(c, start, end, bodies);
+  CheckEnds(start, end, model);
+  CheckInitialShape(c, start, end, model);
 
   // initial velocity: given, else that of a driven end, else zero
   core::Vec3 velocity = core::Vec3::Zero();

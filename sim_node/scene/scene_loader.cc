@@ -8,6 +8,8 @@
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
 #include "scene/overrides.h"
+#include "scene/script_reader.h"
+#include "scene/vehicle_reader.h"
 #include "scene/yaml_reader.h"
 
 namespace towsim::scene {
@@ -51,48 +53,16 @@ core::IntegratorSettings ReadIntegrator(const Field& field) {
   }
   s.rho_inf = integrator.Number("rho_inf", Range::Closed(0.0, 1.0), s.rho_inf);
   if (integrator.Has("coupling")) {
-    // only the strong coupling until the 6-DOF vehicles arrive
-    const Field coupling = integrator.Get("coupling");
-    if (coupling.Choice({"strong", "staggered"}) == 1) {
-      coupling.Fail(
-          "the staggered scheme comes with the 6-DOF vehicles; sphere scenes use "
-          "coupling: strong");
-    }
-    s.coupling = core::Coupling::kStrong;
+    const size_t coupling = integrator.Get("coupling").Choice({"strong", "staggered"});
+    s.coupling = coupling == 0 ? core::Coupling::kStrong : core::Coupling::kStaggered;
   }
   s.tolerance = integrator.Number("tolerance", Range::LeftOpen(0.0, 1e-2), s.tolerance);
   s.max_iterations = integrator.Integer("max_iterations", Range::Closed(1, 1000), s.max_iterations);
   s.max_substep_level =
       integrator.Integer("max_substep_level", Range::Closed(0, 20), s.max_substep_level);
+  s.max_coupling_iterations = integrator.Integer("max_coupling_iterations", Range::Closed(1, 1000),
+                                                 s.max_coupling_iterations);
   return s;
-}
-
-// Actuated bodies take scripted commands; a sphere has no actuators.
-bool TakesCommands(const core::SphereBody& /*sphere*/) { return false; }
-
-std::vector<core::ScriptEntry> ReadScript(const Field& field,
-                                          const std::vector<core::SphereBody>& bodies) {
-  std::vector<core::ScriptEntry> script;
-  for (const Field& item : field.Items()) {
-    const MapReader map(item, MapKind::kScriptEntry);
-    core::ScriptEntry entry;
-    entry.at = map.Number("at", Range::AtLeast(0.0));
-    // the body must exist and take commands
-    const Field body = map.Require("body");
-    entry.body = body.String();
-    const int index = internal::FindBody(bodies, entry.body);
-    if (index < 0) body.Fail("no such body (bodies: " + internal::BodyNames(bodies) + ")");
-    entry.thrust = map.Number("thrust", Range::Any(), 0.0);
-    entry.rudder = map.Number("rudder", Range::Any(), 0.0);
-    entry.elevator = map.Number("elevator", Range::Any(), 0.0);
-    if (!TakesCommands(bodies[index])) {
-      body.Fail(entry.body +
-                " is a sphere, and spheres take no commands (thrust, rudder, "
-                "elevator); remove this script entry");
-    }
-    script.push_back(entry);
-  }
-  return script;
 }
 
 core::Model BuildModel(const Field& root, const std::string& base_dir) {
@@ -106,17 +76,24 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   model.environment = ReadEnvironment(scene.Get("environment"));
 
   // bodies first: cable ends and script entries refer to them
-  const std::vector<internal::BodyInput> bodies =
-      internal::ReadBodies(scene.Get("bodies"), base_dir);
-  for (const internal::BodyInput& body : bodies) model.bodies.push_back(body.body);
-  model.cable = internal::ReadCable(scene.Require("cable"), model.bodies);
-  // bodies that give no velocity start with the cable
-  for (size_t i = 0; i < bodies.size(); ++i) {
-    if (!bodies[i].velocity_given) model.bodies[i].velocity = model.cable.initial_velocity;
+  const internal::BodiesInput bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
+  for (const internal::SphereInput& sphere : bodies.spheres) model.bodies.push_back(sphere.body);
+  for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
+  model.cable = internal::ReadCable(scene.Require("cable"), model);
+  // bodies that give no velocity start with the cable (vehicles: in their body frame)
+  const core::Vec3& v_W = model.cable.initial_velocity;
+  for (size_t i = 0; i < bodies.spheres.size(); ++i) {
+    if (!bodies.spheres[i].velocity_given) model.bodies[i].velocity = v_W;
+  }
+  for (size_t i = 0; i < bodies.vehicles.size(); ++i) {
+    core::Vehicle& v = model.vehicles[i];
+    if (!bodies.vehicles[i].velocity_given) {
+      v.nu.head<3>() = core::QuaternionFromEulerZYX(v.euler).conjugate() * v_W;
+    }
   }
 
   model.integrator = ReadIntegrator(scene.Get("integrator"));
-  model.script = ReadScript(scene.Get("script"), model.bodies);
+  model.script = internal::ReadScript(scene.Get("script"), model);
   return model;
 }
 
@@ -159,6 +136,22 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
 
   internal::ApplyOverrides(overrides, root, source.get());
   return BuildModel(Field(root, root.Mark(), "", source), base_dir);
+}
+
+core::VehicleParams LoadVehicleFile(const std::string& path) {
+  // the path stands in for the scene key that would name the file
+  auto source = std::make_shared<internal::Source>();
+  source->name = path;
+  const Field named(YAML::Node(path), YAML::Mark::null_mark(), "model", source);
+  const Field root = internal::LoadModelFile(named, "", ".");
+  const Field type = internal::FileType(root);
+  if (type.Choice({"sphere", "vehicle"}) != 1) {
+    type.Fail("must be vehicle (this reads the model files of 6-DOF vehicles)");
+  }
+  // no scene entry: every key from the file
+  const MapReader no_scene(Field::Missing("", root), MapKind::kBody);
+  return internal::ReadVehicleParams(
+      internal::BodyKeys(no_scene, MapReader(root, MapKind::kVehicleFile)));
 }
 
 }  // namespace towsim::scene

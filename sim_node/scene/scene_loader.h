@@ -24,4 +24,9 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
                                 const std::string& base_dir,
                                 const std::vector<std::string>& overrides = {});
 
+// Loads a vehicle model file (type: vehicle, config/vehicles/*.yaml) by itself, checked as the
+// scene loader checks it; key paths in messages start at the file's root (added_mass.x_udot).
+// Throws ConfigError.
+core::VehicleParams LoadVehicleFile(const std::string& path);
+
 }  // namespace towsim::scene

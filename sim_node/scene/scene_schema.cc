@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <initializer_list>
 #include <map>
 
 namespace towsim::scene::internal {
@@ -26,6 +27,22 @@ size_t EditDistance(const std::string& a, const std::string& b) {
 }  // namespace
 
 const std::vector<std::string>& AllowedKeys(MapKind kind) {
+  // a model's own keys: a sphere's, a vehicle's (core::VehicleParams, one key each)
+  static const std::vector<std::string> kSphereKeys = {"mass", "volume", "drag_coefficient",
+                                                       "added_mass_coefficient", "source"};
+  static const std::vector<std::string> kVehicleKeys = {
+      "source", "length",      "mass",     "inertia", "r_g",      "r_b",       "volume",
+      "added_mass", "munk_moment", "damping", "surfaces", "rudder", "elevator", "propeller"};
+  // type first, then the keys of `groups`, each once, in order
+  const auto join = [](std::vector<std::string> keys,
+                       std::initializer_list<const std::vector<std::string>*> groups) {
+    for (const std::vector<std::string>* group : groups) {
+      for (const std::string& key : *group) {
+        if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+      }
+    }
+    return keys;
+  };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
       {MapKind::kScene, {"name", "time", "environment", "cable", "bodies", "integrator", "script"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
@@ -36,14 +53,29 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kEnd, {"fixed", "slope", "driven", "free", "body", "at"}},
       {MapKind::kDriven, {"position", "velocity"}},
       {MapKind::kBodies, {}},
+      // a body in the scene: its initial state and any key of its model (the scene's wins)
       {MapKind::kBody,
-       {"type", "model", "mass", "volume", "drag_coefficient", "added_mass_coefficient", "position",
-        "velocity"}},
-      {MapKind::kModelFile,
-       {"type", "mass", "volume", "drag_coefficient", "added_mass_coefficient", "source"}},
+       join({"type", "model", "position", "euler_deg", "velocity", "command"},
+            {&kSphereKeys, &kVehicleKeys})},
+      {MapKind::kModelFile, join({"type"}, {&kSphereKeys})},
+      {MapKind::kVehicleFile, join({"type"}, {&kVehicleKeys})},
+      {MapKind::kAddedMass,
+       {"x_udot", "y_vdot", "z_wdot", "k_pdot", "m_qdot", "n_rdot", "y_rdot", "n_vdot", "z_qdot",
+        "m_wdot"}},
+      {MapKind::kDamping,
+       {"x_uu", "y_vv", "z_ww", "y_rr", "z_qq", "m_ww", "n_vv", "m_qq", "n_rr", "k_pp", "y_uv",
+        "z_uw", "m_uw", "n_uv", "y_ur", "z_uq", "m_uq", "n_ur", "k_p"}},
+      {MapKind::kSurface,
+       {"name", "channel", "position", "normal", "area", "aspect_ratio", "lift_slope", "oswald",
+        "cd0", "stall_angle_deg", "incidence_deg", "deflection_sign"}},
+      {MapKind::kActuator, {"max_deflection_deg", "max_rate_deg"}},
+      {MapKind::kPropeller, {"max_thrust", "time_constant"}},
+      {MapKind::kCommand, {"thrust", "rudder_deg", "elevator_deg"}},
       {MapKind::kIntegrator,
-       {"scheme", "rho_inf", "coupling", "tolerance", "max_iterations", "max_substep_level"}},
-      {MapKind::kScriptEntry, {"at", "body", "thrust", "rudder", "elevator"}},
+       {"scheme", "rho_inf", "coupling", "tolerance", "max_iterations", "max_substep_level",
+        "max_coupling_iterations"}},
+      {MapKind::kScriptEntry,
+       {"at", "when", "body", "thrust", "rudder", "rudder_deg", "elevator", "elevator_deg"}},
   };
   return kKeys.at(kind);
 }
@@ -65,6 +97,14 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       return std::nullopt;
     case MapKind::kBodies:
       return MapKind::kBody;
+    case MapKind::kBody:
+    case MapKind::kVehicleFile:
+      if (key == "added_mass") return MapKind::kAddedMass;
+      if (key == "damping") return MapKind::kDamping;
+      if (key == "rudder" || key == "elevator") return MapKind::kActuator;
+      if (key == "propeller") return MapKind::kPropeller;
+      if (key == "command" && parent == MapKind::kBody) return MapKind::kCommand;
+      return std::nullopt;  // values; surfaces is a list
     default:
       return std::nullopt;
   }
@@ -80,19 +120,31 @@ bool IsValidName(const std::string& name) {
   return std::all_of(name.begin(), name.end(), [&](char c) { return letter(c) || digit(c); });
 }
 
-std::string UnknownKeyRule(const std::string& key, const std::vector<std::string>& allowed) {
-  std::string rule = "unknown key";
-  // suggest the closest allowed key when it is a plausible typo (at most 2 edits)
+std::string Suggestion(const std::string& word, const std::vector<std::string>& allowed) {
+  // a suffix left off (yaw for yaw_deg, rudder for rudder_deg), else the fewest edits
+  for (const std::string& candidate : allowed) {
+    if (candidate.size() > word.size() + 1 && candidate.compare(0, word.size(), word) == 0 &&
+        candidate[word.size()] == '_') {
+      return candidate;
+    }
+  }
   const std::string* best = nullptr;
   size_t best_distance = 3;
   for (const std::string& candidate : allowed) {
-    const size_t d = EditDistance(key, candidate);
+    const size_t d = EditDistance(word, candidate);
     if (d < best_distance) {
       best = &candidate;
       best_distance = d;
     }
   }
-  if (best != nullptr) rule += "; did you mean " + *best + "?";
+  return best != nullptr ? *best : std::string();
+}
+
+std::string UnknownKeyRule(const std::string& key, const std::vector<std::string>& allowed) {
+  std::string rule = "unknown key";
+  // suggest the closest allowed key when it is a plausible typo (at most 2 edits)
+  const std::string best = Suggestion(key, allowed);
+  if (!best.empty()) rule += "; did you mean " + best + "?";
   if (!allowed.empty()) {
     rule += " (allowed: ";
     for (size_t i = 0; i < allowed.size(); ++i) rule += (i ? ", " : "") + allowed[i];

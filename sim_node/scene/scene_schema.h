@@ -17,8 +17,15 @@ enum class MapKind {
   kEnd,          // cable.start, cable.end
   kDriven,       // cable.<end>.driven
   kBodies,       // bodies: user-chosen names -> kBody
-  kBody,         // bodies.<name>
-  kModelFile,    // the file named by bodies.<name>.model
+  kBody,         // bodies.<name>: a sphere's or a vehicle's keys, plus its initial state
+  kModelFile,    // the file named by bodies.<name>.model, type: sphere
+  kVehicleFile,  // the file named by bodies.<name>.model, type: vehicle
+  kAddedMass,    // <vehicle>.added_mass
+  kDamping,      // <vehicle>.damping
+  kSurface,      // <vehicle>.surfaces[i]
+  kActuator,     // <vehicle>.rudder, <vehicle>.elevator
+  kPropeller,    // <vehicle>.propeller
+  kCommand,      // bodies.<name>.command
   kIntegrator,   // integrator
   kScriptEntry,  // script[i]
 };
@@ -33,6 +40,10 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key);
 // Body names become topic and CSV names: [A-Za-z_][A-Za-z0-9_]*.
 bool IsValidName(const std::string& name);
 inline constexpr const char* kNameRule = "must match [A-Za-z_][A-Za-z0-9_]*";
+
+// the entry of `allowed` that `word` most likely meant: one that continues it with "_..." (a
+// unit suffix left off: yaw -> yaw_deg), else the nearest within 2 edits; empty if none
+std::string Suggestion(const std::string& word, const std::vector<std::string>& allowed);
 
 // "unknown key; did you mean length? (allowed: length, elements, ...)"
 std::string UnknownKeyRule(const std::string& key, const std::vector<std::string>& allowed);

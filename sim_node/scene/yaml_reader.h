@@ -36,8 +36,10 @@ struct Range {
   static Range Any() { return {}; }
   static Range Above(double lo) { return {lo, Range{}.hi, true, false}; }        // x > lo
   static Range AtLeast(double lo) { return {lo, Range{}.hi, false, false}; }     // x >= lo
+  static Range AtMost(double hi) { return {Range{}.lo, hi, false, false}; }      // x <= hi
   static Range Closed(double lo, double hi) { return {lo, hi, false, false}; }   // lo <= x <= hi
   static Range LeftOpen(double lo, double hi) { return {lo, hi, true, false}; }  // lo < x <= hi
+  static Range Open(double lo, double hi) { return {lo, hi, true, true}; }       // lo < x < hi
 
   // the broken rule ("must be >= 1"), or empty when x lies in the range
   std::string Violation(double x) const;

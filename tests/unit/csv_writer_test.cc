@@ -177,6 +177,78 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
   EXPECT_EQ(status_rows[1][4], "1234");
 }
 
+// a 6-DOF vehicle (turned and pitched) holds the cable's start; the sphere hangs at its end
+core::Model VehicleModel() {
+  core::Model model = TinyModel();
+  core::Vehicle boat;
+  boat.name = "boat";
+  core::VehicleParams& p = boat.params;
+  p.source = "test";
+  p.length = 2.0;
+  p.mass = 100.0;
+  p.inertia = core::Vec3(1.0, 10.0, 10.0);
+  p.volume = 100.0 / 1025.0;
+  p.added_mass.diagonal() << 5, 80, 80, 1, 9, 9;
+  boat.position = core::Vec3(1.0, 2.0, 3.0);
+  boat.euler = core::Vec3(0.0, 0.1, 0.5);  // pitch, yaw [rad]
+  boat.nu << 1.0, 0.0, 0.0, 0.0, 0.0, 0.02;
+  model.vehicles.push_back(boat);
+  model.cable.start.kind = core::EndKind::kVehicle;
+  model.cable.start.body = 0;
+  model.cable.start.at_B = core::Vec3(-1.0, 0.0, 0.2);  // astern: the cable makes a moment
+  const core::Vec3 top =
+      boat.position + core::QuaternionFromEulerZYX(boat.euler) * model.cable.start.at_B;
+  model.bodies[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
+  return model;
+}
+
+TEST(CsvWriterTest, VehicleRowsFollowTheSpheres) {
+  TempDir tmp;
+  const core::Model model = VehicleModel();
+  core::Simulation sim(model);
+  const core::StepStatus status = sim.Step();
+  ASSERT_TRUE(status.ok()) << status.message;
+  CsvWriter csv(tmp.path().string());
+  csv.Write(sim, status, 0);
+  csv.Close();
+
+  // bodies: the sphere, then the vehicle with its attitude and body-frame twist
+  std::string header;
+  const Rows bodies = ReadCsv(tmp.path() / "bodies.csv", &header);
+  ASSERT_EQ(bodies.size(), 2u);
+  EXPECT_EQ(bodies[0][1], "ball");
+  EXPECT_EQ(bodies[1][1], "boat");
+  const int b = 1;  // the vehicle in the unified body order
+  ASSERT_TRUE(sim.body_is_vehicle(b));
+  const core::Vec3 p_WB = sim.body_position(b);
+  const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
+  const core::Vec6 nu = sim.body_twist(b);
+  ASSERT_EQ(bodies[1].size(), 14u);
+  for (int k = 0; k < 3; ++k) {
+    ExpectNear(bodies[1][2 + k], p_WB[k], "vehicle position");
+    ExpectNear(bodies[1][5 + k], rpy[k], "vehicle Euler angles");
+  }
+  for (int k = 0; k < 6; ++k) ExpectNear(bodies[1][8 + k], nu[k], "vehicle twist");
+  // the attitude is the vehicle's own: close to the initial pitch and yaw after one step
+  EXPECT_NEAR(std::stod(bodies[1][6]), 0.1, 0.01);
+  EXPECT_NEAR(std::stod(bodies[1][7]), 0.5, 0.01);
+
+  // forces: sphere and vehicle in body frames; no support row (both ends are on bodies)
+  const Rows forces = ReadCsv(tmp.path() / "forces.csv", &header);
+  ASSERT_EQ(forces.size(), 2u);
+  EXPECT_EQ(forces[0][1], "ball");
+  EXPECT_EQ(forces[1][1], "boat");
+  core::Vec3 f_B, m_B;
+  sim.body_cable_wrench(b, &f_B, &m_B);
+  for (int k = 0; k < 3; ++k) {
+    ExpectNear(forces[1][2 + k], f_B[k], "force on the vehicle");
+    ExpectNear(forces[1][5 + k], m_B[k], "moment on the vehicle");
+  }
+  // the cable hangs off the stern: its moment about the origin is not zero
+  EXPECT_GT(m_B.norm(), 1.0);
+  for (int c : {5, 6, 7}) EXPECT_EQ(std::stod(forces[0][c]), 0.0) << "sphere moment column " << c;
+}
+
 TEST(CsvWriterTest, FreeEndHasNoSupportRow) {
   TempDir tmp;
   core::Model model = TinyModel();

@@ -18,6 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 using Model = core::Model;
 
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
 const std::string kConfigDir = std::string(TOWSIM_SOURCE_DIR) + "/config";
 const std::string kSteadyTow = kConfigDir + "/scenes/steady_tow.yaml";
 const std::string kCatenary = kConfigDir + "/scenes/catenary.yaml";
@@ -50,6 +52,72 @@ std::string Edit(const std::string& from, const std::string& to) {
   return text;
 }
 
+// A small 6-DOF vehicle with a propeller and a rudder (no elevators). Line numbers matter.
+constexpr const char* kBoatFile = R"(type: vehicle
+source: test
+length: 2
+mass: 100
+inertia: [1, 10, 10]
+r_g: [0, 0, 0.05]
+volume: 0.1
+added_mass: {x_udot: -5, y_vdot: -80, z_wdot: -80, m_qdot: -9, n_rdot: -9, y_rdot: 2, n_vdot: 2}
+damping: {x_uu: -3, n_ur: -4}
+surfaces:
+  - {name: rudder, channel: rudder, position: [-1, 0, 0], normal: [0, 2, 0], area: 0.01,
+     aspect_ratio: 2, oswald: 0.9, cd0: 0.01, stall_angle_deg: 20, deflection_sign: -1}
+rudder: {max_deflection_deg: 30, max_rate_deg: 10}
+propeller: {max_thrust: 400, time_constant: 0.5}
+)";
+
+// An unpowered vehicle with a wing only.
+constexpr const char* kFish6File = R"(type: vehicle
+source: test
+length: 1
+mass: 20
+inertia: [0.1, 1, 1]
+r_g: [0.1, 0, 0]
+volume: 0.02
+munk_moment: false
+surfaces:
+  - {name: wing, channel: none, position: [0, 0, 0], normal: [0, 0, -1], area: 0.05,
+     aspect_ratio: 4, oswald: 0.8, cd0: 0.01, stall_angle_deg: 14}
+)";
+
+// A 100 m cable from the boat's CG (at [0, 0, 1.05]) straight down to the fish's bow
+// ([0.5, 0, 0] ahead of its origin), with a script. Line numbers matter.
+constexpr const char* kVehicleScene = R"(name: v
+time: {step: 0.01, duration: 1, output_rate: 10}
+cable:
+  length: 100
+  elements: 10
+  diameter: 0.04
+  density: 1300
+  youngs_modulus: 7.0e8
+  initial: vertical
+  start: {body: boat, at: [0, 0, 0.05]}
+  end: {body: fish, at: [0.5, 0, 0]}
+bodies:
+  boat: {model: boat.yaml, position: [0, 0, 1]}
+  fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}
+script:
+  - {body: boat, thrust: 200}
+  - {at: 5, body: boat, rudder_deg: 10}
+  - {at: 5, when: "boat.yaw_deg >= 90", body: boat, rudder: 0}
+)";
+
+// `text` with the first occurrence of `from` replaced by `to`
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << "test bug: '" << from << "' not in the text";
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+// kVehicleScene with one edit
+std::string EditV(const std::string& from, const std::string& to) {
+  return Replace(kVehicleScene, from, to);
+}
+
 // A folder with vehicle model files, one per test process (ctest runs tests in parallel).
 class SceneLoaderTest : public ::testing::Test {
  protected:
@@ -61,6 +129,8 @@ class SceneLoaderTest : public ::testing::Test {
     std::ofstream(dir_ / "bad_fish.yaml") << "type: sphere\nmass: 20\ncolour: red\n";
     std::ofstream(dir_ / "box_fish.yaml") << "type: box\nmass: 20\n";
     std::ofstream(dir_ / "broken_fish.yaml") << "type: sphere\nmass: [20\n";
+    std::ofstream(dir_ / "boat.yaml") << kBoatFile;
+    std::ofstream(dir_ / "fish6.yaml") << kFish6File;
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
@@ -216,8 +286,13 @@ INSTANTIATE_TEST_SUITE_P(
         // enums
         BrokenCase{"bad_initial", Edit("initial: vertical", "initial: curly"), "cable.initial",
                    "must be one of vertical, straight, static", ""},
-        BrokenCase{"staggered", Edit("rho_inf: 0.8", "coupling: staggered"), "integrator.coupling",
-                   "staggered scheme comes with the 6-DOF vehicles", ""},
+        BrokenCase{"bad_coupling", Edit("rho_inf: 0.8", "coupling: loose"), "integrator.coupling",
+                   "must be one of strong, staggered", "t.yaml:15"},
+        BrokenCase{"coupling_iterations_zero", Edit("rho_inf: 0.8", "max_coupling_iterations: 0"),
+                   "integrator.max_coupling_iterations", "must be >= 1", ""},
+        BrokenCase{"coupling_iterations_fractional",
+                   Edit("rho_inf: 0.8", "max_coupling_iterations: 2.5"),
+                   "integrator.max_coupling_iterations", "must be an integer", ""},
         // ends
         BrokenCase{"unknown_end_body", Edit("end: {body: fish}", "end: {body: shark}"),
                    "cable.end.body", "no such body (bodies: fish)", "t.yaml:12"},
@@ -281,17 +356,24 @@ INSTANTIATE_TEST_SUITE_P(
                    ""},
         BrokenCase{"body_without_position", Edit(", position: [0, 0, 100]", ""),
                    "bodies.fish.position", "is required", "t.yaml:14"},
-        BrokenCase{"not_a_sphere", Edit("type: sphere", "type: box"), "bodies.fish.type",
-                   "only type: sphere is supported by this build", ""},
+        BrokenCase{"unknown_type", Edit("type: sphere", "type: box"), "bodies.fish.type",
+                   "must be one of sphere, vehicle", "t.yaml:14"},
+        BrokenCase{"missing_type", Edit("type: sphere, ", ""), "bodies.fish.type",
+                   "is required (type: sphere or type: vehicle", ""},
+        BrokenCase{"vehicle_key_on_sphere",
+                   Edit("volume: 0.001,", "volume: 0.001, euler_deg: [0, 0, 90],"),
+                   "bodies.fish.euler_deg", "applies only to type: vehicle", "t.yaml:14"},
+        BrokenCase{"vehicle_param_on_sphere", Edit("volume: 0.001,", "volume: 0.001, length: 2,"),
+                   "bodies.fish.length", "applies only to type: vehicle", ""},
         BrokenCase{"missing_model_file",
                    Edit(kFishLine, "fish: {model: nope.yaml, position: [0, 0, 100]}"),
                    "bodies.fish.model", "cannot read the model file", "t.yaml:14"},
         BrokenCase{"model_file_unknown_key",
                    Edit(kFishLine, "fish: {model: bad_fish.yaml, position: [0, 0, 100]}"),
                    "bodies.fish.colour", "unknown key", "bad_fish.yaml:3"},
-        BrokenCase{"model_file_not_a_sphere",
+        BrokenCase{"model_file_unknown_type",
                    Edit(kFishLine, "fish: {model: box_fish.yaml, position: [0, 0, 100]}"),
-                   "bodies.fish.type", "only type: sphere", "box_fish.yaml:1"},
+                   "bodies.fish.type", "must be one of sphere, vehicle", "box_fish.yaml:1"},
         BrokenCase{"model_file_not_yaml",
                    Edit(kFishLine, "fish: {model: broken_fish.yaml, position: [0, 0, 100]}"),
                    "bodies.fish.model", "not valid YAML", ""},
@@ -308,6 +390,527 @@ INSTANTIATE_TEST_SUITE_P(
                    std::string(kScene) + "script:\n  - {at: -1, body: fish}\n", "script[0].at",
                    "must be >= 0", ""}),
     [](const ::testing::TestParamInfo<BrokenCase>& info) { return std::string(info.param.name); });
+
+// broken vehicle scenes: the vehicle keys in the scene, the ends, the commands, the script
+INSTANTIATE_TEST_SUITE_P(
+    Vehicles, BrokenSceneTest,
+    ::testing::Values(
+        // bodies
+        BrokenCase{"sphere_key_on_vehicle",
+                   EditV("boat: {model: boat.yaml,", "boat: {model: boat.yaml, drag_coefficient: 1,"),
+                   "bodies.boat.drag_coefficient", "applies only to type: sphere", "t.yaml:13"},
+        BrokenCase{"pitch_at_singularity",
+                   EditV("position: [0, 0, 1]}", "position: [0, 0, 1], euler_deg: [0, 90, 0]}"),
+                   "bodies.boat.euler_deg[1]", "must be < 90", "t.yaml:13"},
+        BrokenCase{"euler_of_two",
+                   EditV("position: [0, 0, 1]}", "position: [0, 0, 1], euler_deg: [0, 0]}"),
+                   "bodies.boat.euler_deg", "must be a list of 3 numbers", ""},
+        BrokenCase{"vehicle_position_missing", EditV(", position: [0, 0, 1]", ""),
+                   "bodies.boat.position", "is required", "t.yaml:13"},
+        BrokenCase{"inline_override_checked",
+                   EditV("boat: {model: boat.yaml,", "boat: {model: boat.yaml, mass: 0,"),
+                   "bodies.boat.mass", "must be > 0", "t.yaml:13"},
+        BrokenCase{"inline_map_override_checked",
+                   EditV("boat: {model: boat.yaml,",
+                         "boat: {model: boat.yaml, damping: {x_uuu: 1},"),
+                   "bodies.boat.damping.x_uuu", "unknown key; did you mean x_uu?", "t.yaml:13"},
+        // ends: the attachment point is p + R(euler) at on a vehicle
+        BrokenCase{"vertical_misplaced_vehicle",
+                   EditV("[-0.5, 0, 101.05]", "[-0.5, 0, 102]"), "cable.end",
+                   "with initial: vertical the end must sit at start + [0, 0, length] = "
+                   "[0, 0, 101.05]",
+                   "t.yaml:11"},
+        BrokenCase{"vertical_rotated_vehicle",
+                   EditV("[-0.5, 0, 101.05]}", "[-0.5, 0, 101.05], euler_deg: [0, 0, 90]}"),
+                   "cable.end", "but it is at [-0.5, 0.5, 101.05]", ""},
+        BrokenCase{"both_ends_on_one_vehicle", EditV("end: {body: fish, at: [0.5, 0, 0]}",
+                                                     "end: {body: boat, at: [1, 0, 0]}"),
+                   "cable.end", "start and end are both on body boat", ""},
+        BrokenCase{"end_on_unknown_body", EditV("end: {body: fish,", "end: {body: whale,"),
+                   "cable.end.body", "no such body (bodies: boat, fish)", "t.yaml:11"},
+        // initial commands
+        BrokenCase{"command_thrust_too_high",
+                   EditV("position: [0, 0, 1]}", "position: [0, 0, 1], command: {thrust: 500}}"),
+                   "bodies.boat.command.thrust",
+                   "must be in [-max_thrust/4, max_thrust] = [-100, 400] N for boat", "t.yaml:13"},
+        BrokenCase{"command_thrust_without_propeller",
+                   EditV("101.05]}", "101.05], command: {thrust: 10}}"),
+                   "bodies.fish.command.thrust", "fish has no propeller", ""},
+        BrokenCase{"command_rudder_beyond_limit",
+                   EditV("position: [0, 0, 1]}",
+                         "position: [0, 0, 1], command: {rudder_deg: 31}}"),
+                   "bodies.boat.command.rudder_deg", "must be within +-30 deg", ""},
+        BrokenCase{"command_without_surface",
+                   EditV("position: [0, 0, 1]}",
+                         "position: [0, 0, 1], command: {elevator_deg: 5}}"),
+                   "bodies.boat.command.elevator_deg",
+                   "boat has no surface on channel elevator, so its elevator must be 0", ""},
+        BrokenCase{"command_in_radians",
+                   EditV("position: [0, 0, 1]}", "position: [0, 0, 1], command: {rudder: 0.1}}"),
+                   "bodies.boat.command.rudder", "unknown key; did you mean rudder_deg?", ""},
+        // script entries
+        BrokenCase{"script_thrust_too_high",
+                   EditV("{body: boat, thrust: 200}", "{body: boat, thrust: 401}"),
+                   "script[0].thrust", "must be in [-max_thrust/4, max_thrust]", "t.yaml:16"},
+        BrokenCase{"script_rudder_and_rudder_deg",
+                   EditV("rudder_deg: 10}", "rudder_deg: 10, rudder: 0.1}"),
+                   "script[1].rudder_deg", "give rudder [rad] or rudder_deg [deg], not both",
+                   "t.yaml:17"},
+        BrokenCase{"script_rudder_beyond_limit", EditV("rudder_deg: 10}", "rudder_deg: -35}"),
+                   "script[1].rudder_deg", "must be within +-30 deg", ""},
+        BrokenCase{"script_elevator_without_surface",
+                   EditV("rudder_deg: 10}", "elevator: 0.1}"), "script[1].elevator",
+                   "no surface on channel elevator", ""},
+        BrokenCase{"script_thrust_without_propeller",
+                   EditV("{body: boat, thrust: 200}", "{body: fish, thrust: 200}"),
+                   "script[0].thrust", "fish has no propeller", ""},
+        BrokenCase{"script_without_command", EditV("{body: boat, thrust: 200}", "{body: boat}"),
+                   "script[0]", "gives no command; give at least one of thrust, rudder", "t.yaml:16"},
+        BrokenCase{"script_without_body", EditV("{body: boat, thrust: 200}", "{thrust: 200}"),
+                   "script[0].body", "is required", ""},
+        // script conditions: script[2].when
+        BrokenCase{"when_unknown_quantity", EditV("boat.yaw_deg >= 90", "boat.yaw >= 90"),
+                   "script[2].when",
+                   "unknown quantity yaw; did you mean yaw_deg? (quantities: x, y, z, roll_deg, "
+                   "pitch_deg, yaw_deg, u, v, w, p, q, r, speed)",
+                   "t.yaml:18"},
+        BrokenCase{"when_no_comparison", EditV("boat.yaw_deg >= 90", "boat.yaw_deg = 90"),
+                   "script[2].when", "has no comparison (>=, <=, >, <)", ""},
+        BrokenCase{"when_equality", EditV("boat.yaw_deg >= 90", "boat.yaw_deg == 90"),
+                   "script[2].when", "has no comparison", ""},
+        BrokenCase{"when_reversed_operator", EditV("boat.yaw_deg >= 90", "boat.yaw_deg => 90"),
+                   "script[2].when", "unknown comparison =>; use one of >=, <=, >, <", ""},
+        BrokenCase{"when_not_a_number", EditV("boat.yaw_deg >= 90", "boat.yaw_deg >= ninety"),
+                   "script[2].when", "needs a finite number after >=, not 'ninety'", ""},
+        BrokenCase{"when_trailing_unit", EditV("boat.yaw_deg >= 90", "boat.u > 1 m/s"),
+                   "script[2].when", "needs a finite number after >, not '1 m/s'", ""},
+        BrokenCase{"when_missing_number", EditV("boat.yaw_deg >= 90", "boat.yaw_deg >="),
+                   "script[2].when", "needs a finite number after >=", ""},
+        BrokenCase{"when_without_vehicle", EditV("boat.yaw_deg >= 90", "yaw_deg >= 90"),
+                   "script[2].when", "needs <vehicle>.<quantity> before >=", ""},
+        BrokenCase{"when_unknown_vehicle", EditV("boat.yaw_deg >= 90", "whale.yaw_deg >= 90"),
+                   "script[2].when", "no vehicle named whale (vehicles: boat, fish)", ""},
+        BrokenCase{"when_empty", EditV("\"boat.yaw_deg >= 90\"", "\"\""), "script[2].when",
+                   "must be a condition <vehicle>.<quantity> <op> <number>", ""},
+        BrokenCase{"when_not_a_string", EditV("\"boat.yaw_deg >= 90\"", "{yaw: 90}"),
+                   "script[2].when", "must be a string", ""},
+        BrokenCase{"when_on_a_sphere",
+                   EditV("  fish: {model: fish6.yaml,",
+                         "  ball: {type: sphere, mass: 1, position: [9, 9, 9]}\n"
+                         "  fish: {model: fish6.yaml,") +
+                       "  - {when: \"ball.z > 10\", body: boat, thrust: 0}\n",
+                   "script[3].when", "ball is a sphere; conditions are on vehicles", "t.yaml:20"},
+        BrokenCase{"script_for_sphere_among_vehicles",
+                   EditV("  fish: {model: fish6.yaml,",
+                         "  ball: {type: sphere, mass: 1, position: [9, 9, 9]}\n"
+                         "  fish: {model: fish6.yaml,") +
+                       "  - {body: ball, thrust: 0}\n",
+                   "script[3].body", "ball is a sphere, and spheres take no commands", ""}),
+    [](const ::testing::TestParamInfo<BrokenCase>& info) { return std::string(info.param.name); });
+
+// A vehicle file with one edit: the error names the file, the line and the key path under the
+// body (bodies.boat.<key>).
+struct VehicleFileCase {
+  const char* name;
+  std::string from, to;  // the edit of kBoatFile
+  std::string key;       // expected key path
+  std::string rule;      // expected part of the rule
+  int line;              // expected line in the vehicle file
+};
+
+std::ostream& operator<<(std::ostream& out, const VehicleFileCase& c) { return out << c.name; }
+
+class BrokenVehicleFileTest : public SceneLoaderTest,
+                              public ::testing::WithParamInterface<VehicleFileCase> {};
+
+TEST_P(BrokenVehicleFileTest, ThrowsWithFileLineKeyAndRule) {
+  const VehicleFileCase& c = GetParam();
+  const std::string file = std::string("boat_") + c.name + ".yaml";
+  std::ofstream(dir_ / file) << Replace(kBoatFile, c.from, c.to);
+  try {
+    Load(EditV("model: boat.yaml", "model: " + file));
+    FAIL() << "no ConfigError for " << c.name;
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.key(), c.key) << what;
+    EXPECT_NE(e.rule().find(c.rule), std::string::npos) << what;
+    EXPECT_EQ(e.location(), file + ":" + std::to_string(c.line)) << what;
+    EXPECT_EQ(what, e.key() + " = " + e.value() + " (" + e.location() + "): " + e.rule());
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, BrokenVehicleFileTest,
+    ::testing::Values(
+        VehicleFileCase{"unknown_key", "volume: 0.1\n", "volume: 0.1\ncolour: red\n",
+                        "bodies.boat.colour", "unknown key", 8},
+        VehicleFileCase{"sphere_key", "volume: 0.1\n", "volume: 0.1\ndrag_coefficient: 0.5\n",
+                        "bodies.boat.drag_coefficient", "unknown key", 8},
+        VehicleFileCase{"bad_type", "type: vehicle", "type: boat", "bodies.boat.type",
+                        "must be one of sphere, vehicle", 1},
+        VehicleFileCase{"missing_source", "source: test\n", "", "bodies.boat.source",
+                        "is required (in the model file or the scene)", 1},
+        VehicleFileCase{"empty_source", "source: test", "source: \"\"", "bodies.boat.source",
+                        "must not be empty", 2},
+        VehicleFileCase{"zero_length", "length: 2", "length: 0", "bodies.boat.length",
+                        "must be > 0", 3},
+        VehicleFileCase{"negative_mass", "mass: 100", "mass: -1", "bodies.boat.mass",
+                        "must be > 0", 4},
+        VehicleFileCase{"zero_inertia", "inertia: [1, 10, 10]", "inertia: [1, 0, 10]",
+                        "bodies.boat.inertia[1]", "must be > 0", 5},
+        VehicleFileCase{"inertia_of_two", "inertia: [1, 10, 10]", "inertia: [1, 10]",
+                        "bodies.boat.inertia", "must be a list of 3 numbers", 5},
+        VehicleFileCase{"missing_r_g", "r_g: [0, 0, 0.05]\n", "", "bodies.boat.r_g",
+                        "is required", 1},
+        VehicleFileCase{"negative_volume", "volume: 0.1", "volume: -0.1", "bodies.boat.volume",
+                        "must be >= 0", 7},
+        VehicleFileCase{"positive_diagonal_added_mass", "x_udot: -5", "x_udot: 5",
+                        "bodies.boat.added_mass.x_udot", "must be <= 0", 8},
+        VehicleFileCase{"indefinite_added_mass", "y_rdot: 2", "y_rdot: 200",
+                        "bodies.boat.added_mass", "must be positive semi-definite", 8},
+        VehicleFileCase{"unknown_added_mass_key", "m_qdot", "m_qdott",
+                        "bodies.boat.added_mass.m_qdott", "unknown key; did you mean m_qdot?", 8},
+        VehicleFileCase{"unknown_damping_key", "n_ur: -4", "n_rv: -4",
+                        "bodies.boat.damping.n_rv", "unknown key", 9},
+        VehicleFileCase{"damping_not_a_number", "x_uu: -3", "x_uu: high",
+                        "bodies.boat.damping.x_uu", "must be a number", 9},
+        VehicleFileCase{"munk_not_a_boolean", "volume: 0.1\n", "volume: 0.1\nmunk_moment: maybe\n",
+                        "bodies.boat.munk_moment", "must be true or false", 8},
+        VehicleFileCase{"surfaces_not_a_list", "  - {name: rudder", "  {name: rudder",
+                        "bodies.boat.surfaces", "must be a list", 10},
+        VehicleFileCase{"zero_normal", "normal: [0, 2, 0]", "normal: [0, 0, 0]",
+                        "bodies.boat.surfaces[0].normal", "must be a non-zero direction", 11},
+        VehicleFileCase{"bad_channel", "channel: rudder", "channel: aileron",
+                        "bodies.boat.surfaces[0].channel", "must be one of rudder, elevator, none",
+                        11},
+        VehicleFileCase{"zero_area", "area: 0.01", "area: 0", "bodies.boat.surfaces[0].area",
+                        "must be > 0", 11},
+        VehicleFileCase{"stall_at_90", "stall_angle_deg: 20", "stall_angle_deg: 90",
+                        "bodies.boat.surfaces[0].stall_angle_deg", "must be < 90", 12},
+        VehicleFileCase{"oswald_zero", "oswald: 0.9", "oswald: 0",
+                        "bodies.boat.surfaces[0].oswald", "must be > 0", 12},
+        VehicleFileCase{"oswald_above_one", "oswald: 0.9", "oswald: 1.1",
+                        "bodies.boat.surfaces[0].oswald", "must be <= 1", 12},
+        VehicleFileCase{"negative_lift_slope", "aspect_ratio: 2,", "aspect_ratio: 2, lift_slope: -1,",
+                        "bodies.boat.surfaces[0].lift_slope", "must be >= 0", 12},
+        VehicleFileCase{"bad_deflection_sign", "deflection_sign: -1", "deflection_sign: 0.5",
+                        "bodies.boat.surfaces[0].deflection_sign", "must be 1 or -1", 12},
+        VehicleFileCase{"missing_deflection_sign_on_rudder", ", deflection_sign: -1", "",
+                        "bodies.boat.surfaces[0].deflection_sign", "is required", 11},
+        VehicleFileCase{"unknown_surface_key", "cd0: 0.01", "cd_0: 0.01",
+                        "bodies.boat.surfaces[0].cd_0", "unknown key; did you mean cd0?", 12},
+        VehicleFileCase{"missing_surface_name", "{name: rudder, ", "{", 
+                        "bodies.boat.surfaces[0].name", "is required", 11},
+        VehicleFileCase{"duplicate_surface_name", "rudder: {max_deflection_deg",
+                        "  - {name: rudder, channel: none, position: [0, 0, 0], normal: [0, 0, 1], "
+                        "area: 1, aspect_ratio: 2, oswald: 0.9, cd0: 0, stall_angle_deg: 10}\n"
+                        "rudder: {max_deflection_deg",
+                        "bodies.boat.surfaces[1].name", "duplicate surface name", 13},
+        VehicleFileCase{"zero_rate", "max_rate_deg: 10", "max_rate_deg: 0",
+                        "bodies.boat.rudder.max_rate_deg", "must be > 0", 13},
+        VehicleFileCase{"deflection_limit_above_90", "max_deflection_deg: 30",
+                        "max_deflection_deg: 95", "bodies.boat.rudder.max_deflection_deg",
+                        "must be <= 90", 13},
+        VehicleFileCase{"propeller_without_time_constant", ", time_constant: 0.5", "",
+                        "bodies.boat.propeller.time_constant", "is required", 14},
+        VehicleFileCase{"negative_max_thrust", "max_thrust: 400", "max_thrust: -400",
+                        "bodies.boat.propeller.max_thrust", "must be > 0", 14},
+        VehicleFileCase{"position_in_file", "volume: 0.1\n", "volume: 0.1\nposition: [0, 0, 1]\n",
+                        "bodies.boat.position", "unknown key", 8}),
+    [](const ::testing::TestParamInfo<VehicleFileCase>& info) {
+      return std::string(info.param.name);
+    });
+
+TEST_F(SceneLoaderTest, VehicleSceneLoads) {
+  const Model m = Load(kVehicleScene);
+  EXPECT_TRUE(m.bodies.empty());
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  const core::Vehicle& boat = m.vehicles[0];
+  const core::VehicleParams& p = boat.params;
+  EXPECT_EQ(boat.name, "boat");
+  EXPECT_EQ(p.source, "test");
+  EXPECT_EQ(p.length, 2.0);
+  EXPECT_EQ(p.mass, 100.0);
+  EXPECT_EQ(p.inertia, core::Vec3(1, 10, 10));
+  EXPECT_EQ(p.r_g, core::Vec3(0, 0, 0.05));
+  EXPECT_EQ(p.r_b, core::Vec3::Zero());  // default
+  EXPECT_EQ(p.volume, 0.1);
+  // M_A holds minus the Prestero coefficients, couplings at (1,5) y_rdot and (5,1) n_vdot
+  core::Mat6 added = core::Mat6::Zero();
+  added(0, 0) = 5;
+  added(1, 1) = 80;
+  added(2, 2) = 80;
+  added(4, 4) = 9;
+  added(5, 5) = 9;
+  added(1, 5) = -2;
+  added(5, 1) = -2;
+  EXPECT_EQ(p.added_mass, added);
+  EXPECT_TRUE(p.munk_moment);  // default
+  EXPECT_EQ(p.x_uu, -3.0);
+  EXPECT_EQ(p.n_ur, -4.0);
+  EXPECT_EQ(p.y_vv, 0.0);  // default
+  ASSERT_EQ(p.surfaces.size(), 1u);
+  const core::LiftingSurface& rudder = p.surfaces[0];
+  EXPECT_EQ(rudder.name, "rudder");
+  EXPECT_EQ(rudder.channel, core::Channel::kRudder);
+  EXPECT_EQ(rudder.position_B, core::Vec3(-1, 0, 0));
+  EXPECT_EQ(rudder.normal_B, core::Vec3(0, 1, 0));  // normalized
+  EXPECT_EQ(rudder.area, 0.01);
+  EXPECT_EQ(rudder.aspect_ratio, 2.0);
+  EXPECT_EQ(rudder.lift_slope, 0.0);  // default: Helmbold
+  EXPECT_EQ(rudder.oswald, 0.9);
+  EXPECT_EQ(rudder.cd0, 0.01);
+  EXPECT_DOUBLE_EQ(rudder.stall_angle, 20.0 * kDeg);
+  EXPECT_EQ(rudder.incidence, 0.0);
+  EXPECT_EQ(rudder.deflection_sign, -1.0);
+  EXPECT_DOUBLE_EQ(p.rudder.max_deflection, 30.0 * kDeg);
+  EXPECT_DOUBLE_EQ(p.rudder.max_rate, 10.0 * kDeg);
+  EXPECT_EQ(p.elevator.max_deflection, core::ActuatorLimits{}.max_deflection);  // default
+  EXPECT_TRUE(p.has_propeller);
+  EXPECT_EQ(p.max_thrust, 400.0);
+  EXPECT_EQ(p.thrust_time_constant, 0.5);
+  // initial state: at rest, level, no command
+  EXPECT_EQ(boat.position, core::Vec3(0, 0, 1));
+  EXPECT_EQ(boat.euler, core::Vec3::Zero());
+  EXPECT_EQ(boat.nu, core::Vec6::Zero());
+  EXPECT_EQ(boat.command.thrust, 0.0);
+
+  const core::Vehicle& fish = m.vehicles[1];
+  EXPECT_FALSE(fish.params.has_propeller);
+  EXPECT_FALSE(fish.params.munk_moment);
+  ASSERT_EQ(fish.params.surfaces.size(), 1u);
+  EXPECT_EQ(fish.params.surfaces[0].channel, core::Channel::kNone);
+  EXPECT_EQ(fish.params.surfaces[0].deflection_sign, 1.0);  // default where no command drives it
+
+  // the cable ends are on vehicles: kVehicle, index into Model::vehicles
+  EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
+  EXPECT_EQ(m.cable.start.body, 0);
+  EXPECT_EQ(m.cable.start.at_B, core::Vec3(0, 0, 0.05));
+  EXPECT_EQ(m.cable.end.kind, core::EndKind::kVehicle);
+  EXPECT_EQ(m.cable.end.body, 1);
+  EXPECT_EQ(m.cable.end.at_B, core::Vec3(0.5, 0, 0));
+}
+
+TEST_F(SceneLoaderTest, VehicleAttitudeVelocityAndCommand) {
+  // yaw 90 deg (and a roll, which leaves the x axis alone): the fish's bow [0.5, 0, 0] points
+  // east, so its origin sits 0.5 m west of the cable end; the cable moves north at 1 m/s, which
+  // the fish sees in its own frame
+  const Model m = Load(
+      EditV("fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}",
+            "fish: {model: fish6.yaml, position: [0, -0.5, 101.05], euler_deg: [10, 0, 90]}"),
+      {"cable.initial_velocity=[1, 0, 0]", "bodies.boat.velocity=[2, 0, 0]",
+       "bodies.boat.command={thrust: -100, rudder_deg: -30}"});
+  const core::Vehicle& fish = m.vehicles[1];
+  EXPECT_NEAR(fish.euler.x(), 10 * kDeg, 1e-15);
+  EXPECT_EQ(fish.euler.y(), 0.0);
+  EXPECT_NEAR(fish.euler.z(), 90 * kDeg, 1e-15);
+  const core::Vec3 v_B =
+      core::QuaternionFromEulerZYX(fish.euler).conjugate() * core::Vec3(1, 0, 0);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(fish.nu(k), v_B(k), 1e-15) << k;
+  EXPECT_EQ(fish.nu.tail<3>(), core::Vec3::Zero());
+  // a given velocity is body-frame u, v, w
+  const core::Vehicle& boat = m.vehicles[0];
+  EXPECT_EQ(boat.nu.head<3>(), core::Vec3(2, 0, 0));
+  EXPECT_EQ(boat.command.thrust, -100.0);
+  EXPECT_DOUBLE_EQ(boat.command.rudder, -30 * kDeg);
+  EXPECT_EQ(boat.command.elevator, 0.0);
+}
+
+TEST_F(SceneLoaderTest, ScriptEntriesAndConditions) {
+  const Model m = Load(kVehicleScene);
+  ASSERT_EQ(m.script.size(), 3u);
+  // at defaults to 0; only the given fields are set
+  const core::ScriptEntry& thrust = m.script[0];
+  EXPECT_EQ(thrust.at, 0.0);
+  EXPECT_EQ(thrust.body, "boat");
+  EXPECT_EQ(thrust.vehicle, 0);
+  EXPECT_FALSE(thrust.has_condition);
+  EXPECT_TRUE(thrust.set_thrust);
+  EXPECT_FALSE(thrust.set_rudder || thrust.set_elevator);
+  EXPECT_EQ(thrust.thrust, 200.0);
+  // rudder_deg in degrees, held in radians
+  const core::ScriptEntry& turn = m.script[1];
+  EXPECT_EQ(turn.at, 5.0);
+  EXPECT_TRUE(turn.set_rudder);
+  EXPECT_FALSE(turn.set_thrust || turn.set_elevator);
+  EXPECT_DOUBLE_EQ(turn.rudder, 10 * kDeg);
+  // when: the condition, with rudder in radians
+  const core::ScriptEntry& back = m.script[2];
+  EXPECT_TRUE(back.has_condition);
+  EXPECT_EQ(back.condition.vehicle, 0);
+  EXPECT_EQ(back.condition.quantity, core::ScriptCondition::kYawDeg);
+  EXPECT_EQ(back.condition.op, core::ScriptCondition::kGreaterEqual);
+  EXPECT_EQ(back.condition.value, 90.0);
+  EXPECT_TRUE(back.set_rudder);
+  EXPECT_EQ(back.rudder, 0.0);
+}
+
+TEST_F(SceneLoaderTest, ConditionForms) {
+  using C = core::ScriptCondition;
+  struct Form {
+    const char* text;
+    int vehicle;
+    C::Quantity quantity;
+    C::Op op;
+    double value;
+  };
+  const Form forms[] = {
+      {"boat.yaw_deg >= 170", 0, C::kYawDeg, C::kGreaterEqual, 170},
+      {"fish.speed<2.5", 1, C::kSpeed, C::kLess, 2.5},
+      {"  boat.z <= -1e1  ", 0, C::kZ, C::kLessEqual, -10},
+      {"fish.pitch_deg > -5", 1, C::kPitchDeg, C::kGreater, -5},
+      {"boat.x >= 0", 0, C::kX, C::kGreaterEqual, 0},
+      {"boat.y >= 0", 0, C::kY, C::kGreaterEqual, 0},
+      {"boat.roll_deg >= 0", 0, C::kRollDeg, C::kGreaterEqual, 0},
+      {"boat.u >= 0", 0, C::kU, C::kGreaterEqual, 0},
+      {"boat.v >= 0", 0, C::kV, C::kGreaterEqual, 0},
+      {"boat.w >= 0", 0, C::kW, C::kGreaterEqual, 0},
+      {"boat.p >= 0", 0, C::kP, C::kGreaterEqual, 0},
+      {"boat.q >= 0", 0, C::kQ, C::kGreaterEqual, 0},
+      {"boat.r >= 0.1", 0, C::kR, C::kGreaterEqual, 0.1},
+  };
+  for (const Form& f : forms) {
+    const Model m = Load(EditV("boat.yaw_deg >= 90", f.text));
+    const core::ScriptCondition& c = m.script.at(2).condition;
+    EXPECT_EQ(c.vehicle, f.vehicle) << f.text;
+    EXPECT_EQ(c.quantity, f.quantity) << f.text;
+    EXPECT_EQ(c.op, f.op) << f.text;
+    EXPECT_EQ(c.value, f.value) << f.text;
+  }
+}
+
+TEST_F(SceneLoaderTest, VehicleOverridesMergeMapsKeyByKey) {
+  // a map key set in the scene (here by --set) replaces that key only; the file gives the rest
+  const Model m = Load(kVehicleScene, {"bodies.boat.damping.y_vv=-50",
+                                       "bodies.boat.propeller.max_thrust=1000",
+                                       "bodies.boat.added_mass.k_pdot=-1",
+                                       "bodies.boat.euler_deg=[0, 0, 45]", "bodies.boat.mass=120",
+                                       "integrator.coupling=staggered",
+                                       "integrator.max_coupling_iterations=7"});
+  const core::VehicleParams& p = m.vehicles[0].params;
+  EXPECT_EQ(p.y_vv, -50.0);
+  EXPECT_EQ(p.x_uu, -3.0);  // from the file
+  EXPECT_EQ(p.max_thrust, 1000.0);
+  EXPECT_EQ(p.thrust_time_constant, 0.5);  // from the file
+  EXPECT_EQ(p.added_mass(3, 3), 1.0);
+  EXPECT_EQ(p.added_mass(0, 0), 5.0);  // from the file
+  EXPECT_EQ(p.mass, 120.0);
+  EXPECT_DOUBLE_EQ(m.vehicles[0].euler.z(), 45 * kDeg);
+  EXPECT_EQ(m.integrator.coupling, core::Coupling::kStaggered);
+  EXPECT_EQ(m.integrator.max_coupling_iterations, 7);
+  // the same in the scene text, and surfaces replaced whole
+  const Model inline_keys = Load(
+      EditV("boat: {model: boat.yaml,",
+            "boat: {model: boat.yaml, damping: {y_vv: -50}, surfaces: [{name: r2, channel: rudder, "
+            "position: [-1, 0, 0], normal: [0, 1, 0], area: 0.02, aspect_ratio: 2, oswald: 0.9, "
+            "cd0: 0.01, stall_angle_deg: 20, deflection_sign: 1}],"));
+  const core::VehicleParams& q = inline_keys.vehicles[0].params;
+  EXPECT_EQ(q.y_vv, -50.0);
+  EXPECT_EQ(q.x_uu, -3.0);
+  ASSERT_EQ(q.surfaces.size(), 1u);
+  EXPECT_EQ(q.surfaces[0].name, "r2");
+}
+
+TEST_F(SceneLoaderTest, BadVehicleOverrideIsLocatedAtSet) {
+  try {
+    Load(kVehicleScene, {"bodies.boat.damping.x_uu=fast"});
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "bodies.boat.damping.x_uu = fast (--set): must be a number");
+  }
+  try {
+    Load(kVehicleScene, {"bodies.boat.damping.x_uuu=1"});
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.location(), "--set") << e.what();
+    EXPECT_NE(e.rule().find("did you mean x_uu?"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(SceneLoaderTest, InlineVehicleWithoutModelFile) {
+  // type: vehicle and every parameter in the scene itself
+  const Model m = Load(EditV(
+      "fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}",
+      "fish: {type: vehicle, source: inline, length: 1, mass: 20, inertia: [0.1, 1, 1], "
+      "r_g: [0, 0, 0], volume: 0.02, position: [-0.5, 0, 101.05]}"));
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  EXPECT_EQ(m.vehicles[1].params.source, "inline");
+  EXPECT_TRUE(m.vehicles[1].params.surfaces.empty());
+  EXPECT_FALSE(m.vehicles[1].params.has_propeller);
+}
+
+TEST_F(SceneLoaderTest, SpheresAndVehiclesTogether) {
+  // a sphere hangs from the boat; the fish is unattached; names resolve across both kinds
+  const Model m = Load(EditV("  end: {body: fish, at: [0.5, 0, 0]}\n", "  end: {body: ball}\n"),
+                       {"bodies.ball={type: sphere, mass: 5, position: [0, 0, 101.05]}"});
+  ASSERT_EQ(m.bodies.size(), 1u);
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
+  EXPECT_EQ(m.cable.end.kind, core::EndKind::kBody);
+  EXPECT_EQ(m.cable.end.body, 0);
+}
+
+TEST_F(SceneLoaderTest, PaperCaseScenes) {
+  for (const char* name : {"case1_forward", "case2_uturn"}) {
+    SCOPED_TRACE(name);
+    const Model m = LoadScene(kConfigDir + "/scenes/" + name + ".yaml");
+    EXPECT_EQ(m.name, name);
+    EXPECT_EQ(m.time.step, 0.05);
+    EXPECT_EQ(m.time.output_rate, 10.0);
+    EXPECT_EQ(m.cable.length, 200.0);
+    EXPECT_EQ(m.cable.elements, 20);
+    EXPECT_EQ(m.cable.diameter, 0.041);
+    EXPECT_EQ(m.cable.density, 1300.0);
+    EXPECT_EQ(m.cable.youngs_modulus, 7.0e8);
+    const core::CableLoads& loads = m.cable.loads;
+    EXPECT_TRUE(loads.gravity && loads.buoyancy && loads.drag && loads.added_mass && loads.bending);
+    EXPECT_EQ(m.cable.initial, core::InitialShape::kVertical);
+    EXPECT_EQ(m.cable.initial_velocity, core::Vec3::Zero());
+    EXPECT_TRUE(m.bodies.empty());
+    ASSERT_EQ(m.vehicles.size(), 2u);
+    const core::Vehicle& tow = m.vehicles[0];
+    const core::Vehicle& fish = m.vehicles[1];
+    EXPECT_EQ(tow.name, "tow_vehicle");
+    EXPECT_EQ(fish.name, "towfish");
+    EXPECT_EQ(tow.position, core::Vec3(0, 0, 3.5));
+    EXPECT_EQ(tow.nu, core::Vec6::Zero());
+    EXPECT_EQ(fish.nu, core::Vec6::Zero());
+    EXPECT_TRUE(tow.params.has_propeller);
+    EXPECT_FALSE(fish.params.has_propeller);
+    // the cable from the tow vehicle's CG to the towfish's bow, hanging straight down
+    EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
+    EXPECT_EQ(m.cable.start.body, 0);
+    EXPECT_EQ(m.cable.start.at_B, tow.params.r_g);
+    EXPECT_EQ(m.cable.end.kind, core::EndKind::kVehicle);
+    EXPECT_EQ(m.cable.end.body, 1);
+    EXPECT_EQ(m.cable.end.at_B, core::Vec3(0.5 * fish.params.length, 0, 0));
+    const core::Vec3 top = tow.position + tow.params.r_g;
+    const core::Vec3 bow = fish.position + m.cable.end.at_B;
+    EXPECT_EQ(bow, top + core::Vec3(0, 0, m.cable.length));
+    EXPECT_EQ(m.integrator.coupling, core::Coupling::kStrong);
+    // thrust from t = 0, the same in both cases
+    ASSERT_GE(m.script.size(), 1u);
+    EXPECT_EQ(m.script[0].at, 0.0);
+    EXPECT_TRUE(m.script[0].set_thrust);
+    EXPECT_EQ(m.script[0].vehicle, 0);
+  }
+  const Model c1 = LoadScene(kConfigDir + "/scenes/case1_forward.yaml");
+  const Model c2 = LoadScene(kConfigDir + "/scenes/case2_uturn.yaml");
+  EXPECT_EQ(c1.time.duration, 100.0);
+  EXPECT_EQ(c1.script.size(), 1u);
+  EXPECT_EQ(c2.script[0].thrust, c1.script[0].thrust);
+  ASSERT_EQ(c2.script.size(), 3u);
+  // 20 deg rudder at 55 s, back to 0 once the yaw reaches 170 deg
+  EXPECT_EQ(c2.script[1].at, 55.0);
+  EXPECT_DOUBLE_EQ(c2.script[1].rudder, 20 * kDeg);
+  EXPECT_FALSE(c2.script[1].has_condition);
+  EXPECT_EQ(c2.script[2].at, 55.0);
+  EXPECT_TRUE(c2.script[2].has_condition);
+  EXPECT_EQ(c2.script[2].condition.quantity, core::ScriptCondition::kYawDeg);
+  EXPECT_EQ(c2.script[2].condition.op, core::ScriptCondition::kGreaterEqual);
+  EXPECT_EQ(c2.script[2].condition.value, 170.0);
+  EXPECT_EQ(c2.script[2].rudder, 0.0);
+}
 
 TEST_F(SceneLoaderTest, ModelFileErrorNamesTheFile) {
   try {

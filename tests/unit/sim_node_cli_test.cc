@@ -137,6 +137,8 @@ TEST(SimNodeCliTest, GoodSceneRuns) {
       RunSimNode({"--scene", (tmp.path() / "good.yaml").string(), "--mode", "offline"}, tmp.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("sim_node: cli_test: 20 steps, 1 s simulated"), std::string::npos) << r.out;
+  // no vehicles, no coupling iterations in the summary
+  EXPECT_EQ(r.out.find("coupling"), std::string::npos) << r.out;
 }
 
 // --- bad input: exit 2 and a message naming what is wrong ----------------------------------
@@ -303,6 +305,77 @@ TEST(SimNodeCliTest, OfflineCatenaryWritesTheFourCsvFiles) {
   const std::vector<std::string> status = Lines(ReadFile(csv / "status.csv"));
   EXPECT_EQ(status[1].rfind("0,0,0,", 0), 0u) << status[1];
   EXPECT_EQ(status.back().rfind("1,20,", 0), 0u) << status.back();
+}
+
+// --- vehicles and the script ----------------------------------------------------------------
+
+const std::string kCase1 = (kSourceDir / "config/scenes/case1_forward.yaml").string();
+
+// the field `column` of the rows of `lines` at time `t` for `body`
+double Value(const std::vector<std::string>& lines, const std::string& t, const std::string& body,
+             int column) {
+  for (const std::string& line : lines) {
+    if (line.rfind(t + "," + body + ",", 0) != 0) continue;
+    std::stringstream in(line);
+    std::string field;
+    for (int c = 0; c <= column; ++c) std::getline(in, field, ',');
+    return std::stod(field);
+  }
+  ADD_FAILURE() << "no row for " << body << " at t = " << t;
+  return 0.0;
+}
+
+TEST(SimNodeCliTest, VehicleSceneRunsTheScript) {
+  TempDir tmp;
+  // the paper's Case 1 for 2 s: the thrust of the script accelerates the towing vehicle
+  for (const bool thrust : {true, false}) {
+    SCOPED_TRACE(thrust ? "with thrust" : "without script");
+    const fs::path csv = tmp.path() / (thrust ? "thrust" : "none");
+    std::vector<std::string> args = {"--scene", kCase1,   "--mode", "offline",
+                                     "--duration", "2", "--csv",  csv.string()};
+    if (!thrust) args.insert(args.end(), {"--set", "script=[]"});
+    const Result r = RunSimNode(args, tmp.path());
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(std::regex_search(
+        r.out, std::regex(R"(substeps \d+, coupling iterations mean [0-9.]+\n)")))
+        << r.out;
+
+    // one row per body and time, spheres (none) then vehicles in scene order; the cable ends
+    // are on the vehicles, so forces.csv has no support rows
+    const std::vector<std::string> bodies = Lines(ReadFile(csv / "bodies.csv"));
+    const std::vector<std::string> forces = Lines(ReadFile(csv / "forces.csv"));
+    ASSERT_EQ(bodies.size(), 1 + 2 * 21u);  // t = 0, 0.1, ..., 2
+    ASSERT_EQ(forces.size(), 1 + 2 * 21u);
+    EXPECT_EQ(bodies[1].rfind("0,tow_vehicle,0,0,3.5,", 0), 0u) << bodies[1];
+    EXPECT_EQ(bodies[2].rfind("0,towfish,", 0), 0u) << bodies[2];
+    EXPECT_EQ(forces[1].rfind("0,tow_vehicle,", 0), 0u) << forces[1];
+    EXPECT_EQ(forces[2].rfind("0,towfish,", 0), 0u) << forces[2];
+    for (const std::string& line : bodies) EXPECT_EQ(CountFields(line), 14u);
+    for (const std::string& line : forces) EXPECT_EQ(CountFields(line), 8u);
+
+    // surge u (column 8) of the towing vehicle after 2 s: the thrust makes the difference
+    const double u = Value(bodies, "2", "tow_vehicle", 8);
+    if (thrust) {
+      EXPECT_GT(u, 0.3);
+    } else {
+      EXPECT_LT(std::abs(u), 0.1);
+    }
+    // the cable pulls the towfish up (z down): a negative heave force in its frame
+    EXPECT_LT(Value(forces, "2", "towfish", 4), 0.0);
+  }
+}
+
+TEST(SimNodeCliTest, BadScriptConditionExitsTwo) {
+  TempDir tmp;
+  const Result r = RunSimNode(
+      {"--scene", kCase1, "--mode", "offline", "--set",
+       "script=[{at: 1, when: \"tow_vehicle.yaw >= 10\", body: tow_vehicle, rudder: 0}]"},
+      tmp.path());
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("sim_node: error: script[0].when = \"tow_vehicle.yaw >= 10\" (--set): "
+                       "unknown quantity yaw; did you mean yaw_deg?"),
+            std::string::npos)
+      << r.err;
 }
 
 // --- solver failure -------------------------------------------------------------------------

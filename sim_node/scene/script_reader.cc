@@ -1,0 +1,169 @@
+#include "scene/script_reader.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+#include "scene/body_reader.h"
+#include "scene/vehicle_reader.h"
+
+namespace towsim::scene::internal {
+namespace {
+
+using Condition = core::ScriptCondition;
+
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+constexpr const char* kConditionForm =
+    "<vehicle>.<quantity> <op> <number>, e.g. tow_vehicle.yaw_deg >= 170";
+
+// quantity names, in the order of ScriptCondition::Quantity
+const std::vector<std::string>& QuantityNames() {
+  static const std::vector<std::string> kNames = {"x",     "y",     "z",       "roll_deg",
+                                                  "pitch_deg", "yaw_deg", "u", "v",
+                                                  "w",     "p",     "q",       "r",
+                                                  "speed"};
+  return kNames;
+}
+
+std::string Join(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& w : words) text += (text.empty() ? "" : ", ") + w;
+  return text;
+}
+
+std::string Trim(const std::string& text) {
+  const size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+std::string VehicleNames(const core::Model& model) {
+  std::string names;
+  for (const core::Vehicle& v : model.vehicles) names += (names.empty() ? "" : ", ") + v.name;
+  return names.empty() ? "none" : names;
+}
+
+// one optional command field: `deg_key` (degrees) or `key` (SI), not both
+bool ReadChannel(const MapReader& map, const std::string& key, const std::string& deg_key,
+                 Field* given, double* value) {
+  if (map.Has(key) && map.Has(deg_key)) {
+    map.Get(deg_key).Fail("give " + key + " [rad] or " + deg_key + " [deg], not both");
+  }
+  if (!map.Has(key) && !map.Has(deg_key)) return false;
+  *given = map.Get(map.Has(key) ? key : deg_key);
+  *value = given->Number() * (map.Has(key) ? 1.0 : kDegToRad);
+  return true;
+}
+
+}  // namespace
+
+core::ScriptCondition ReadCondition(const Field& field, const core::Model& model) {
+  const std::string text = Trim(field.String());
+  if (text.empty()) field.Fail(std::string("must be a condition ") + kConditionForm);
+
+  // the comparison: the first < or >, with an optional =
+  const size_t at = text.find_first_of("<>");
+  if (at == std::string::npos) {
+    field.Fail(std::string("has no comparison (>=, <=, >, <); the form is ") + kConditionForm);
+  }
+  const bool or_equal = at + 1 < text.size() && text[at + 1] == '=';
+  const std::string op = text.substr(at, or_equal ? 2 : 1);
+  const std::string left = Trim(text.substr(0, at));
+  const std::string right = Trim(text.substr(at + op.size()));
+  if (!left.empty() && (left.back() == '=' || left.back() == '!')) {
+    field.Fail("unknown comparison " + left.substr(left.size() - 1) + op +
+               "; use one of >=, <=, >, <");
+  }
+  Condition c;
+  c.op = op == ">=" ? Condition::kGreaterEqual
+         : op == "<=" ? Condition::kLessEqual
+         : op == ">"  ? Condition::kGreater
+                      : Condition::kLess;
+
+  // <vehicle>.<quantity>
+  const size_t dot = left.find('.');
+  if (left.empty() || dot == std::string::npos) {
+    field.Fail("needs <vehicle>.<quantity> before " + op + "; the form is " + kConditionForm);
+  }
+  const std::string vehicle = left.substr(0, dot);
+  const std::string quantity = left.substr(dot + 1);
+  const BodyRef ref = FindBody(model, vehicle);
+  if (ref.kind == BodyRef::kNone) {
+    field.Fail("no vehicle named " + vehicle + " (vehicles: " + VehicleNames(model) + ")");
+  }
+  if (ref.kind == BodyRef::kSphere) {
+    field.Fail(vehicle + " is a sphere; conditions are on vehicles (vehicles: " +
+               VehicleNames(model) + ")");
+  }
+  c.vehicle = ref.index;
+  const std::vector<std::string>& names = QuantityNames();
+  const auto it = std::find(names.begin(), names.end(), quantity);
+  if (it == names.end()) {
+    const std::string suggestion = Suggestion(quantity, names);
+    field.Fail("unknown quantity " + quantity +
+               (suggestion.empty() ? "" : "; did you mean " + suggestion + "?") +
+               " (quantities: " + Join(names) + ")");
+  }
+  c.quantity = static_cast<Condition::Quantity>(it - names.begin());
+
+  // the number: finite, nothing after it
+  double value = 0.0;
+  const char* end = right.data() + right.size();
+  const auto [ptr, ec] = std::from_chars(right.data(), end, value);
+  if (right.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
+    field.Fail("needs a finite number after " + op + ", not '" + right + "'; the form is " +
+               kConditionForm);
+  }
+  c.value = value;
+  return c;
+}
+
+std::vector<core::ScriptEntry> ReadScript(const Field& field, const core::Model& model) {
+  std::vector<core::ScriptEntry> script;
+  for (const Field& item : field.Items()) {
+    const MapReader map(item, MapKind::kScriptEntry);
+    core::ScriptEntry entry;
+    entry.at = map.Number("at", Range::AtLeast(0.0), 0.0);
+    if (map.Has("when")) {
+      entry.has_condition = true;
+      entry.condition = ReadCondition(map.Get("when"), model);
+    }
+
+    // the body must exist and take commands: a vehicle
+    const Field body = map.Require("body");
+    entry.body = body.String();
+    const BodyRef ref = FindBody(model, entry.body);
+    if (ref.kind == BodyRef::kNone) body.Fail("no such body (bodies: " + BodyNames(model) + ")");
+    if (ref.kind == BodyRef::kSphere) {
+      body.Fail(entry.body +
+                " is a sphere, and spheres take no commands (thrust, rudder, elevator); remove "
+                "this script entry");
+    }
+    entry.vehicle = ref.index;
+    const core::Vehicle& vehicle = model.vehicles[ref.index];
+
+    // the commands given, each one the vehicle can carry out
+    if (map.Has("thrust")) {
+      const Field thrust = map.Get("thrust");
+      entry.set_thrust = true;
+      entry.thrust = thrust.Number();
+      CheckThrust(thrust, entry.thrust, vehicle);
+    }
+    Field given = body;
+    entry.set_rudder = ReadChannel(map, "rudder", "rudder_deg", &given, &entry.rudder);
+    if (entry.set_rudder) CheckDeflection(given, entry.rudder, vehicle, core::Channel::kRudder);
+    entry.set_elevator = ReadChannel(map, "elevator", "elevator_deg", &given, &entry.elevator);
+    if (entry.set_elevator) {
+      CheckDeflection(given, entry.elevator, vehicle, core::Channel::kElevator);
+    }
+    if (!entry.set_thrust && !entry.set_rudder && !entry.set_elevator) {
+      item.Fail(
+          "gives no command; give at least one of thrust, rudder, rudder_deg, elevator, "
+          "elevator_deg");
+    }
+    script.push_back(entry);
+  }
+  return script;
+}
+
+}  // namespace towsim::scene::internal

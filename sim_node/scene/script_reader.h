@@ -1,0 +1,22 @@
+#pragma once
+// script: offline commands for the vehicles, each fired once, at a time and optionally when a
+// condition on a vehicle's state holds:
+//   - {at: 55, when: "tow_vehicle.yaw_deg >= 170", body: tow_vehicle, rudder_deg: 0}
+
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+#include "scene/yaml_reader.h"
+
+namespace towsim::scene::internal {
+
+// Reads the script list (absent: empty) against the scene's bodies and vehicles in `model`.
+std::vector<core::ScriptEntry> ReadScript(const Field& script, const core::Model& model);
+
+// Parses `<vehicle>.<quantity> <op> <number>` (the value of `field`, e.g. script[3].when);
+// quantity one of x, y, z, roll_deg, pitch_deg, yaw_deg, u, v, w, p, q, r, speed and op one of
+// >=, <=, >, <. Throws ConfigError saying what is wrong.
+core::ScriptCondition ReadCondition(const Field& field, const core::Model& model);
+
+}  // namespace towsim::scene::internal
