@@ -26,7 +26,11 @@ import os
 import sys
 from collections import defaultdict
 
-import matplotlib
+try:
+    import matplotlib
+except ImportError:
+    sys.exit("plot_paper: needs matplotlib (Debian: apt-get install python3-matplotlib, then run "
+             "it with the system's python3, /usr/bin/python3)")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend is chosen)

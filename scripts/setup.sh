@@ -13,6 +13,10 @@ cd "$towsim_root"
 
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
                  cyclonedds-tools libgtest-dev libbenchmark-dev "$@")
+# who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
+for towsim_pkg in "$@"; do
+  if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib); fi
+done
 
 # install what is missing (apt-get update only when something is)
 towsim_missing=()

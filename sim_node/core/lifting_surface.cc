@@ -11,7 +11,7 @@ constexpr double kMinSpeed = 1.0e-9;
 }  // namespace
 
 double HelmboldLiftSlope(double aspect_ratio) {
-  // a = 2 pi AR / (2 + sqrt(AR^2 + 4))   (Helmbold 1942; Fossen's pi AR / (1 + sqrt(1 + (AR/2)^2)))
+  // a = 2 pi AR / (2 + sqrt(AR^2 + 4))  (Helmbold 1942; = Fossen's pi AR / (1 + sqrt(1 + AR^2/4)))
   return 2.0 * kPi * aspect_ratio / (2.0 + std::sqrt(aspect_ratio * aspect_ratio + 4.0));
 }
 

@@ -59,8 +59,7 @@ int ScriptRunner::Apply(Simulation* sim) {
   for (size_t i = 0; i < entries_.size(); ++i) {
     const ScriptEntry& e = entries_[i];
     if (fired_[i] || sim->time() < e.at - kScriptTimeTolerance) continue;
-    if (e.has_condition &&
-        !ConditionHolds(e.condition, sim->vehicle_state(e.condition.vehicle))) {
+    if (e.has_condition && !ConditionHolds(e.condition, sim->vehicle_state(e.condition.vehicle))) {
       continue;
     }
     // the given fields replace those of the command held so far

@@ -175,6 +175,9 @@ double Simulation::PotentialEnergy() const {
     const VehicleState& vs = vehicle_state(v);
     pe -= p.mass * env.gravity * (vs.p_W + vs.q_WB * p.r_g).z();
     pe += env.water_density * p.volume * env.gravity * (vs.p_W + vs.q_WB * p.r_b).z();
+    // the mast's waterplane is a heave spring of stiffness rho g A_wp about design_depth
+    const double dz = vs.p_W.z() - p.design_depth;
+    pe += 0.5 * env.water_density * env.gravity * p.waterplane_area * dz * dz;
   }
   return pe;
 }

@@ -26,7 +26,7 @@ Mat3 Skew(const Vec3& a) {
   return s;
 }
 
-// Fossen's m2c (Fossen 2011 Eq. 3.46 / 6.43): the Kirchhoff Coriolis-centripetal matrix of a
+// Fossen's m2c (Fossen 2011 ch. 3 and 6; MSS m2c.m): the Kirchhoff Coriolis-centripetal matrix of a
 // kinetic energy 1/2 nu^T M nu (M symmetrized),
 //   C(nu) = [ 0            -S(M11 nu1 + M12 nu2) ]
 //           [ -S(M11 nu1 + M12 nu2)  -S(M21 nu1 + M22 nu2) ]
@@ -65,7 +65,7 @@ double FinRate(const ActuatorLimits& lim, double cmd, double delta) {
 }  // namespace
 
 Mat6 RigidBodyMassMatrix(const VehicleParams& p) {
-  // M_RB = [ m I        -m S(r_g) ]    I_O = I_g - m S(r_g)^2   (Fossen 2011 Eq. 3.44)
+  // M_RB = [ m I        -m S(r_g) ]    I_O = I_g - m S(r_g)^2   (Fossen 2011 ch. 3)
   //        [ m S(r_g)    I_O      ]    I_g = diag(inertia) about the CG
   const Mat3 s = Skew(p.r_g);
   Mat6 m = Mat6::Zero();
@@ -87,7 +87,7 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   const double pr = nu_r(3), q = nu_r(4), r = nu_r(5);
   Vec6 tau = Vec6::Zero();
 
-  // -C_A(nu_r) nu_r, C_A = m2c(M_A, nu_r) (Kirchhoff; Fossen 2011 Eq. 6.43). Without the Munk
+  // -C_A(nu_r) nu_r, C_A = m2c(M_A, nu_r) (Kirchhoff; Fossen 2011 ch. 6). Without the Munk
   // moment, as in Fossen's MSS torpedo/remus100: CA(6,1:2) = CA(5,1:3) = 0 (1-based), i.e. the
   // yaw and pitch moments proportional to the linear velocities, (X_udot - Y_vdot) u v,
   // (Z_wdot - X_udot) u w and the coupling terms Y_rdot u r, Z_qdot u q, are dropped.
@@ -99,7 +99,7 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   tau -= c_a * nu_r;
 
   // the added mass accelerates with the relative velocity: M_A nu_r_dot = M_A nu_dot
-  // + M_A [omega x v_c; 0] for a current steady in W (v_c_dot = -omega x v_c, Fossen 2011 §10.3)
+  // + M_A [omega x v_c; 0] for a current steady in W (v_c_dot = -omega x v_c, Fossen 2011 ch. 10)
   Vec6 nu_c_dot = Vec6::Zero();
   nu_c_dot.head<3>() = -omega.cross(v_c);
   tau += p.added_mass * nu_c_dot;
@@ -112,12 +112,25 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   tau(4) += p.m_ww * w * std::abs(w) + p.m_qq * q * std::abs(q) + p.m_uw * u * w + p.m_uq * u * q;
   tau(5) += p.n_vv * v * std::abs(v) + p.n_rr * r * std::abs(r) + p.n_uv * u * v + p.n_ur * u * r;
 
-  // -g(eta): weight m g at r_g, buoyancy rho V g at r_b, gravity along +z_W (Fossen 2011 Eq. 4.6)
+  // -g(eta): weight m g at r_g, buoyancy rho V g at r_b, gravity along +z_W (Fossen 2011 ch. 4)
   const Vec3 down_B = r_wb.transpose() * Vec3::UnitZ();
   const Vec3 f_weight = p.mass * env.gravity * down_B;
   const Vec3 f_buoyancy = -env.water_density * p.volume * env.gravity * down_B;
   tau.head<3>() += f_weight + f_buoyancy;
   tau.tail<3>() += p.r_g.cross(f_weight) + p.r_b.cross(f_buoyancy);
+  if (p.waterplane_area > 0.0) {
+    // fairing waterplane: extra displaced volume A_wp (z_O - design_depth), bounded below by -V
+    const double dv = std::max(p.waterplane_area * (s.p_W.z() - p.design_depth), -p.volume);
+    const Vec3 f_mast = -env.water_density * dv * env.gravity * down_B;
+    tau.head<3>() += f_mast;
+    tau.tail<3>() += p.waterplane_point_B.cross(f_mast);
+    // waterplane moments: the fairing resists roll and pitch (small-angle hydrostatics in the
+    // body frame; sin of the Euler angles from the down vector: down_B = [-sin th, sin ph cos th,
+    // cos ph cos th])
+    const double rho_g = env.water_density * env.gravity;
+    tau(3) -= rho_g * p.waterplane_inertia_trans * down_B.y();
+    tau(4) -= rho_g * p.waterplane_inertia_long * (-down_B.x());
+  }
 
   // propeller: thrust along +x_B through O
   if (p.has_propeller) tau(0) += s.thrust;
@@ -211,10 +224,10 @@ void AdvanceVehicle(const VehicleParams& p, const Environment& env, const Vehicl
   const Eigen::Vector4d q = q0 + w6 * (k1.q_dot + 2.0 * k2.q_dot + 2.0 * k3.q_dot + k4.q_dot);
   x.q_WB = Eigen::Quaterniond(q(0), q(1), q(2), q(3)).normalized();
   x.nu += w6 * (k1.d.nu_dot + 2.0 * k2.d.nu_dot + 2.0 * k3.d.nu_dot + k4.d.nu_dot);
-  x.thrust += w6 * (k1.d.thrust_dot + 2.0 * k2.d.thrust_dot + 2.0 * k3.d.thrust_dot +
-                    k4.d.thrust_dot);
-  x.rudder += w6 * (k1.d.rudder_dot + 2.0 * k2.d.rudder_dot + 2.0 * k3.d.rudder_dot +
-                    k4.d.rudder_dot);
+  x.thrust +=
+      w6 * (k1.d.thrust_dot + 2.0 * k2.d.thrust_dot + 2.0 * k3.d.thrust_dot + k4.d.thrust_dot);
+  x.rudder +=
+      w6 * (k1.d.rudder_dot + 2.0 * k2.d.rudder_dot + 2.0 * k3.d.rudder_dot + k4.d.rudder_dot);
   x.elevator += w6 * (k1.d.elevator_dot + 2.0 * k2.d.elevator_dot + 2.0 * k3.d.elevator_dot +
                       k4.d.elevator_dot);
   *s = x;
@@ -226,7 +239,7 @@ double VehicleKineticEnergy(const VehicleParams& p, const VehicleState& s) {
 }
 
 Vec3 EulerZYX(const Eigen::Quaterniond& q_WB) {
-  // R = Rz(psi) Ry(theta) Rx(phi) (Fossen 2011 Eq. 2.18); theta = -asin(R_20)
+  // R = Rz(psi) Ry(theta) Rx(phi) (Fossen 2011 ch. 2); theta = -asin(R_20)
   const Mat3 r = q_WB.normalized().toRotationMatrix();
   const double phi = std::atan2(r(2, 1), r(2, 2));
   const double theta = -std::asin(std::clamp(r(2, 0), -1.0, 1.0));

@@ -9,7 +9,8 @@
 //   (M_RB + M_A) nu_dot + C_RB(nu) nu + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta)
 //       = tau_prop + tau_surfaces + tau_cable,
 //   p_dot_W = R_WB nu_lin,  q_dot_WB = 1/2 q_WB (x) [0, omega_B],
-// with nu_r = nu - [R_WB^T U_W; 0] the velocity relative to the current U_W.
+// with nu_r = nu - [R_WB^T U_W; 0] the velocity relative to the current U_W (the added mass
+// moves with the water: M_A nu_r_dot = M_A nu_dot + M_A [omega x R_WB^T U_W; 0]; Fossen ch. 10).
 // Dimensional coefficients (SI), as written in config/vehicles/*.yaml.
 
 #include <string>
@@ -63,6 +64,17 @@ struct VehicleParams {
   Vec3 r_g = Vec3::Zero();      // CG in B [m]
   Vec3 r_b = Vec3::Zero();      // CB in B [m] (origin: usually zero)
   double volume = 0.0;          // displaced volume [m^3] (buoyancy rho g V at r_b)
+  // Semi-submersible hydrostatics: a surface-piercing fairing of waterplane area A_wp adds the
+  // buoyancy rho g A_wp (z_O - design_depth), vertical in W, at waterplane_point_B, as the
+  // origin O sinks below design_depth (it loses it as O rises; at most the volume V). 0: the
+  // vehicle is fully submerged and its buoyancy does not depend on depth.
+  double waterplane_area = 0.0;                // A_wp [m^2]
+  Vec3 waterplane_point_B = Vec3::Zero();      // where the mast meets the hull, in B [m]
+  double design_depth = 0.0;                   // depth of O at which V is the displacement [m]
+  // second moments of the waterplane about its centroid (Fossen 2011 §4.2: restoring moments
+  // -rho g I_L sin(theta), -rho g I_T sin(phi) of a surface-piercing structure) [m^4]
+  double waterplane_inertia_long = 0.0;
+  double waterplane_inertia_trans = 0.0;
   Mat6 added_mass = Mat6::Zero();  // M_A (positive: -X_udot, -Y_vdot, ...)
   bool munk_moment = true;  // false: C_A without the Munk moment terms (Fossen's recipe)
   // viscous damping, dimensional, sign as in the force (X = x_uu u|u| ...):
@@ -126,6 +138,9 @@ void AdvanceVehicle(const VehicleParams& p, const Environment& env, const Vehicl
 
 // generalized forces for diagnostics and tests, body frame, about O
 Mat6 RigidBodyMassMatrix(const VehicleParams& p);  // M_RB
+// everything on the right of (M_RB + M_A) nu_dot + C_RB(nu) nu = tau_hyd + tau_ext except the
+// external wrench: -C_A(nu_r) nu_r (and the current term above), -D(nu_r) nu_r, -g(eta), the
+// surfaces at the state's fin angles, and the propeller at the state's thrust
 Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s);
 double VehicleKineticEnergy(const VehicleParams& p, const VehicleState& s);  // 1/2 nu^T M nu
 

@@ -87,9 +87,8 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     const core::Vec3 p_WB = sim.body_position(b);
     const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
     const core::Vec6 nu = sim.body_twist(b);
-    std::fprintf(bodies_.f,
-                 "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
-                 Field(sim.body_name(b)).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), rpy.x(), rpy.y(),
+    std::fprintf(bodies_.f, "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+                 t, Field(sim.body_name(b)).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), rpy.x(), rpy.y(),
                  rpy.z(), nu(0), nu(1), nu(2), nu(3), nu(4), nu(5));
   }
 

@@ -11,8 +11,6 @@
 namespace towsim::scene::internal {
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-
 bool Allowed(MapKind kind, const std::string& key) {
   const std::vector<std::string>& keys = AllowedKeys(kind);
   return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -21,14 +19,16 @@ bool Allowed(MapKind kind, const std::string& key) {
 // a key of the scene's body entry that belongs to the other type of body
 void CheckKeysOfType(const MapReader& scene_keys, bool vehicle) {
   for (const auto& [key, value] : scene_keys.entries()) {
-    const bool sphere_only = Allowed(MapKind::kModelFile, key) && !Allowed(MapKind::kVehicleFile, key);
-    const bool vehicle_only = (Allowed(MapKind::kVehicleFile, key) &&
-                               !Allowed(MapKind::kModelFile, key)) ||
-                              key == "euler_deg" || key == "command";
+    const bool sphere_only =
+        Allowed(MapKind::kModelFile, key) && !Allowed(MapKind::kVehicleFile, key);
+    const bool vehicle_only =
+        (Allowed(MapKind::kVehicleFile, key) && !Allowed(MapKind::kModelFile, key)) ||
+        key == "euler_deg" || key == "command";
     if (vehicle && sphere_only) value.Fail("applies only to type: sphere (this body is a vehicle)");
     if (!vehicle && vehicle_only) {
-      value.Fail("applies only to type: vehicle (this body is a sphere, whose frame stays "
-                 "aligned with the world)");
+      value.Fail(
+          "applies only to type: vehicle (this body is a sphere, whose frame stays "
+          "aligned with the world)");
     }
   }
 }
@@ -71,23 +71,8 @@ VehicleInput ReadVehicle(const std::string& name, const BodyKeys& keys) {
   input.velocity_given = scene.Has("velocity");
   if (input.velocity_given) vehicle.nu.head<3>() = scene.Vector("velocity");
 
-  // the command held from t = 0: given fields only, each one the vehicle can carry out
-  const MapReader command(scene.Get("command"), MapKind::kCommand);
-  if (command.Has("thrust")) {
-    const Field thrust = command.Get("thrust");
-    vehicle.command.thrust = thrust.Number();
-    CheckThrust(thrust, vehicle.command.thrust, vehicle);
-  }
-  if (command.Has("rudder_deg")) {
-    const Field rudder = command.Get("rudder_deg");
-    vehicle.command.rudder = kDegToRad * rudder.Number();
-    CheckDeflection(rudder, vehicle.command.rudder, vehicle, core::Channel::kRudder);
-  }
-  if (command.Has("elevator_deg")) {
-    const Field elevator = command.Get("elevator_deg");
-    vehicle.command.elevator = kDegToRad * elevator.Number();
-    CheckDeflection(elevator, vehicle.command.elevator, vehicle, core::Channel::kElevator);
-  }
+  // the command held from t = 0: the fields given, each one the vehicle can carry out
+  ReadCommand(MapReader(scene.Get("command"), MapKind::kCommand), vehicle, &vehicle.command);
   return input;
 }
 
@@ -99,8 +84,8 @@ void ReadBody(const std::string& name, const Field& field, const std::string& ba
     file_root.emplace(LoadModelFile(scene_keys.Get("model"), field.path(), base_dir));
   }
   // the type: the scene's, else the model file's
-  const Field type = scene_keys.Has("type") || !file_root ? scene_keys.Get("type")
-                                                          : FileType(*file_root);
+  const Field type =
+      scene_keys.Has("type") || !file_root ? scene_keys.Get("type") : FileType(*file_root);
   if (!type.present()) {
     type.Fail("is required (type: sphere or type: vehicle, here or in the model file)");
   }
@@ -108,7 +93,9 @@ void ReadBody(const std::string& name, const Field& field, const std::string& ba
 
   // the keys of that type, in the model file and in the scene
   std::optional<MapReader> file_keys;
-  if (file_root) file_keys.emplace(*file_root, vehicle ? MapKind::kVehicleFile : MapKind::kModelFile);
+  if (file_root) {
+    file_keys.emplace(*file_root, vehicle ? MapKind::kVehicleFile : MapKind::kModelFile);
+  }
   CheckKeysOfType(scene_keys, vehicle);
   const BodyKeys keys(scene_keys, file_keys);
   if (vehicle) {
@@ -120,8 +107,7 @@ void ReadBody(const std::string& name, const Field& field, const std::string& ba
 
 }  // namespace
 
-Field LoadModelFile(const Field& model, const std::string& body_path,
-                    const std::string& base_dir) {
+Field LoadModelFile(const Field& model, const std::string& body_path, const std::string& base_dir) {
   // the path is relative to the scene's folder
   std::filesystem::path path(model.String());
   if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
@@ -214,7 +200,8 @@ BodyRef FindBody(const core::Model& model, const std::string& name) {
 
 std::string BodyNames(const core::Model& model) {
   std::string names;
-  for (const core::SphereBody& body : model.bodies) names += (names.empty() ? "" : ", ") + body.name;
+  for (const core::SphereBody& body : model.bodies)
+    names += (names.empty() ? "" : ", ") + body.name;
   for (const core::Vehicle& v : model.vehicles) names += (names.empty() ? "" : ", ") + v.name;
   return names.empty() ? "none" : names;
 }

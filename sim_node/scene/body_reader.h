@@ -5,8 +5,8 @@
 // that file, and keys given in the scene override the file's (maps such as damping key by key).
 
 #include <optional>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/model.h"

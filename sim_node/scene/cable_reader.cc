@@ -112,7 +112,7 @@ core::Vec3 EndPosition(const core::CableEnd& end, const core::Model& model) {
 // the name of the body an end is attached to
 const std::string& EndBodyName(const core::CableEnd& end, const core::Model& model) {
   return end.kind == core::EndKind::kVehicle ? model.vehicles[end.body].name
-                                              : model.bodies[end.body].name;
+                                             : model.bodies[end.body].name;
 }
 
 bool OnBody(const core::CableEnd& end) {

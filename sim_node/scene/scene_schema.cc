@@ -31,8 +31,9 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   static const std::vector<std::string> kSphereKeys = {"mass", "volume", "drag_coefficient",
                                                        "added_mass_coefficient", "source"};
   static const std::vector<std::string> kVehicleKeys = {
-      "source", "length",      "mass",     "inertia", "r_g",      "r_b",       "volume",
-      "added_mass", "munk_moment", "damping", "surfaces", "rudder", "elevator", "propeller"};
+      "source",     "length",      "mass",    "inertia",  "r_g",    "r_b",      "volume",
+      "added_mass", "munk_moment", "damping", "surfaces", "rudder", "elevator", "propeller",
+      "waterplane"};
   // type first, then the keys of `groups`, each once, in order
   const auto join = [](std::vector<std::string> keys,
                        std::initializer_list<const std::vector<std::string>*> groups) {
@@ -54,9 +55,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kDriven, {"position", "velocity"}},
       {MapKind::kBodies, {}},
       // a body in the scene: its initial state and any key of its model (the scene's wins)
-      {MapKind::kBody,
-       join({"type", "model", "position", "euler_deg", "velocity", "command"},
-            {&kSphereKeys, &kVehicleKeys})},
+      {MapKind::kBody, join({"type", "model", "position", "euler_deg", "velocity", "command"},
+                            {&kSphereKeys, &kVehicleKeys})},
       {MapKind::kModelFile, join({"type"}, {&kSphereKeys})},
       {MapKind::kVehicleFile, join({"type"}, {&kVehicleKeys})},
       {MapKind::kAddedMass,
@@ -70,7 +70,9 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
         "cd0", "stall_angle_deg", "incidence_deg", "deflection_sign"}},
       {MapKind::kActuator, {"max_deflection_deg", "max_rate_deg"}},
       {MapKind::kPropeller, {"max_thrust", "time_constant"}},
-      {MapKind::kCommand, {"thrust", "rudder_deg", "elevator_deg"}},
+      {MapKind::kWaterplane,
+       {"area", "position", "design_depth", "inertia_longitudinal", "inertia_transverse"}},
+      {MapKind::kCommand, {"thrust", "rudder", "rudder_deg", "elevator", "elevator_deg"}},
       {MapKind::kIntegrator,
        {"scheme", "rho_inf", "coupling", "tolerance", "max_iterations", "max_substep_level",
         "max_coupling_iterations"}},
@@ -103,6 +105,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "damping") return MapKind::kDamping;
       if (key == "rudder" || key == "elevator") return MapKind::kActuator;
       if (key == "propeller") return MapKind::kPropeller;
+      if (key == "waterplane") return MapKind::kWaterplane;
       if (key == "command" && parent == MapKind::kBody) return MapKind::kCommand;
       return std::nullopt;  // values; surfaces is a list
     default:

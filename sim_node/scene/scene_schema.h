@@ -25,6 +25,7 @@ enum class MapKind {
   kSurface,      // <vehicle>.surfaces[i]
   kActuator,     // <vehicle>.rudder, <vehicle>.elevator
   kPropeller,    // <vehicle>.propeller
+  kWaterplane,   // <vehicle>.waterplane
   kCommand,      // bodies.<name>.command
   kIntegrator,   // integrator
   kScriptEntry,  // script[i]

@@ -12,16 +12,13 @@ namespace {
 
 using Condition = core::ScriptCondition;
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 constexpr const char* kConditionForm =
     "<vehicle>.<quantity> <op> <number>, e.g. tow_vehicle.yaw_deg >= 170";
 
 // quantity names, in the order of ScriptCondition::Quantity
 const std::vector<std::string>& QuantityNames() {
-  static const std::vector<std::string> kNames = {"x",     "y",     "z",       "roll_deg",
-                                                  "pitch_deg", "yaw_deg", "u", "v",
-                                                  "w",     "p",     "q",       "r",
-                                                  "speed"};
+  static const std::vector<std::string> kNames = {
+      "x", "y", "z", "roll_deg", "pitch_deg", "yaw_deg", "u", "v", "w", "p", "q", "r", "speed"};
   return kNames;
 }
 
@@ -31,28 +28,10 @@ std::string Join(const std::vector<std::string>& words) {
   return text;
 }
 
-std::string Trim(const std::string& text) {
-  const size_t first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
 std::string VehicleNames(const core::Model& model) {
   std::string names;
   for (const core::Vehicle& v : model.vehicles) names += (names.empty() ? "" : ", ") + v.name;
   return names.empty() ? "none" : names;
-}
-
-// one optional command field: `deg_key` (degrees) or `key` (SI), not both
-bool ReadChannel(const MapReader& map, const std::string& key, const std::string& deg_key,
-                 Field* given, double* value) {
-  if (map.Has(key) && map.Has(deg_key)) {
-    map.Get(deg_key).Fail("give " + key + " [rad] or " + deg_key + " [deg], not both");
-  }
-  if (!map.Has(key) && !map.Has(deg_key)) return false;
-  *given = map.Get(map.Has(key) ? key : deg_key);
-  *value = given->Number() * (map.Has(key) ? 1.0 : kDegToRad);
-  return true;
 }
 
 }  // namespace
@@ -75,7 +54,7 @@ core::ScriptCondition ReadCondition(const Field& field, const core::Model& model
                "; use one of >=, <=, >, <");
   }
   Condition c;
-  c.op = op == ">=" ? Condition::kGreaterEqual
+  c.op = op == ">="   ? Condition::kGreaterEqual
          : op == "<=" ? Condition::kLessEqual
          : op == ">"  ? Condition::kGreater
                       : Condition::kLess;
@@ -92,8 +71,8 @@ core::ScriptCondition ReadCondition(const Field& field, const core::Model& model
     field.Fail("no vehicle named " + vehicle + " (vehicles: " + VehicleNames(model) + ")");
   }
   if (ref.kind == BodyRef::kSphere) {
-    field.Fail(vehicle + " is a sphere; conditions are on vehicles (vehicles: " +
-               VehicleNames(model) + ")");
+    field.Fail(vehicle +
+               " is a sphere; conditions are on vehicles (vehicles: " + VehicleNames(model) + ")");
   }
   c.vehicle = ref.index;
   const std::vector<std::string>& names = QuantityNames();
@@ -140,27 +119,21 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field, const core::Model&
                 "this script entry");
     }
     entry.vehicle = ref.index;
-    const core::Vehicle& vehicle = model.vehicles[ref.index];
 
     // the commands given, each one the vehicle can carry out
-    if (map.Has("thrust")) {
-      const Field thrust = map.Get("thrust");
-      entry.set_thrust = true;
-      entry.thrust = thrust.Number();
-      CheckThrust(thrust, entry.thrust, vehicle);
-    }
-    Field given = body;
-    entry.set_rudder = ReadChannel(map, "rudder", "rudder_deg", &given, &entry.rudder);
-    if (entry.set_rudder) CheckDeflection(given, entry.rudder, vehicle, core::Channel::kRudder);
-    entry.set_elevator = ReadChannel(map, "elevator", "elevator_deg", &given, &entry.elevator);
-    if (entry.set_elevator) {
-      CheckDeflection(given, entry.elevator, vehicle, core::Channel::kElevator);
-    }
-    if (!entry.set_thrust && !entry.set_rudder && !entry.set_elevator) {
+    core::VehicleCommand command;
+    const CommandFields given = ReadCommand(map, model.vehicles[ref.index], &command);
+    if (!given.any()) {
       item.Fail(
           "gives no command; give at least one of thrust, rudder, rudder_deg, elevator, "
           "elevator_deg");
     }
+    entry.set_thrust = given.thrust;
+    entry.set_rudder = given.rudder;
+    entry.set_elevator = given.elevator;
+    entry.thrust = command.thrust;
+    entry.rudder = command.rudder;
+    entry.elevator = command.elevator;
     script.push_back(entry);
   }
   return script;

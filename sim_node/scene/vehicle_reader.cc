@@ -10,9 +10,6 @@
 namespace towsim::scene::internal {
 namespace {
 
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-constexpr double kRadToDeg = 1.0 / kDegToRad;
-
 // a vector whose components are each > 0 (inertia): the component is named in the message
 core::Vec3 PositiveVector(const Field& field) {
   field.Vector();  // shape and finiteness first
@@ -35,10 +32,9 @@ core::Mat6 ReadAddedMass(const BodyKeys::Map& map) {
     int row, col;
   };
   // diagonal entries first (Prestero sign: <= 0), then the couplings (any sign)
-  static const Entry kEntries[] = {{"x_udot", 0, 0}, {"y_vdot", 1, 1}, {"z_wdot", 2, 2},
-                                   {"k_pdot", 3, 3}, {"m_qdot", 4, 4}, {"n_rdot", 5, 5},
-                                   {"y_rdot", 1, 5}, {"n_vdot", 5, 1}, {"z_qdot", 2, 4},
-                                   {"m_wdot", 4, 2}};
+  static const Entry kEntries[] = {
+      {"x_udot", 0, 0}, {"y_vdot", 1, 1}, {"z_wdot", 2, 2}, {"k_pdot", 3, 3}, {"m_qdot", 4, 4},
+      {"n_rdot", 5, 5}, {"y_rdot", 1, 5}, {"n_vdot", 5, 1}, {"z_qdot", 2, 4}, {"m_wdot", 4, 2}};
   core::Mat6 m = core::Mat6::Zero();
   for (const Entry& e : kEntries) {
     const Range range = e.row == e.col ? Range::AtMost(0.0) : Range::Any();
@@ -101,9 +97,8 @@ core::LiftingSurface ReadSurface(const Field& field) {
 
 core::ActuatorLimits ReadActuator(const BodyKeys::Map& map) {
   core::ActuatorLimits limits;
-  limits.max_deflection =
-      kDegToRad * map.Number("max_deflection_deg", Range::LeftOpen(0.0, 90.0),
-                             kRadToDeg * limits.max_deflection);
+  limits.max_deflection = kDegToRad * map.Number("max_deflection_deg", Range::LeftOpen(0.0, 90.0),
+                                                 kRadToDeg * limits.max_deflection);
   limits.max_rate =
       kDegToRad * map.Number("max_rate_deg", Range::Above(0.0), kRadToDeg * limits.max_rate);
   return limits;
@@ -111,6 +106,21 @@ core::ActuatorLimits ReadActuator(const BodyKeys::Map& map) {
 
 const char* ChannelName(core::Channel channel) {
   return channel == core::Channel::kRudder ? "rudder" : "elevator";
+}
+
+// a deflection given as <channel> [rad] or <channel>_deg [deg], not both; false if neither
+bool ReadDeflection(const MapReader& map, const core::Vehicle& vehicle, core::Channel channel,
+                    double* value) {
+  const std::string key = ChannelName(channel);
+  const std::string deg_key = key + "_deg";
+  if (map.Has(key) && map.Has(deg_key)) {
+    map.Get(deg_key).Fail("give " + key + " [rad] or " + deg_key + " [deg], not both");
+  }
+  if (!map.Has(key) && !map.Has(deg_key)) return false;
+  const Field given = map.Get(map.Has(key) ? key : deg_key);
+  *value = given.Number() * (map.Has(key) ? 1.0 : kDegToRad);
+  CheckDeflection(given, *value, vehicle, channel);
+  return true;
 }
 
 }  // namespace
@@ -157,7 +167,30 @@ core::VehicleParams ReadVehicleParams(const BodyKeys& keys) {
     p.max_thrust = propeller.Get("max_thrust").Number(Range::Above(0.0));
     p.thrust_time_constant = propeller.Get("time_constant").Number(Range::Above(0.0));
   }
+  // semi-submersible: the mast's waterplane (core::VehicleParams::waterplane_area)
+  const BodyKeys::Map waterplane = keys.GetMap("waterplane", MapKind::kWaterplane);
+  if (waterplane.present()) {
+    p.waterplane_area = waterplane.Get("area").Number(Range::Above(0.0));
+    p.waterplane_point_B = waterplane.Get("position").Vector();
+    p.design_depth = waterplane.Get("design_depth").Number(Range::AtLeast(0.0));
+    p.waterplane_inertia_long = waterplane.Number("inertia_longitudinal", Range::AtLeast(0.0), 0.0);
+    p.waterplane_inertia_trans = waterplane.Number("inertia_transverse", Range::AtLeast(0.0), 0.0);
+  }
   return p;
+}
+
+CommandFields ReadCommand(const MapReader& map, const core::Vehicle& vehicle,
+                          core::VehicleCommand* command) {
+  CommandFields given;
+  if (map.Has("thrust")) {
+    const Field thrust = map.Get("thrust");
+    given.thrust = true;
+    command->thrust = thrust.Number();
+    CheckThrust(thrust, command->thrust, vehicle);
+  }
+  given.rudder = ReadDeflection(map, vehicle, core::Channel::kRudder, &command->rudder);
+  given.elevator = ReadDeflection(map, vehicle, core::Channel::kElevator, &command->elevator);
+  return given;
 }
 
 void CheckThrust(const Field& field, double thrust, const core::Vehicle& vehicle) {
@@ -190,12 +223,11 @@ void CheckDeflection(const Field& field, double deflection, const core::Vehicle&
     }
     return;
   }
-  const double max = channel == core::Channel::kRudder ? p.rudder.max_deflection
-                                                        : p.elevator.max_deflection;
+  const double max =
+      channel == core::Channel::kRudder ? p.rudder.max_deflection : p.elevator.max_deflection;
   if (std::abs(deflection) > max * (1.0 + 1e-12)) {
-    field.Fail("must be within +-" + FormatNumber(kRadToDeg * max) + " deg (" +
-               FormatNumber(max) + " rad), the " + name + ".max_deflection_deg of " +
-               vehicle.name);
+    field.Fail("must be within +-" + FormatNumber(kRadToDeg * max) + " deg (" + FormatNumber(max) +
+               " rad), the " + name + ".max_deflection_deg of " + vehicle.name);
   }
 }
 

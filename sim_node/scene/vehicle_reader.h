@@ -11,6 +11,17 @@ namespace towsim::scene::internal {
 // Reads and checks the vehicle parameters from a body's keys (scene over model file).
 core::VehicleParams ReadVehicleParams(const BodyKeys& keys);
 
+// The command fields given in `map` (a script entry or bodies.<name>.command): thrust [N],
+// rudder [rad] or rudder_deg [deg] (not both), elevator or elevator_deg; each one checked
+// against `vehicle` (CheckThrust, CheckDeflection) and written to `command`, the others left
+// alone. Returns which fields were given.
+struct CommandFields {
+  bool thrust = false, rudder = false, elevator = false;
+  bool any() const { return thrust || rudder || elevator; }
+};
+CommandFields ReadCommand(const MapReader& map, const core::Vehicle& vehicle,
+                          core::VehicleCommand* command);
+
 // A commanded thrust [N] that `vehicle` can produce: it needs a propeller (or is 0) and lies in
 // [-max_thrust / 4, max_thrust], the range the vehicle model clamps to. `field` is the value as
 // written, for the message.

@@ -72,6 +72,13 @@ std::string Range::Violation(double x) const {
   return {};
 }
 
+std::string Trim(const std::string& text) {
+  const size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return {};
+  const size_t last = text.find_last_not_of(" \t");
+  return text.substr(first, last - first + 1);
+}
+
 bool ReadTextFile(const std::string& path, std::string* text, std::string* why) {
   std::error_code error;
   if (!std::filesystem::exists(path, error)) {

@@ -45,6 +45,12 @@ struct Range {
   std::string Violation(double x) const;
 };
 
+inline constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // values given in _deg
+inline constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+
+// `text` without leading and trailing blanks (spaces, tabs)
+std::string Trim(const std::string& text);
+
 // Reads the file at `path` into `text`; false with the reason in `why` when it cannot.
 bool ReadTextFile(const std::string& path, std::string* text, std::string* why);
 

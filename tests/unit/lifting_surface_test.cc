@@ -149,8 +149,7 @@ TEST(LiftingSurface, PositiveRudderGivesPositiveYawMoment) {
   Vec6 tau = HydrodynamicForces(p, env, s);
   EXPECT_GT(tau(5), 0.0);
   EXPECT_LT(tau(1), 0.0);  // side force to port at the stern
-  const VehicleDerivative d = VehicleRates(p, env, s, VehicleCommand(), Vec3::Zero(),
-                                           Vec3::Zero());
+  const VehicleDerivative d = VehicleRates(p, env, s, VehicleCommand(), Vec3::Zero(), Vec3::Zero());
   EXPECT_GT(d.nu_dot(5), 0.0);
   // the rudder of 10 deg at 6 m/s: |N| = 1/2 rho S a delta U^2 x (cos delta for the lift axis)
   const double lift = 0.5 * kRho * 0.1 * 3.12 * 10.0 * kDeg * 36.0;

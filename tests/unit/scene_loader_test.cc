@@ -396,9 +396,10 @@ INSTANTIATE_TEST_SUITE_P(
     Vehicles, BrokenSceneTest,
     ::testing::Values(
         // bodies
-        BrokenCase{"sphere_key_on_vehicle",
-                   EditV("boat: {model: boat.yaml,", "boat: {model: boat.yaml, drag_coefficient: 1,"),
-                   "bodies.boat.drag_coefficient", "applies only to type: sphere", "t.yaml:13"},
+        BrokenCase{
+            "sphere_key_on_vehicle",
+            EditV("boat: {model: boat.yaml,", "boat: {model: boat.yaml, drag_coefficient: 1,"),
+            "bodies.boat.drag_coefficient", "applies only to type: sphere", "t.yaml:13"},
         BrokenCase{"pitch_at_singularity",
                    EditV("position: [0, 0, 1]}", "position: [0, 0, 1], euler_deg: [0, 90, 0]}"),
                    "bodies.boat.euler_deg[1]", "must be < 90", "t.yaml:13"},
@@ -410,21 +411,21 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{"inline_override_checked",
                    EditV("boat: {model: boat.yaml,", "boat: {model: boat.yaml, mass: 0,"),
                    "bodies.boat.mass", "must be > 0", "t.yaml:13"},
-        BrokenCase{"inline_map_override_checked",
-                   EditV("boat: {model: boat.yaml,",
-                         "boat: {model: boat.yaml, damping: {x_uuu: 1},"),
-                   "bodies.boat.damping.x_uuu", "unknown key; did you mean x_uu?", "t.yaml:13"},
+        BrokenCase{
+            "inline_map_override_checked",
+            EditV("boat: {model: boat.yaml,", "boat: {model: boat.yaml, damping: {x_uuu: 1},"),
+            "bodies.boat.damping.x_uuu", "unknown key; did you mean x_uu?", "t.yaml:13"},
         // ends: the attachment point is p + R(euler) at on a vehicle
-        BrokenCase{"vertical_misplaced_vehicle",
-                   EditV("[-0.5, 0, 101.05]", "[-0.5, 0, 102]"), "cable.end",
+        BrokenCase{"vertical_misplaced_vehicle", EditV("[-0.5, 0, 101.05]", "[-0.5, 0, 102]"),
+                   "cable.end",
                    "with initial: vertical the end must sit at start + [0, 0, length] = "
                    "[0, 0, 101.05]",
                    "t.yaml:11"},
         BrokenCase{"vertical_rotated_vehicle",
                    EditV("[-0.5, 0, 101.05]}", "[-0.5, 0, 101.05], euler_deg: [0, 0, 90]}"),
                    "cable.end", "but it is at [-0.5, 0.5, 101.05]", ""},
-        BrokenCase{"both_ends_on_one_vehicle", EditV("end: {body: fish, at: [0.5, 0, 0]}",
-                                                     "end: {body: boat, at: [1, 0, 0]}"),
+        BrokenCase{"both_ends_on_one_vehicle",
+                   EditV("end: {body: fish, at: [0.5, 0, 0]}", "end: {body: boat, at: [1, 0, 0]}"),
                    "cable.end", "start and end are both on body boat", ""},
         BrokenCase{"end_on_unknown_body", EditV("end: {body: fish,", "end: {body: whale,"),
                    "cable.end.body", "no such body (bodies: boat, fish)", "t.yaml:11"},
@@ -437,35 +438,35 @@ INSTANTIATE_TEST_SUITE_P(
                    EditV("101.05]}", "101.05], command: {thrust: 10}}"),
                    "bodies.fish.command.thrust", "fish has no propeller", ""},
         BrokenCase{"command_rudder_beyond_limit",
-                   EditV("position: [0, 0, 1]}",
-                         "position: [0, 0, 1], command: {rudder_deg: 31}}"),
+                   EditV("position: [0, 0, 1]}", "position: [0, 0, 1], command: {rudder_deg: 31}}"),
                    "bodies.boat.command.rudder_deg", "must be within +-30 deg", ""},
-        BrokenCase{"command_without_surface",
+        BrokenCase{
+            "command_without_surface",
+            EditV("position: [0, 0, 1]}", "position: [0, 0, 1], command: {elevator_deg: 5}}"),
+            "bodies.boat.command.elevator_deg",
+            "boat has no surface on channel elevator, so its elevator must be 0", ""},
+        BrokenCase{"command_rudder_twice",
                    EditV("position: [0, 0, 1]}",
-                         "position: [0, 0, 1], command: {elevator_deg: 5}}"),
-                   "bodies.boat.command.elevator_deg",
-                   "boat has no surface on channel elevator, so its elevator must be 0", ""},
-        BrokenCase{"command_in_radians",
-                   EditV("position: [0, 0, 1]}", "position: [0, 0, 1], command: {rudder: 0.1}}"),
-                   "bodies.boat.command.rudder", "unknown key; did you mean rudder_deg?", ""},
+                         "position: [0, 0, 1], command: {rudder: 0.1, rudder_deg: 5}}"),
+                   "bodies.boat.command.rudder_deg",
+                   "give rudder [rad] or rudder_deg [deg], not both", ""},
         // script entries
         BrokenCase{"script_thrust_too_high",
                    EditV("{body: boat, thrust: 200}", "{body: boat, thrust: 401}"),
                    "script[0].thrust", "must be in [-max_thrust/4, max_thrust]", "t.yaml:16"},
         BrokenCase{"script_rudder_and_rudder_deg",
-                   EditV("rudder_deg: 10}", "rudder_deg: 10, rudder: 0.1}"),
-                   "script[1].rudder_deg", "give rudder [rad] or rudder_deg [deg], not both",
-                   "t.yaml:17"},
+                   EditV("rudder_deg: 10}", "rudder_deg: 10, rudder: 0.1}"), "script[1].rudder_deg",
+                   "give rudder [rad] or rudder_deg [deg], not both", "t.yaml:17"},
         BrokenCase{"script_rudder_beyond_limit", EditV("rudder_deg: 10}", "rudder_deg: -35}"),
                    "script[1].rudder_deg", "must be within +-30 deg", ""},
-        BrokenCase{"script_elevator_without_surface",
-                   EditV("rudder_deg: 10}", "elevator: 0.1}"), "script[1].elevator",
-                   "no surface on channel elevator", ""},
+        BrokenCase{"script_elevator_without_surface", EditV("rudder_deg: 10}", "elevator: 0.1}"),
+                   "script[1].elevator", "no surface on channel elevator", ""},
         BrokenCase{"script_thrust_without_propeller",
                    EditV("{body: boat, thrust: 200}", "{body: fish, thrust: 200}"),
                    "script[0].thrust", "fish has no propeller", ""},
         BrokenCase{"script_without_command", EditV("{body: boat, thrust: 200}", "{body: boat}"),
-                   "script[0]", "gives no command; give at least one of thrust, rudder", "t.yaml:16"},
+                   "script[0]", "gives no command; give at least one of thrust, rudder",
+                   "t.yaml:16"},
         BrokenCase{"script_without_body", EditV("{body: boat, thrust: 200}", "{thrust: 200}"),
                    "script[0].body", "is required", ""},
         // script conditions: script[2].when
@@ -554,14 +555,14 @@ INSTANTIATE_TEST_SUITE_P(
                         "must not be empty", 2},
         VehicleFileCase{"zero_length", "length: 2", "length: 0", "bodies.boat.length",
                         "must be > 0", 3},
-        VehicleFileCase{"negative_mass", "mass: 100", "mass: -1", "bodies.boat.mass",
-                        "must be > 0", 4},
+        VehicleFileCase{"negative_mass", "mass: 100", "mass: -1", "bodies.boat.mass", "must be > 0",
+                        4},
         VehicleFileCase{"zero_inertia", "inertia: [1, 10, 10]", "inertia: [1, 0, 10]",
                         "bodies.boat.inertia[1]", "must be > 0", 5},
         VehicleFileCase{"inertia_of_two", "inertia: [1, 10, 10]", "inertia: [1, 10]",
                         "bodies.boat.inertia", "must be a list of 3 numbers", 5},
-        VehicleFileCase{"missing_r_g", "r_g: [0, 0, 0.05]\n", "", "bodies.boat.r_g",
-                        "is required", 1},
+        VehicleFileCase{"missing_r_g", "r_g: [0, 0, 0.05]\n", "", "bodies.boat.r_g", "is required",
+                        1},
         VehicleFileCase{"negative_volume", "volume: 0.1", "volume: -0.1", "bodies.boat.volume",
                         "must be >= 0", 7},
         VehicleFileCase{"positive_diagonal_added_mass", "x_udot: -5", "x_udot: 5",
@@ -570,8 +571,8 @@ INSTANTIATE_TEST_SUITE_P(
                         "bodies.boat.added_mass", "must be positive semi-definite", 8},
         VehicleFileCase{"unknown_added_mass_key", "m_qdot", "m_qdott",
                         "bodies.boat.added_mass.m_qdott", "unknown key; did you mean m_qdot?", 8},
-        VehicleFileCase{"unknown_damping_key", "n_ur: -4", "n_rv: -4",
-                        "bodies.boat.damping.n_rv", "unknown key", 9},
+        VehicleFileCase{"unknown_damping_key", "n_ur: -4", "n_rv: -4", "bodies.boat.damping.n_rv",
+                        "unknown key", 9},
         VehicleFileCase{"damping_not_a_number", "x_uu: -3", "x_uu: high",
                         "bodies.boat.damping.x_uu", "must be a number", 9},
         VehicleFileCase{"munk_not_a_boolean", "volume: 0.1\n", "volume: 0.1\nmunk_moment: maybe\n",
@@ -587,19 +588,20 @@ INSTANTIATE_TEST_SUITE_P(
                         "must be > 0", 11},
         VehicleFileCase{"stall_at_90", "stall_angle_deg: 20", "stall_angle_deg: 90",
                         "bodies.boat.surfaces[0].stall_angle_deg", "must be < 90", 12},
-        VehicleFileCase{"oswald_zero", "oswald: 0.9", "oswald: 0",
-                        "bodies.boat.surfaces[0].oswald", "must be > 0", 12},
+        VehicleFileCase{"oswald_zero", "oswald: 0.9", "oswald: 0", "bodies.boat.surfaces[0].oswald",
+                        "must be > 0", 12},
         VehicleFileCase{"oswald_above_one", "oswald: 0.9", "oswald: 1.1",
                         "bodies.boat.surfaces[0].oswald", "must be <= 1", 12},
-        VehicleFileCase{"negative_lift_slope", "aspect_ratio: 2,", "aspect_ratio: 2, lift_slope: -1,",
-                        "bodies.boat.surfaces[0].lift_slope", "must be >= 0", 12},
+        VehicleFileCase{"negative_lift_slope", "aspect_ratio: 2,",
+                        "aspect_ratio: 2, lift_slope: -1,", "bodies.boat.surfaces[0].lift_slope",
+                        "must be >= 0", 12},
         VehicleFileCase{"bad_deflection_sign", "deflection_sign: -1", "deflection_sign: 0.5",
                         "bodies.boat.surfaces[0].deflection_sign", "must be 1 or -1", 12},
         VehicleFileCase{"missing_deflection_sign_on_rudder", ", deflection_sign: -1", "",
                         "bodies.boat.surfaces[0].deflection_sign", "is required", 11},
         VehicleFileCase{"unknown_surface_key", "cd0: 0.01", "cd_0: 0.01",
                         "bodies.boat.surfaces[0].cd_0", "unknown key; did you mean cd0?", 12},
-        VehicleFileCase{"missing_surface_name", "{name: rudder, ", "{", 
+        VehicleFileCase{"missing_surface_name", "{name: rudder, ", "{",
                         "bodies.boat.surfaces[0].name", "is required", 11},
         VehicleFileCase{"duplicate_surface_name", "rudder: {max_deflection_deg",
                         "  - {name: rudder, channel: none, position: [0, 0, 0], normal: [0, 0, 1], "
@@ -695,17 +697,19 @@ TEST_F(SceneLoaderTest, VehicleAttitudeVelocityAndCommand) {
   // yaw 90 deg (and a roll, which leaves the x axis alone): the fish's bow [0.5, 0, 0] points
   // east, so its origin sits 0.5 m west of the cable end; the cable moves north at 1 m/s, which
   // the fish sees in its own frame
-  const Model m = Load(
-      EditV("fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}",
-            "fish: {model: fish6.yaml, position: [0, -0.5, 101.05], euler_deg: [10, 0, 90]}"),
-      {"cable.initial_velocity=[1, 0, 0]", "bodies.boat.velocity=[2, 0, 0]",
-       "bodies.boat.command={thrust: -100, rudder_deg: -30}"});
+  const Model m =
+      Load(EditV("fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}",
+                 "fish: {model: fish6.yaml, position: [0, -0.5, 101.05], euler_deg: [10, 0, 90]}"),
+           {"cable.initial_velocity=[1, 0, 0]", "bodies.boat.velocity=[2, 0, 0]",
+            "bodies.boat.command={thrust: -100, rudder_deg: -30}"});
+  // in radians too
+  const Model rad = Load(kVehicleScene, {"bodies.boat.command={rudder: 0.25}"});
+  EXPECT_EQ(rad.vehicles[0].command.rudder, 0.25);
   const core::Vehicle& fish = m.vehicles[1];
   EXPECT_NEAR(fish.euler.x(), 10 * kDeg, 1e-15);
   EXPECT_EQ(fish.euler.y(), 0.0);
   EXPECT_NEAR(fish.euler.z(), 90 * kDeg, 1e-15);
-  const core::Vec3 v_B =
-      core::QuaternionFromEulerZYX(fish.euler).conjugate() * core::Vec3(1, 0, 0);
+  const core::Vec3 v_B = core::QuaternionFromEulerZYX(fish.euler).conjugate() * core::Vec3(1, 0, 0);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(fish.nu(k), v_B(k), 1e-15) << k;
   EXPECT_EQ(fish.nu.tail<3>(), core::Vec3::Zero());
   // a given velocity is body-frame u, v, w
@@ -781,12 +785,11 @@ TEST_F(SceneLoaderTest, ConditionForms) {
 
 TEST_F(SceneLoaderTest, VehicleOverridesMergeMapsKeyByKey) {
   // a map key set in the scene (here by --set) replaces that key only; the file gives the rest
-  const Model m = Load(kVehicleScene, {"bodies.boat.damping.y_vv=-50",
-                                       "bodies.boat.propeller.max_thrust=1000",
-                                       "bodies.boat.added_mass.k_pdot=-1",
-                                       "bodies.boat.euler_deg=[0, 0, 45]", "bodies.boat.mass=120",
-                                       "integrator.coupling=staggered",
-                                       "integrator.max_coupling_iterations=7"});
+  const Model m =
+      Load(kVehicleScene, {"bodies.boat.damping.y_vv=-50", "bodies.boat.propeller.max_thrust=1000",
+                           "bodies.boat.added_mass.k_pdot=-1", "bodies.boat.euler_deg=[0, 0, 45]",
+                           "bodies.boat.mass=120", "integrator.coupling=staggered",
+                           "integrator.max_coupling_iterations=7"});
   const core::VehicleParams& p = m.vehicles[0].params;
   EXPECT_EQ(p.y_vv, -50.0);
   EXPECT_EQ(p.x_uu, -3.0);  // from the file
@@ -829,10 +832,10 @@ TEST_F(SceneLoaderTest, BadVehicleOverrideIsLocatedAtSet) {
 
 TEST_F(SceneLoaderTest, InlineVehicleWithoutModelFile) {
   // type: vehicle and every parameter in the scene itself
-  const Model m = Load(EditV(
-      "fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}",
-      "fish: {type: vehicle, source: inline, length: 1, mass: 20, inertia: [0.1, 1, 1], "
-      "r_g: [0, 0, 0], volume: 0.02, position: [-0.5, 0, 101.05]}"));
+  const Model m =
+      Load(EditV("fish: {model: fish6.yaml, position: [-0.5, 0, 101.05]}",
+                 "fish: {type: vehicle, source: inline, length: 1, mass: 20, inertia: [0.1, 1, 1], "
+                 "r_g: [0, 0, 0], volume: 0.02, position: [-0.5, 0, 101.05]}"));
   ASSERT_EQ(m.vehicles.size(), 2u);
   EXPECT_EQ(m.vehicles[1].params.source, "inline");
   EXPECT_TRUE(m.vehicles[1].params.surfaces.empty());
@@ -910,6 +913,41 @@ TEST_F(SceneLoaderTest, PaperCaseScenes) {
   EXPECT_EQ(c2.script[2].condition.op, core::ScriptCondition::kGreaterEqual);
   EXPECT_EQ(c2.script[2].condition.value, 170.0);
   EXPECT_EQ(c2.script[2].rudder, 0.0);
+}
+
+TEST_F(SceneLoaderTest, VehicleFileAlone) {
+  // the shipped vehicle files, read by themselves, equal what the paper scenes hold
+  const Model c1 = LoadScene(kConfigDir + "/scenes/case1_forward.yaml");
+  const char* names[] = {"tow_vehicle", "towfish"};
+  for (int i = 0; i < 2; ++i) {
+    SCOPED_TRACE(names[i]);
+    const core::VehicleParams p = LoadVehicleFile(kConfigDir + "/vehicles/" + names[i] + ".yaml");
+    const core::VehicleParams& q = c1.vehicles.at(i).params;
+    EXPECT_FALSE(p.source.empty());
+    EXPECT_EQ(p.source, q.source);
+    EXPECT_EQ(p.mass, q.mass);
+    EXPECT_EQ(p.inertia, q.inertia);
+    EXPECT_EQ(p.added_mass, q.added_mass);
+    EXPECT_EQ(p.n_rr, q.n_rr);
+    EXPECT_EQ(p.surfaces.size(), q.surfaces.size());
+    EXPECT_EQ(p.has_propeller, q.has_propeller);
+  }
+  // errors name the file and line; key paths start at its root
+  std::ofstream(dir_ / "boat_alone.yaml") << Replace(kBoatFile, "mass: 100", "mass: -1");
+  try {
+    LoadVehicleFile((dir_ / "boat_alone.yaml").string());
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "mass = -1 (boat_alone.yaml:4): must be > 0");
+  }
+  try {
+    LoadVehicleFile((dir_ / "good_fish.yaml").string());
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "type") << e.what();
+    EXPECT_NE(e.rule().find("must be vehicle"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(LoadVehicleFile((dir_ / "nope.yaml").string()), ConfigError);
 }
 
 TEST_F(SceneLoaderTest, ModelFileErrorNamesTheFile) {

@@ -118,11 +118,10 @@ TEST(ConditionTest, Operators) {
     bool holds;
   };
   const Case cases[] = {
-      {C::kGreaterEqual, 2.0, true}, {C::kGreaterEqual, 2.5, false},
-      {C::kGreaterEqual, 1.5, true}, {C::kLessEqual, 2.0, true},
-      {C::kLessEqual, 1.5, false},   {C::kLessEqual, 2.5, true},
-      {C::kGreater, 2.0, false},     {C::kGreater, 1.5, true},
-      {C::kLess, 2.0, false},        {C::kLess, 2.5, true},
+      {C::kGreaterEqual, 2.0, true}, {C::kGreaterEqual, 2.5, false}, {C::kGreaterEqual, 1.5, true},
+      {C::kLessEqual, 2.0, true},    {C::kLessEqual, 1.5, false},    {C::kLessEqual, 2.5, true},
+      {C::kGreater, 2.0, false},     {C::kGreater, 1.5, true},       {C::kLess, 2.0, false},
+      {C::kLess, 2.5, true},
   };
   for (const Case& c : cases) {
     EXPECT_EQ(ConditionHolds(Condition(C::kZ, c.op, c.value), s), c.holds)

@@ -331,13 +331,13 @@ TEST(SimNodeCliTest, VehicleSceneRunsTheScript) {
   for (const bool thrust : {true, false}) {
     SCOPED_TRACE(thrust ? "with thrust" : "without script");
     const fs::path csv = tmp.path() / (thrust ? "thrust" : "none");
-    std::vector<std::string> args = {"--scene", kCase1,   "--mode", "offline",
-                                     "--duration", "2", "--csv",  csv.string()};
+    std::vector<std::string> args = {"--scene",    kCase1, "--mode", "offline",
+                                     "--duration", "2",    "--csv",  csv.string()};
     if (!thrust) args.insert(args.end(), {"--set", "script=[]"});
     const Result r = RunSimNode(args, tmp.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_TRUE(std::regex_search(
-        r.out, std::regex(R"(substeps \d+, coupling iterations mean [0-9.]+\n)")))
+    EXPECT_TRUE(
+        std::regex_search(r.out, std::regex(R"(substeps \d+, coupling iterations mean [0-9.]+\n)")))
         << r.out;
 
     // one row per body and time, spheres (none) then vehicles in scene order; the cable ends

@@ -24,8 +24,12 @@ constexpr double kSpeed = 6.0;  // the paper's steady speed [m/s]
 // the towfish tow point: its bow, on the axis (paper: "attached to the bow")
 const Vec3 kBow(1.65, 0.0, 0.0);
 
+// the paper's running depth of the towing vehicle, where its waterplane is at design draft
+constexpr double kDepth = 3.5;  // [m]
+
 VehicleState Running(double speed, double thrust) {
   VehicleState s;
+  s.p_W.z() = kDepth;
   s.nu(0) = speed;
   s.thrust = thrust;
   return s;
@@ -51,6 +55,7 @@ Mat9 Linearize(const VehicleParams& p, const Environment& env, const VehicleComm
                const Vec3& force_W, const Vec3& point_B) {
   auto f = [&](const Vec9& x) {
     VehicleState s;
+    s.p_W.z() = kDepth;
     s.nu = x.head<6>();
     s.thrust = cmd.thrust;
     const Vec3 rpy = x.tail<3>();
@@ -59,7 +64,7 @@ Mat9 Linearize(const VehicleParams& p, const Environment& env, const VehicleComm
     const VehicleDerivative d = VehicleRates(p, env, s, cmd, f_b, point_B.cross(f_b));
     Vec9 y;
     y.head<6>() = d.nu_dot;
-    // Euler-angle rates (Fossen 2011 Eq. 2.29)
+    // Euler-angle rates (Fossen 2011 ch. 2)
     const double sp = std::sin(rpy.x()), cp = std::cos(rpy.x()), tt = std::tan(rpy.y());
     const double q = x(4), r = x(5);
     y(6) = x(3) + tt * (sp * q + cp * r);
@@ -82,8 +87,7 @@ Mat9 Linearize(const VehicleParams& p, const Environment& env, const VehicleComm
 
 std::vector<std::complex<double>> Eigenvalues(const Eigen::MatrixXd& m) {
   Eigen::EigenSolver<Eigen::MatrixXd> es(m);
-  std::vector<std::complex<double>> ev(es.eigenvalues().data(),
-                                       es.eigenvalues().data() + m.rows());
+  std::vector<std::complex<double>> ev(es.eigenvalues().data(), es.eigenvalues().data() + m.rows());
   return ev;
 }
 
@@ -112,8 +116,9 @@ TEST(VehicleFiles, DesignChoices) {
   const double x_net = (fish.mass * fish.r_g.x() - buoyant * fish.r_b.x()) / (fish.mass - buoyant);
   EXPECT_NEAR(x_net, kBow.x(), 1e-3);
   EXPECT_NEAR(kBow.x(), fish.length / 2, 1e-12);
-  EXPECT_FALSE(veh.munk_moment);
-  EXPECT_FALSE(fish.munk_moment);
+  // the remedy: Kirchhoff's C_A complete (Munk moment kept), tail fins sized for stability
+  EXPECT_TRUE(veh.munk_moment);
+  EXPECT_TRUE(fish.munk_moment);
   EXPECT_TRUE(veh.has_propeller);
   EXPECT_FALSE(fish.has_propeller);
   // the added-mass matrices are symmetric positive definite
@@ -132,14 +137,14 @@ TEST(VehicleManeuver, ThrustForSixMetresPerSecond) {
   const VehicleParams veh = test::ReadProjectVehicle("tow_vehicle");
   const double thrust = ThrustFor(veh, env, kSpeed);
   std::printf("tow vehicle: thrust for %.1f m/s (no cable) = %.1f N (hull %.1f N, fins %.1f N)\n",
-              kSpeed, thrust, -veh.x_uu * kSpeed * kSpeed,
-              thrust + veh.x_uu * kSpeed * kSpeed);
+              kSpeed, thrust, -veh.x_uu * kSpeed * kSpeed, thrust + veh.x_uu * kSpeed * kSpeed);
   EXPECT_GT(thrust, 1000.0);  // ref §2.4: 1.2-2.2 kN for the hull alone
   EXPECT_LT(thrust, 2500.0);
   ASSERT_LT(thrust, veh.max_thrust);
   VehicleCommand cmd;
   cmd.thrust = thrust;
   VehicleState s;
+  s.p_W.z() = kDepth;
   constexpr double kH = 0.02;
   for (int k = 0; k < static_cast<int>(300.0 / kH); ++k) {
     AdvanceVehicle(veh, env, cmd, PointLoad(), kH, &s);
@@ -147,7 +152,7 @@ TEST(VehicleManeuver, ThrustForSixMetresPerSecond) {
   // the thrust line (through O) lies 0.2 m above the CG: the acceleration pitches the vehicle
   // and it changes depth on the way; at the end it runs straight and level
   std::printf("tow vehicle from rest: u(300 s) = %.4f m/s, depth change %.2f m\n", s.nu(0),
-              s.p_W.z());
+              s.p_W.z() - kDepth);
   EXPECT_NEAR(s.nu(0), kSpeed, kSpeedTol);
   EXPECT_LT(s.nu.tail<5>().norm(), 1e-6);
   EXPECT_LT(EulerZYX(s.q_WB).norm(), 1e-6);
@@ -211,9 +216,9 @@ TEST(VehicleManeuver, TurningCircleAtTwentyDegreesRudder) {
   EXPECT_LT((c3.centre - c2.centre).norm(), kRadiusTol * c3.radius);
   // the kinematic radius U / r agrees with the track
   EXPECT_NEAR(speed / s.nu(5), c3.radius, 0.01 * c3.radius);
-  // a broad turn: between 3 and 15 ship lengths (ref §2.4: 71 m with the Munk moment removed)
-  EXPECT_GT(c3.radius, 3 * veh.length);
-  EXPECT_LT(c3.radius, 15 * veh.length);
+  // ref §2.4: 24.5 m for Prestero's combined set (Munk kept), 71 m with the Munk moment removed
+  EXPECT_GT(c3.radius, 2 * veh.length);
+  EXPECT_LT(c3.radius, 10 * veh.length);
 }
 
 // the paper's Case 2 manoeuvre on the free vehicle: 20 deg rudder until the heading reaches
@@ -238,12 +243,15 @@ TEST(VehicleManeuver, UTurnEndsRunningStraight) {
     }
   }
   ASSERT_GT(t_release, 0.0);
-  std::printf("U-turn: 170 deg reached %.1f s after the rudder command; final heading %.1f deg, "
-              "r = %.2e rad/s, u = %.3f m/s, depth change %.2f m\n",
-              t_release, turned / kDeg, s.nu(5), s.nu(0), s.p_W.z());
+  std::printf(
+      "U-turn: 170 deg reached %.1f s after the rudder command; final heading %.1f deg, "
+      "r = %.2e rad/s, u = %.3f m/s, depth change %.2f m\n",
+      t_release, turned / kDeg, s.nu(5), s.nu(0), s.p_W.z() - kDepth);
   EXPECT_LT(std::abs(s.nu(5)), 1e-4);  // straight: < 0.006 deg/s
   EXPECT_NEAR(s.nu(0), kSpeed, 0.01);
-  EXPECT_NEAR(turned, 170.0 * kDeg, 10.0 * kDeg);  // no runaway turn after the release
+  // the yaw rate decays within ~20 deg of heading after the release (no runaway turn)
+  EXPECT_GT(turned, 170.0 * kDeg);
+  EXPECT_LT(turned, 200.0 * kDeg);
   EXPECT_LT(std::abs(EulerZYX(s.q_WB).y()), 1e-3);
 }
 
@@ -258,17 +266,54 @@ TEST(VehicleStability, TowVehicleLinearizedAtSixMetresPerSecond) {
   const Mat9 j = Linearize(veh, env, cmd, Vec3::Zero(), Vec3::Zero());
   const auto ev = Eigenvalues(j.topLeftCorner<8, 8>());
   Print("tow vehicle", ev);
-  for (const auto& e : ev) EXPECT_LT(e.real(), -0.01) << e;
-  // the raw set (Munk moment kept) is unstable, as ref §2.4 reports: the remedy matters
+  // surge ~ -2 X_uu U / (m - X_udot) = -0.07 /s is the slowest mode
+  for (const auto& e : ev) EXPECT_LT(e.real(), -0.05) << e;
+  // the remedy matters: with the fins at the area that reproduces Prestero's coefficients
+  // (1/3), the set is unstable as ref §2.4 reports (+0.58, +0.12 pitch; +0.80 yaw)
   VehicleParams raw = veh;
-  raw.munk_moment = true;
+  for (LiftingSurface& s : raw.surfaces) s.area /= 3.0;
   double worst = -1e9;
-  for (const auto& e : Eigenvalues(Linearize(raw, env, cmd, Vec3::Zero(), Vec3::Zero())
-                                       .topLeftCorner<8, 8>())) {
+  for (const auto& e :
+       Eigenvalues(Linearize(raw, env, cmd, Vec3::Zero(), Vec3::Zero()).topLeftCorner<8, 8>())) {
     worst = std::max(worst, e.real());
   }
-  std::printf("tow vehicle with the Munk moment: largest real part %+.3f 1/s\n", worst);
+  std::printf("tow vehicle with Prestero-size fins: largest real part %+.3f 1/s\n", worst);
   EXPECT_GT(worst, 0.1);
+}
+
+// 5d. why the Munk moment is kept (docs/vehicles.md): the cable pulls the towing vehicle at its
+// CG (paper), and in a turn the towfish trails inside, pulling sideways. A hull made statically
+// stable by removing the Munk moment has its neutral point aft of the CG, so a steady side pull
+// at the CG turns it *toward* the pull, and the coupled system can circle with the rudder at 0.
+// With the Munk moment the neutral point lies ahead of the CG and the vehicle turns *away* from
+// the pull (r > 0 for a pull to port), straightening the tow.
+TEST(VehicleStability, SidePullAtTheCentreOfGravityTurnsTheVehicleAway) {
+  const Environment env;
+  const VehicleParams veh = test::ReadProjectVehicle("tow_vehicle");
+  VehicleCommand cmd;
+  cmd.thrust = ThrustFor(veh, env, kSpeed);
+  auto steady_yaw_rate = [&](const VehicleParams& p) {
+    VehicleState s = Running(kSpeed, cmd.thrust);
+    const Vec3 pull_B(0.0, -300.0, 0.0);  // 300 N to port, turning with the body
+    constexpr double kH = 0.02;
+    for (int k = 0; k < static_cast<int>(200.0 / kH); ++k) {
+      PointLoad load;
+      load.force_W0 = load.force_W1 = s.q_WB.toRotationMatrix() * pull_B;
+      load.point_B = veh.r_g;
+      AdvanceVehicle(p, env, cmd, load, kH, &s);
+    }
+    return s.nu(5);
+  };
+  const double r = steady_yaw_rate(veh);
+  VehicleParams no_munk = veh;
+  no_munk.munk_moment = false;
+  const double r_no_munk = steady_yaw_rate(no_munk);
+  std::printf(
+      "300 N side pull to port at the CG: steady r = %+.4f rad/s (Munk kept), %+.4f "
+      "rad/s (Munk removed)\n",
+      r, r_no_munk);
+  EXPECT_GT(r, 1e-3);
+  EXPECT_LT(r_no_munk, -1e-3);
 }
 
 // 5b. the towing vehicle under its own thrust, perturbed in yaw rate, sway and pitch, returns
@@ -297,10 +342,11 @@ TEST(VehicleStability, TowVehiclePerturbedReturnsToStraightLevelRunning) {
       AdvanceVehicle(veh, env, cmd, PointLoad(), kH, &s);
     }
     const Vec3 rpy = EulerZYX(s.q_WB);
-    std::printf("tow vehicle, %s: after %.0f s |v,w| = %.1e m/s, |p,q,r| = %.1e rad/s, roll "
-                "%.1e deg, pitch %.1e deg, heading %.2f deg, depth change %.2f m\n",
-                c.name, kT, s.nu.segment<2>(1).norm(), s.nu.tail<3>().norm(), rpy.x() / kDeg,
-                rpy.y() / kDeg, rpy.z() / kDeg, s.p_W.z());
+    std::printf(
+        "tow vehicle, %s: after %.0f s |v,w| = %.1e m/s, |p,q,r| = %.1e rad/s, roll "
+        "%.1e deg, pitch %.1e deg, heading %.2f deg, depth change %.2f m\n",
+        c.name, kT, s.nu.segment<2>(1).norm(), s.nu.tail<3>().norm(), rpy.x() / kDeg,
+        rpy.y() / kDeg, rpy.z() / kDeg, s.p_W.z() - kDepth);
     // slowest mode ~0.06 /s (surge) and ~0.6 /s (lateral, vertical): after 120 s the
     // perturbations are down by > 1e3
     EXPECT_NEAR(s.nu(0), kSpeed, 1e-3) << c.name;
@@ -328,7 +374,7 @@ TEST(VehicleStability, TowfishTowedAtItsBow) {
   const Mat9 j = Linearize(fish, env, VehicleCommand(), force, kBow);
   const auto ev = Eigenvalues(j);
   Print("towfish (constant bow load)", ev);
-  for (const auto& e : ev) EXPECT_LT(e.real(), -0.01) << e;
+  for (const auto& e : ev) EXPECT_LT(e.real(), -0.05) << e;
 
   PointLoad load;
   load.force_W0 = load.force_W1 = force;
@@ -352,10 +398,11 @@ TEST(VehicleStability, TowfishTowedAtItsBow) {
       AdvanceVehicle(fish, env, VehicleCommand(), load, kH, &s);
     }
     const Vec3 rpy = EulerZYX(s.q_WB);
-    std::printf("towfish, %s: after %.0f s |v,w| = %.1e m/s, |p,q,r| = %.1e rad/s, roll %.1e "
-                "deg, pitch %.1e deg, heading %.1e deg\n",
-                c.name, kT, s.nu.segment<2>(1).norm(), s.nu.tail<3>().norm(), rpy.x() / kDeg,
-                rpy.y() / kDeg, rpy.z() / kDeg);
+    std::printf(
+        "towfish, %s: after %.0f s |v,w| = %.1e m/s, |p,q,r| = %.1e rad/s, roll %.1e "
+        "deg, pitch %.1e deg, heading %.1e deg\n",
+        c.name, kT, s.nu.segment<2>(1).norm(), s.nu.tail<3>().norm(), rpy.x() / kDeg,
+        rpy.y() / kDeg, rpy.z() / kDeg);
     EXPECT_NEAR(s.nu(0), kSpeed, 1e-3) << c.name;
     EXPECT_LT(s.nu.segment<2>(1).norm(), 1e-3) << c.name;
     EXPECT_LT(s.nu.tail<3>().norm(), 1e-4) << c.name;

@@ -203,7 +203,7 @@ TEST(VehicleModel, RatesSatisfyWorldImpulseBalance) {
   }
 }
 
-// M_RB about O (Fossen 2011 Eq. 3.44): I_O = I_g - m S(r_g)^2, e.g. I_xx,O = I_xx + m (y^2 + z^2)
+// M_RB about O (Fossen 2011 ch. 3): I_O = I_g - m S(r_g)^2, e.g. I_xx,O = I_xx + m (y^2 + z^2)
 TEST(VehicleModel, RigidBodyMassMatrixAboutTheOrigin) {
   const VehicleParams p = TumblingBody(false);
   const Mat6 m = RigidBodyMassMatrix(p);
@@ -220,7 +220,7 @@ TEST(VehicleModel, RigidBodyMassMatrixAboutTheOrigin) {
 }
 
 // A uniform steady current only shifts the water: the motion relative to the water is the
-// still-water motion (Galilean invariance; Fossen 2011 §10.3). With nu_c(0) = nu(0) + [R^T U; 0]:
+// still-water motion (Galilean invariance; Fossen 2011 ch. 10). With nu_c(0) = nu(0) + [R^T U; 0]:
 // p_c(t) = p(t) + U t, nu_c(t) = nu(t) + [R(t)^T U; 0], same attitude. Checked in a turn (omega
 // != 0, so the M_A [omega x v_c; 0] term matters) with thrust, rudder and the fins active.
 TEST(VehicleModel, UniformCurrentIsGalileanInvariant) {

@@ -6,7 +6,7 @@ towsim_add_test(vehicle_model_test LABEL unit
 towsim_add_test(lifting_surface_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/lifting_surface_test.cc
   LIBS towsim::core)
-# reads the vehicle files with a small strict reader of their own (vehicle_file.h)
+# reads the vehicle files through the scene loader (vehicle_file.h)
 towsim_add_test(vehicle_maneuver_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/vehicle_maneuver_test.cc ${CMAKE_CURRENT_LIST_DIR}/vehicle_file.cc
-  LIBS towsim::core yaml-cpp)
+  LIBS towsim::core towsim::scene)

@@ -1,0 +1,73 @@
+#pragma once
+// The DDS modes of sim_node (DESIGN §3-4, issue 4): realtime, fast and lockstep. The node
+// steps a core::Simulation and publishes on the ROS-2-compatible topics of DESIGN §3; external
+// controllers drive the vehicles over rt/<ns>/<body>/command, run control comes over
+// rt/<ns>/sim_control.
+//
+//   realtime  step k starts at its wall-clock deadline k * h / rate after the start (or the
+//             last resume / reset / rate change); lateness measured, overruns counted
+//   fast      as fast as it goes, still publishing and taking commands
+//   lockstep  step k (state k -> k + 1) waits until every commanded vehicle holds a command
+//             answering step k; after `lockstep_timeout` of wall time a vehicle that has been
+//             commanded before goes to failsafe and is no longer waited for until its
+//             commands resume. A vehicle never commanded is waited for without limit (the
+//             controller may start after the node). Same commands, bit-identical states.
+//
+// Commands: dds/command_arbiter.h (last writer wins, NaN rejected, out of range clamped,
+// failsafe after `command_timeout` of simulation time). Each step: the scene's script entries
+// due fire first, then the commands taken. SimControl: PAUSE, RESUME, STEP n (while paused),
+// RESET (a new core::Simulation from the same Model, a new run id), SET_RATE.
+//
+// Exit: at the end of `duration`, or on SIGINT / SIGTERM (app/stop_signal.h) at the next step
+// boundary or within 50 ms of waiting; a summary line on stdout:
+//   sim_node: <scene>: lockstep, 2000 steps, 100 s simulated in 1.52 s (RTF 65.8), overruns 0,
+//   failsafes 0, commands 4000 (rejected 0, clamped 0), lockstep timeouts 0, resets 0
+
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "app/command_line.h"
+#include "core/model.h"
+#include "core/simulation.h"
+
+namespace towsim::app {
+
+// publishing rates per topic [Hz]; 0: every step; rounded to a whole number of steps
+struct PublishRates {
+  double clock = 0.0;
+  double odom = 0.0;
+  double cable_force = 0.0;
+  double status = 0.0;
+  double cable_state = -1.0;  // < 0: the scene's time.output_rate
+};
+
+struct DdsNodeOptions {
+  Mode mode = Mode::kRealtime;  // kRealtime, kFast or kLockstep (kOffline: exit 2)
+  // simulated time to run [s]: round(duration / h) steps, then exit 0; infinity: until stopped
+  double duration = std::numeric_limits<double>::infinity();
+  double rate = 1.0;             // realtime pacing factor (2: twice real time), > 0
+  uint32_t domain = 0;           // DDS domain id
+  std::string ns = "/towsim";    // ROS 2 namespace of the topics (/clock stays at the root)
+  std::string dds_config;        // CYCLONEDDS_URI-style config; empty: $CYCLONEDDS_URI
+  double command_timeout = 0.5;  // failsafe after this much simulation time without command [s]
+  double lockstep_timeout = 1.0;  // lockstep: wall time to wait for a step's commands [s]
+  // lockstep: the vehicles waited for; empty: every vehicle that takes commands
+  std::vector<std::string> lockstep_bodies;
+  PublishRates rates;
+  bool use_script = true;     // the scene's script drives the vehicles between commands
+  bool start_paused = false;  // wait for SimControl RESUME / STEP before the first step
+  // called with the state at t = 0, every k = max(1, round(1 / (output_rate h))) steps and at
+  // the last state (e.g. CsvWriter::Write); may throw (then RunDdsNode throws)
+  std::function<void(const core::Simulation&, const core::StepStatus&, long wall_us)> output;
+};
+
+// Runs the node until the duration is reached or SIGINT / SIGTERM. Returns the exit code:
+// 0 done or stopped by a signal, 2 bad options or DDS setup failure (Cyclone's message on
+// stderr), 3 solver failure (initial state or a step). Call InstallStopHandlers() first (it
+// is called again here, harmlessly).
+int RunDdsNode(const core::Model& model, const DdsNodeOptions& options);
+
+}  // namespace towsim::app

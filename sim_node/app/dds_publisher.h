@@ -1,0 +1,77 @@
+#pragma once
+// The DDS endpoints of the node (DESIGN §3): writers of odometry, cable force, cable state,
+// /clock, status and scene info; readers of the vehicles' commands and of sim_control. A
+// message is built and serialized only when its writer has a matched reader.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/simulation.h"
+#include "dds/entities.h"
+#include "dds/messages.h"
+#include "dds/topic_names.h"
+#include "dds/translators.h"
+
+namespace towsim::app {
+
+// publishing strides of the per-step topics [steps], >= 1
+struct PublishStrides {
+  long clock = 1;
+  long odom = 1;
+  long cable_force = 1;
+  long cable_state = 1;
+  long status = 1;
+};
+
+class NodeEndpoints {
+ public:
+  // topics for every body of `sim` and commands for `command_vehicles` (vehicle indices);
+  // throws dds::DdsError
+  NodeEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
+                const core::Simulation& sim, const std::vector<int>& command_vehicles);
+
+  // the state of `sim` after `step` steps: the topics whose stride divides `step` (all of
+  // them when `all`); odometry, cable force and cable state before the clock
+  void PublishState(const core::Simulation& sim, uint64_t step, const PublishStrides& strides,
+                    bool all);
+  void PublishStatus(const dds::StatusSample& sample);
+  void PublishSceneInfo(const dds::SceneInfoSample& sample);
+  // waits up to `timeout` [s] until the readers acknowledged status and scene info (exit)
+  void Flush(double timeout);
+
+  // command reader i (the order of command_vehicles) and the sim_control reader
+  dds::Reader<dds::ActuatorCommandMsg>& command_reader(int i) { return *command_readers_[i]; }
+  int num_command_readers() const { return static_cast<int>(command_readers_.size()); }
+  dds::Reader<dds::SimControlMsg>& control_reader() { return control_reader_; }
+  // blocks until a command or a control request is available, or `timeout` [s]
+  void WaitForInput(double timeout);
+
+ private:
+  struct BodyEndpoints {
+    dds::Topic odom_topic, force_topic;
+    dds::Writer<dds::OdometryMsg> odom;
+    dds::Writer<dds::WrenchStampedMsg> force;
+    std::unique_ptr<dds::OdometryMessage> odom_msg;
+    std::unique_ptr<dds::WrenchStampedMessage> force_msg;
+  };
+
+  dds::Topic clock_topic_, cable_topic_, status_topic_, scene_topic_, control_topic_;
+  dds::Writer<dds::ClockMsg> clock_;
+  dds::Writer<dds::CableStateMsg> cable_;
+  dds::Writer<dds::SimStatusMsg> status_;
+  dds::Writer<dds::SceneInfoMsg> scene_;
+  std::vector<std::unique_ptr<BodyEndpoints>> bodies_;
+  std::vector<dds::Topic> command_topics_;
+  std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
+  dds::Reader<dds::SimControlMsg> control_reader_;
+  dds::WaitSet waitset_;
+
+  dds::ClockMsg clock_msg_{};
+  std::unique_ptr<dds::CableStateMessage> cable_msg_;
+  dds::SimStatusMessage status_msg_;
+  dds::SceneInfoMessage scene_msg_;
+};
+
+}  // namespace towsim::app

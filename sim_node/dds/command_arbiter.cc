@@ -1,0 +1,115 @@
+#include "dds/command_arbiter.h"
+
+#include <cstdio>
+#include <utility>
+
+namespace towsim::dds {
+
+CommandArbiter::CommandArbiter(std::vector<Vehicle> vehicles, double command_timeout)
+    : vehicles_(std::move(vehicles)), state_(vehicles_.size()), command_timeout_(command_timeout) {}
+
+CheckedCommand CommandArbiter::Receive(int v, const ActuatorCommandMsg& msg, double t) {
+  CheckedCommand checked = FromActuatorCommand(msg, vehicles_[v].limits);
+  ++received_;
+  if (checked.verdict == CheckedCommand::kRejected) {
+    ++rejected_;
+    last_event_ = vehicles_[v].name + ": command rejected (" + checked.reason + ")";
+    return checked;
+  }
+  if (checked.verdict == CheckedCommand::kClamped) {
+    ++clamped_;
+    last_event_ = vehicles_[v].name + ": " + checked.reason;
+  }
+  State& s = state_[v];
+  s.has_command = true;
+  s.held = checked.command;
+  s.held_step = checked.step;
+  s.last_time = t;
+  s.failsafe = false;  // commands resumed
+  s.waited_for = true;
+  s.fresh = true;
+  return checked;
+}
+
+void CommandArbiter::EnterFailsafe(int v, const std::string& why) {
+  State& s = state_[v];
+  if (!s.failsafe) {
+    s.failsafe = true;
+    ++failsafe_count_;
+    last_event_ = vehicles_[v].name + ": failsafe (" + why + ")";
+  }
+  s.fresh = false;
+}
+
+void CommandArbiter::CheckTimeouts(double t) {
+  for (int v = 0; v < size(); ++v) {
+    const State& s = state_[v];
+    if (!s.has_command || s.failsafe) continue;
+    const double silent = t - s.last_time;
+    if (silent >= command_timeout_ - kCommandTimeTolerance) {
+      char why[96];
+      std::snprintf(why, sizeof why, "no command for %.3g s of simulation time", silent);
+      EnterFailsafe(v, why);
+    }
+  }
+}
+
+bool CommandArbiter::ReadyFor(uint64_t step) const {
+  for (int v = 0; v < size(); ++v) {
+    const State& s = state_[v];
+    if (!vehicles_[v].lockstep || !s.waited_for) continue;
+    if (!s.has_command || s.held_step != step) return false;
+  }
+  return true;
+}
+
+std::vector<int> CommandArbiter::Missing(uint64_t step) const {
+  std::vector<int> missing;
+  for (int v = 0; v < size(); ++v) {
+    const State& s = state_[v];
+    if (!vehicles_[v].lockstep || !s.waited_for) continue;
+    if (!s.has_command || s.held_step != step) missing.push_back(v);
+  }
+  return missing;
+}
+
+int CommandArbiter::TimeOut(uint64_t step) {
+  int n = 0;
+  for (int v : Missing(step)) {
+    State& s = state_[v];
+    if (!s.has_command) continue;  // never commanded: the controller may still be starting
+    s.waited_for = false;
+    ++lockstep_timeouts_;
+    ++n;
+    EnterFailsafe(v, "lockstep: no command for step " + std::to_string(step) + " in time");
+  }
+  return n;
+}
+
+bool CommandArbiter::Take(int v, core::VehicleCommand* command) {
+  State& s = state_[v];
+  if (s.failsafe) {
+    *command = core::VehicleCommand{};  // zero thrust, fins centred
+    return true;
+  }
+  if (!s.fresh) return false;
+  s.fresh = false;
+  *command = s.held;
+  return true;
+}
+
+void CommandArbiter::Reset() {
+  for (State& s : state_) s = State{};
+  received_ = rejected_ = clamped_ = failsafe_count_ = lockstep_timeouts_ = 0;
+  last_event_.clear();
+}
+
+std::vector<std::string> CommandArbiter::failsafe_names() const {
+  std::vector<std::string> names;
+  for (int v = 0; v < size(); ++v) {
+    if (state_[v].failsafe) names.push_back(vehicles_[v].name);
+  }
+  return names;
+}
+
+}  // namespace towsim::dds

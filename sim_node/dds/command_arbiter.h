@@ -1,0 +1,101 @@
+#pragma once
+// Which command each vehicle follows (issue 4, DESIGN §4). Pure logic on simulation time: no
+// DDS, no clocks; the node feeds it the ActuatorCommand samples it takes and asks it, before
+// each step, what to apply.
+//
+// Per vehicle:
+//   - last writer wins: each valid command replaces the one held;
+//   - a command with a NaN or infinite field is rejected (the held one stays), one beyond
+//     the vehicle's limits is clamped; both are counted;
+//   - failsafe (zero thrust, fins centred) once no valid command has come for
+//     `command_timeout` of simulation time, and in lockstep mode when the command of a step
+//     did not come in time; it ends with the next valid command. The timeout is armed by the
+//     first command: a vehicle no controller ever commanded follows the scene (its initial
+//     command and the script);
+//   - lockstep: step k (from state k to k + 1) may start once every lockstep vehicle holds a
+//     command answering step k. A vehicle that timed out is not waited for until its
+//     commands resume.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/vehicle_model.h"
+#include "dds/translators.h"
+
+namespace towsim::dds {
+
+// slack on time comparisons (steps of a fixed h land on multiples of h only up to rounding) [s]
+inline constexpr double kCommandTimeTolerance = 1e-9;
+
+class CommandArbiter {
+ public:
+  struct Vehicle {
+    std::string name;
+    CommandLimits limits;
+    bool lockstep = true;  // lockstep mode waits for its commands
+  };
+
+  // command_timeout [s] of simulation time, > 0
+  CommandArbiter(std::vector<Vehicle> vehicles, double command_timeout);
+
+  // a sample for vehicle v taken at simulation time t [s]; returns the verdict (counted)
+  CheckedCommand Receive(int v, const ActuatorCommandMsg& msg, double t);
+
+  // enters failsafe every vehicle whose last valid command is `command_timeout` or more
+  // before t; call at the start of every step
+  void CheckTimeouts(double t);
+
+  // lockstep: every lockstep vehicle that is waited for holds a command answering `step`
+  bool ReadyFor(uint64_t step) const;
+  // the vehicles ReadyFor is waiting for (names), for messages
+  std::vector<int> Missing(uint64_t step) const;
+  // lockstep: the wait for `step` timed out: every missing vehicle that has been commanded
+  // before enters failsafe and is no longer waited for (a vehicle never commanded is still
+  // waited for: the controller may not have started yet). Returns how many timed out.
+  int TimeOut(uint64_t step);
+
+  // The command vehicle v must be given before the next step, if any: the failsafe command
+  // on every step of a failsafe (so that no script overrides it), a newly received command
+  // once. Returns false if nothing is to be set.
+  bool Take(int v, core::VehicleCommand* command);
+
+  // back to the start: no command held, nothing in failsafe, counters zero
+  void Reset();
+
+  int size() const { return static_cast<int>(vehicles_.size()); }
+  const Vehicle& vehicle(int v) const { return vehicles_[v]; }
+  bool failsafe(int v) const { return state_[v].failsafe; }
+  bool commanded(int v) const { return state_[v].has_command; }
+  const core::VehicleCommand& held(int v) const { return state_[v].held; }
+  std::vector<std::string> failsafe_names() const;
+
+  uint64_t received() const { return received_; }
+  uint64_t rejected() const { return rejected_; }
+  uint64_t clamped() const { return clamped_; }
+  uint64_t failsafe_count() const { return failsafe_count_; }  // failsafe entries
+  uint64_t lockstep_timeouts() const { return lockstep_timeouts_; }
+  // the last clamp / reject / failsafe, for the status message
+  const std::string& last_event() const { return last_event_; }
+
+ private:
+  struct State {
+    bool has_command = false;  // a valid command came since the start (or reset)
+    core::VehicleCommand held;
+    uint64_t held_step = 0;    // the step the held command answers
+    double last_time = 0.0;    // simulation time it came [s]
+    bool failsafe = false;
+    bool waited_for = true;    // lockstep: false after a lockstep timeout until commands resume
+    bool fresh = false;        // held not yet given to the simulation
+  };
+  void EnterFailsafe(int v, const std::string& why);
+
+  std::vector<Vehicle> vehicles_;
+  std::vector<State> state_;
+  double command_timeout_;
+  uint64_t received_ = 0, rejected_ = 0, clamped_ = 0, failsafe_count_ = 0;
+  uint64_t lockstep_timeouts_ = 0;
+  std::string last_event_;
+};
+
+}  // namespace towsim::dds

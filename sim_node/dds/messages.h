@@ -1,0 +1,24 @@
+#pragma once
+// The generated C types of msgs/ (idlc): one include for the whole wire contract.
+
+#include "builtin_interfaces.h"
+#include "geometry_msgs.h"
+#include "nav_msgs.h"
+#include "rosgraph_msgs.h"
+#include "std_msgs.h"
+#include "towsim_msgs.h"
+
+namespace towsim::dds {
+
+using TimeMsg = builtin_interfaces_msg_dds__Time_;
+using HeaderMsg = std_msgs_msg_dds__Header_;
+using OdometryMsg = nav_msgs_msg_dds__Odometry_;
+using WrenchStampedMsg = geometry_msgs_msg_dds__WrenchStamped_;
+using ClockMsg = rosgraph_msgs_msg_dds__Clock_;
+using CableStateMsg = towsim_msgs_msg_dds__CableState_;
+using ActuatorCommandMsg = towsim_msgs_msg_dds__ActuatorCommand_;
+using SimStatusMsg = towsim_msgs_msg_dds__SimStatus_;
+using SimControlMsg = towsim_msgs_msg_dds__SimControl_;
+using SceneInfoMsg = towsim_msgs_msg_dds__SceneInfo_;
+
+}  // namespace towsim::dds

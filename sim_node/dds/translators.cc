@@ -1,0 +1,272 @@
+#include "dds/translators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "towsim_msgs.h"
+
+namespace towsim::dds {
+namespace {
+
+constexpr double kNanosecondsPerSecond = 1e9;
+
+void Set(const core::Vec3& v, geometry_msgs_msg_dds__Vector3_* out) {
+  out->x = v.x();
+  out->y = v.y();
+  out->z = v.z();
+}
+
+void Set(const core::Vec3& v, geometry_msgs_msg_dds__Point_* out) {
+  out->x = v.x();
+  out->y = v.y();
+  out->z = v.z();
+}
+
+char* Chars(const std::string& s) { return const_cast<char*>(s.c_str()); }
+
+// points `seq` at the strings of `from` (through `pointers`, resized as needed)
+void PointAt(const std::vector<std::string>& from, std::vector<char*>* pointers,
+             dds_sequence_string* seq) {
+  pointers->resize(from.size());
+  for (size_t i = 0; i < from.size(); ++i) (*pointers)[i] = Chars(from[i]);
+  seq->_buffer = pointers->empty() ? nullptr : pointers->data();
+  seq->_length = static_cast<uint32_t>(from.size());
+  seq->_maximum = seq->_length;
+  seq->_release = false;
+}
+
+// clamps *x into [lo, hi]; returns whether it had to
+bool Clamp(double lo, double hi, double* x) {
+  const double c = std::min(hi, std::max(lo, *x));
+  const bool clamped = c != *x;
+  *x = c;
+  return clamped;
+}
+
+}  // namespace
+
+TimeMsg ToTimeMsg(double t) {
+  // round to the nearest nanosecond, then split with floor division (t may be < 0)
+  const long long ns = std::llround(t * kNanosecondsPerSecond);
+  const long long per_s = static_cast<long long>(kNanosecondsPerSecond);
+  long long sec = ns / per_s;
+  long long rem = ns % per_s;
+  if (rem < 0) {
+    rem += per_s;
+    --sec;
+  }
+  TimeMsg out;
+  out.sec = static_cast<int32_t>(sec);
+  out.nanosec = static_cast<uint32_t>(rem);
+  return out;
+}
+
+double FromTimeMsg(const TimeMsg& time) {
+  return static_cast<double>(time.sec) + static_cast<double>(time.nanosec) / kNanosecondsPerSecond;
+}
+
+OdometryMessage::OdometryMessage(std::string frame_id, std::string child_frame_id)
+    : msg{}, frame_id_(std::move(frame_id)), child_frame_id_(std::move(child_frame_id)) {
+  msg.header.frame_id = Chars(frame_id_);
+  msg.child_frame_id = Chars(child_frame_id_);
+  msg.pose.pose.orientation.w = 1.0;
+}
+
+WrenchStampedMessage::WrenchStampedMessage(std::string frame_id)
+    : msg{}, frame_id_(std::move(frame_id)) {
+  msg.header.frame_id = Chars(frame_id_);
+}
+
+CableStateMessage::CableStateMessage(std::string frame_id, int nodes)
+    : msg{},
+      frame_id_(std::move(frame_id)),
+      positions_(static_cast<size_t>(std::max(0, nodes))),
+      velocities_(static_cast<size_t>(std::max(0, nodes))),
+      tensions_(static_cast<size_t>(std::max(0, nodes))) {
+  msg.header.frame_id = Chars(frame_id_);
+  const uint32_t n = static_cast<uint32_t>(positions_.size());
+  msg.positions = {n, n, positions_.data(), false};
+  msg.velocities = {n, n, velocities_.data(), false};
+  msg.tensions = {n, n, tensions_.data(), false};
+}
+
+void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg) {
+  msg->header.stamp = ToTimeMsg(sim.time());
+  // pose of B in W (NED)
+  Set(sim.body_position(body), &msg->pose.pose.position);
+  const Eigen::Quaterniond q_WB = sim.body_attitude(body);
+  msg->pose.pose.orientation.x = q_WB.x();
+  msg->pose.pose.orientation.y = q_WB.y();
+  msg->pose.pose.orientation.z = q_WB.z();
+  msg->pose.pose.orientation.w = q_WB.w();
+  // [u v w p q r] in B
+  const core::Vec6 nu = sim.body_twist(body);
+  Set(core::Vec3(nu.head<3>()), &msg->twist.twist.linear);
+  Set(core::Vec3(nu.tail<3>()), &msg->twist.twist.angular);
+}
+
+void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg) {
+  msg->header.stamp = ToTimeMsg(sim.time());
+  core::Vec3 force_B, moment_B;
+  sim.body_cable_wrench(body, &force_B, &moment_B);
+  Set(force_B, &msg->wrench.force);
+  Set(moment_B, &msg->wrench.torque);
+}
+
+void ToClock(double t, ClockMsg* msg) { msg->clock = ToTimeMsg(t); }
+
+void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* out) {
+  CableStateMsg& m = out->msg;
+  m.header.stamp = ToTimeMsg(sim.time());
+  m.step = step;
+  const uint32_t n = std::min<uint32_t>(m.positions._length, static_cast<uint32_t>(sim.num_nodes()));
+  for (uint32_t i = 0; i < n; ++i) {
+    Set(sim.node_position(static_cast<int>(i)), &m.positions._buffer[i]);
+    Set(sim.node_velocity(static_cast<int>(i)), &m.velocities._buffer[i]);
+    m.tensions._buffer[i] = sim.node_tension(static_cast<int>(i));
+  }
+}
+
+SimStatusMessage::SimStatusMessage() : msg{} { ToSimStatus(StatusSample{}, this); }
+
+void ToSimStatus(const StatusSample& sample, SimStatusMessage* out) {
+  StatusSample& s = out->storage_;
+  s = sample;
+  SimStatusMsg& m = out->msg;
+  m.header.stamp = ToTimeMsg(s.sim_time);
+  m.header.frame_id = const_cast<char*>("");  // not frame-bound
+  m.run_id = Chars(s.run_id);
+  m.mode = Chars(s.mode);
+  m.state = s.state;
+  m.health = s.health;
+  m.message = Chars(s.message);
+  m.step = s.step;
+  m.sim_time = s.sim_time;
+  m.rate = s.rate;
+  m.real_time_factor = s.real_time_factor;
+  m.step_wall_time = s.step_wall_time;
+  m.lateness = s.lateness;
+  m.lateness_max = s.lateness_max;
+  m.overruns = s.overruns;
+  m.newton_iterations = s.newton_iterations;
+  m.residual = s.residual;
+  m.coupling_iterations = s.coupling_iterations;
+  m.substeps = s.substeps;
+  m.failsafe_count = s.failsafe_count;
+  PointAt(s.failsafe_bodies, &out->failsafe_bodies_, &m.failsafe_bodies);
+  m.commands_received = s.commands_received;
+  m.commands_rejected = s.commands_rejected;
+  m.commands_clamped = s.commands_clamped;
+  m.lockstep_timeouts = s.lockstep_timeouts;
+}
+
+SceneInfoMessage::SceneInfoMessage() : msg{} { ToSceneInfo(SceneInfoSample{}, this); }
+
+void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out) {
+  SceneInfoSample& s = out->storage_;
+  s = sample;
+  SceneInfoMsg& m = out->msg;
+  m.header.stamp = ToTimeMsg(s.time);
+  m.header.frame_id = const_cast<char*>("");  // not frame-bound
+  m.run_id = Chars(s.run_id);
+  m.scene = Chars(s.scene);
+  m.mode = Chars(s.mode);
+  m.step_size = s.step_size;
+  m.duration = s.duration;
+  m.command_timeout = s.command_timeout;
+  PointAt(s.bodies, &out->bodies_, &m.bodies);
+  PointAt(s.commanded_bodies, &out->commanded_bodies_, &m.commanded_bodies);
+  m.cable_nodes = static_cast<uint32_t>(std::max(0, s.cable_nodes));
+}
+
+CommandLimits LimitsOf(const core::VehicleParams& params) {
+  CommandLimits limits;
+  if (params.has_propeller) {
+    limits.thrust_min = -0.25 * params.max_thrust;
+    limits.thrust_max = params.max_thrust;
+  }
+  for (const core::LiftingSurface& s : params.surfaces) {
+    if (s.channel == core::Channel::kRudder) limits.rudder_max = params.rudder.max_deflection;
+    if (s.channel == core::Channel::kElevator) {
+      limits.elevator_max = params.elevator.max_deflection;
+    }
+  }
+  return limits;
+}
+
+bool IsCommandable(const core::VehicleParams& params) {
+  if (params.has_propeller) return true;
+  for (const core::LiftingSurface& s : params.surfaces) {
+    if (s.channel != core::Channel::kNone) return true;
+  }
+  return false;
+}
+
+CheckedCommand FromActuatorCommand(const ActuatorCommandMsg& msg, const CommandLimits& limits) {
+  CheckedCommand out;
+  out.step = msg.step;
+  const struct {
+    const char* name;
+    double value;
+  } fields[] = {{"thrust", msg.thrust}, {"rudder", msg.rudder}, {"elevator", msg.elevator}};
+  for (const auto& f : fields) {
+    if (!std::isfinite(f.value)) {
+      out.verdict = CheckedCommand::kRejected;
+      out.reason = std::string(f.name) + " is " + (std::isnan(f.value) ? "NaN" : "infinite");
+      return out;
+    }
+  }
+  out.command.thrust = msg.thrust;
+  out.command.rudder = msg.rudder;
+  out.command.elevator = msg.elevator;
+  std::string clamped;
+  auto note = [&clamped](const char* name, bool did) {
+    if (!did) return;
+    clamped += clamped.empty() ? name : std::string(", ") + name;
+  };
+  note("thrust", Clamp(limits.thrust_min, limits.thrust_max, &out.command.thrust));
+  note("rudder", Clamp(-limits.rudder_max, limits.rudder_max, &out.command.rudder));
+  note("elevator", Clamp(-limits.elevator_max, limits.elevator_max, &out.command.elevator));
+  if (!clamped.empty()) {
+    out.verdict = CheckedCommand::kClamped;
+    out.reason = clamped + " clamped to the vehicle's limits";
+  }
+  return out;
+}
+
+ControlRequest FromSimControl(const SimControlMsg& msg) {
+  ControlRequest r;
+  switch (msg.command) {
+    case towsim_msgs_msg_dds__SimControl_Constants_PAUSE:
+      r.kind = ControlRequest::kPause;
+      break;
+    case towsim_msgs_msg_dds__SimControl_Constants_RESUME:
+      r.kind = ControlRequest::kResume;
+      break;
+    case towsim_msgs_msg_dds__SimControl_Constants_STEP:
+      if (msg.steps < 1) {
+        r.error = "STEP needs steps >= 1";
+        break;
+      }
+      r.kind = ControlRequest::kStep;
+      r.steps = static_cast<long>(msg.steps);
+      break;
+    case towsim_msgs_msg_dds__SimControl_Constants_RESET:
+      r.kind = ControlRequest::kReset;
+      break;
+    case towsim_msgs_msg_dds__SimControl_Constants_SET_RATE:
+      if (!std::isfinite(msg.rate) || msg.rate <= 0.0) {
+        r.error = "SET_RATE needs a finite rate > 0, got " + std::to_string(msg.rate);
+        break;
+      }
+      r.kind = ControlRequest::kSetRate;
+      r.rate = msg.rate;
+      break;
+    default:
+      r.error = "unknown command " + std::to_string(msg.command);
+  }
+  return r;
+}
+
+}  // namespace towsim::dds

@@ -1,0 +1,186 @@
+#pragma once
+// Pure translators between the core's state and the wire messages (DESIGN §3): no DDS
+// entities, no clocks; unit-tested without a participant (tests/unit/dds_translators_test.cc).
+//
+// Frames and units: the world frame W is NED ("world_ned"); a body frame B is x forward,
+// y starboard, z down (a sphere's B stays aligned with W). SI units throughout.
+//   Odometry:       pose = (p_WB, q_WB) in W; twist = ([u v w], [p q r]) in B (the ROS
+//                   convention: the twist is expressed in child_frame_id = the body)
+//   cable_force:    the force the cable exerts on the body and its moment about the body
+//                   origin, in B (Eq. 29-30) [N, N m]
+//   CableState:     node positions and velocities in W, axial forces [m, m/s, N]
+//
+// The *Message classes own a C message struct and the storage its strings and sequences point
+// into; they are neither copyable nor movable (the struct points into the object itself).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/simulation.h"
+#include "core/vehicle_model.h"
+#include "dds/messages.h"
+
+namespace towsim::dds {
+
+// --- time ---
+
+// t [s] -> (sec, nanosec) rounded to the nearest nanosecond; nanosec in [0, 1e9)
+TimeMsg ToTimeMsg(double t);
+double FromTimeMsg(const TimeMsg& time);  // [s]
+
+// --- outgoing ---
+
+class OdometryMessage {
+ public:
+  // frame_id: the world frame; child_frame_id: the body (the twist's frame)
+  OdometryMessage(std::string frame_id, std::string child_frame_id);
+  OdometryMessage(const OdometryMessage&) = delete;
+  OdometryMessage& operator=(const OdometryMessage&) = delete;
+  OdometryMsg msg;
+
+ private:
+  std::string frame_id_, child_frame_id_;
+};
+
+class WrenchStampedMessage {
+ public:
+  explicit WrenchStampedMessage(std::string frame_id);
+  WrenchStampedMessage(const WrenchStampedMessage&) = delete;
+  WrenchStampedMessage& operator=(const WrenchStampedMessage&) = delete;
+  WrenchStampedMsg msg;
+
+ private:
+  std::string frame_id_;
+};
+
+class CableStateMessage {
+ public:
+  // frame_id: the world frame; nodes: elements + 1 (sequences sized once)
+  CableStateMessage(std::string frame_id, int nodes);
+  CableStateMessage(const CableStateMessage&) = delete;
+  CableStateMessage& operator=(const CableStateMessage&) = delete;
+  CableStateMsg msg;
+
+ private:
+  std::string frame_id_;
+  std::vector<geometry_msgs_msg_dds__Point_> positions_;
+  std::vector<geometry_msgs_msg_dds__Vector3_> velocities_;
+  std::vector<double> tensions_;
+};
+
+// body b of sim (0 .. num_bodies - 1): stamp, pose in W, twist in B; covariances zero (exact)
+void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg);
+// the cable's force and moment on body b, in B; zero when the cable is not attached to it
+void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg);
+void ToClock(double t, ClockMsg* msg);
+// every node; msg must be sized for sim.num_nodes()
+void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* msg);
+
+// what the node reports in SimStatus (field meanings: msgs/towsim_msgs/msg/SimStatus.msg)
+struct StatusSample {
+  std::string run_id;
+  std::string mode;
+  uint8_t state = 0;   // towsim_msgs_msg_dds__SimStatus_Constants_STATE_*
+  uint8_t health = 0;  // ..._HEALTH_*
+  std::string message;
+  uint64_t step = 0;
+  double sim_time = 0.0;          // [s]
+  double rate = 1.0;              // [-]
+  double real_time_factor = 0.0;  // [-]
+  double step_wall_time = 0.0;    // [s]
+  double lateness = 0.0;          // [s]
+  double lateness_max = 0.0;      // [s]
+  uint64_t overruns = 0;
+  int newton_iterations = 0;
+  double residual = 0.0;  // [N]
+  int coupling_iterations = 0;
+  int substeps = 0;
+  uint64_t failsafe_count = 0;
+  std::vector<std::string> failsafe_bodies;
+  uint64_t commands_received = 0;
+  uint64_t commands_rejected = 0;
+  uint64_t commands_clamped = 0;
+  uint64_t lockstep_timeouts = 0;
+};
+
+class SimStatusMessage {
+ public:
+  SimStatusMessage();
+  SimStatusMessage(const SimStatusMessage&) = delete;
+  SimStatusMessage& operator=(const SimStatusMessage&) = delete;
+  SimStatusMsg msg;
+
+ private:
+  friend void ToSimStatus(const StatusSample& sample, SimStatusMessage* out);
+  StatusSample storage_;  // the strings msg points into
+  std::vector<char*> failsafe_bodies_;
+};
+
+// the sample's strings are copied into `out`
+void ToSimStatus(const StatusSample& sample, SimStatusMessage* out);
+
+struct SceneInfoSample {
+  std::string run_id, scene, mode;
+  double time = 0.0;             // stamp [s]
+  double step_size = 0.0;        // [s]
+  double duration = 0.0;         // [s], < 0: no end
+  double command_timeout = 0.0;  // [s]
+  std::vector<std::string> bodies;
+  std::vector<std::string> commanded_bodies;
+  int cable_nodes = 0;
+};
+
+class SceneInfoMessage {
+ public:
+  SceneInfoMessage();
+  SceneInfoMessage(const SceneInfoMessage&) = delete;
+  SceneInfoMessage& operator=(const SceneInfoMessage&) = delete;
+  SceneInfoMsg msg;
+
+ private:
+  friend void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out);
+  SceneInfoSample storage_;
+  std::vector<char*> bodies_, commanded_bodies_;
+};
+
+void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out);
+
+// --- incoming ---
+
+// the limits a command is clamped to (a vehicle without the actuator: [0, 0])
+struct CommandLimits {
+  double thrust_min = 0.0, thrust_max = 0.0;  // [N]
+  double rudder_max = 0.0;                    // |rudder| [rad]
+  double elevator_max = 0.0;                  // |elevator| [rad]
+};
+
+// from the vehicle model: thrust in [-max_thrust / 4, max_thrust] (as the propeller model
+// clamps), fins within +-max_deflection of each channel that drives a surface
+CommandLimits LimitsOf(const core::VehicleParams& params);
+
+// whether a vehicle takes commands at all (a propeller, or a surface on a channel)
+bool IsCommandable(const core::VehicleParams& params);
+
+struct CheckedCommand {
+  enum Verdict { kAccepted, kClamped, kRejected };
+  Verdict verdict = kAccepted;
+  core::VehicleCommand command;  // clamped (kClamped) or as sent (kAccepted); unset if rejected
+  uint64_t step = 0;             // the step the command answers
+  std::string reason;            // kClamped / kRejected: which field and why
+};
+
+// NaN or infinite in any field: rejected; beyond the limits: clamped
+CheckedCommand FromActuatorCommand(const ActuatorCommandMsg& msg, const CommandLimits& limits);
+
+struct ControlRequest {
+  enum Kind { kInvalid, kPause, kResume, kStep, kReset, kSetRate };
+  Kind kind = kInvalid;
+  long steps = 0;     // kStep: >= 1
+  double rate = 0.0;  // kSetRate: finite, > 0
+  std::string error;  // kInvalid: why
+};
+
+ControlRequest FromSimControl(const SimControlMsg& msg);
+
+}  // namespace towsim::dds
