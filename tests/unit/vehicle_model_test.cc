@@ -349,5 +349,36 @@ TEST(VehicleModel, EulerAnglesRoundTrip) {
   EXPECT_LT((rp * Vec3::UnitX()).z(), 0.0);
 }
 
+// Semi-submersible hydrostatics: 1 m of sinkage adds rho g A_wp of buoyancy at the waterplane
+// point, a pitch of theta a moment -rho g I_L sin(theta), a roll -rho g I_T sin(phi).
+TEST(VehicleModel, WaterplaneRestoringOfASurfacePiercingFairing) {
+  VehicleParams p;
+  p.mass = 1000.0;
+  p.volume = 1000.0 / 1025.0;  // neutral at design depth
+  p.waterplane_area = 2.0;
+  p.waterplane_point_B = Vec3(0.5, 0.0, -0.5);
+  p.design_depth = 3.0;
+  p.waterplane_inertia_long = 4.0;
+  p.waterplane_inertia_trans = 0.3;
+  Environment env;
+  const double rho_g = env.water_density * env.gravity;
+  constexpr double kHydrostaticTol = 1e-9;  // closed-form forces, round-off only
+  VehicleState s;
+  s.p_W.z() = 4.0;  // 1 m below design depth
+  Vec6 f = HydrodynamicForces(p, env, s);
+  EXPECT_NEAR(f(2), -rho_g * 2.0, kHydrostaticTol * rho_g);
+  // applied at x = 0.5 ahead of the origin: a nose-up moment M = -x F_z
+  EXPECT_NEAR(f(4), 0.5 * rho_g * 2.0, kHydrostaticTol * rho_g);
+  for (const double angle : {0.05, -0.2}) {
+    s.p_W.z() = 3.0;
+    s.q_WB = QuaternionFromEulerZYX(Vec3(0.0, angle, 0.0));
+    f = HydrodynamicForces(p, env, s);
+    EXPECT_NEAR(f(4), -rho_g * 4.0 * std::sin(angle), kHydrostaticTol * rho_g) << angle;
+    s.q_WB = QuaternionFromEulerZYX(Vec3(angle, 0.0, 0.0));
+    f = HydrodynamicForces(p, env, s);
+    EXPECT_NEAR(f(3), -rho_g * 0.3 * std::sin(angle), kHydrostaticTol * rho_g) << angle;
+  }
+}
+
 }  // namespace
 }  // namespace towsim::core
