@@ -11,7 +11,6 @@
 namespace towsim::dds {
 
 inline constexpr const char* kDefaultNamespace = "/towsim";
-inline constexpr const char* kWorldFrame = "world_ned";  // frame_id of world-frame data
 
 // Checks a ROS 2 namespace: "/" or "/seg[/seg...]", each segment [A-Za-z_][A-Za-z0-9_]*, no
 // trailing "/". Returns an empty string if valid, else what is wrong.

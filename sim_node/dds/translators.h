@@ -23,6 +23,9 @@
 
 namespace towsim::dds {
 
+// frame_id of world-frame data (NED; REP 103's "_ned" suffix)
+inline constexpr const char* kWorldFrame = "world_ned";
+
 // --- time ---
 
 // t [s] -> (sec, nanosec) rounded to the nearest nanosecond; nanosec in [0, 1e9)

@@ -915,6 +915,32 @@ TEST_F(SceneLoaderTest, PaperCaseScenes) {
   EXPECT_EQ(c2.script[2].rudder, 0.0);
 }
 
+TEST_F(SceneLoaderTest, VehicleWaterplane) {
+  // absent: fully submerged
+  EXPECT_EQ(Load(kVehicleScene).vehicles[0].params.waterplane_area, 0.0);
+  const Model m = Load(kVehicleScene, {"bodies.boat.waterplane={area: 0.5, position: [0, 0, -0.2], "
+                                       "design_depth: 1, inertia_longitudinal: 0.1}"});
+  const core::VehicleParams& p = m.vehicles[0].params;
+  EXPECT_EQ(p.waterplane_area, 0.5);
+  EXPECT_EQ(p.waterplane_point_B, core::Vec3(0, 0, -0.2));
+  EXPECT_EQ(p.design_depth, 1.0);
+  EXPECT_EQ(p.waterplane_inertia_long, 0.1);
+  EXPECT_EQ(p.waterplane_inertia_trans, 0.0);  // default
+  try {
+    Load(kVehicleScene, {"bodies.boat.waterplane={area: 0.5, position: [0, 0, 0]}"});
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "bodies.boat.waterplane.design_depth") << e.what();
+    EXPECT_EQ(e.rule(), "is required") << e.what();
+  }
+  try {
+    Load(kVehicleScene, {"bodies.boat.waterplane.area=0"});
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_STREQ(e.what(), "bodies.boat.waterplane.area = 0 (--set): must be > 0");
+  }
+}
+
 TEST_F(SceneLoaderTest, VehicleFileAlone) {
   // the shipped vehicle files, read by themselves, equal what the paper scenes hold
   const Model c1 = LoadScene(kConfigDir + "/scenes/case1_forward.yaml");

@@ -1,0 +1,29 @@
+# tests of the DDS layer: msgs/ (wire contract), sim_node/dds/ (adapter) and the node loop's
+# pure parts (sim_node/app/dds_*). Included from tests/unit/CMakeLists.txt.
+towsim_add_test(towsim_msgs_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/towsim_msgs_test.cc
+  LIBS towsim::msgs)
+
+towsim_add_test(dds_topic_names_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_topic_names_test.cc
+  LIBS towsim::dds)
+
+towsim_add_test(dds_translators_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_translators_test.cc
+  LIBS towsim::dds towsim::scene)
+
+towsim_add_test(dds_command_arbiter_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_command_arbiter_test.cc
+  LIBS towsim::dds)
+
+towsim_add_test(dds_pacer_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_pacer_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/dds_pacer.cc
+  LIBS towsim::core)
+target_include_directories(dds_pacer_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node)
+
+# a participant on the loopback configuration (the test sets CYCLONEDDS_URI itself), domains
+# 57 and 58
+towsim_add_test(dds_entities_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_entities_test.cc
+  LIBS towsim::dds)
