@@ -1,0 +1,86 @@
+#include "process.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <thread>
+#include <utility>
+
+namespace towsim::testing {
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+Process::Process(std::vector<std::string> argv, const std::string& log_prefix,
+                 std::vector<std::string> env)
+    : argv_(std::move(argv)), out_path_(log_prefix + ".out"), err_path_(log_prefix + ".err") {
+  pid_ = fork();
+  if (pid_ == 0) {
+    const int out = open(out_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = open(err_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (out >= 0) dup2(out, STDOUT_FILENO);
+    if (err >= 0) dup2(err, STDERR_FILENO);
+    for (const std::string& e : env) {
+      const auto eq = e.find('=');
+      setenv(e.substr(0, eq).c_str(), e.substr(eq + 1).c_str(), 1);
+    }
+    std::vector<char*> args;
+    for (std::string& a : argv_) args.push_back(a.data());
+    args.push_back(nullptr);
+    execv(args[0], args.data());
+    _exit(127);
+  }
+}
+
+Process::~Process() {
+  if (pid_ > 0 && !exited_) {
+    kill(pid_, SIGKILL);
+    Wait(5.0);
+  }
+}
+
+void Process::Signal(int signal) {
+  if (pid_ > 0 && !exited_) kill(pid_, signal);
+}
+
+bool Process::Wait(double timeout) {
+  if (exited_) return true;
+  if (pid_ <= 0) return false;
+  const auto start = std::chrono::steady_clock::now();
+  for (;;) {
+    int status = 0;
+    const pid_t r = waitpid(pid_, &status, WNOHANG);
+    if (r == pid_) {
+      exited_ = true;
+      exit_code_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      return true;
+    }
+    if (std::chrono::steady_clock::now() - start > std::chrono::duration<double>(timeout)) {
+      return false;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+bool Process::running() { return !Wait(0.0); }
+
+std::string Process::out() const { return ReadFile(out_path_); }
+std::string Process::err() const { return ReadFile(err_path_); }
+
+std::string Process::command_line() const {
+  std::string s;
+  for (const std::string& a : argv_) s += (s.empty() ? "" : " ") + a;
+  return s;
+}
+
+}  // namespace towsim::testing

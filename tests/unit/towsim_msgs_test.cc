@@ -49,7 +49,7 @@ Fields IdlMembers(const std::string& idl, const std::string& name) {
   const size_t begin = m.position(0) + m.length(0);
   const size_t end = text.find("};", begin);
   Fields fields;
-  const std::regex member("\\s*(.+?)\\s+(\\w+)\\s*;");
+  const std::regex member("\\s*(.+?)\\s+(\\w+(?:\\[\\d+\\])?)\\s*;\\s*");
   std::stringstream body(text.substr(begin, end - begin));
   std::string line;
   while (std::getline(body, line)) {

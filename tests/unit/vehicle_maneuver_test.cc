@@ -110,11 +110,12 @@ TEST(VehicleFiles, DesignChoices) {
   EXPECT_EQ(fish.r_g, Vec3(1.0, 0.0, 0.12));
   // the towing vehicle alone is neutrally buoyant (0.1 kg)
   EXPECT_NEAR(env.water_density * veh.volume, veh.mass, 0.1);
-  // the towfish's net weight acts on the vertical through its bow tow point (1 mm):
-  // (m x_g - rho V x_b) / (m - rho V) = x_bow, so it hangs level at any speed
+  // the towfish is trimmed: its CB on the vertical through its CG, BG = 0.12 m, and it is
+  // 1 % heavy in water (0.1 kg)
   const double buoyant = env.water_density * fish.volume;
-  const double x_net = (fish.mass * fish.r_g.x() - buoyant * fish.r_b.x()) / (fish.mass - buoyant);
-  EXPECT_NEAR(x_net, kBow.x(), 1e-3);
+  EXPECT_NEAR(fish.r_b.x(), fish.r_g.x(), 1e-12);
+  EXPECT_NEAR(fish.r_g.z() - fish.r_b.z(), 0.12, 1e-12);
+  EXPECT_NEAR(fish.mass - buoyant, 0.01 * fish.mass, 0.1);
   EXPECT_NEAR(kBow.x(), fish.length / 2, 1e-12);
   // the remedy: Kirchhoff's C_A complete (Munk moment kept), tail fins sized for stability
   EXPECT_TRUE(veh.munk_moment);

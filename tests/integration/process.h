@@ -1,0 +1,44 @@
+#pragma once
+// Child processes for the integration tests: started with fork + exec, stdout and stderr to
+// files, waited for with a timeout, stopped by their own pid only.
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+namespace towsim::testing {
+
+class Process {
+ public:
+  // starts argv[0] with argv; stdout and stderr go to `log_prefix`.out / .err; `env` entries
+  // ("NAME=value") are set in the child on top of the test's environment
+  Process(std::vector<std::string> argv, const std::string& log_prefix,
+          std::vector<std::string> env = {});
+  ~Process();  // kills the child (SIGKILL) if it still runs
+  Process(const Process&) = delete;
+  Process& operator=(const Process&) = delete;
+
+  pid_t pid() const { return pid_; }
+  // sends `signal` to the child
+  void Signal(int signal);
+  // waits up to `timeout` [s]; true if it exited (exit_code() valid)
+  bool Wait(double timeout);
+  bool running();
+  // the exit status: the code, or 128 + signal if a signal ended it
+  int exit_code() const { return exit_code_; }
+  std::string out() const;
+  std::string err() const;
+  std::string command_line() const;
+
+ private:
+  std::vector<std::string> argv_;
+  std::string out_path_, err_path_;
+  pid_t pid_ = -1;
+  bool exited_ = false;
+  int exit_code_ = -1;
+};
+
+std::string ReadFile(const std::string& path);
+
+}  // namespace towsim::testing
