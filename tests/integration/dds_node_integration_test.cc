@@ -1,0 +1,604 @@
+// The DDS node as processes over loopback (issue 4): the node (TOWSIM_DDS_NODE, the final
+// `sim_node --mode ... --domain N` command line), the test controller (msgs/ only) and this
+// test, itself a DDS participant that watches the status and sends control requests and raw
+// commands. Every test uses its own DDS domain (README.md in this folder).
+
+#include <signal.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/script.h"
+#include "core/simulation.h"
+#include "dds/dds.h"
+#include "nav_msgs.h"
+#include "process.h"
+#include "scene/scene_loader.h"
+#include "towsim_msgs.h"
+
+namespace towsim::testing {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+const std::string kSource = TOWSIM_SOURCE_DIR;
+const std::string kCase1 = kSource + "/config/scenes/case1_forward.yaml";
+const std::string kSteadyTow = kSource + "/config/scenes/steady_tow.yaml";
+constexpr double kProcessTimeout = 60.0;  // [s] a run that takes longer has hung
+constexpr double kEventTimeout = 20.0;    // [s] for a status the test waits for
+constexpr double kLockstepTimeout = 1.0;  // [s] the node's default lockstep timeout
+// a signal stops the node within one step period + 100 ms (issue 4); a loaded CI machine
+// gets a margin on top
+constexpr double kStopMargin = 1.0;  // [s]
+
+double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
+std::string LogPrefix(const std::string& what) {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
+         what;
+}
+
+std::vector<std::string> Node(const std::string& scene, const std::string& mode, int domain,
+                              std::vector<std::string> extra = {}) {
+  std::vector<std::string> argv = {TOWSIM_DDS_NODE, "--scene", scene,
+                                   "--mode",        mode,      "--domain",
+                                   std::to_string(domain)};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
+}
+
+std::vector<std::string> Controller(int domain, std::vector<std::string> extra = {}) {
+  std::vector<std::string> argv = {TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(domain)};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
+}
+
+// one line of the controller's log: step body x y z qx qy qz qw u v w p q r
+struct OdomLine {
+  long step = 0;
+  std::string body;
+  double v[13] = {};
+};
+
+std::vector<OdomLine> ReadLog(const std::string& path) {
+  std::vector<OdomLine> lines;
+  std::stringstream in(ReadFile(path));
+  std::string text;
+  while (std::getline(in, text)) {
+    std::stringstream s(text);
+    OdomLine l;
+    std::string number;
+    s >> l.step >> l.body;
+    for (double& x : l.v) {
+      s >> number;
+      x = std::strtod(number.c_str(), nullptr);  // %.17g: exact
+    }
+    lines.push_back(l);
+  }
+  return lines;
+}
+
+struct Status {
+  std::string run_id, mode, message;
+  uint8_t state = 0, health = 0;
+  uint64_t step = 0;
+  double sim_time = 0.0, rate = 0.0;
+  std::vector<std::string> failsafe_bodies;
+  uint64_t failsafe_count = 0, received = 0, rejected = 0, clamped = 0, lockstep_timeouts = 0;
+  Clock::time_point when;
+};
+
+dds_qos_t* ReliableQos(int depth) {
+  dds_qos_t* q = dds_create_qos();
+  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
+  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
+  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
+  dds_qset_data_representation(q, 1, &xcdr1);
+  return q;
+}
+
+// this test as a DDS participant: the node's status, control requests and raw commands
+class Observer {
+ public:
+  Observer(int domain, const std::string& ns = "/towsim")
+      : prefix_(ns == "/" ? "rt/" : "rt" + ns + "/") {
+    participant_ = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
+    EXPECT_GT(participant_, 0) << dds_strretcode(participant_);
+    dds_qos_t* qos = ReliableQos(1000);
+    const dds_entity_t status_topic =
+        dds_create_topic(participant_, &towsim_msgs_msg_dds__SimStatus__desc,
+                         (prefix_ + "status").c_str(), nullptr, nullptr);
+    status_reader_ = dds_create_reader(participant_, status_topic, qos, nullptr);
+    const dds_entity_t control_topic =
+        dds_create_topic(participant_, &towsim_msgs_msg_dds__SimControl__desc,
+                         (prefix_ + "sim_control").c_str(), nullptr, nullptr);
+    control_writer_ = dds_create_writer(participant_, control_topic, qos, nullptr);
+    dds_delete_qos(qos);
+  }
+  ~Observer() { dds_delete(participant_); }
+
+  // every status received so far, oldest first
+  const std::vector<Status>& statuses() {
+    Poll();
+    return statuses_;
+  }
+
+  // waits for a status that satisfies `pred` (among all received, oldest first)
+  bool WaitFor(const std::function<bool(const Status&)>& pred, Status* found,
+               double timeout = kEventTimeout) {
+    const Clock::time_point start = Clock::now();
+    size_t seen = 0;
+    for (;;) {
+      Poll();
+      for (; seen < statuses_.size(); ++seen) {
+        if (pred(statuses_[seen])) {
+          if (found != nullptr) *found = statuses_[seen];
+          return true;
+        }
+      }
+      if (Seconds(Clock::now() - start) > timeout) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+
+  void Control(uint8_t command, uint32_t steps = 0, double rate = 0.0) {
+    ASSERT_TRUE(Matched(control_writer_)) << "the node's sim_control reader did not match";
+    towsim_msgs_msg_dds__SimControl_ m{};
+    m.header.frame_id = const_cast<char*>("");
+    m.command = command;
+    m.steps = steps;
+    m.rate = rate;
+    ASSERT_EQ(dds_write(control_writer_, &m), 0);
+  }
+
+  void Command(const std::string& body, uint64_t step, double thrust, double rudder,
+               double elevator) {
+    dds_entity_t& w = command_writers_[body];
+    if (w == 0) {
+      dds_qos_t* qos = ReliableQos(1);
+      const dds_entity_t t =
+          dds_create_topic(participant_, &towsim_msgs_msg_dds__ActuatorCommand__desc,
+                           (prefix_ + body + "/command").c_str(), nullptr, nullptr);
+      w = dds_create_writer(participant_, t, qos, nullptr);
+      dds_delete_qos(qos);
+    }
+    ASSERT_TRUE(Matched(w)) << "the node's command reader of " << body << " did not match";
+    towsim_msgs_msg_dds__ActuatorCommand_ m{};
+    m.header.frame_id = const_cast<char*>(body.c_str());
+    m.step = step;
+    m.thrust = thrust;
+    m.rudder = rudder;
+    m.elevator = elevator;
+    ASSERT_EQ(dds_write(w, &m), 0);
+  }
+
+  dds_entity_t participant() const { return participant_; }
+  const std::string& prefix() const { return prefix_; }
+
+ private:
+  static bool Matched(dds_entity_t writer) {
+    const Clock::time_point start = Clock::now();
+    for (;;) {
+      dds_publication_matched_status_t m{};
+      dds_get_publication_matched_status(writer, &m);
+      if (m.current_count > 0) return true;
+      if (Seconds(Clock::now() - start) > kEventTimeout) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  }
+
+  void Poll() {
+    void* samples[64] = {};
+    dds_sample_info_t infos[64];
+    for (;;) {
+      const dds_return_t n = dds_take(status_reader_, samples, infos, 64, 64);
+      if (n <= 0) return;
+      for (int i = 0; i < n; ++i) {
+        if (!infos[i].valid_data) continue;
+        const auto* m = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
+        Status s;
+        s.run_id = m->run_id;
+        s.mode = m->mode;
+        s.message = m->message;
+        s.state = m->state;
+        s.health = m->health;
+        s.step = m->step;
+        s.sim_time = m->sim_time;
+        s.rate = m->rate;
+        for (uint32_t k = 0; k < m->failsafe_bodies._length; ++k) {
+          s.failsafe_bodies.push_back(m->failsafe_bodies._buffer[k]);
+        }
+        s.failsafe_count = m->failsafe_count;
+        s.received = m->commands_received;
+        s.rejected = m->commands_rejected;
+        s.clamped = m->commands_clamped;
+        s.lockstep_timeouts = m->lockstep_timeouts;
+        s.when = Clock::now();
+        statuses_.push_back(s);
+      }
+      dds_return_loan(status_reader_, samples, n);
+      if (n < 64) return;
+    }
+  }
+
+  std::string prefix_;
+  dds_entity_t participant_ = 0, status_reader_ = 0, control_writer_ = 0;
+  std::map<std::string, dds_entity_t> command_writers_;
+  std::vector<Status> statuses_;
+};
+
+class DdsNodeTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    // loopback only, never Cyclone's default; the children inherit it
+    setenv("CYCLONEDDS_URI", TOWSIM_DDS_URI, 1);
+  }
+};
+
+constexpr uint8_t kPaused = towsim_msgs_msg_dds__SimStatus_Constants_STATE_PAUSED;
+constexpr uint8_t kFinished = towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED;
+constexpr uint8_t kStopped = towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
+constexpr uint8_t kHealthFailsafe = towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_FAILSAFE;
+
+// runs node + controller to completion (both exit 0); returns the controller's log
+std::vector<OdomLine> LockstepRun(int domain, const std::string& scene, double duration,
+                                  const std::vector<std::string>& commands,
+                                  std::vector<std::string> node_extra = {}) {
+  node_extra.insert(node_extra.end(), {"--duration", std::to_string(duration)});
+  const std::string tag = "d" + std::to_string(domain);
+  Process node(Node(scene, "lockstep", domain, node_extra), LogPrefix(tag + "_node"));
+  const std::string log = LogPrefix(tag + "_odom.log");
+  std::vector<std::string> ctl = {"--log", log};
+  for (const std::string& c : commands) ctl.insert(ctl.end(), {"--command", c});
+  Process controller(Controller(domain, ctl), LogPrefix(tag + "_controller"));
+  EXPECT_TRUE(controller.Wait(kProcessTimeout)) << controller.command_line();
+  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
+  EXPECT_TRUE(node.Wait(kProcessTimeout)) << node.command_line();
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(node.out().find("lockstep, "), std::string::npos) << node.out();
+  return ReadLog(log);
+}
+
+const OdomLine* Find(const std::vector<OdomLine>& log, long step, const std::string& body) {
+  for (const OdomLine& l : log) {
+    if (l.step == step && l.body == body) return &l;
+  }
+  return nullptr;
+}
+
+// domain 41
+TEST_F(DdsNodeTest, LockstepSpeedRespondsToThrust) {
+  // no thrust for 2 s, 4500 N until 6 s, then none
+  const std::vector<OdomLine> log =
+      LockstepRun(41, kCase1, 10.0,
+                  {"tow_vehicle@0=0,0,0", "tow_vehicle@2=4500,0,0", "tow_vehicle@6=0,0,0"},
+                  {"--set", "script=[]"});
+  const OdomLine* at2 = Find(log, 40, "tow_vehicle");
+  const OdomLine* at6 = Find(log, 120, "tow_vehicle");
+  const OdomLine* at10 = Find(log, 200, "tow_vehicle");
+  ASSERT_TRUE(at2 && at6 && at10) << log.size() << " log lines";
+  const int kSurge = 7;  // u in the line's numbers
+  EXPECT_LT(std::abs(at2->v[kSurge]), 0.05);  // at rest, hanging
+  EXPECT_GT(at6->v[kSurge], 0.5);             // 4 s of 4500 N
+  EXPECT_LT(at10->v[kSurge], at6->v[kSurge]);  // slows down without thrust
+  EXPECT_EQ(log.size(), 2u * 201u);            // steps 0..200, two bodies
+}
+
+// domains 42, 43
+TEST_F(DdsNodeTest, LockstepRunsAreBitIdentical) {
+  const std::vector<std::string> commands = {"tow_vehicle@0=4500,0.05,0", "towfish@1=0,0,-0.1"};
+  const std::vector<OdomLine> a = LockstepRun(42, kCase1, 5.0, commands, {"--set", "script=[]"});
+  const std::vector<OdomLine> b = LockstepRun(43, kCase1, 5.0, commands, {"--set", "script=[]"});
+  ASSERT_EQ(a.size(), 2u * 101u);
+  ASSERT_EQ(a.size(), b.size());
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].step, b[i].step);
+    ASSERT_EQ(a[i].body, b[i].body);
+    for (int k = 0; k < 13; ++k) {
+      ASSERT_EQ(a[i].v[k], b[i].v[k]) << "step " << a[i].step << " " << a[i].body << " [" << k
+                                      << "]";
+    }
+  }
+}
+
+std::string G9(double x) {
+  char s[40];
+  std::snprintf(s, sizeof s, "%.9g", x);
+  return s;
+}
+
+// domain 44
+TEST_F(DdsNodeTest, LockstepWithTheScriptsCommandsEqualsOffline) {
+  constexpr double kDuration = 10.0;
+  // case1's script is {at: 0, tow_vehicle, thrust: 4500}: the controller sends it instead
+  const std::vector<OdomLine> log =
+      LockstepRun(44, kCase1, kDuration, {"tow_vehicle@0=4500,0,0"}, {"--set", "script=[]"});
+
+  // the same scene stepped in this process, with its script: offline's loop
+  const core::Model model = scene::LoadScene(kCase1);
+  core::Simulation sim(model);
+  core::ScriptRunner script(model);
+  const long steps = std::lround(kDuration / model.time.step);
+  ASSERT_EQ(log.size(), 2u * (steps + 1));
+  size_t line = 0;
+  for (long k = 0; k <= steps; ++k) {
+    for (int b = 0; b < sim.num_bodies(); ++b, ++line) {
+      const OdomLine& l = log[line];
+      ASSERT_EQ(l.step, k);
+      ASSERT_EQ(l.body, sim.body_name(b));
+      const core::Vec3 p = sim.body_position(b);
+      const Eigen::Quaterniond q = sim.body_attitude(b);
+      const core::Vec6 nu = sim.body_twist(b);
+      const double expected[13] = {p.x(),  p.y(),  p.z(),  q.x(),  q.y(),  q.z(), q.w(),
+                                   nu(0), nu(1), nu(2), nu(3), nu(4), nu(5)};
+      for (int i = 0; i < 13; ++i) {
+        ASSERT_EQ(l.v[i], expected[i]) << "step " << k << " " << l.body << " [" << i << "]";
+      }
+    }
+    if (k == steps) break;
+    script.Apply(&sim);
+    ASSERT_TRUE(sim.Step().ok());
+  }
+
+  // and the offline sim_node's CSV: the same numbers, at its 9 digits
+  const std::string dir = LogPrefix("offline_csv");
+  Process offline({TOWSIM_SIM_NODE, "--scene", kCase1, "--mode", "offline", "--duration",
+                   std::to_string(kDuration), "--csv", dir},
+                  LogPrefix("offline"));
+  ASSERT_TRUE(offline.Wait(kProcessTimeout));
+  ASSERT_EQ(offline.exit_code(), 0) << offline.err();
+  std::stringstream csv(ReadFile(dir + "/bodies.csv"));
+  std::string row;
+  std::getline(csv, row);  // header t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
+  const long stride = std::max(1L, std::lround(1.0 / (model.time.output_rate * model.time.step)));
+  int rows = 0;
+  while (std::getline(csv, row)) {
+    std::vector<std::string> f;
+    std::stringstream s(row);
+    std::string cell;
+    while (std::getline(s, cell, ',')) f.push_back(cell);
+    ASSERT_EQ(f.size(), 14u) << row;
+    const long k = stride * (rows / 2);
+    const OdomLine* l = Find(log, k, f[1]);
+    ASSERT_NE(l, nullptr) << row;
+    const core::Vec3 rpy = core::EulerZYX(Eigen::Quaterniond(l->v[6], l->v[3], l->v[4], l->v[5]));
+    const std::string ours[12] = {G9(l->v[0]), G9(l->v[1]), G9(l->v[2]), G9(rpy.x()),
+                                  G9(rpy.y()), G9(rpy.z()), G9(l->v[7]), G9(l->v[8]),
+                                  G9(l->v[9]), G9(l->v[10]), G9(l->v[11]), G9(l->v[12])};
+    for (int i = 0; i < 12; ++i) EXPECT_EQ(f[2 + i], ours[i]) << "step " << k << ": " << row;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2 * (steps / stride + 1));
+}
+
+// domain 45
+TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
+  Observer watch(45);
+  Process node(Node(kCase1, "lockstep", 45, {"--duration", "100", "--set", "script=[]"}),
+               LogPrefix("node"));
+  Process controller(Controller(45, {"--command", "tow_vehicle@0=4500,0,0"}),
+                     LogPrefix("controller"));
+  // let it drive for a while, then kill it
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.step >= 100; }, nullptr));
+  controller.Signal(SIGKILL);
+  ASSERT_TRUE(controller.Wait(5.0));
+  const Clock::time_point killed = Clock::now();
+  Status failsafe;
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.health == kHealthFailsafe; },
+                            &failsafe));
+  // the lockstep timeout, then failsafe: both vehicles, and the node goes on stepping
+  EXPECT_LT(Seconds(failsafe.when - killed), kLockstepTimeout + kStopMargin);
+  EXPECT_EQ(failsafe.failsafe_bodies, (std::vector<std::string>{"tow_vehicle", "towfish"}));
+  EXPECT_EQ(failsafe.lockstep_timeouts, 2u);
+  EXPECT_EQ(failsafe.failsafe_count, 2u);
+  EXPECT_NE(failsafe.message.find("failsafe (lockstep: no command for step"), std::string::npos)
+      << failsafe.message;
+  Status end;
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.state == kFinished; }, &end,
+                            kProcessTimeout));
+  EXPECT_EQ(end.step, 2000u);
+  EXPECT_EQ(end.health, kHealthFailsafe);
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(node.out().find("failsafes 2"), std::string::npos) << node.out();
+  EXPECT_NE(node.out().find("lockstep timeouts 2"), std::string::npos) << node.out();
+}
+
+// domain 46
+TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
+  Observer watch(46);
+  Process node(Node(kCase1, "realtime", 46, {"--duration", "600", "--set", "script=[]"}),
+               LogPrefix("node"));
+  Status s;
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 1; }, &s));
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  watch.Command("tow_vehicle", s.step, nan, 0.0, 0.0);
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.rejected == 1; }, &s));
+  EXPECT_EQ(s.health, 0);  // a rejected command does not arm the timeout
+  watch.Command("tow_vehicle", s.step, 1e9, 0.0, 0.0);  // beyond max_thrust
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.clamped == 1; }, &s));
+  const double commanded_at = s.sim_time;
+  EXPECT_EQ(s.received, 2u);
+  EXPECT_NE(s.message.find("thrust clamped"), std::string::npos) << s.message;
+  // no command since: failsafe after command_timeout (0.5 s) of simulation time
+  Status f;
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.health == kHealthFailsafe; }, &f));
+  EXPECT_EQ(f.failsafe_bodies, std::vector<std::string>{"tow_vehicle"});
+  EXPECT_NEAR(f.sim_time - commanded_at, 0.5, 0.05 + 1e-9);  // within a step
+  EXPECT_NE(f.message.find("no command for"), std::string::npos) << f.message;
+  // commands resume: failsafe ends
+  watch.Command("tow_vehicle", f.step, 100.0, 0.0, 0.0);
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.received == 3 && x.health == 0; },
+                            nullptr));
+
+  // SIGINT: the last status says so, exit 0, a summary
+  const Clock::time_point t0 = Clock::now();
+  node.Signal(SIGINT);
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_LT(Seconds(Clock::now() - t0), 0.05 + 0.1 + kStopMargin);
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_TRUE(watch.WaitFor([](const Status& x) { return x.state == kStopped; }, nullptr));
+  EXPECT_NE(node.out().find("commands 3 (rejected 1, clamped 1)"), std::string::npos)
+      << node.out();
+  EXPECT_NE(node.out().find("failsafes 1"), std::string::npos) << node.out();
+  EXPECT_NE(node.out().find("lateness p50"), std::string::npos) << node.out();
+}
+
+// domain 47
+TEST_F(DdsNodeTest, PauseStepResetResumeAndRate) {
+  Observer watch(47, "/sys_a");
+  Process node(Node(kSteadyTow, "realtime", 47, {"--namespace", "/sys_a", "--duration", "600"}),
+               LogPrefix("node"));
+  Status s;
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 3; }, &s));
+  const std::string first_run = s.run_id;
+
+  watch.Control(towsim_msgs_msg_dds__SimControl_Constants_PAUSE);
+  Status paused;
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.state == kPaused; }, &paused));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // 6 periods of 50 ms
+  for (const Status& x : watch.statuses()) {
+    if (x.when > paused.when) {
+      EXPECT_EQ(x.step, paused.step);  // no step while paused
+    }
+  }
+
+  watch.Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, 5);
+  Status stepped;
+  ASSERT_TRUE(watch.WaitFor(
+      [&](const Status& x) { return x.step == paused.step + 5 && x.state == kPaused; }, &stepped));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(watch.statuses().back().step, paused.step + 5);  // and no further
+
+  watch.Control(towsim_msgs_msg_dds__SimControl_Constants_RESET);
+  Status reset;
+  ASSERT_TRUE(watch.WaitFor([&](const Status& x) { return x.run_id != first_run; }, &reset));
+  EXPECT_EQ(reset.step, 0u);
+  EXPECT_EQ(reset.sim_time, 0.0);
+  EXPECT_EQ(reset.state, kPaused);  // a reset keeps the node paused
+
+  watch.Control(towsim_msgs_msg_dds__SimControl_Constants_SET_RATE, 0, 4.0);
+  watch.Control(towsim_msgs_msg_dds__SimControl_Constants_RESUME);
+  Status resumed;
+  ASSERT_TRUE(watch.WaitFor(
+      [&](const Status& x) { return x.run_id == reset.run_id && x.step >= 10; }, &resumed));
+  EXPECT_EQ(resumed.rate, 4.0);
+  EXPECT_EQ(resumed.state, towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING);
+
+  node.Signal(SIGTERM);
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(node.out().find("resets 1"), std::string::npos) << node.out();
+}
+
+// domain 48
+TEST_F(DdsNodeTest, SignalStopsAWaitingLockstepNode) {
+  Observer watch(48);
+  Process node(Node(kCase1, "lockstep", 48, {"--duration", "100"}), LogPrefix("node"));
+  Status s;
+  // it publishes its state while it waits for the first commands
+  ASSERT_TRUE(watch.WaitFor(
+      [](const Status& x) {
+        return x.state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
+      },
+      &s));
+  EXPECT_EQ(s.step, 0u);
+  const Clock::time_point t0 = Clock::now();
+  node.Signal(SIGTERM);
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_LT(Seconds(Clock::now() - t0), 0.05 + 0.1 + kStopMargin);
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(node.out().find("sim_node: case1_forward: lockstep, 0 steps"), std::string::npos)
+      << node.out();
+}
+
+// domain 49 (never reached)
+TEST_F(DdsNodeTest, DdsSetupErrorsExit2WithCyclonesMessage) {
+  Process bad_domain(Node(kCase1, "fast", 300, {"--duration", "1"}), LogPrefix("domain"));
+  ASSERT_TRUE(bad_domain.Wait(kProcessTimeout));
+  EXPECT_EQ(bad_domain.exit_code(), 2);
+  EXPECT_NE(bad_domain.err().find("sim_node: error: DDS setup failed"), std::string::npos)
+      << bad_domain.err();
+
+  Process bad_config(Node(kCase1, "fast", 49, {"--duration", "1"}), LogPrefix("config"),
+                     {"CYCLONEDDS_URI=file:///nonexistent/cyclonedds.xml"});
+  ASSERT_TRUE(bad_config.Wait(kProcessTimeout));
+  EXPECT_EQ(bad_config.exit_code(), 2);
+  EXPECT_NE(bad_config.err().find("sim_node: error: DDS setup failed"), std::string::npos)
+      << bad_config.err();
+  EXPECT_NE(bad_config.err().find("/nonexistent/cyclonedds.xml"), std::string::npos)
+      << bad_config.err();  // Cyclone's own message names the file
+
+  Process bad_namespace(Node(kCase1, "fast", 49, {"--namespace", "towsim"}), LogPrefix("ns"));
+  ASSERT_TRUE(bad_namespace.Wait(kProcessTimeout));
+  EXPECT_EQ(bad_namespace.exit_code(), 2);
+  EXPECT_NE(bad_namespace.err().find("--namespace towsim: must start with '/'"),
+            std::string::npos)
+      << bad_namespace.err();
+}
+
+// domain 50
+TEST_F(DdsNodeTest, PublishesTheStandardTopics) {
+  Observer watch(50);
+  dds_qos_t* qos = ReliableQos(100);
+  const dds_entity_t p = watch.participant();
+  const dds_entity_t odom_t =
+      dds_create_topic(p, &nav_msgs_msg_dds__Odometry__desc,
+                       (watch.prefix() + "towfish/odom").c_str(), nullptr, nullptr);
+  const dds_entity_t odom = dds_create_reader(p, odom_t, qos, nullptr);
+  const dds_entity_t cable_t =
+      dds_create_topic(p, &towsim_msgs_msg_dds__CableState__desc,
+                       (watch.prefix() + "cable/state").c_str(), nullptr, nullptr);
+  const dds_entity_t cable = dds_create_reader(p, cable_t, qos, nullptr);
+  dds_delete_qos(qos);
+
+  Process node(Node(kSteadyTow, "realtime", 50, {"--rate", "4", "--duration", "600"}),
+               LogPrefix("node"));
+  auto take_one = [](dds_entity_t reader, const std::function<void(const void*)>& f) {
+    const Clock::time_point start = Clock::now();
+    while (Seconds(Clock::now() - start) < kEventTimeout) {
+      void* sample[1] = {nullptr};
+      dds_sample_info_t info;
+      const dds_return_t n = dds_take(reader, sample, &info, 1, 1);
+      if (n > 0 && info.valid_data) {
+        f(sample[0]);
+        dds_return_loan(reader, sample, n);
+        return true;
+      }
+      if (n > 0) dds_return_loan(reader, sample, n);
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+  };
+  EXPECT_TRUE(take_one(odom, [](const void* x) {
+    const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(x);
+    EXPECT_STREQ(o->header.frame_id, "world_ned");
+    EXPECT_STREQ(o->child_frame_id, "towfish");
+    EXPECT_GT(o->pose.pose.position.z, 10.0);  // deep below the tow point (NED: z down)
+    EXPECT_EQ(o->pose.pose.orientation.w, 1.0);
+  }));
+  EXPECT_TRUE(take_one(cable, [](const void* x) {
+    const auto* c = static_cast<const towsim_msgs_msg_dds__CableState_*>(x);
+    EXPECT_EQ(c->positions._length, 21u);  // 20 elements
+    EXPECT_EQ(c->tensions._length, 21u);
+    EXPECT_GT(c->tensions._buffer[0], 1000.0);  // the top of a 200 m tow cable [N]
+  }));
+  node.Signal(SIGINT);
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+}
+
+}  // namespace
+}  // namespace towsim::testing
