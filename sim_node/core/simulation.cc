@@ -81,13 +81,13 @@ const std::string& Simulation::body_name(int b) const {
   return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().bodies[b].name;
 }
 
-Vec3 Simulation::node_position(int i) const {
-  return impl_->state.q.segment<3>(cable_dof(i));
-}
-Vec3 Simulation::node_velocity(int i) const {
-  return impl_->state.v.segment<3>(cable_dof(i));
-}
+Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
+Vec3 Simulation::node_velocity(int i) const { return impl_->state.v.segment<3>(cable_dof(i)); }
 double Simulation::node_tension(int i) const {
+  // at a held end the joint force is the force the cable transmits there (exact, where the
+  // element's interpolated strain misses a bend sharper than the element, e.g. at a towfish)
+  const int end = i == 0 ? 0 : (i == num_nodes() - 1 ? 1 : -1);
+  if (end >= 0 && impl_->system.end_lambda_count(end) > 0) return end_force(end).norm();
   return impl_->system.NodeTension(impl_->state.q, impl_->state.v, i);
 }
 

@@ -8,9 +8,9 @@
 //   }
 
 #include <memory>
-#include <vector>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "core/model.h"
 #include "core/vehicle_model.h"
@@ -60,10 +60,11 @@ class Simulation {
   long step_count() const;
 
   // --- outputs (world NED, SI) ---
-  int num_nodes() const;             // elements + 1
-  Vec3 node_position(int i) const;   // r at node i [m]
-  Vec3 node_velocity(int i) const;   // dr/dt at node i [m/s]
-  double node_tension(int i) const;  // axial force at node i [N] (element average)
+  int num_nodes() const;            // elements + 1
+  Vec3 node_position(int i) const;  // r at node i [m]
+  Vec3 node_velocity(int i) const;  // dr/dt at node i [m/s]
+  double node_tension(
+      int i) const;  // axial force [N]: element average; |joint force| at a held end
   // bodies: the spheres (Model::bodies) first, then the vehicles (Model::vehicles)
   int num_bodies() const;
   int num_spheres() const;

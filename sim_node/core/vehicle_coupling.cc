@@ -62,7 +62,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       load.force_W0 = f0[v];
       load.force_W1 = strong ? f1[v] : f0[v];
       for (int e = 0; e < 2; ++e)
-        if (vehicle_end_[e] == v) load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
+        if (vehicle_end_[e] == v)
+          load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
       AdvanceVehicle(model.vehicles[v].params, model.environment, commands[v], load, h,
                      &vehicles[v]);
     }
