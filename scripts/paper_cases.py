@@ -220,6 +220,17 @@ def turn_fit(cols, t_cmd):
             "R_kin": (sum(speed) / len(speed)) / abs(rate) if rate else float("inf")}
 
 
+def half_peak_radius(cols, t_from):
+    """speed over ground / |yaw rate| averaged over the samples after t_from where |r| is at
+    least half its peak (the measure of tests/reference/paper_cases_test.cc)"""
+    sel = [i for i, t in enumerate(cols["t"]) if t >= t_from - 1e-9]
+    peak = max(abs(cols["r"][i]) for i in sel)
+    core = [i for i in sel if abs(cols["r"][i]) >= 0.5 * peak]
+    speed = sum(math.hypot(cols["u"][i], cols["v"][i]) for i in core)
+    rate = sum(abs(cols["r"][i]) for i in core)
+    return speed / rate
+
+
 def time_of_heading(cols, t_from, deg):
     ts = cols["t"]
     i0 = next(i for i, t in enumerate(ts) if t >= t_from - 1e-9)
@@ -378,6 +389,10 @@ def case2(run, out, ref1=None):
             " %.2f m/s, mean yaw rate %.2f deg/s, speed / yaw rate %.1f m"
             % (label, fit["R"], fit["rms"], fit["t0"], fit["t1"], fit["xc"], fit["yc"],
                fit["speed"], fit["rate"], fit["R_kin"]))
+    hv, hf = half_peak_radius(tv, t_cmd), half_peak_radius(tf, t_cmd)
+    out("    cross-check, mean speed / mean |r| where |r| >= half its peak: towing vehicle %.1f m,"
+        " towfish %.1f m" % (hv, hf))
+    m["R_half_peak"] = (hv, hf)
     ft, ff = m["fit_towing vehicle"], m["fit_towfish"]
     if ft and ff:
         out("    ratio towfish / towing vehicle %.2f; centres %.1f m apart"
@@ -408,6 +423,7 @@ def case2(run, out, ref1=None):
             continue
         zmin, tzmin = extreme(sel, min)
         zmax, tzmax = extreme(sel, max)
+        m["z_phase_" + label[0]] = (zmin, tzmin, zmax, tzmax)
         out("    %-27s %5.1f-%5.1f s: %6.2f -> %6.2f, min %6.2f (%.1f s), max %6.2f (%.1f s)"
             % (label, a, b, sel[0][1], sel[-1][1], zmin, tzmin, zmax, tzmax))
     sel = window(ts, tf["z"], t_cmd, ts[-1])
@@ -479,30 +495,36 @@ def case2(run, out, ref1=None):
 # compare and summary
 
 
-def series_diff(a, b):
-    """largest differences of b from a at common output times"""
+def series_diff(a, b, t_from=0.0):
+    """largest differences of b from a at the output times both have (t >= t_from):
+    {quantity: (difference, time)}"""
     out = {}
     ta = {round(t, 6): i for i, t in enumerate(a.bodies[a.tow]["t"])}
-    idx = [(ta[round(t, 6)], j) for j, t in enumerate(b.bodies[b.tow]["t"]) if round(t, 6) in ta]
+    idx = [(ta[round(t, 6)], j, t) for j, t in enumerate(b.bodies[b.tow]["t"])
+           if round(t, 6) in ta and t >= t_from - 1e-9]
+
+    def worst(fn):
+        return max(((fn(i, j), t) for i, j, t in idx), key=lambda p: p[0])
     for label, na, nb in (("towing vehicle", a.tow, b.tow), ("towfish", a.fish, b.fish)):
         ca, cb = a.bodies[na], b.bodies[nb]
-        out[label + " u [m/s]"] = max(abs(ca["u"][i] - cb["u"][j]) for i, j in idx)
-        out[label + " position [m]"] = max(
-            math.dist((ca["x"][i], ca["y"][i], ca["z"][i]), (cb["x"][j], cb["y"][j], cb["z"][j]))
-            for i, j in idx)
-        out[label + " depth [m]"] = max(abs(ca["z"][i] - cb["z"][j]) for i, j in idx)
-        out[label + " yaw [deg]"] = max(abs(ca["yaw"][i] - cb["yaw"][j]) * DEG for i, j in idx)
-        out[label + " pitch [deg]"] = max(abs(ca["pitch"][i] - cb["pitch"][j]) * DEG
-                                          for i, j in idx)
+        out[label + " u [m/s]"] = worst(lambda i, j: abs(ca["u"][i] - cb["u"][j]))
+        out[label + " position [m]"] = worst(lambda i, j: math.dist(
+            (ca["x"][i], ca["y"][i], ca["z"][i]), (cb["x"][j], cb["y"][j], cb["z"][j])))
+        out[label + " depth [m]"] = worst(lambda i, j: abs(ca["z"][i] - cb["z"][j]))
+        out[label + " yaw [deg]"] = worst(lambda i, j: abs(ca["yaw"][i] - cb["yaw"][j]) * DEG)
+        out[label + " pitch [deg]"] = worst(lambda i, j: abs(ca["pitch"][i] - cb["pitch"][j])
+                                            * DEG)
         fa, fb = a.forces[na], b.forces[nb]
-        out[label + " |cable force| [N]"] = max(
-            abs(math.hypot(fa["fx"][i], fa["fy"][i], fa["fz"][i])
-                - math.hypot(fb["fx"][j], fb["fy"][j], fb["fz"][j])) for i, j in idx)
-    _, ta_top, _ = a.top_tension()
-    _, tb_top, _ = b.top_tension()
-    ca = {round(t, 6): v for t, v in zip(a.cable_times, ta_top)}
-    out["top tension [N]"] = max(abs(ca[round(t, 6)] - v) for t, v in zip(b.cable_times, tb_top)
-                                 if round(t, 6) in ca)
+        out[label + " |cable force| [N]"] = worst(lambda i, j: abs(
+            math.hypot(fa["fx"][i], fa["fy"][i], fa["fz"][i])
+            - math.hypot(fb["fx"][j], fb["fy"][j], fb["fz"][j])))
+    _, a_top, _ = a.top_tension()
+    _, b_top, _ = b.top_tension()
+    ca_top = {round(t, 6): v for t, v in zip(a.cable_times, a_top)}
+    out["top tension [N]"] = max(((abs(ca_top[round(t, 6)] - v), t)
+                                  for t, v in zip(b.cable_times, b_top)
+                                  if round(t, 6) in ca_top and t >= t_from - 1e-9),
+                                 key=lambda p: p[0])
     return out
 
 
@@ -541,17 +563,23 @@ def compare(paths, out, ref1=None):
         row("turning radius towfish [m]",
             [f(m["fit_towfish"]["R"] if m["fit_towfish"] else None, "%.1f") for m in metrics])
         row("towfish heading 90 deg at [s]", [f(m["t90_towfish"], "%.1f") for m in metrics])
-        row("towfish depth min after the command [m]", [f(m["z_range"][0]) for m in metrics])
-        row("towfish depth max after the command [m]", [f(m["z_range"][1]) for m in metrics])
+        row("towfish deepest after the vehicle's turn [m]",
+            [f(m["z_phase_B"][2] if "z_phase_B" in m else None) for m in metrics])
+        row("towfish shallowest after its turn [m]",
+            [f(m["z_phase_C"][0] if "z_phase_C" in m else None) for m in metrics])
         row("top tension max after the command [N]", [f(m["top_range"][1], "%.0f")
                                                       for m in metrics])
+        row("bottom tension max after the command [N]", [f(m["bottom_range"][1], "%.0f")
+                                                         for m in metrics])
         row("final heading change towing vehicle [deg]",
             [f(m["psi_end_towing vehicle"], "%.2f") for m in metrics])
-    for r, m in zip(runs[1:], metrics[1:]):
+    for r in runs[1:]:
         d = series_diff(runs[0], r)
-        out("  largest difference of %s from %s over the run:" % (r.name, runs[0].name))
-        for k, v in d.items():
-            out("    %-40s %10.4g" % (k, v))
+        d10 = series_diff(runs[0], r, 10.0)
+        out("  largest difference of %s from %s:" % (r.name, runs[0].name))
+        out("    %-40s %21s %21s" % ("", "whole run (at t)", "t >= 10 s (at t)"))
+        for k in d:
+            out("    %-40s %10.4g (%5.1f s) %10.4g (%5.1f s)" % (k, *d[k], *d10[k]))
 
 
 def summary(path, out):
@@ -573,14 +601,20 @@ def summary(path, out):
         ("surge before the turn, towing vehicle",
          "%.3f m/s at %.1f s" % (value_at(tv["t"], tv["u"], m["t_cmd"]), m["t_cmd"])),
         ("steady surge at the end, towing vehicle", "%.3f m/s" % m["u_final"]),
-        ("rudder 20 deg -> heading 170 deg", "%.1f s -> %.1f s" % (m["t_cmd"], m["t170"] or -1)),
-        ("turning radius, towing vehicle", "%.1f m" % ft["R"] if ft else "-"),
-        ("turning radius, towfish", "%.1f m" % ff["R"] if ff else "-"),
+        ("turn starts (r > 0.5 deg/s) -> heading 170 deg",
+         "%.1f s -> %.1f s" % (m["t_cmd"], m["t170"] or -1)),
+        ("turning radius, towing vehicle (circle fit)", "%.1f m" % ft["R"] if ft else "-"),
+        ("turning radius, towfish (circle fit)", "%.1f m" % ff["R"] if ff else "-"),
         ("towfish heading 90 deg", "%s (vehicle %s)" % (fmt_t(m["t90_towfish"]),
                                                        fmt_t(m["t90_towing vehicle"]))),
-        ("towfish depth: at the command, range after, end",
-         "%.1f m, %.1f-%.1f m, %.1f m" % (m["z_cmd"], m["z_range"][0], m["z_range"][1],
-                                          m["z_final"])),
+        ("towfish depth at the command (still rising)", "%.1f m" % m["z_cmd"]),
+        ("towfish deepest after the vehicle's turn",
+         "%.1f m at %.1f s" % (m["z_phase_B"][2], m["z_phase_B"][3]) if "z_phase_B" in m
+         else "-"),
+        ("towfish shallowest after its own turn",
+         "%.1f m at %.1f s" % (m["z_phase_C"][0], m["z_phase_C"][1]) if "z_phase_C" in m
+         else "-"),
+        ("towfish depth at the end", "%.1f m" % m["z_final"]),
         ("top tension: at the command, range after, end",
          "%.0f N, %.0f-%.0f N, %.0f N" % (m["top_cmd"], m["top_range"][0], m["top_range"][1],
                                           m["top_final"])),

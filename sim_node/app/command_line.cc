@@ -51,8 +51,10 @@ std::string Usage() {
          "\n"
          "options:\n"
          "  --scene FILE          scene YAML file (required)\n"
-         "  --mode MODE           realtime (default), fast, lockstep or offline; this build\n"
-         "                        implements offline only (no DDS)\n"
+         "  --mode MODE           realtime (default), fast, lockstep (DDS, paced / free /\n"
+         "                        in step with the controllers) or offline (no DDS)\n"
+         "  --domain N            DDS domain id (default 0)\n"
+         "  --namespace NS        ROS 2 namespace of the topics (default /towsim)\n"
          "  --duration S          simulated time [s] (default: the scene's time.duration)\n"
          "  --rate R              wall-clock pacing factor in realtime mode (default 1)\n"
          "  --set KEY.PATH=VALUE  override a scalar scene key, e.g. --set cable.elements=40\n"
@@ -64,7 +66,8 @@ std::string Usage() {
          "  --version             print the version and exit\n"
          "\n"
          "exit codes: 0 ok, 1 unexpected error (e.g. disk full), 2 bad input,\n"
-         "            3 solver failure, 130 / 143 stopped by SIGINT / SIGTERM\n";
+         "            3 solver failure; offline: 130 / 143 stopped by SIGINT / SIGTERM,\n"
+         "            DDS modes: 0 when stopped by a signal\n";
 }
 
 ParseResult ParseCommandLine(int argc, const char* const* argv) {
@@ -85,8 +88,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.version = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene", "--mode", "--duration", "--rate",
-                                             "--set",   "--csv",  "--record"};
+    static const char* const kWithValue[] = {"--scene", "--mode",   "--duration", "--rate",
+                                             "--set",   "--csv",    "--record",   "--domain",
+                                             "--namespace"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -135,6 +139,17 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     } else if (name == "--record") {
       if (v.empty()) return fail("--record needs a file name");
       o.record_file = v;
+    } else if (name == "--domain") {
+      // Cyclone itself rejects ids beyond its range (exit 2 with its message)
+      double d = 0.0;
+      if (!ParseNumber(v, &d) || d < 0.0 || d != static_cast<double>(static_cast<long>(d)) ||
+          d > 4294967294.0) {
+        return fail("--domain " + v + ": must be an integer >= 0");
+      }
+      o.domain = static_cast<uint32_t>(d);
+    } else if (name == "--namespace") {
+      if (v.empty() || v[0] != '/') return fail("--namespace " + v + ": must start with '/'");
+      o.ns = v;
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");

@@ -7,6 +7,7 @@
 // Every option also accepts the --name=value form. Parsing only checks the syntax and the
 // ranges of the values; the scene is loaded (and --set applied) by the scene layer.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,8 @@ struct Options {
   std::vector<std::string> overrides;  // --set key.path=value, in command-line order
   std::string csv_dir;                 // --csv DIR; empty: no CSV
   std::string record_file;             // --record FILE.mcap; empty: no recording
+  std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)
+  std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool help = false;                   // --help / -h
   bool version = false;                // --version
 };

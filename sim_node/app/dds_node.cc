@@ -30,12 +30,17 @@ constexpr int kExitOk = 0;
 constexpr int kExitBadInput = 2;
 constexpr int kExitSolver = 3;
 
-constexpr double kWaitSlice = 0.05;          // longest wait between polls of signals [s]
-constexpr double kIdleStatusPeriod = 0.5;    // state and status repeated while paused / waiting [s]
-constexpr double kLockstepHintAfter = 5.0;   // say what lockstep waits for after [s]
-constexpr double kRtfWindow = 1.0;           // achieved real-time factor over [s]
-constexpr double kExitFlushTimeout = 0.5;    // wait for the last status to be acked [s]
-constexpr int kMaxCommandNotes = 5;          // rejected / clamped commands told on stderr
+constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
+constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
+constexpr double kLockstepHintAfter = 5.0;  // say what lockstep waits for after [s]
+constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
+constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
+// On exit, Cyclone keeps each writer with unacknowledged samples alive for WriterLingerDuration
+// (default 1 s): with a subscriber that vanished without a goodbye (killed; its lease has not
+// expired), stopping would take a second per writer. The node's exit waits 10 ms per writer.
+constexpr const char* kLingerConfig =
+    "<Internal><WriterLingerDuration>10ms</WriterLingerDuration></Internal>";
+constexpr int kMaxCommandNotes = 5;  // rejected / clamped commands told on stderr
 
 constexpr uint8_t kRunning = towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING;
 constexpr uint8_t kPaused = towsim_msgs_msg_dds__SimStatus_Constants_STATE_PAUSED;
@@ -169,17 +174,17 @@ int DdsNode::Setup() {
     const core::Vehicle& vehicle = model_.vehicles[v];
     if (!dds::IsCommandable(vehicle.params)) continue;
     command_vehicles_.push_back(static_cast<int>(v));
-    const bool waited =
-        opt_.lockstep_bodies.empty() ||
-        std::find(opt_.lockstep_bodies.begin(), opt_.lockstep_bodies.end(), vehicle.name) !=
-            opt_.lockstep_bodies.end();
+    const bool waited = opt_.lockstep_bodies.empty() ||
+                        std::find(opt_.lockstep_bodies.begin(), opt_.lockstep_bodies.end(),
+                                  vehicle.name) != opt_.lockstep_bodies.end();
     vehicles.push_back({vehicle.name, dds::LimitsOf(vehicle.params), lockstep() && waited});
     has_lockstep_vehicles_ = has_lockstep_vehicles_ || (lockstep() && waited);
   }
   for (const std::string& name : opt_.lockstep_bodies) {
     bool found = false;
     for (const auto& v : vehicles) found = found || v.name == name;
-    if (!found) return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands");
+    if (!found)
+      return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands");
   }
   arbiter_.emplace(std::move(vehicles), opt_.command_timeout);
 
@@ -193,7 +198,7 @@ int DdsNode::Setup() {
   }
   script_.emplace(model_);
 
-  // DDS
+  // DDS: the configuration given, else $CYCLONEDDS_URI, plus the node's exit behaviour
   std::string config = opt_.dds_config;
   if (config.empty()) {
     const char* uri = std::getenv("CYCLONEDDS_URI");
@@ -201,8 +206,11 @@ int DdsNode::Setup() {
       std::fprintf(stderr,
                    "sim_node: warning: CYCLONEDDS_URI is not set: Cyclone DDS uses its defaults; "
                    "the project's loopback configuration is config/cyclonedds.xml\n");
+    } else {
+      config = uri;
     }
   }
+  config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
   try {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
@@ -351,6 +359,7 @@ bool DdsNode::HandleControl() {
   bool changed = false;
   endpoints_->control_reader().TakeEach([&](const dds::SimControlMsg& msg, const auto&) {
     const dds::ControlRequest r = dds::FromSimControl(msg);
+    if (r.kind != dds::ControlRequest::kInvalid) control_note_.clear();
     switch (r.kind) {
       case dds::ControlRequest::kPause:
         changed = changed || !paused_ || step_budget_ > 0;
@@ -395,8 +404,8 @@ void DdsNode::NoteCommand(const dds::CheckedCommand& c, int i) {
   if (c.verdict == dds::CheckedCommand::kAccepted) return;
   if (command_notes_ >= kMaxCommandNotes) return;
   ++command_notes_;
-  std::fprintf(stderr, "sim_node: %s at step %llu: %s%s\n",
-               arbiter_->vehicle(i).name.c_str(), static_cast<unsigned long long>(step_),
+  std::fprintf(stderr, "sim_node: %s at step %llu: %s%s\n", arbiter_->vehicle(i).name.c_str(),
+               static_cast<unsigned long long>(step_),
                c.verdict == dds::CheckedCommand::kRejected ? "command rejected: " : "",
                c.reason.c_str());
   if (command_notes_ == kMaxCommandNotes) {

@@ -14,8 +14,7 @@ int64_t Nanoseconds(double s) { return static_cast<int64_t>(std::llround(s * 1e9
 }  // namespace
 
 NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
-                             const core::Simulation& sim,
-                             const std::vector<int>& command_vehicles)
+                             const core::Simulation& sim, const std::vector<int>& command_vehicles)
     : clock_topic_(participant, &rosgraph_msgs_msg_dds__Clock__desc, names.clock()),
       cable_topic_(participant, &towsim_msgs_msg_dds__CableState__desc, names.cable_state()),
       status_topic_(participant, &towsim_msgs_msg_dds__SimStatus__desc, names.status()),

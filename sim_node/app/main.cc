@@ -1,13 +1,15 @@
 // sim_node: the towsim simulation node (DESIGN §4-5). Parses the command line, loads the
-// scene, and runs it; this build offers the offline mode only (no DDS yet).
+// scene, and runs it offline (no DDS) or as a DDS node (realtime, fast, lockstep).
 
 #include <cstdio>
 #include <exception>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 
 #include "app/command_line.h"
+#include "app/dds_node.h"
 #include "app/offline_run.h"
 #include "app/stop_signal.h"
 #include "core/model.h"
@@ -22,13 +24,6 @@ constexpr int kExitBadInput = 2;
 
 int Run(const towsim::app::Options& options) {
   using towsim::app::Mode;
-  if (options.mode != Mode::kOffline) {
-    std::fprintf(stderr,
-                 "sim_node: error: --mode %s: the DDS modes (realtime, fast, lockstep) are not "
-                 "built yet; use --mode offline\n",
-                 towsim::app::ModeName(options.mode));
-    return kExitBadInput;
-  }
   if (!options.record_file.empty()) {
     std::fprintf(stderr,
                  "sim_node: error: --record %s: MCAP recording is not built yet; use --csv DIR\n",
@@ -58,6 +53,21 @@ int Run(const towsim::app::Options& options) {
   }
 
   towsim::app::InstallStopHandlers();
+  if (options.mode != Mode::kOffline) {
+    towsim::app::DdsNodeOptions dds;
+    dds.mode = options.mode;
+    dds.duration = options.duration.value_or(std::numeric_limits<double>::infinity());
+    dds.rate = options.rate.value_or(1.0);
+    dds.domain = options.domain.value_or(0);
+    dds.ns = options.ns;
+    if (csv) {
+      dds.output = [&](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
+                       long us) { csv->Write(s, st, us); };
+    }
+    const int code = towsim::app::RunDdsNode(model, dds);
+    if (csv) csv->Close();
+    return code;
+  }
   const int code = towsim::app::RunOffline(model, duration, csv.get());
   if (csv) csv->Close();
   return code;

@@ -82,11 +82,11 @@ class CommandArbiter {
   struct State {
     bool has_command = false;  // a valid command came since the start (or reset)
     core::VehicleCommand held;
-    uint64_t held_step = 0;    // the step the held command answers
-    double last_time = 0.0;    // simulation time it came [s]
+    uint64_t held_step = 0;  // the step the held command answers
+    double last_time = 0.0;  // simulation time it came [s]
     bool failsafe = false;
-    bool waited_for = true;    // lockstep: false after a lockstep timeout until commands resume
-    bool fresh = false;        // held not yet given to the simulation
+    bool waited_for = true;  // lockstep: false after a lockstep timeout until commands resume
+    bool fresh = false;      // held not yet given to the simulation
   };
   void EnterFailsafe(int v, const std::string& why);
 

@@ -25,8 +25,8 @@ Participant::Participant(uint32_t domain_id, const std::string& config) : domain
 Topic::Topic(const Participant& participant, const dds_topic_descriptor_t* descriptor,
              const std::string& name)
     : name_(name) {
-  const dds_entity_t t = dds_create_topic(participant.get(), descriptor, name.c_str(), nullptr,
-                                          nullptr);
+  const dds_entity_t t =
+      dds_create_topic(participant.get(), descriptor, name.c_str(), nullptr, nullptr);
   if (t < 0) throw DdsError("creating topic " + name, t);
   topic_ = Entity(t);
 }

@@ -29,8 +29,7 @@ std::string CheckNamespace(const std::string& ns) {
     size_t end = ns.find('/', begin);
     if (end == std::string::npos) end = ns.size();
     if (!IsName(ns, begin, end)) {
-      return "segment '" + ns.substr(begin, end - begin) +
-             "' must match [A-Za-z_][A-Za-z0-9_]*";
+      return "segment '" + ns.substr(begin, end - begin) + "' must match [A-Za-z_][A-Za-z0-9_]*";
     }
     begin = end + 1;
   }

@@ -120,7 +120,8 @@ void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage*
   CableStateMsg& m = out->msg;
   m.header.stamp = ToTimeMsg(sim.time());
   m.step = step;
-  const uint32_t n = std::min<uint32_t>(m.positions._length, static_cast<uint32_t>(sim.num_nodes()));
+  const uint32_t n =
+      std::min<uint32_t>(m.positions._length, static_cast<uint32_t>(sim.num_nodes()));
   for (uint32_t i = 0; i < n; ++i) {
     Set(sim.node_position(static_cast<int>(i)), &m.positions._buffer[i]);
     Set(sim.node_velocity(static_cast<int>(i)), &m.velocities._buffer[i]);

@@ -52,9 +52,8 @@ std::string LogPrefix(const std::string& what) {
 
 std::vector<std::string> Node(const std::string& scene, const std::string& mode, int domain,
                               std::vector<std::string> extra = {}) {
-  std::vector<std::string> argv = {TOWSIM_DDS_NODE, "--scene", scene,
-                                   "--mode",        mode,      "--domain",
-                                   std::to_string(domain)};
+  std::vector<std::string> argv = {
+      TOWSIM_DDS_NODE, "--scene", scene, "--mode", mode, "--domain", std::to_string(domain)};
   argv.insert(argv.end(), extra.begin(), extra.end());
   return argv;
 }
@@ -281,18 +280,17 @@ const OdomLine* Find(const std::vector<OdomLine>& log, long step, const std::str
 // domain 41
 TEST_F(DdsNodeTest, LockstepSpeedRespondsToThrust) {
   // no thrust for 2 s, 4500 N until 6 s, then none
-  const std::vector<OdomLine> log =
-      LockstepRun(41, kCase1, 10.0,
-                  {"tow_vehicle@0=0,0,0", "tow_vehicle@2=4500,0,0", "tow_vehicle@6=0,0,0"},
-                  {"--set", "script=[]"});
+  const std::vector<OdomLine> log = LockstepRun(
+      41, kCase1, 10.0, {"tow_vehicle@0=0,0,0", "tow_vehicle@2=4500,0,0", "tow_vehicle@6=0,0,0"},
+      {"--set", "script=[]"});
   const OdomLine* at2 = Find(log, 40, "tow_vehicle");
   const OdomLine* at6 = Find(log, 120, "tow_vehicle");
   ASSERT_TRUE(at2 && at6) << log.size() << " log lines";
   const OdomLine* at4 = Find(log, 80, "tow_vehicle");
   ASSERT_TRUE(at4);
-  const int kSurge = 7;  // u in the line's numbers
-  EXPECT_LT(std::abs(at2->v[kSurge]), 0.05);  // at rest, hanging
-  EXPECT_GT(at4->v[kSurge], 0.2);             // 2 s of 4500 N (propeller lag 1 s)
+  const int kSurge = 7;                             // u in the line's numbers
+  EXPECT_LT(std::abs(at2->v[kSurge]), 0.05);        // at rest, hanging
+  EXPECT_GT(at4->v[kSurge], 0.2);                   // 2 s of 4500 N (propeller lag 1 s)
   EXPECT_GT(at6->v[kSurge], at4->v[kSurge] + 0.2);  // still accelerating
   EXPECT_EQ(log.size(), 2u * 201u);                 // steps 0..200, two bodies
   // the towfish follows, slower, on its 200 m cable
@@ -312,8 +310,8 @@ TEST_F(DdsNodeTest, LockstepRunsAreBitIdentical) {
     ASSERT_EQ(a[i].step, b[i].step);
     ASSERT_EQ(a[i].body, b[i].body);
     for (int k = 0; k < 13; ++k) {
-      ASSERT_EQ(a[i].v[k], b[i].v[k]) << "step " << a[i].step << " " << a[i].body << " [" << k
-                                      << "]";
+      ASSERT_EQ(a[i].v[k], b[i].v[k])
+          << "step " << a[i].step << " " << a[i].body << " [" << k << "]";
     }
   }
 }
@@ -360,7 +358,7 @@ TEST_F(DdsNodeTest, LockstepWithTheScriptsCommandsEqualsOffline) {
       const core::Vec3 p = sim.body_position(b);
       const Eigen::Quaterniond q = sim.body_attitude(b);
       const core::Vec6 nu = sim.body_twist(b);
-      const double expected[13] = {p.x(),  p.y(),  p.z(),  q.x(),  q.y(),  q.z(), q.w(),
+      const double expected[13] = {p.x(), p.y(), p.z(), q.x(), q.y(), q.z(), q.w(),
                                    nu(0), nu(1), nu(2), nu(3), nu(4), nu(5)};
       for (int i = 0; i < 13; ++i) {
         ASSERT_EQ(l.v[i], expected[i]) << "step " << k << " " << l.body << " [" << i << "]";
@@ -393,8 +391,8 @@ TEST_F(DdsNodeTest, LockstepWithTheScriptsCommandsEqualsOffline) {
     const OdomLine* l = Find(log, k, f[1]);
     ASSERT_NE(l, nullptr) << row;
     const core::Vec3 rpy = core::EulerZYX(Eigen::Quaterniond(l->v[6], l->v[3], l->v[4], l->v[5]));
-    const std::string ours[12] = {G9(l->v[0]), G9(l->v[1]), G9(l->v[2]), G9(rpy.x()),
-                                  G9(rpy.y()), G9(rpy.z()), G9(l->v[7]), G9(l->v[8]),
+    const std::string ours[12] = {G9(l->v[0]), G9(l->v[1]),  G9(l->v[2]),  G9(rpy.x()),
+                                  G9(rpy.y()), G9(rpy.z()),  G9(l->v[7]),  G9(l->v[8]),
                                   G9(l->v[9]), G9(l->v[10]), G9(l->v[11]), G9(l->v[12])};
     for (int i = 0; i < 12; ++i) EXPECT_EQ(f[2 + i], ours[i]) << "step " << k << ": " << row;
     ++rows;
@@ -415,8 +413,8 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
   ASSERT_TRUE(controller.Wait(5.0));
   const Clock::time_point killed = Clock::now();
   Status failsafe;
-  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.health == kHealthFailsafe; },
-                            &failsafe));
+  ASSERT_TRUE(
+      watch.WaitFor([](const Status& s) { return s.health == kHealthFailsafe; }, &failsafe));
   // the lockstep timeout, then failsafe: both vehicles, and the node goes on stepping
   EXPECT_LT(Seconds(failsafe.when - killed), kLockstepTimeout + kStopMargin);
   EXPECT_EQ(failsafe.failsafe_bodies, (std::vector<std::string>{"tow_vehicle", "towfish"}));
@@ -425,8 +423,8 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
   EXPECT_NE(failsafe.message.find("failsafe (lockstep: no command for step"), std::string::npos)
       << failsafe.message;
   Status end;
-  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.state == kFinished; }, &end,
-                            kProcessTimeout));
+  ASSERT_TRUE(
+      watch.WaitFor([](const Status& s) { return s.state == kFinished; }, &end, kProcessTimeout));
   EXPECT_EQ(end.step, 2000u);
   EXPECT_EQ(end.health, kHealthFailsafe);
   ASSERT_TRUE(node.Wait(kProcessTimeout));
@@ -459,8 +457,8 @@ TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
   EXPECT_NE(f.message.find("no command for"), std::string::npos) << f.message;
   // commands resume: failsafe ends
   watch.Command("tow_vehicle", f.step, 100.0, 0.0, 0.0);
-  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.received == 3 && x.health == 0; },
-                            nullptr));
+  ASSERT_TRUE(
+      watch.WaitFor([](const Status& x) { return x.received == 3 && x.health == 0; }, nullptr));
 
   // SIGINT: the last status says so, exit 0, a summary
   const Clock::time_point t0 = Clock::now();
@@ -469,8 +467,7 @@ TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
   EXPECT_LT(Seconds(Clock::now() - t0), 0.05 + 0.1 + kStopMargin);
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   EXPECT_TRUE(watch.WaitFor([](const Status& x) { return x.state == kStopped; }, nullptr));
-  EXPECT_NE(node.out().find("commands 3 (rejected 1, clamped 1)"), std::string::npos)
-      << node.out();
+  EXPECT_NE(node.out().find("commands 3 (rejected 1, clamped 1)"), std::string::npos) << node.out();
   EXPECT_NE(node.out().find("failsafes 1"), std::string::npos) << node.out();
   EXPECT_NE(node.out().find("lateness p50"), std::string::npos) << node.out();
 }
@@ -543,7 +540,7 @@ TEST_F(DdsNodeTest, SignalStopsAWaitingLockstepNode) {
       << node.out();
 }
 
-// domain 49 (never reached)
+// domain 49 (no traffic: the nodes fail before or right after setup)
 TEST_F(DdsNodeTest, DdsSetupErrorsExit2WithCyclonesMessage) {
   Process bad_domain(Node(kCase1, "fast", 300, {"--duration", "1"}), LogPrefix("domain"));
   ASSERT_TRUE(bad_domain.Wait(kProcessTimeout));
@@ -563,9 +560,18 @@ TEST_F(DdsNodeTest, DdsSetupErrorsExit2WithCyclonesMessage) {
   Process bad_namespace(Node(kCase1, "fast", 49, {"--namespace", "towsim"}), LogPrefix("ns"));
   ASSERT_TRUE(bad_namespace.Wait(kProcessTimeout));
   EXPECT_EQ(bad_namespace.exit_code(), 2);
-  EXPECT_NE(bad_namespace.err().find("--namespace towsim: must start with '/'"),
-            std::string::npos)
+  EXPECT_NE(bad_namespace.err().find("--namespace towsim: must start with '/'"), std::string::npos)
       << bad_namespace.err();
+
+  // and a solver failure is exit 3 with the diagnosis, as offline
+  Process failing(Node(kCase1, "fast", 49,
+                       {"--duration", "1", "--set", "integrator.max_iterations=1", "--set",
+                        "integrator.max_substep_level=0"}),
+                  LogPrefix("solver"));
+  ASSERT_TRUE(failing.Wait(kProcessTimeout));
+  EXPECT_EQ(failing.exit_code(), 3);
+  EXPECT_NE(failing.err().find("sim_node: solver failure at t = 0 s (step 1): "), std::string::npos)
+      << failing.err();
 }
 
 // domain 50

@@ -108,7 +108,8 @@ dds_qos_t* ReliableQos(int depth, bool transient_local) {
   dds_qos_t* q = dds_create_qos();
   dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
   dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  dds_qset_durability(q, transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
+  dds_qset_durability(q,
+                      transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
   const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
   dds_qset_data_representation(q, 1, &xcdr1);
   return q;
@@ -135,10 +136,10 @@ int main(int argc, char** argv) {
   dds_qos_t* scene_qos = ReliableQos(1, true);
 
   // what the node simulates
-  const dds_entity_t scene_topic = Check(
-      dds_create_topic(participant, &towsim_msgs_msg_dds__SceneInfo__desc,
-                       (prefix + "scene_info").c_str(), nullptr, nullptr),
-      "scene_info topic");
+  const dds_entity_t scene_topic =
+      Check(dds_create_topic(participant, &towsim_msgs_msg_dds__SceneInfo__desc,
+                             (prefix + "scene_info").c_str(), nullptr, nullptr),
+            "scene_info topic");
   const dds_entity_t scene_reader =
       Check(dds_create_reader(participant, scene_topic, scene_qos, nullptr), "scene_info reader");
   const dds_entity_t status_topic =
@@ -280,15 +281,15 @@ int main(int argc, char** argv) {
                        static_cast<unsigned long long>(s->step), b.name.c_str(),
                        o.pose.pose.position.x, o.pose.pose.position.y, o.pose.pose.position.z,
                        o.pose.pose.orientation.x, o.pose.pose.orientation.y,
-                       o.pose.pose.orientation.z, o.pose.pose.orientation.w,
-                       o.twist.twist.linear.x, o.twist.twist.linear.y, o.twist.twist.linear.z,
-                       o.twist.twist.angular.x, o.twist.twist.angular.y,
-                       o.twist.twist.angular.z);
+                       o.pose.pose.orientation.z, o.pose.pose.orientation.w, o.twist.twist.linear.x,
+                       o.twist.twist.linear.y, o.twist.twist.linear.z, o.twist.twist.angular.x,
+                       o.twist.twist.angular.y, o.twist.twist.angular.z);
           // older stamps are done with
           b.odoms.erase(b.odoms.begin(), b.odoms.find(key));
         }
       }
-      if (terminal || (args.until_step >= 0 && static_cast<long long>(s->step) >= args.until_step)) {
+      if (terminal ||
+          (args.until_step >= 0 && static_cast<long long>(s->step) >= args.until_step)) {
         exit_code = 0;
         break;
       }
@@ -318,8 +319,8 @@ int main(int argc, char** argv) {
   if (log != nullptr) std::fclose(log);
   if (args.stats && answers > 1) {
     const double wall = Seconds(last_progress - first_answer);
-    std::printf("test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step\n",
-                answers - 1, wall, (answers - 1) / wall, 1e6 * wall / (answers - 1));
+    std::printf("test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step\n", answers - 1,
+                wall, (answers - 1) / wall, 1e6 * wall / (answers - 1));
   }
   dds_delete_qos(state_qos);
   dds_delete_qos(command_qos);

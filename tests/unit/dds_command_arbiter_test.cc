@@ -1,12 +1,12 @@
 // sim_node/dds/command_arbiter: last writer wins, reject / clamp, failsafe on timeout, lockstep
 // readiness. Pure logic on simulation time.
 
-#include "dds/command_arbiter.h"
-
 #include <limits>
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "dds/command_arbiter.h"
 
 namespace towsim::dds {
 namespace {
@@ -51,8 +51,7 @@ TEST(CommandArbiterTest, LastWriterWins) {
 TEST(CommandArbiterTest, RejectsNanKeepsHeldAndCounts) {
   CommandArbiter a = TwoVehicles();
   a.Receive(0, Command(1000.0, 0), 0.0);
-  const CheckedCommand r =
-      a.Receive(0, Command(std::numeric_limits<double>::quiet_NaN(), 1), kH);
+  const CheckedCommand r = a.Receive(0, Command(std::numeric_limits<double>::quiet_NaN(), 1), kH);
   EXPECT_EQ(r.verdict, CheckedCommand::kRejected);
   EXPECT_EQ(a.rejected(), 1u);
   EXPECT_EQ(a.held(0).thrust, 1000.0);

@@ -2,8 +2,6 @@
 // (config/cyclonedds.xml; DDS domains 57 and 58, see tests/integration/README.md): matching,
 // a round trip, transient-local scene info, the XCDR1 bytes of the ROS 2 types, setup errors.
 
-#include "dds/entities.h"
-
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "dds/ddsi/ddsi_serdata.h"
+#include "dds/entities.h"
 #include "dds/messages.h"
 #include "dds/qos.h"
 #include "dds/translators.h"
@@ -64,10 +63,10 @@ TEST_F(DdsEntitiesTest, WriterMatchesOnlyWithAReader) {
   ActuatorCommandMsg got{};
   ASSERT_TRUE(WaitFor([&] {
     return r.TakeEach([&](const ActuatorCommandMsg& s, const dds_sample_info_t&) {
-             got.step = s.step;
-             got.thrust = s.thrust;
-             got.rudder = s.rudder;
-           }) > 0;
+      got.step = s.step;
+      got.thrust = s.thrust;
+      got.rudder = s.rudder;
+    }) > 0;
   }));
   EXPECT_EQ(got.step, 12u);
   EXPECT_EQ(got.thrust, 4500.0);
@@ -157,16 +156,16 @@ TEST_F(DdsEntitiesTest, OdometryIsPlainCdrInTheRos2Layout) {
   OdometryMessage m(kWorldFrame, "fish");
   m.msg.header.stamp = ToTimeMsg(12.5);
   double x = 1.0;
-  for (double* d : {&m.msg.pose.pose.position.x, &m.msg.pose.pose.position.y,
-                    &m.msg.pose.pose.position.z, &m.msg.pose.pose.orientation.x,
-                    &m.msg.pose.pose.orientation.y, &m.msg.pose.pose.orientation.z,
-                    &m.msg.pose.pose.orientation.w}) {
+  for (double* d :
+       {&m.msg.pose.pose.position.x, &m.msg.pose.pose.position.y, &m.msg.pose.pose.position.z,
+        &m.msg.pose.pose.orientation.x, &m.msg.pose.pose.orientation.y,
+        &m.msg.pose.pose.orientation.z, &m.msg.pose.pose.orientation.w}) {
     *d = x++;
   }
   for (double& c : m.msg.pose.covariance) c = x++;
-  for (double* d : {&m.msg.twist.twist.linear.x, &m.msg.twist.twist.linear.y,
-                    &m.msg.twist.twist.linear.z, &m.msg.twist.twist.angular.x,
-                    &m.msg.twist.twist.angular.y, &m.msg.twist.twist.angular.z}) {
+  for (double* d :
+       {&m.msg.twist.twist.linear.x, &m.msg.twist.twist.linear.y, &m.msg.twist.twist.linear.z,
+        &m.msg.twist.twist.angular.x, &m.msg.twist.twist.angular.y, &m.msg.twist.twist.angular.z}) {
     *d = x++;
   }
   for (double& c : m.msg.twist.covariance) c = x++;

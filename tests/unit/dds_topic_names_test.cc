@@ -1,8 +1,8 @@
 // sim_node/dds/topic_names: ROS 2 topic names on DDS ("rt/" prefix), namespaces.
 
-#include "dds/topic_names.h"
-
 #include <gtest/gtest.h>
+
+#include "dds/topic_names.h"
 
 namespace towsim::dds {
 namespace {

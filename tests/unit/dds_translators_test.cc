@@ -1,8 +1,6 @@
 // sim_node/dds/translators: state -> message -> fields, and the incoming messages, without DDS
 // entities (no participant).
 
-#include "dds/translators.h"
-
 #include <cmath>
 #include <limits>
 #include <string>
@@ -11,6 +9,7 @@
 
 #include "core/script.h"
 #include "core/simulation.h"
+#include "dds/translators.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::dds {
@@ -333,7 +332,8 @@ TEST(ControlTest, TranslatesEachCommand) {
             ControlRequest::kPause);
   EXPECT_EQ(FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_RESUME)).kind,
             ControlRequest::kResume);
-  const ControlRequest s = FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, 5));
+  const ControlRequest s =
+      FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, 5));
   EXPECT_EQ(s.kind, ControlRequest::kStep);
   EXPECT_EQ(s.steps, 5);
   EXPECT_EQ(FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_RESET)).kind,
@@ -345,12 +345,13 @@ TEST(ControlTest, TranslatesEachCommand) {
 }
 
 TEST(ControlTest, RefusesBadRequests) {
-  const ControlRequest a = FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, 0));
+  const ControlRequest a =
+      FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, 0));
   EXPECT_EQ(a.kind, ControlRequest::kInvalid);
   EXPECT_EQ(a.error, "STEP needs steps >= 1");
-  const ControlRequest b = FromSimControl(
-      Control(towsim_msgs_msg_dds__SimControl_Constants_SET_RATE, 0,
-              std::numeric_limits<double>::quiet_NaN()));
+  const ControlRequest b =
+      FromSimControl(Control(towsim_msgs_msg_dds__SimControl_Constants_SET_RATE, 0,
+                             std::numeric_limits<double>::quiet_NaN()));
   EXPECT_EQ(b.kind, ControlRequest::kInvalid);
   const ControlRequest c = FromSimControl(Control(0));
   EXPECT_EQ(c.kind, ControlRequest::kInvalid);

@@ -1,6 +1,8 @@
 // msgs/: the generated types carry the ROS 2 DDS type names, and the IDL of towsim_msgs agrees
 // field for field (and constant for constant) with the ROS 2 .msg files shipped beside it.
 
+#include "towsim_msgs.h"
+
 #include <fstream>
 #include <map>
 #include <regex>
@@ -16,7 +18,6 @@
 #include "nav_msgs.h"
 #include "rosgraph_msgs.h"
 #include "std_msgs.h"
-#include "towsim_msgs.h"
 
 namespace {
 
@@ -79,9 +80,9 @@ std::string IdlType(const std::string& msg_type) {
     return "sequence<" + IdlType(msg_type.substr(0, msg_type.size() - 2)) + ">";
   }
   static const std::map<std::string, std::string> kBase = {
-      {"bool", "boolean"},          {"uint8", "uint8"},   {"int32", "long"},
-      {"uint32", "unsigned long"},  {"int64", "long long"},
-      {"uint64", "unsigned long long"}, {"float64", "double"}, {"string", "string"}};
+      {"bool", "boolean"},         {"uint8", "uint8"},     {"int32", "long"},
+      {"uint32", "unsigned long"}, {"int64", "long long"}, {"uint64", "unsigned long long"},
+      {"float64", "double"},       {"string", "string"}};
   if (const auto it = kBase.find(msg_type); it != kBase.end()) return it->second;
   const auto slash = msg_type.find('/');
   if (slash == std::string::npos) return "?" + msg_type;

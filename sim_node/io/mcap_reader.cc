@@ -1,0 +1,543 @@
+#include "io/mcap_reader.h"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <queue>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+
+namespace towsim::io {
+
+using mcap::McapError;
+using mcap::Op;
+
+namespace {
+
+std::string Hex(std::uint32_t v) {
+  std::ostringstream s;
+  s << "0x" << std::hex << v;
+  return s.str();
+}
+
+// little-endian reader over bytes [pos, end) of a buffer; errors name the absolute offset
+class Decoder {
+ public:
+  Decoder(const std::string& bytes, std::uint64_t begin, std::uint64_t end, const char* what)
+      : b_(bytes), pos_(begin), end_(end), what_(what) {
+    if (begin > end || end > bytes.size()) {
+      throw McapError(std::string(what) + " lies outside the file (ends at " +
+                          std::to_string(end) + " of " + std::to_string(bytes.size()) + ")",
+                      begin);
+    }
+  }
+  std::uint8_t U8() { return static_cast<std::uint8_t>(Le(1)); }
+  std::uint16_t U16() { return static_cast<std::uint16_t>(Le(2)); }
+  std::uint32_t U32() { return static_cast<std::uint32_t>(Le(4)); }
+  std::uint64_t U64() { return Le(8); }
+  std::string Bytes(std::uint64_t n) {
+    Need(n);
+    std::string s = b_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  std::string Str() { return Bytes(U32()); }
+  mcap::StringMap Map() {
+    const std::uint64_t n = U32();
+    Need(n);
+    Decoder entries(b_, pos_, pos_ + n, what_);
+    pos_ += n;
+    mcap::StringMap m;
+    while (!entries.done()) {
+      std::string key = entries.Str();
+      m[key] = entries.Str();
+    }
+    return m;
+  }
+  bool done() const { return pos_ >= end_; }
+  std::uint64_t pos() const { return pos_; }
+  std::uint64_t remaining() const { return end_ - pos_; }
+
+ private:
+  void Need(std::uint64_t n) const {
+    if (n > end_ - pos_) {
+      throw McapError(std::string("truncated ") + what_ + ": need " + std::to_string(n) +
+                          " bytes, " + std::to_string(end_ - pos_) + " left",
+                      pos_);
+    }
+  }
+  std::uint64_t Le(int n) {
+    Need(n);
+    std::uint64_t v = 0;
+    for (int i = 0; i < n; ++i) {
+      v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b_[pos_ + i])) << (8 * i);
+    }
+    pos_ += n;
+    return v;
+  }
+  const std::string& b_;
+  std::uint64_t pos_;
+  std::uint64_t end_;
+  const char* what_;
+};
+
+struct RecordView {
+  Op op;
+  std::uint64_t start;    // offset of the opcode
+  std::uint64_t content;  // offset of the content
+  std::uint64_t length;   // content length
+  std::uint64_t end() const { return content + length; }
+};
+
+// the record at `pos`, which must lie within [pos, limit)
+RecordView RecordAt(const std::string& b, std::uint64_t pos, std::uint64_t limit) {
+  Decoder d(b, pos, limit, "record header");
+  RecordView r{};
+  r.start = pos;
+  r.op = static_cast<Op>(d.U8());
+  r.length = d.U64();
+  r.content = d.pos();
+  if (r.length > limit - r.content) {
+    throw McapError("record (opcode " + Hex(static_cast<unsigned>(r.op)) + ") of " +
+                        std::to_string(r.length) + " bytes runs past the end (" +
+                        std::to_string(limit) + ")",
+                    pos);
+  }
+  return r;
+}
+
+McapSchema ParseSchema(const std::string& b, const RecordView& r) {
+  Decoder d(b, r.content, r.end(), "schema record");
+  McapSchema s;
+  s.id = d.U16();
+  s.name = d.Str();
+  s.encoding = d.Str();
+  s.data = d.Bytes(d.U32());
+  return s;
+}
+
+McapChannel ParseChannel(const std::string& b, const RecordView& r) {
+  Decoder d(b, r.content, r.end(), "channel record");
+  McapChannel c;
+  c.id = d.U16();
+  c.schema_id = d.U16();
+  c.topic = d.Str();
+  c.message_encoding = d.Str();
+  c.metadata = d.Map();
+  return c;
+}
+
+McapMetadata ParseMetadata(const std::string& b, const RecordView& r) {
+  Decoder d(b, r.content, r.end(), "metadata record");
+  McapMetadata m;
+  m.name = d.Str();
+  m.metadata = d.Map();
+  return m;
+}
+
+McapMessage ParseMessage(const std::string& b, const RecordView& r) {
+  Decoder d(b, r.content, r.end(), "message record");
+  McapMessage m;
+  m.channel_id = d.U16();
+  m.sequence = d.U32();
+  m.log_time = d.U64();
+  m.publish_time = d.U64();
+  const std::uint64_t n = d.remaining();
+  m.data.resize(n);
+  if (n > 0) std::memcpy(m.data.data(), b.data() + d.pos(), n);
+  return m;
+}
+
+struct ChunkView {
+  std::uint64_t start_time, end_time, uncompressed_size;
+  std::uint32_t crc;
+  std::string compression;
+  std::uint64_t records_begin, records_end;
+};
+
+// parses a chunk record and checks its CRC
+ChunkView ParseChunk(const std::string& b, const RecordView& r) {
+  Decoder d(b, r.content, r.end(), "chunk record");
+  ChunkView c{};
+  c.start_time = d.U64();
+  c.end_time = d.U64();
+  c.uncompressed_size = d.U64();
+  c.crc = d.U32();
+  c.compression = d.Str();
+  const std::uint64_t n = d.U64();
+  if (n > d.remaining()) throw McapError("chunk records run past the chunk record", d.pos());
+  c.records_begin = d.pos();
+  c.records_end = d.pos() + n;
+  if (!c.compression.empty()) {
+    throw McapError("unsupported chunk compression \"" + c.compression + "\"", r.start);
+  }
+  if (c.uncompressed_size != n) {
+    throw McapError("chunk uncompressed_size " + std::to_string(c.uncompressed_size) +
+                        " != records length " + std::to_string(n),
+                    r.start);
+  }
+  if (c.crc != 0) {
+    const std::uint32_t computed = mcap::ComputeCrc32(b.data() + c.records_begin, n);
+    if (computed != c.crc) {
+      throw McapError("chunk CRC mismatch: stored " + Hex(c.crc) + ", computed " + Hex(computed),
+                      r.start);
+    }
+  }
+  return c;
+}
+
+std::string ReadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("McapReader: cannot open " + path);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void CheckLeadingMagic(const std::string& b) {
+  if (b.size() < mcap::kMagicSize || std::memcmp(b.data(), mcap::kMagic, mcap::kMagicSize) != 0) {
+    throw McapError("not an MCAP file: bad leading magic", 0);
+  }
+}
+
+}  // namespace
+
+McapReader McapReader::Open(const std::string& path) { return OpenBytes(ReadFile(path)); }
+McapReader McapReader::Recover(const std::string& path) { return RecoverBytes(ReadFile(path)); }
+
+McapReader McapReader::OpenBytes(std::string bytes) {
+  McapReader r;
+  r.bytes_ = std::move(bytes);
+  r.ReadSummary();
+  return r;
+}
+
+McapReader McapReader::RecoverBytes(std::string bytes) {
+  McapReader r;
+  r.bytes_ = std::move(bytes);
+  r.ScanLinear();
+  return r;
+}
+
+void McapReader::ReadSummary() {
+  const std::string& b = bytes_;
+  CheckLeadingMagic(b);
+  const std::uint64_t size = b.size();
+  const std::uint64_t footer_record = mcap::kRecordPrefixSize + mcap::kFooterContentSize;
+  if (size < 2 * mcap::kMagicSize + footer_record) {
+    throw McapError("file of " + std::to_string(size) + " bytes is too short for an MCAP file",
+                    size);
+  }
+  if (std::memcmp(b.data() + size - mcap::kMagicSize, mcap::kMagic, mcap::kMagicSize) != 0) {
+    throw McapError("bad trailing magic: the file is truncated or not closed (try recovery)",
+                    size - mcap::kMagicSize);
+  }
+  const std::uint64_t footer_start = size - mcap::kMagicSize - footer_record;
+
+  // header
+  const RecordView header = RecordAt(b, mcap::kMagicSize, footer_start);
+  if (header.op != Op::kHeader) {
+    throw McapError("first record is opcode " + Hex(static_cast<unsigned>(header.op)) +
+                        ", expected the header (0x1)",
+                    header.start);
+  }
+  Decoder hd(b, header.content, header.end(), "header record");
+  profile_ = hd.Str();
+  library_ = hd.Str();
+
+  // footer
+  Decoder fd(b, footer_start, size - mcap::kMagicSize, "footer");
+  if (fd.U8() != static_cast<std::uint8_t>(Op::kFooter) || fd.U64() != mcap::kFooterContentSize) {
+    throw McapError("no footer record before the trailing magic", footer_start);
+  }
+  const std::uint64_t summary_start = fd.U64();
+  const std::uint64_t summary_offset_start = fd.U64();
+  const std::uint32_t summary_crc = fd.U32();
+  if (summary_start > footer_start || summary_offset_start > footer_start ||
+      (summary_start != 0 && summary_offset_start != 0 && summary_offset_start < summary_start)) {
+    throw McapError("footer offsets out of range: summary_start " +
+                        std::to_string(summary_start) + ", summary_offset_start " +
+                        std::to_string(summary_offset_start),
+                    footer_start);
+  }
+  const std::uint64_t crc_begin = summary_start != 0 ? summary_start : footer_start;
+  if (summary_crc != 0) {
+    const std::uint32_t computed =
+        mcap::ComputeCrc32(b.data() + crc_begin, footer_start + 1 + 8 + 16 - crc_begin);
+    if (computed != summary_crc) {
+      throw McapError("summary CRC mismatch: stored " + Hex(summary_crc) + ", computed " +
+                          Hex(computed),
+                      crc_begin);
+    }
+  }
+
+  // data end: the last record of the data section
+  const std::uint64_t data_limit = summary_start != 0          ? summary_start
+                                   : summary_offset_start != 0 ? summary_offset_start
+                                                               : footer_start;
+  const std::uint64_t data_end_record = mcap::kRecordPrefixSize + 4;
+  if (data_limit < header.end() + data_end_record) {
+    throw McapError("no data end record before the summary", data_limit);
+  }
+  const RecordView data_end = RecordAt(b, data_limit - data_end_record, data_limit);
+  if (data_end.op != Op::kDataEnd || data_end.length != 4) {
+    throw McapError("no data end record before the summary", data_limit - data_end_record);
+  }
+  const std::uint32_t data_crc = Decoder(b, data_end.content, data_end.end(), "data end").U32();
+  if (data_crc != 0) {
+    // from the leading magic on (our writer, mcap C++/Go) or from after it (other writers)
+    const std::uint32_t from0 = mcap::ComputeCrc32(b.data(), data_end.start);
+    const std::uint32_t from8 =
+        mcap::ComputeCrc32(b.data() + mcap::kMagicSize, data_end.start - mcap::kMagicSize);
+    if (data_crc != from0 && data_crc != from8) {
+      throw McapError("data section CRC mismatch: stored " + Hex(data_crc) + ", computed " +
+                          Hex(from0),
+                      data_end.start);
+    }
+  }
+
+  if (summary_start == 0) {  // no summary: index the data section by scanning it
+    ScanLinear();
+    if (recovered_) throw McapError(recovery_note_, recovered_bytes_);
+    return;
+  }
+
+  const std::uint64_t summary_end = summary_offset_start != 0 ? summary_offset_start : footer_start;
+  std::uint64_t pos = summary_start;
+  while (pos < summary_end) {
+    const RecordView r = RecordAt(b, pos, summary_end);
+    switch (r.op) {
+      case Op::kSchema: {
+        McapSchema s = ParseSchema(b, r);
+        schemas_[s.id] = std::move(s);
+        break;
+      }
+      case Op::kChannel: {
+        McapChannel c = ParseChannel(b, r);
+        channels_[c.id] = std::move(c);
+        break;
+      }
+      case Op::kStatistics: {
+        Decoder d(b, r.content, r.end(), "statistics record");
+        McapStatistics& s = statistics_;
+        s.message_count = d.U64();
+        s.schema_count = d.U16();
+        s.channel_count = d.U32();
+        s.attachment_count = d.U32();
+        s.metadata_count = d.U32();
+        s.chunk_count = d.U32();
+        s.message_start_time = d.U64();
+        s.message_end_time = d.U64();
+        const std::uint32_t n = d.U32();
+        Decoder counts(b, d.pos(), d.pos() + n, "statistics channel counts");
+        if (n > d.remaining()) throw McapError("truncated statistics record", d.pos());
+        while (!counts.done()) {
+          const std::uint16_t id = counts.U16();
+          s.channel_message_counts[id] = counts.U64();
+        }
+        has_statistics_ = true;
+        break;
+      }
+      case Op::kChunkIndex: {
+        Decoder d(b, r.content, r.end(), "chunk index record");
+        McapChunkIndex c;
+        c.message_start_time = d.U64();
+        c.message_end_time = d.U64();
+        c.chunk_start_offset = d.U64();
+        c.chunk_length = d.U64();
+        const std::uint32_t n = d.U32();
+        if (n > d.remaining()) throw McapError("truncated chunk index record", d.pos());
+        Decoder offsets(b, d.pos(), d.pos() + n, "chunk index offsets");
+        while (!offsets.done()) {
+          const std::uint16_t id = offsets.U16();
+          c.message_index_offsets[id] = offsets.U64();
+        }
+        d.Bytes(n);
+        c.message_index_length = d.U64();
+        c.compression = d.Str();
+        c.compressed_size = d.U64();
+        c.uncompressed_size = d.U64();
+        if (c.chunk_start_offset > data_limit ||
+            c.chunk_length > data_limit - c.chunk_start_offset) {
+          throw McapError("chunk index points past the data section", r.start);
+        }
+        chunk_indexes_.push_back(std::move(c));
+        break;
+      }
+      case Op::kMetadataIndex: {
+        Decoder d(b, r.content, r.end(), "metadata index record");
+        const std::uint64_t offset = d.U64();
+        const std::uint64_t length = d.U64();
+        if (offset > data_limit || length > data_limit - offset) {
+          throw McapError("metadata index points past the data section", r.start);
+        }
+        const RecordView m = RecordAt(b, offset, offset + length);
+        if (m.op != Op::kMetadata) throw McapError("metadata index points to opcode " +
+                                                       Hex(static_cast<unsigned>(m.op)),
+                                                   offset);
+        metadata_.push_back(ParseMetadata(b, m));
+        break;
+      }
+      default:
+        break;  // attachment indexes and unknown records: skipped
+    }
+    pos = r.end();
+  }
+}
+
+void McapReader::ScanLinear() {
+  const std::string& b = bytes_;
+  CheckLeadingMagic(b);
+  const std::uint64_t size = b.size();
+  const RecordView header = RecordAt(b, mcap::kMagicSize, size);
+  if (header.op != Op::kHeader) {
+    throw McapError("first record is not the header", header.start);
+  }
+  Decoder hd(b, header.content, header.end(), "header record");
+  profile_ = hd.Str();
+  library_ = hd.Str();
+
+  statistics_ = McapStatistics{};
+  bool any_message = false;
+  auto count = [&](const McapMessage& m) {
+    McapStatistics& s = statistics_;
+    if (!any_message) s.message_start_time = s.message_end_time = m.log_time;
+    any_message = true;
+    s.message_start_time = std::min(s.message_start_time, m.log_time);
+    s.message_end_time = std::max(s.message_end_time, m.log_time);
+    ++s.message_count;
+    ++s.channel_message_counts[m.channel_id];
+  };
+
+  recovered_ = true;
+  recovery_note_ = "no data end record: the file ends after the last complete record";
+  std::uint64_t pos = header.end();
+  while (pos < size) {
+    try {
+      const RecordView r = RecordAt(b, pos, size);
+      bool stop = false;
+      switch (r.op) {
+        case Op::kSchema: {
+          McapSchema s = ParseSchema(b, r);
+          schemas_[s.id] = std::move(s);
+          break;
+        }
+        case Op::kChannel: {
+          McapChannel c = ParseChannel(b, r);
+          channels_[c.id] = std::move(c);
+          break;
+        }
+        case Op::kMetadata:
+          metadata_.push_back(ParseMetadata(b, r));
+          break;
+        case Op::kMessage: {
+          McapMessage m = ParseMessage(b, r);
+          count(m);
+          loose_messages_.push_back(std::move(m));
+          break;
+        }
+        case Op::kChunk: {
+          const ChunkView c = ParseChunk(b, r);
+          // parse everything first, so a damaged chunk contributes nothing
+          std::vector<McapSchema> schemas;
+          std::vector<McapChannel> channels;
+          std::vector<McapMessage> messages;
+          for (std::uint64_t p = c.records_begin; p < c.records_end;) {
+            const RecordView inner = RecordAt(b, p, c.records_end);
+            if (inner.op == Op::kSchema) schemas.push_back(ParseSchema(b, inner));
+            if (inner.op == Op::kChannel) channels.push_back(ParseChannel(b, inner));
+            if (inner.op == Op::kMessage) messages.push_back(ParseMessage(b, inner));
+            p = inner.end();
+          }
+          for (auto& s : schemas) schemas_[s.id] = std::move(s);
+          for (auto& ch : channels) channels_[ch.id] = std::move(ch);
+          McapChunkIndex index;
+          index.message_start_time = c.start_time;
+          index.message_end_time = c.end_time;
+          index.chunk_start_offset = r.start;
+          index.chunk_length = r.end() - r.start;
+          index.compression = c.compression;
+          index.compressed_size = index.uncompressed_size = c.uncompressed_size;
+          chunk_indexes_.push_back(index);
+          for (const McapMessage& m : messages) count(m);
+          break;
+        }
+        case Op::kDataEnd:
+          recovered_ = false;
+          recovery_note_.clear();
+          stop = true;
+          break;
+        case Op::kFooter:
+          stop = true;
+          break;
+        default:
+          break;  // message indexes, attachments, unknown records
+      }
+      pos = r.end();
+      if (stop) break;
+    } catch (const McapError& e) {
+      recovery_note_ = std::string("stopped at the first damaged record: ") + e.what();
+      break;
+    }
+  }
+  recovered_bytes_ = pos;
+  statistics_.schema_count = static_cast<std::uint16_t>(schemas_.size());
+  statistics_.channel_count = static_cast<std::uint32_t>(channels_.size());
+  statistics_.metadata_count = static_cast<std::uint32_t>(metadata_.size());
+  statistics_.chunk_count = static_cast<std::uint32_t>(chunk_indexes_.size());
+  has_statistics_ = true;
+}
+
+std::vector<McapMessage> McapReader::ChunkMessages(const McapChunkIndex& index) const {
+  const RecordView r = RecordAt(bytes_, index.chunk_start_offset, bytes_.size());
+  if (r.op != Op::kChunk) {
+    throw McapError("chunk index points to opcode " + Hex(static_cast<unsigned>(r.op)),
+                    index.chunk_start_offset);
+  }
+  const ChunkView c = ParseChunk(bytes_, r);
+  std::vector<McapMessage> messages;
+  for (std::uint64_t p = c.records_begin; p < c.records_end;) {
+    const RecordView inner = RecordAt(bytes_, p, c.records_end);
+    if (inner.op == Op::kMessage) messages.push_back(ParseMessage(bytes_, inner));
+    p = inner.end();
+  }
+  return messages;
+}
+
+void McapReader::ForEachMessage(const std::function<void(const McapMessage&)>& fn) const {
+  // merge: before emitting time t, load every chunk that starts at or before t
+  std::vector<const McapChunkIndex*> chunks;
+  for (const McapChunkIndex& c : chunk_indexes_) chunks.push_back(&c);
+  std::stable_sort(chunks.begin(), chunks.end(), [](const auto* a, const auto* b) {
+    return a->message_start_time < b->message_start_time;
+  });
+  std::vector<McapMessage> store;
+  using Key = std::tuple<std::uint64_t, std::uint64_t>;  // (log_time, load order = store index)
+  std::priority_queue<Key, std::vector<Key>, std::greater<Key>> heap;
+  auto push = [&](McapMessage m) {
+    heap.emplace(m.log_time, store.size());
+    store.push_back(std::move(m));
+  };
+  for (const McapMessage& m : loose_messages_) push(m);
+  std::size_t next = 0;
+  while (true) {
+    while (next < chunks.size() &&
+           (heap.empty() || chunks[next]->message_start_time <= std::get<0>(heap.top()))) {
+      for (McapMessage& m : ChunkMessages(*chunks[next])) push(std::move(m));
+      ++next;
+    }
+    if (heap.empty()) break;
+    const std::uint64_t i = std::get<1>(heap.top());
+    heap.pop();
+    fn(store[i]);
+    store[i].data = {};  // release the payload
+  }
+}
+
+std::vector<McapMessage> McapReader::ReadMessages() const {
+  std::vector<McapMessage> out;
+  ForEachMessage([&](const McapMessage& m) { out.push_back(m); });
+  return out;
+}
+
+}  // namespace towsim::io
