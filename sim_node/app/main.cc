@@ -60,6 +60,9 @@ int Run(const towsim::app::Options& options) {
     dds.rate = options.rate.value_or(1.0);
     dds.domain = options.domain.value_or(0);
     dds.ns = options.ns;
+    const towsim::core::Publishing& pub = model.publishing;
+    dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
+    dds.command_timeout = pub.command_timeout;
     if (csv) {
       dds.output = [&](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
                        long us) { csv->Write(s, st, us); };

@@ -153,6 +153,17 @@ struct ScriptEntry {
   double elevator = 0.0;  // [rad]
 };
 
+// What a DDS node publishes and when (DESIGN §3-4); plain scene data, unused offline.
+struct Publishing {
+  // per-topic rates [Hz]; 0: every step; rounded to a whole number of steps
+  double clock = 0.0;
+  double odom = 0.0;
+  double cable_force = 0.0;
+  double status = 0.0;
+  double cable_state = -1.0;     // < 0: the scene's time.output_rate
+  double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]
+};
+
 struct Model {
   std::string name;
   TimeSettings time;
@@ -162,6 +173,7 @@ struct Model {
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;
+  Publishing publishing;
 };
 
 }  // namespace towsim::core

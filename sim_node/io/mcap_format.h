@@ -17,7 +17,7 @@ namespace towsim::io::mcap {
 // 0x89 "MCAP" '0' "\r\n": '0' is the major version
 inline constexpr unsigned char kMagic[8] = {0x89, 'M', 'C', 'A', 'P', '0', '\r', '\n'};
 inline constexpr std::size_t kMagicSize = 8;
-inline constexpr std::size_t kRecordPrefixSize = 9;  // opcode u8 + content length u64
+inline constexpr std::size_t kRecordPrefixSize = 9;    // opcode u8 + content length u64
 inline constexpr std::size_t kFooterContentSize = 20;  // summary_start, summary_offset_start, crc
 
 enum class Op : std::uint8_t {

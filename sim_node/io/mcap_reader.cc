@@ -28,8 +28,8 @@ class Decoder {
   Decoder(const std::string& bytes, std::uint64_t begin, std::uint64_t end, const char* what)
       : b_(bytes), pos_(begin), end_(end), what_(what) {
     if (begin > end || end > bytes.size()) {
-      throw McapError(std::string(what) + " lies outside the file (ends at " +
-                          std::to_string(end) + " of " + std::to_string(bytes.size()) + ")",
+      throw McapError(std::string(what) + " lies outside the file (ends at " + std::to_string(end) +
+                          " of " + std::to_string(bytes.size()) + ")",
                       begin);
     }
   }
@@ -255,9 +255,8 @@ void McapReader::ReadSummary() {
   const std::uint32_t summary_crc = fd.U32();
   if (summary_start > footer_start || summary_offset_start > footer_start ||
       (summary_start != 0 && summary_offset_start != 0 && summary_offset_start < summary_start)) {
-    throw McapError("footer offsets out of range: summary_start " +
-                        std::to_string(summary_start) + ", summary_offset_start " +
-                        std::to_string(summary_offset_start),
+    throw McapError("footer offsets out of range: summary_start " + std::to_string(summary_start) +
+                        ", summary_offset_start " + std::to_string(summary_offset_start),
                     footer_start);
   }
   const std::uint64_t crc_begin = summary_start != 0 ? summary_start : footer_start;
@@ -265,9 +264,9 @@ void McapReader::ReadSummary() {
     const std::uint32_t computed =
         mcap::ComputeCrc32(b.data() + crc_begin, footer_start + 1 + 8 + 16 - crc_begin);
     if (computed != summary_crc) {
-      throw McapError("summary CRC mismatch: stored " + Hex(summary_crc) + ", computed " +
-                          Hex(computed),
-                      crc_begin);
+      throw McapError(
+          "summary CRC mismatch: stored " + Hex(summary_crc) + ", computed " + Hex(computed),
+          crc_begin);
     }
   }
 
@@ -290,9 +289,9 @@ void McapReader::ReadSummary() {
     const std::uint32_t from8 =
         mcap::ComputeCrc32(b.data() + mcap::kMagicSize, data_end.start - mcap::kMagicSize);
     if (data_crc != from0 && data_crc != from8) {
-      throw McapError("data section CRC mismatch: stored " + Hex(data_crc) + ", computed " +
-                          Hex(from0),
-                      data_end.start);
+      throw McapError(
+          "data section CRC mismatch: stored " + Hex(data_crc) + ", computed " + Hex(from0),
+          data_end.start);
     }
   }
 
@@ -372,9 +371,9 @@ void McapReader::ReadSummary() {
           throw McapError("metadata index points past the data section", r.start);
         }
         const RecordView m = RecordAt(b, offset, offset + length);
-        if (m.op != Op::kMetadata) throw McapError("metadata index points to opcode " +
-                                                       Hex(static_cast<unsigned>(m.op)),
-                                                   offset);
+        if (m.op != Op::kMetadata)
+          throw McapError("metadata index points to opcode " + Hex(static_cast<unsigned>(m.op)),
+                          offset);
         metadata_.push_back(ParseMetadata(b, m));
         break;
       }

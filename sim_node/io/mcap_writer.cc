@@ -21,12 +21,13 @@ McapWriter::~McapWriter() {
 }
 
 void McapWriter::Open(const std::string& path, const std::string& profile) {
-  if (file_ != nullptr) throw std::runtime_error("McapWriter: already open on " + path_);
+  if (opened_) throw std::runtime_error("McapWriter: a writer writes one file, already " + path_);
   file_ = std::fopen(path.c_str(), "wb");
   if (file_ == nullptr) {
     throw std::runtime_error("McapWriter: cannot open " + path + ": " + std::strerror(errno));
   }
   path_ = path;
+  opened_ = true;
   WriteBytes(mcap::kMagic, mcap::kMagicSize);
   Encoder header;
   header.Str(profile);
@@ -71,9 +72,8 @@ std::uint16_t McapWriter::AddChannel(std::uint16_t schema_id, const std::string&
   return id;
 }
 
-void McapWriter::Write(std::uint16_t channel_id, std::uint32_t sequence,
-                       std::uint64_t log_time_ns, std::uint64_t publish_time_ns,
-                       const void* data, std::size_t size) {
+void McapWriter::Write(std::uint16_t channel_id, std::uint32_t sequence, std::uint64_t log_time_ns,
+                       std::uint64_t publish_time_ns, const void* data, std::size_t size) {
   if (file_ == nullptr) throw std::runtime_error("McapWriter::Write: not open");
   if (channel_records_.count(channel_id) == 0) {
     throw std::invalid_argument("McapWriter::Write: unknown channel id " +
@@ -278,8 +278,7 @@ void McapWriter::CloseChunk() {
 
 void McapWriter::FlushFile() {
   if (std::fflush(file_) != 0) {
-    throw std::runtime_error("McapWriter: flushing " + path_ + " failed: " +
-                             std::strerror(errno));
+    throw std::runtime_error("McapWriter: flushing " + path_ + " failed: " + std::strerror(errno));
   }
   if (options_.fsync) ::fsync(fileno(file_));
 }

@@ -40,9 +40,9 @@ namespace towsim::io {
 class McapWriter {
  public:
   struct Options {
-    std::uint64_t chunk_size = 1u << 20;               // close a chunk above this [bytes]
-    std::uint64_t chunk_duration_ns = 1'000'000'000;   // close a chunk spanning this [ns]
-    bool fsync = false;                                // fsync after each chunk
+    std::uint64_t chunk_size = 1u << 20;              // close a chunk above this [bytes]
+    std::uint64_t chunk_duration_ns = 1'000'000'000;  // close a chunk spanning this [ns]
+    bool fsync = false;                               // fsync after each chunk
     std::string library = "towsim";
   };
 
@@ -52,8 +52,9 @@ class McapWriter {
   McapWriter(const McapWriter&) = delete;
   McapWriter& operator=(const McapWriter&) = delete;
 
-  // creates / truncates `path` and writes the magic and Header. Throws std::runtime_error
-  // naming the path if it cannot be opened, or if the writer is already open.
+  // creates / truncates `path` and writes the magic and Header. One file per writer: throws
+  // std::runtime_error if the writer was opened before, or naming the path if it cannot be
+  // opened.
   void Open(const std::string& path, const std::string& profile = "ros2");
 
   // registers a schema (e.g. name "towsim_msgs/msg/BodyState", encoding "ros2msg", data the
@@ -100,8 +101,9 @@ class McapWriter {
   Options options_;
   std::string path_;
   std::FILE* file_ = nullptr;
-  std::uint64_t pos_ = 0;         // bytes written so far
-  bool in_data_section_ = true;   // bytes go into the data CRC, else into the summary CRC
+  bool opened_ = false;          // Open() was called (a writer writes one file)
+  std::uint64_t pos_ = 0;        // bytes written so far
+  bool in_data_section_ = true;  // bytes go into the data CRC, else into the summary CRC
   mcap::Crc32 data_crc_;
   mcap::Crc32 summary_crc_;
 

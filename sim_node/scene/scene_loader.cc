@@ -65,6 +65,20 @@ core::IntegratorSettings ReadIntegrator(const Field& field) {
   return s;
 }
 
+// publish: per-topic rates of a DDS node [Hz] (0: every step) and the command timeout [s]
+core::Publishing ReadPublish(const Field& field) {
+  const MapReader publish(field, MapKind::kPublish);
+  core::Publishing p;
+  p.clock = publish.Number("clock", Range::AtLeast(0.0), p.clock);
+  p.odom = publish.Number("odom", Range::AtLeast(0.0), p.odom);
+  p.cable_force = publish.Number("cable_force", Range::AtLeast(0.0), p.cable_force);
+  p.status = publish.Number("status", Range::AtLeast(0.0), p.status);
+  if (publish.Has("cable_state"))
+    p.cable_state = publish.Get("cable_state").Number(Range::AtLeast(0.0));
+  p.command_timeout = publish.Number("command_timeout", Range::Above(0.0), p.command_timeout);
+  return p;
+}
+
 core::Model BuildModel(const Field& root, const std::string& base_dir) {
   const MapReader scene(root, MapKind::kScene);
   core::Model model;
@@ -93,6 +107,7 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   }
 
   model.integrator = ReadIntegrator(scene.Get("integrator"));
+  model.publishing = ReadPublish(scene.Get("publish"));
   model.script = internal::ReadScript(scene.Get("script"), model);
   return model;
 }

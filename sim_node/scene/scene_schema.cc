@@ -45,7 +45,10 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
     return keys;
   };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
-      {MapKind::kScene, {"name", "time", "environment", "cable", "bodies", "integrator", "script"}},
+      {MapKind::kScene,
+       {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish"}},
+      {MapKind::kPublish,
+       {"clock", "odom", "cable_state", "cable_force", "status", "command_timeout"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
       {MapKind::kEnvironment, {"water_density", "dynamic_viscosity", "gravity", "current"}},
       {MapKind::kCable,
@@ -90,6 +93,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "cable") return MapKind::kCable;
       if (key == "bodies") return MapKind::kBodies;
       if (key == "integrator") return MapKind::kIntegrator;
+      if (key == "publish") return MapKind::kPublish;
       return std::nullopt;  // name; script is a list
     case MapKind::kCable:
       if (key == "start" || key == "end") return MapKind::kEnd;

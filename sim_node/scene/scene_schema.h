@@ -28,6 +28,7 @@ enum class MapKind {
   kWaterplane,   // <vehicle>.waterplane
   kCommand,      // bodies.<name>.command
   kIntegrator,   // integrator
+  kPublish,      // publish
   kScriptEntry,  // script[i]
 };
 

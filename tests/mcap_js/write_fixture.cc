@@ -19,13 +19,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   constexpr std::uint64_t kT0 = 1'700'000'000'000'000'000ull;  // [ns]
-  constexpr std::uint64_t kMs = 1'000'000;                      // [ns]
+  constexpr std::uint64_t kMs = 1'000'000;                     // [ns]
   const int n = std::atoi(argv[2]);
   try {
     towsim::io::McapWriter w;
     w.Open(argv[1], "ros2");
-    const auto time_schema = w.AddSchema("builtin_interfaces/msg/Time", "ros2msg",
-                                         "int32 sec\nuint32 nanosec\n");
+    const auto time_schema =
+        w.AddSchema("builtin_interfaces/msg/Time", "ros2msg", "int32 sec\nuint32 nanosec\n");
     const auto clock_schema = w.AddSchema(
         "rosgraph_msgs/msg/Clock", "ros2msg",
         "builtin_interfaces/Time clock\n"

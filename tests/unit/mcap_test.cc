@@ -1,7 +1,5 @@
 // McapWriter / McapReader: round trips, CRCs, statistics, recovery of a cut-off recording and
 // the byte layout of the records against the MCAP specification (https://mcap.dev/spec).
-#include <gtest/gtest.h>
-
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -10,6 +8,8 @@
 #include <map>
 #include <string>
 #include <vector>
+
+#include <gtest/gtest.h>
 
 #include "io/mcap_format.h"
 #include "io/mcap_reader.h"
@@ -20,7 +20,7 @@ namespace {
 
 using mcap::McapError;
 
-constexpr std::uint64_t kMs = 1'000'000;  // [ns]
+constexpr std::uint64_t kMs = 1'000'000;                     // [ns]
 constexpr std::uint64_t kT0 = 1'700'000'000'000'000'000ull;  // an epoch-like start [ns]
 
 std::string TempPath(const std::string& name) {
@@ -58,15 +58,14 @@ struct Sent {
 };
 
 // writes `n` messages round-robin on three channels, 1 ms apart (so a chunk spans <= 1 s)
-std::vector<Sent> WriteRecording(const std::string& path, int n,
-                                 McapWriter::Options options = {}) {
+std::vector<Sent> WriteRecording(const std::string& path, int n, McapWriter::Options options = {}) {
   McapWriter w(options);
   w.Open(path, "ros2");
   const std::uint16_t s1 = w.AddSchema("towsim_msgs/msg/BodyState", "ros2msg",
                                        "float64 x\n================================================"
                                        "================================\nMSG: a/B\nint32 y\n");
-  const std::uint16_t s2 = w.AddSchema("rosgraph_msgs/msg/Clock", "ros2msg",
-                                       "builtin_interfaces/Time clock\n");
+  const std::uint16_t s2 =
+      w.AddSchema("rosgraph_msgs/msg/Clock", "ros2msg", "builtin_interfaces/Time clock\n");
   const std::vector<std::uint16_t> ch = {
       w.AddChannel(s1, "/towsim/body_state", "cdr", {{"offered_qos_profiles", ""}}),
       w.AddChannel(s2, "/clock", "cdr", {}),
@@ -264,8 +263,8 @@ TEST(McapTest, TruncatedFileRecoversEveryCompleteChunk) {
   for (std::size_t i = 0; i < got.size(); ++i) ASSERT_EQ(got[i].log_time, sent[i].log_time);
 
   // a cut just after a chunk's message indexes keeps that chunk too
-  Spit(cut_path, b.substr(0, third.chunk_start_offset + third.chunk_length +
-                                 third.message_index_length));
+  Spit(cut_path,
+       b.substr(0, third.chunk_start_offset + third.chunk_length + third.message_index_length));
   EXPECT_EQ(McapReader::Recover(cut_path).chunk_indexes().size(), 3u);
 
   // a complete file recovers fully and is not marked as recovered
@@ -439,6 +438,29 @@ TEST(McapTest, ByteLayoutMatchesTheSpecification) {
   EXPECT_EQ(p + 29 + 8, b.size());
 }
 
+TEST(McapTest, DataCrcFromAfterTheMagicIsAccepted) {
+  // some writers start the data section CRC after the leading magic; both are accepted
+  const std::string path = TempPath("crc8");
+  WriteRecording(path, 100);
+  std::string b = Slurp(path);
+  const std::uint64_t footer = b.size() - 8 - 29;
+  const std::uint64_t data_end = Le(b, footer + 9, 8) - 13;
+  ASSERT_EQ(static_cast<unsigned char>(b[data_end]), 0x0F);
+  const std::uint32_t crc8 = mcap::ComputeCrc32(b.data() + 8, data_end - 8);
+  for (int k = 0; k < 4; ++k) b[data_end + 9 + k] = static_cast<char>(crc8 >> 8 * k);
+  EXPECT_EQ(McapReader::OpenBytes(b).ReadMessages().size(), 100u);
+  b[data_end + 9] = static_cast<char>(b[data_end + 9] ^ 1);  // and a wrong one is not
+  EXPECT_THROW(McapReader::OpenBytes(b), McapError);
+}
+
+TEST(McapTest, FsyncOptionWritesTheSameFile) {
+  McapWriter::Options options;
+  options.fsync = true;
+  WriteRecording(TempPath("fsync"), 2500, options);
+  WriteRecording(TempPath("nofsync"), 2500);
+  EXPECT_EQ(Slurp(TempPath("fsync")), Slurp(TempPath("nofsync")));
+}
+
 TEST(McapTest, Crc32MatchesTheStandardCheckValue) {
   // the CRC-32/ISO-HDLC check value of "123456789"
   EXPECT_EQ(mcap::ComputeCrc32("123456789", 9), 0xCBF43926u);
@@ -449,6 +471,8 @@ TEST(McapTest, WriterRejectsUnknownIds) {
   w.Open(TempPath("ids"));
   EXPECT_THROW(w.AddChannel(3, "/x"), std::invalid_argument);
   EXPECT_THROW(w.Write(0, 0, 0, 0, nullptr, 0), std::invalid_argument);
+  w.Close();
+  EXPECT_THROW(w.Open(TempPath("ids2")), std::runtime_error);  // one file per writer
 }
 
 }  // namespace

@@ -225,6 +225,13 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{"missing_key", Edit("  length: 100\n", ""), "cable.length", "is required",
                    "t.yaml:3"},
         BrokenCase{"missing_name", Edit("name: t\n", ""), "name", "is required", ""},
+        BrokenCase{"negative_publish_rate", Edit("name: t\n", "name: t\npublish: {odom: -5}\n"),
+                   "publish.odom", ">= 0", ""},
+        BrokenCase{"zero_command_timeout",
+                   Edit("name: t\n", "name: t\npublish: {command_timeout: 0}\n"),
+                   "publish.command_timeout", "> 0", ""},
+        BrokenCase{"unknown_publish_key", Edit("name: t\n", "name: t\npublish: {odometry: 5}\n"),
+                   "publish.odometry", "unknown key", ""},
         BrokenCase{"missing_end", Edit("  end: {body: fish}\n", ""), "cable.end", "is required",
                    ""},
         // types
@@ -1044,6 +1051,20 @@ TEST_F(SceneLoaderTest, LoadsAndSlopes) {
   EXPECT_TRUE(clamped.cable.start.clamped);
   EXPECT_EQ(clamped.cable.start.slope, core::Vec3(0, 0, 1));
   EXPECT_FALSE(clamped.cable.end.clamped);
+}
+
+TEST_F(SceneLoaderTest, PublishRatesAndCommandTimeout) {
+  const Model defaults = Load(Edit("", ""));
+  EXPECT_EQ(defaults.publishing.odom, 0.0);
+  EXPECT_EQ(defaults.publishing.cable_state, -1.0);
+  EXPECT_EQ(defaults.publishing.command_timeout, 0.5);
+  const Model m = Load(Edit(
+      "name: t\n", "name: t\npublish: {odom: 50, cable_state: 5, status: 1, command_timeout: 2}\n"));
+  EXPECT_EQ(m.publishing.odom, 50.0);
+  EXPECT_EQ(m.publishing.cable_state, 5.0);
+  EXPECT_EQ(m.publishing.status, 1.0);
+  EXPECT_EQ(m.publishing.clock, 0.0);
+  EXPECT_EQ(m.publishing.command_timeout, 2.0);
 }
 
 TEST_F(SceneLoaderTest, InitialVelocityIsTheBodiesDefault) {
