@@ -21,8 +21,10 @@
 // of log time; McapReader::Recover reads every complete chunk of such a file. A caller whose
 // messages may stop arriving (a recorder) should call Flush() on a wall-clock timer.
 //
-// The `rosbag2` metadata record (serialized_metadata YAML for `ros2 bag info`) is not
-// generated here; a caller may add it with AddMetadata("rosbag2", {...}).
+// The `rosbag2` metadata record (key serialized_metadata: the bag-info YAML) is not generated:
+// rosbag2's MCAP storage plugin treats it as optional and, without it, builds the bag info from
+// the summary (Statistics, Channels with metadata "offered_qos_profiles", Schemas named
+// "pkg/msg/Type"), all of which are written. A caller may add it with AddMetadata("rosbag2", ...).
 //
 // Not thread safe: the caller serializes calls.
 

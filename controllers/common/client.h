@@ -1,0 +1,78 @@
+#pragma once
+// The controllers' DDS client (issue 5): one participant on the node's domain that
+//   - reads rt/<ns>/scene_info (which bodies exist and take commands),
+//   - subscribes to rt/<ns>/<body>/odom and rt/<ns>/status,
+//   - publishes towsim_msgs ActuatorCommand on rt/<ns>/<body>/command, stamped with the step
+//     (and sim time) of the state it answers,
+//   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
+//     step, call the control law, publish; it ends when the node reports the end of its run
+//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step.
+// It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
+// throws with a clear message. Works in every DDS mode (realtime and fast answer each status
+// they see; lockstep waits for the answer).
+
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace towsim::controllers {
+
+struct ClientOptions {
+  uint32_t domain = 0;
+  std::string ns = "/towsim";
+  std::string body;        // the commanded body
+  double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
+  std::string name = "controller";  // for messages
+};
+
+// the state of the body at one step, from its odometry
+struct BodyState {
+  uint64_t step = 0;
+  double t = 0.0;                       // sim time [s]
+  double x = 0, y = 0, z = 0;           // world NED [m]
+  double roll = 0, pitch = 0, yaw = 0;  // ZYX [rad]
+  double u = 0, v = 0, w = 0;           // body frame [m/s]
+  double p = 0, q = 0, r = 0;           // body frame [rad/s]
+  double x_dot = 0, y_dot = 0, z_dot = 0;  // world NED velocity [m/s]
+  double dt = 0.0;  // sim time since the previous step answered (the scene's step first) [s]
+};
+
+struct Actuation {
+  double thrust = 0.0;    // [N]
+  double rudder = 0.0;    // [rad]
+  double elevator = 0.0;  // [rad]
+};
+
+// "rt/" + ns without its leading slash + "/" ("/" -> "rt/")
+std::string TopicPrefix(const std::string& ns);
+
+// CYCLONEDDS_URI, or throws std::runtime_error saying how to set it
+std::string RequireDdsUri();
+
+// SIGINT / SIGTERM set a flag the loop polls (every 100 ms at most)
+void InstallStopHandlers();
+bool StopRequested();
+
+class LockstepClient {
+ public:
+  using Law = std::function<Actuation(const BodyState&)>;
+
+  explicit LockstepClient(const ClientOptions& options);  // throws std::runtime_error
+  ~LockstepClient();
+  LockstepClient(const LockstepClient&) = delete;
+  LockstepClient& operator=(const LockstepClient&) = delete;
+
+  // runs until the end of the node's run or a stop signal (returns 0), or a timeout / DDS
+  // error (returns 1, message on stderr)
+  int Run(const Law& law);
+
+  uint64_t steps_answered() const { return answered_; }
+
+ private:
+  struct Impl;
+  Impl* impl_;
+  uint64_t answered_ = 0;
+};
+
+}  // namespace towsim::controllers
