@@ -1,9 +1,16 @@
 #include "towfish_depth/depth_law.h"
 
+#include <cmath>
+
 namespace towsim::controllers {
 
-double DepthStep(const DepthParams& p, PidState& state, double z, double z_dot, double dt) {
+double DepthStep(const DepthParams& p, PidState& state, double z, double z_dot, double pitch,
+                 double dt) {
   if (p.hold) return 0.0;
+  if (std::abs(pitch) > p.max_pitch) {
+    state = PidState{};
+    return 0.0;
+  }
   PidParams pid;
   pid.kp = p.kp;
   pid.ki = p.ki;
@@ -11,9 +18,10 @@ double DepthStep(const DepthParams& p, PidState& state, double z, double z_dot, 
   pid.out_min = -p.max_elevator;
   pid.out_max = p.max_elevator;
   pid.rate_limit = p.rate_limit;
-  // "bow up" demand u: positive when too deep; the measurement is the depth, so the
-  // derivative-on-measurement term uses +z_dot (e = z - depth rises with z)
-  return PidStep(pid, state, z - p.depth, -z_dot, dt);
+  // "deeper" demand: e = commanded - z, the measurement z, its rate z_dot; the limits are
+  // symmetric, so the sign applied to the output keeps saturation, rate limit, anti-windup
+  const double deeper = PidStep(pid, state, p.depth - z, z_dot, dt);
+  return p.sign >= 0.0 ? deeper : -deeper;
 }
 
 }  // namespace towsim::controllers

@@ -1,0 +1,66 @@
+#pragma once
+// Minimal flag parsing for the controllers: --name value or --name=value.
+
+#include <cstdlib>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace towsim::controllers {
+
+class Flags {
+ public:
+  // `known`: flag names taking a value; `switches`: flags without one; throws on anything else
+  Flags(int argc, char** argv, const std::vector<std::string>& known,
+        const std::vector<std::string>& switches = {}) {
+    for (int i = 1; i < argc; ++i) {
+      std::string arg = argv[i], value;
+      bool has_value = false;
+      const auto eq = arg.find('=');
+      if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+        value = arg.substr(eq + 1);
+        arg = arg.substr(0, eq);
+        has_value = true;
+      }
+      const std::string name = arg.rfind("--", 0) == 0 ? arg.substr(2) : "";
+      if (Contains(switches, name) && !has_value) {
+        values_[name] = "1";
+      } else if (Contains(known, name)) {
+        if (!has_value) {
+          if (i + 1 >= argc) throw std::runtime_error(arg + " needs a value");
+          value = argv[++i];
+        }
+        values_[name] = value;
+      } else {
+        throw std::runtime_error("unknown option " + std::string(argv[i]));
+      }
+    }
+  }
+  bool Has(const std::string& name) const { return values_.count(name) > 0; }
+  std::string String(const std::string& name, const std::string& fallback) const {
+    const auto it = values_.find(name);
+    return it == values_.end() ? fallback : it->second;
+  }
+  double Number(const std::string& name, double fallback) const {
+    const auto it = values_.find(name);
+    if (it == values_.end()) return fallback;
+    char* end = nullptr;
+    const double v = std::strtod(it->second.c_str(), &end);
+    if (end == it->second.c_str() || *end != '\0') {
+      throw std::runtime_error("--" + name + " " + it->second + ": not a number");
+    }
+    return v;
+  }
+
+ private:
+  static bool Contains(const std::vector<std::string>& v, const std::string& s) {
+    for (const auto& x : v) {
+      if (x == s) return true;
+    }
+    return false;
+  }
+  std::map<std::string, std::string> values_;
+};
+
+}  // namespace towsim::controllers
