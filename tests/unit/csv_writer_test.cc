@@ -16,6 +16,8 @@
 
 #include <gtest/gtest.h>
 
+#include "temp_dir.h"
+
 #include "core/model.h"
 #include "core/simulation.h"
 
@@ -33,25 +35,7 @@ constexpr char kStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
 constexpr double kPrintRelTol = 1e-8;
 constexpr double kPrintAbsTol = 1e-9;
 
-// a directory of its own under the system temp dir, removed at the end of the test
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("towsim_csv_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using test::TempDir;
 
 using Rows = std::vector<std::vector<std::string>>;
 

@@ -22,6 +22,8 @@
 
 #include <gtest/gtest.h>
 
+#include "temp_dir.h"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -29,28 +31,7 @@ namespace fs = std::filesystem;
 const fs::path kSourceDir = TOWSIM_SOURCE_DIR;
 const std::string kSimNode = TOWSIM_SIM_NODE;
 
-// a directory of its own under the system temp dir, removed at the end of the test
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
-    for (char& c : name) {
-      if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-    }
-    path_ = fs::temp_directory_path() / ("towsim_cli_" + name + "_" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
+using towsim::test::TempDir;
 
 std::string ReadFile(const fs::path& path) {
   std::ifstream in(path);
