@@ -25,6 +25,10 @@ Integrator::Integrator(const System& system)
   const int n = system_.num_q(), m = system_.num_lambda();
   r_.setZero(n);
   phi_.setZero(m);
+  q_star_.setZero(n);
+  v_star_.setZero(n);
+  a_const_.setZero(n);
+  a_hat_.setZero(n);
   rhs_.setZero(n + m);
   dq_.setZero(n);
   dl_.setZero(m);
@@ -54,11 +58,16 @@ Integrator::Attempt Integrator::Newton(State* s, double h) {
   State& st = *s;
   const double t1 = st.t + h;
   // q_{n+1} = q* + beta h^2 a^_{n+1}, v_{n+1} = v* + gamma h a^_{n+1}
-  const VectorXd q_star = st.q + h * st.v + (h2 * (0.5 - p.beta)) * st.a_alpha;
-  const VectorXd v_star = st.v + (h * (1.0 - p.gamma)) * st.a_alpha;
-  const VectorXd a_const = (p.alpha_m * st.a_alpha - p.alpha_f * st.a) / (1.0 - p.alpha_f);
+  // preallocated members: Step does not allocate
+  VectorXd& q_star = q_star_;
+  VectorXd& v_star = v_star_;
+  VectorXd& a_const = a_const_;
+  VectorXd& a_hat = a_hat_;
+  q_star.noalias() = st.q + h * st.v + (h2 * (0.5 - p.beta)) * st.a_alpha;
+  v_star.noalias() = st.v + (h * (1.0 - p.gamma)) * st.a_alpha;
+  a_const.noalias() = (p.alpha_m * st.a_alpha - p.alpha_f * st.a) / (1.0 - p.alpha_f);
   const double a_fac = (1.0 - p.alpha_m) / (1.0 - p.alpha_f);
-  VectorXd a_hat = st.a_alpha;  // predictor a^_{n+1} = a^_n
+  a_hat = st.a_alpha;  // predictor a^_{n+1} = a^_n
   st.q = q_star + (p.beta * h2) * a_hat;
   st.v = v_star + (p.gamma * h) * a_hat;
   st.a = a_const + a_fac * a_hat;
@@ -72,7 +81,9 @@ Integrator::Attempt Integrator::Newton(State* s, double h) {
     }
     at.residual = r_.lpNorm<Eigen::Infinity>();
     r_.cwiseAbs().maxCoeff(&at.worst_dof);
-    system_.ToBlocks(-r_, -phi_, &rhs_);
+    // rhs = -[R; Phi] in block order (negated in place: no temporaries)
+    system_.ToBlocks(r_, phi_, &rhs_);
+    rhs_ = -rhs_;
     if (!jac_.Solve(&rhs_)) {
       at.non_finite = true;
       return at;

@@ -56,6 +56,7 @@ class Integrator {
   double q_scale_;
   BlockTridiagonal jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
+  Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
   std::vector<State> backup_;  // one saved state per sub-stepping level
   Attempt last_failure_;
 };

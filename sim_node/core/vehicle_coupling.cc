@@ -12,6 +12,12 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
   const CableEnd* ends[2] = {&c.start, &c.end};
   for (int e = 0; e < 2; ++e)
     if (ends[e]->kind == EndKind::kVehicle) vehicle_end_[e] = ends[e]->body;
+  const size_t nv = system_->model().vehicles.size();
+  vehicles_.resize(nv);
+  f0_.resize(nv);
+  f1_.resize(nv);
+  residual_.resize(nv);
+  residual_prev_.resize(nv);
 }
 
 Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
@@ -47,7 +53,10 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   const double t0 = state->t;
 
   // joint forces at t_n, and the current guess for t_{n+1}
-  std::vector<Vec3> f0(nv), f1(nv), residual(nv), residual_prev(nv);
+  std::vector<Vec3>& f0 = f0_;
+  std::vector<Vec3>& f1 = f1_;
+  std::vector<Vec3>& residual = residual_;
+  std::vector<Vec3>& residual_prev = residual_prev_;
   for (int v = 0; v < nv; ++v) f0[v] = f1[v] = JointForce(start_, v);
   Vec3 p_end_prev[2];
   double omega = 0.5;  // Aitken relaxation factor, first value
@@ -56,7 +65,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   for (int k = 1; k <= max_iterations; ++k) {
     last_iterations_ = k;
     // vehicles over [t_n, t_n + h] under the joint force (Eq. 29-30)
-    std::vector<VehicleState> vehicles = start_.vehicles;
+    std::vector<VehicleState>& vehicles = vehicles_;
+    vehicles = start_.vehicles;  // same size: copies in place
     for (int v = 0; v < nv; ++v) {
       PointLoad load;
       load.force_W0 = f0[v];

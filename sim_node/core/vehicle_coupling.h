@@ -41,8 +41,10 @@ class VehicleCoupling {
   Integrator* integrator_;
   int vehicle_end_[2] = {-1, -1};  // vehicle index holding each cable end, or -1
   int last_iterations_ = 0;
+  // per-step work space, sized once: Step does not allocate
   State start_;
-  std::vector<VehicleState> vehicles_start_;
+  std::vector<VehicleState> vehicles_;
+  std::vector<Vec3> f0_, f1_, residual_, residual_prev_;
 };
 
 }  // namespace towsim::core

@@ -4,3 +4,4 @@ towsim_add_test(block_tridiagonal_test LABEL unit SOURCES block_tridiagonal_test
 towsim_add_test(system_test LABEL unit SOURCES system_test.cc LIBS towsim::core)
 towsim_add_test(integrator_test LABEL unit SOURCES integrator_test.cc LIBS towsim::core)
 towsim_add_test(vehicle_coupling_test LABEL unit SOURCES vehicle_coupling_test.cc LIBS towsim::core)
+towsim_add_test(no_allocation_test LABEL unit SOURCES no_allocation_test.cc LIBS towsim_core_nomalloc)
