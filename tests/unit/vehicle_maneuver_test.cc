@@ -317,6 +317,19 @@ TEST(VehicleStability, SidePullAtTheCentreOfGravityTurnsTheVehicleAway) {
   EXPECT_LT(r_no_munk, -1e-3);
 }
 
+// the perturbations of the stability tests: one velocity component set (index into nu, value)
+// and an initial attitude
+struct Perturbation {
+  const char* name;
+  int index;
+  double value;
+  Vec3 rpy;
+};
+const Perturbation kPerturbations[] = {{"yaw rate 0.1 rad/s", 5, 0.1, Vec3::Zero()},
+                                       {"sway 0.5 m/s", 1, 0.5, Vec3::Zero()},
+                                       {"pitch 5 deg", 0, kSpeed, Vec3(0, 5 * kDeg, 0)},
+                                       {"roll 10 deg", 0, kSpeed, Vec3(10 * kDeg, 0, 0)}};
+
 // 5b. the towing vehicle under its own thrust, perturbed in yaw rate, sway and pitch, returns
 // to straight, level running at 6 m/s (heading is neutral: it keeps the new one)
 TEST(VehicleStability, TowVehiclePerturbedReturnsToStraightLevelRunning) {
@@ -324,17 +337,7 @@ TEST(VehicleStability, TowVehiclePerturbedReturnsToStraightLevelRunning) {
   const VehicleParams veh = test::ReadProjectVehicle("tow_vehicle");
   VehicleCommand cmd;
   cmd.thrust = ThrustFor(veh, env, kSpeed);
-  struct Case {
-    const char* name;
-    int index;
-    double value;
-    Vec3 rpy;
-  };
-  const Case cases[] = {{"yaw rate 0.1 rad/s", 5, 0.1, Vec3::Zero()},
-                        {"sway 0.5 m/s", 1, 0.5, Vec3::Zero()},
-                        {"pitch 5 deg", 0, kSpeed, Vec3(0, 5 * kDeg, 0)},
-                        {"roll 10 deg", 0, kSpeed, Vec3(10 * kDeg, 0, 0)}};
-  for (const Case& c : cases) {
+  for (const Perturbation& c : kPerturbations) {
     VehicleState s = Running(kSpeed, cmd.thrust);
     s.nu(c.index) = c.value;
     s.q_WB = QuaternionFromEulerZYX(c.rpy);
@@ -383,16 +386,6 @@ TEST(VehicleStability, TowfishTowedAtItsBow) {
   PointLoad load;
   load.force_W0 = load.force_W1 = force;
   load.point_B = kBow;
-  struct Case {
-    const char* name;
-    int index;
-    double value;
-    Vec3 rpy;
-  };
-  const Case cases[] = {{"yaw rate 0.1 rad/s", 5, 0.1, Vec3::Zero()},
-                        {"sway 0.5 m/s", 1, 0.5, Vec3::Zero()},
-                        {"pitch 5 deg", 0, kSpeed, Vec3(0, 5 * kDeg, 0)},
-                        {"roll 10 deg", 0, kSpeed, Vec3(10 * kDeg, 0, 0)}};
   // the trimmed equilibrium under this load (a small pitch: see above), reached unperturbed
   constexpr double kH = 0.01, kT = 60.0;
   VehicleState trim = Running(kSpeed, 0.0);
@@ -402,7 +395,7 @@ TEST(VehicleStability, TowfishTowedAtItsBow) {
   const Vec3 trim_rpy = EulerZYX(trim.q_WB);
   std::printf("towfish trim under the bow load: pitch %.3f deg, u %.4f m/s\n",
               trim_rpy.y() / kDeg, trim.nu(0));
-  for (const Case& c : cases) {
+  for (const Perturbation& c : kPerturbations) {
     VehicleState s = Running(kSpeed, 0.0);
     s.nu(c.index) = c.value;
     s.q_WB = QuaternionFromEulerZYX(c.rpy);
