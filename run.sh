@@ -1,15 +1,41 @@
 #!/usr/bin/env bash
-# run.sh — the main job: installs what is missing, builds, then
-#   1. simulates the steady tow scene offline for 300 s (CSV in out/steady_tow/) and prints a
-#      short summary (the verified reference case of the README, under a second);
-#   2. simulates the paper's Case 2, the U-turn (config/scenes/case2_uturn.yaml, 250 s; CSV in
-#      out/case2_uturn/), draws the paper's figures into out/case2_uturn/figures/ and prints the
-#      summary table of scripts/paper_cases.py (steady speed, turning radii, towfish depth,
-#      tensions; docs/paper_cases.md explains the numbers).
+# run.sh — the main job, end to end over loopback DDS. Installs what is missing, builds, then
+#   1. the steady tow scene offline (300 s, under a second; the verified reference of the
+#      README) with a short summary;
+#   2. the paper's Case 2 U-turn (config/scenes/case2_uturn.yaml, 250 s) twice, side by side, as
+#      separate processes on DDS: sim_node (realtime at TOWSIM_RATE x, default 50, waiting for
+#      its controllers before the first step), the manoeuvre runner (thrust, 20 deg rudder from
+#      55 s until the heading reaches 170 deg) and the towfish depth controller, once holding
+#      the towfish's fins at zero (the paper's run) and once holding the towfish at 25 m;
+#   3. each run is recorded by the node to out/<run>.mcap and exported to CSV with
+#      towsim_export, the paper's figures are drawn into out/case2_uturn/figures/, and a
+#      summary table is printed: steady speed, turning radii, towfish depth range, tensions, and
+#      the towfish depth excursion with and without the depth controller.
+# It ends by itself (about 10 s after the build) and leaves no process behind: every process
+# it starts is stopped on exit, also on Ctrl-C. Environment: TOWSIM_DOMAIN (DDS domain of the
+# first run, the second uses +1; default 20), TOWSIM_RATE (default 50).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh" python3
 
-sim_node="$TOWSIM_BUILD_DIR"/sim_node/app/sim_node
+bin="$TOWSIM_BUILD_DIR"
+sim_node="$bin"/sim_node/app/sim_node
+exporter="$bin"/sim_node/app/towsim_export
+runner="$bin"/controllers/maneuver_runner
+depth_ctl="$bin"/controllers/towfish_depth
+domain="${TOWSIM_DOMAIN:-20}"
+rate="${TOWSIM_RATE:-50}"
+scene=config/scenes/case2_uturn.yaml
+
+# every process started here is stopped when the script ends, however it ends
+pids=()
+cleanup() {
+  local pid
+  for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
 
 # a python3 with matplotlib for the figures: setup.sh installs Debian's python3-matplotlib, which
 # belongs to /usr/bin/python3 (a python3 earlier on PATH, e.g. pyenv's, may lack it)
@@ -21,6 +47,7 @@ for candidate in /usr/bin/python3 python3; do
   fi
 done
 
+echo "== 1. steady tow, offline"
 out=out/steady_tow
 mkdir -p "$out"
 # the summary line of sim_node is kept in summary.txt for summarize.py (real-time factor)
@@ -28,12 +55,65 @@ mkdir -p "$out"
   | tee "$out/summary.txt"
 python3 scripts/summarize.py "$out"
 
+# one Case 2 run on DDS: run_uturn NAME DOMAIN DEPTH_CONTROLLER_ARGS...
+# starts the node and both controllers in the background; logs in out/NAME.log/
+run_uturn() {
+  local name="$1" dom="$2"
+  shift 2
+  local logs="out/$name.log"
+  rm -rf "$logs" "out/$name.mcap"
+  mkdir -p "$logs"
+  "$sim_node" --scene "$scene" --mode realtime --rate "$rate" --wait-for-controllers \
+    --duration 250 --set 'script=[]' --domain "$dom" --record "out/$name.mcap" \
+    >"$logs/sim_node.out" 2>"$logs/sim_node.err" &
+  pids+=($!)
+  "$runner" --body tow_vehicle --thrust 4165 --rudder-deg 20 --start 55 --until-yaw-deg 170 \
+    --domain "$dom" >"$logs/maneuver_runner.out" 2>"$logs/maneuver_runner.err" &
+  pids+=($!)
+  "$depth_ctl" --body towfish "$@" --domain "$dom" \
+    >"$logs/towfish_depth.out" 2>"$logs/towfish_depth.err" &
+  pids+=($!)
+}
+
+# waits for the processes of one run (node first); prints the node's summary; fails loudly
+finish_uturn() {
+  local name="$1" node_pid="$2" runner_pid="$3" depth_pid="$4"
+  local logs="out/$name.log" rc=0
+  wait "$node_pid" || rc=$?
+  if ((rc != 0)); then
+    echo "run.sh: error: sim_node ($name) exited with $rc:" >&2
+    cat "$logs/sim_node.err" >&2
+    exit 1
+  fi
+  for pid in "$runner_pid" "$depth_pid"; do
+    rc=0
+    wait "$pid" || rc=$?
+    if ((rc != 0)); then
+      echo "run.sh: error: a controller of $name exited with $rc; see $logs/" >&2
+      cat "$logs"/*.err >&2
+      exit 1
+    fi
+  done
+  echo "[$name] $(tail -n 1 "$logs/sim_node.out")"
+}
+
 echo
+echo "== 2. Case 2 U-turn over DDS: sim_node + maneuver_runner + towfish_depth, twice" \
+     "(realtime x$rate, domains $domain and $((domain + 1)))"
+run_uturn case2_uturn "$domain" --hold
+run_uturn case2_uturn_depth_control "$((domain + 1))" --depth 25
+finish_uturn case2_uturn "${pids[0]}" "${pids[1]}" "${pids[2]}"
+finish_uturn case2_uturn_depth_control "${pids[3]}" "${pids[4]}" "${pids[5]}"
+pids=()
+
+echo
+echo "== 3. recordings -> CSV -> figures and summary"
+for name in case2_uturn case2_uturn_depth_control; do
+  rm -rf "out/$name"
+  "$exporter" "out/$name.mcap" --csv "out/$name" >/dev/null
+done
+"$exporter" out/case2_uturn.mcap --info
 out=out/case2_uturn
-rm -rf "$out"
-mkdir -p "$out"
-"$sim_node" --scene config/scenes/case2_uturn.yaml --mode offline --csv "$out" \
-  | tee "$out/summary.txt"
 if [[ -n "$plot_python" ]]; then
   "$plot_python" scripts/plot_paper.py "$out" "$out/figures" >/dev/null
   echo "figures (Park & Kim Figs. 14-20): $out/figures/"
@@ -41,4 +121,7 @@ else
   echo "note: no python3 with matplotlib found; figures skipped" \
        "(apt-get install python3-matplotlib, then: /usr/bin/python3 scripts/plot_paper.py $out)"
 fi
+echo
 python3 scripts/paper_cases.py --summary "$out"
+echo
+python3 scripts/paper_cases.py --depth-control "$out" out/case2_uturn_depth_control

@@ -6,6 +6,9 @@
     python3 scripts/paper_cases.py --summary DIR              short table (run.sh)
     python3 scripts/paper_cases.py --compare REF DIR [DIR ...]  key numbers side by side and the
                                                               largest differences from REF
+    python3 scripts/paper_cases.py --depth-control REF CTL    Case 2 towfish depth range from the
+                                                              turn command on, without (REF) and
+                                                              with (CTL) a depth controller
 
 Standard library only. DIR holds the CSV files of `sim_node --csv DIR` (README "Output files").
 The case is recognised from the data: Case 2 when the towing vehicle's heading changes by more
@@ -48,6 +51,10 @@ class Run:
 
     def __init__(self, path):
         self.path = path
+        for name in ("bodies.csv", "forces.csv", "cable.csv"):
+            if not os.path.isfile(os.path.join(path, name)):
+                sys.exit("paper_cases: error: %s: no %s here (a directory written by "
+                         "sim_node --csv DIR or towsim_export FILE --csv DIR)" % (path, name))
         self.name = os.path.basename(os.path.normpath(path))
         self.bodies = self._columns(os.path.join(path, "bodies.csv"))
         self.forces = self._columns(os.path.join(path, "forces.csv"))
@@ -625,6 +632,29 @@ def summary(path, out):
         out("  %-48s %s" % (k, v))
 
 
+def depth_range(run, t_from):
+    """(min, max) towfish depth from t_from to the end of the run"""
+    c = run.bodies[run.fish]
+    zs = [z for t, z in zip(c["t"], c["z"]) if t >= t_from - 1e-9]
+    return min(zs), max(zs)
+
+
+def depth_control(ref_path, ctl_path, out):
+    """the towfish depth range of a Case 2 run without (ref) and with (ctl) depth control,
+    both from the turn command of the reference run on (the issue's 'depth excursion')"""
+    ref, ctl = Run(ref_path), Run(ctl_path)
+    if ref.case != 2:
+        sys.exit("paper_cases: error: --depth-control: %s is not a Case 2 (U-turn) run" % ref_path)
+    t_cmd = case2(ref, [].append)["t_cmd"]
+    r0, r1 = depth_range(ref, t_cmd), depth_range(ctl, t_cmd)
+    e0, e1 = r0[1] - r0[0], r1[1] - r1[0]
+    out("towfish depth excursion from the turn command (t >= %.1f s) on:" % t_cmd)
+    out("  %-48s %.2f m (%.1f-%.1f m)" % ("fins held at zero (%s)" % ref.name, e0, *r0))
+    out("  %-48s %.2f m (%.1f-%.1f m)" % ("depth controller (%s)" % ctl.name, e1, *r1))
+    out("  %-48s %.2f (the issue's aim: at most 0.5)" % ("ratio controlled / uncontrolled",
+                                                         e1 / e0 if e0 > 0 else float("nan")))
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("dirs", nargs="+", help="CSV directories written by sim_node --csv")
@@ -632,7 +662,14 @@ def main():
     parser.add_argument("--compare", action="store_true",
                         help="compare the runs with the first (same case)")
     parser.add_argument("--case1", help="a Case 1 run: Case 2 towfish depth relative to it")
+    parser.add_argument("--depth-control", action="store_true",
+                        help="REF CTL: towfish depth excursion without and with depth control")
     args = parser.parse_args()
+    if args.depth_control:
+        if len(args.dirs) != 2:
+            parser.error("--depth-control takes two directories: REF CTL")
+        depth_control(args.dirs[0], args.dirs[1], print)
+        return
     ref1 = Run(args.case1) if args.case1 else None
     if args.summary:
         for d in args.dirs:

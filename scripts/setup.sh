@@ -6,7 +6,10 @@
 #   source scripts/setup.sh [extra-debian-package ...]
 #
 # Afterwards the shell is in the repository root and TOWSIM_BUILD_DIR names the build tree.
-# Environment: TOWSIM_BUILD_DIR (default build), TOWSIM_JOBS (default $(nproc)).
+# Environment: TOWSIM_BUILD_DIR (default build), TOWSIM_JOBS (default $(nproc)),
+# TOWSIM_WITH_NODE=1 (test.sh): also Node.js and npm, for the independent MCAP readers of
+# tests/mcap_js; Debian's `nodejs` and `npm`, each only when its command is missing (a
+# Node.js already on the PATH, e.g. one that bundles npm, is used as it is).
 
 towsim_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$towsim_root"
@@ -17,6 +20,11 @@ towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-
 for towsim_pkg in "$@"; do
   if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib); fi
 done
+
+if [[ "${TOWSIM_WITH_NODE:-0}" == 1 ]]; then
+  command -v node >/dev/null || towsim_packages+=(nodejs)
+  command -v npm >/dev/null || towsim_packages+=(npm)
+fi
 
 # install what is missing (apt-get update only when something is)
 towsim_missing=()

@@ -30,8 +30,7 @@ Vec3 BodyToWorld(double x, double y, double z, double w, const Vec3& v) {
           r20 * v.x + r21 * v.y + r22 * v.z};
 }
 
-double PidStep(const PidParams& p, PidState& s, double error, double measurement_rate,
-               double dt) {
+double PidStep(const PidParams& p, PidState& s, double error, double measurement_rate, double dt) {
   if (!s.initialized) {
     s.initialized = true;
     s.output = 0.0;
@@ -39,7 +38,8 @@ double PidStep(const PidParams& p, PidState& s, double error, double measurement
   const double unsat_before = p.kp * error + p.ki * s.integral - p.kd * measurement_rate;
   const bool high = unsat_before > p.out_max && error > 0.0;
   const bool low = unsat_before < p.out_min && error < 0.0;
-  if (!high && !low) s.integral += error * dt;  // conditional integration
+  const bool outside_zone = p.integral_zone > 0.0 && std::abs(error) >= p.integral_zone;
+  if (!high && !low && !outside_zone) s.integral += error * dt;  // conditional integration
   if (p.ki > 0.0) {
     s.integral = std::clamp(s.integral, p.out_min / p.ki, p.out_max / p.ki);
   }

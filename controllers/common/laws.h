@@ -29,11 +29,15 @@ Vec3 BodyToWorld(double qx, double qy, double qz, double qw, const Vec3& body);
 //   u = kp e + ki I - kd dmeasurement/dt, saturated to [out_min, out_max], rate-limited to
 //   |du/dt| <= rate_limit (<= 0: none). Anti-windup: the integral only grows while the
 //   unsaturated output is within the limits or the error drives it back inside (conditional
-//   integration), and it is clamped so that ki I alone stays within the limits.
+//   integration), and it is clamped so that ki I alone stays within the limits; optionally
+//   only inside an integral zone |error| < integral_zone.
 struct PidParams {
   double kp = 0.0, ki = 0.0, kd = 0.0;
   double out_min = -1.0, out_max = 1.0;
   double rate_limit = 0.0;  // [output units / s]
+  // > 0: the integral only grows while |error| < integral_zone (a large setpoint step is
+  // left to P and D; the integral trims the small steady error that remains)
+  double integral_zone = 0.0;
 };
 struct PidState {
   double integral = 0.0;

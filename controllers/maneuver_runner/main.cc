@@ -1,59 +1,149 @@
-// maneuver_runner: plays the paper's Case 2 (U-turn) against the live state of a node:
-//   maneuver_runner [--body tow_vehicle] [--thrust 4165] [--rudder-deg 20] [--start 55]
-//                   [--until-yaw-deg 170] [--domain 0] [--namespace /towsim] [--timeout 30]
-// Thrust T from the first step; from t >= start the rudder at rudder-deg until the body's yaw
-// reaches until-yaw-deg, then 0. Case 1 (constant thrust): --rudder-deg 0. Needs
-// CYCLONEDDS_URI. Exit 0 at the end of the node's run or on SIGINT/SIGTERM, 1 on an error or a
-// timeout, 2 on a bad command line. Prints the time the turn ended.
+// maneuver_runner: plays a manoeuvre on a vehicle of a running sim_node, against its live
+// state, and prints the trials sheet at the end:
+//   maneuver_runner [--maneuver case1|uturn|zigzag|turning_circle] [--config FILE.yaml]
+//                   [--body tow_vehicle] [--thrust 4165] [--start 55] [--rudder-deg D]
+//                   [--heading-deg P] [--reversals 4] [--port-first] [--until-yaw-deg 170]
+//                   [--until-turn-deg 0] [--results FILE.yaml]
+//                   [--domain 0] [--namespace /towsim] [--timeout 30]
+//   case1           thrust T, rudder 0 (the paper's Case 1)
+//   uturn           from `start` the rudder at D until the yaw reaches --until-yaw-deg, then 0
+//                   (the paper's Case 2; the default manoeuvre)
+//   zigzag          the IMO / ITTC D/P zig-zag (maneuver_runner/zigzag.h): sheet with the
+//                   overshoot angles, initial turning time and period
+//   turning_circle  rudder D held from `start` (maneuver_runner/turning_circle.h): advance,
+//                   transfer, tactical and steady turning diameters
+// Parameters from --config (config/maneuvers/*.yaml) and flags (flags win), see
+// maneuver_runner/maneuver_config.h. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's
+// run or on SIGINT/SIGTERM (the sheet printed either way), 1 on an error or a timeout, 2 on a
+// bad command line or file (the message names the flag or key, its value and the rule).
 
-#include <cstdio>
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "common/client.h"
+#include "common/config_file.h"
 #include "common/flags.h"
 #include "common/laws.h"
+#include "maneuver_runner/maneuver_config.h"
+#include "maneuver_runner/results_sheet.h"
+#include "maneuver_runner/turning_circle.h"
 #include "maneuver_runner/uturn.h"
+#include "maneuver_runner/zigzag.h"
 
 using namespace towsim::controllers;
 
 int main(int argc, char** argv) {
   ClientOptions opt;
   opt.name = "maneuver_runner";
-  UTurnParams p;
+  ManeuverConfig c;
   try {
-    const Flags f(argc, argv,
-                  {"body", "thrust", "rudder-deg", "start", "until-yaw-deg", "domain", "namespace",
-                   "timeout"});
-    opt.body = f.String("body", "tow_vehicle");
+    const Flags f(argc, argv, ManeuverFlagNames(), ManeuverSwitchNames());
+    c = ResolveManeuver(f);
+    opt.body = c.body;
     opt.domain = static_cast<uint32_t>(f.Number("domain", 0));
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0);
-    p.thrust = f.Number("thrust", 4165.0);
-    p.rudder = Rad(f.Number("rudder-deg", 20.0));
-    p.start = f.Number("start", 55.0);
-    p.until_yaw = Rad(f.Number("until-yaw-deg", 170.0));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
     return 2;
   }
+  const double sign = c.port_first ? -1.0 : 1.0;
+  UTurnParams uturn;
+  uturn.thrust = c.thrust;
+  uturn.rudder = c.kind == ManeuverKind::kCase1 ? 0.0 : Rad(c.rudder_deg);
+  uturn.start = c.start;
+  uturn.until_yaw = Rad(c.until_yaw_deg);
+  ZigZagParams zigzag;
+  zigzag.thrust = c.thrust;
+  zigzag.rudder = Rad(c.rudder_deg);
+  zigzag.switch_angle = Rad(c.heading_deg);
+  zigzag.start = c.start;
+  zigzag.reversals = c.reversals;
+  zigzag.port_first = c.port_first;
+  TurningCircleParams circle;
+  circle.thrust = c.thrust;
+  circle.rudder = sign * Rad(c.rudder_deg);
+  circle.start = c.start;
+  circle.until_turn = Rad(c.until_turn_deg);
+
   try {
     RequireDdsUri();
     InstallStopHandlers();
     LockstepClient client(opt);
-    UTurnState state;
-    double turn_end = -1.0, yaw_max = -1e9;
+    UTurnState uturn_state;
+    ZigZagState zigzag_state;
+    TurningCircleState circle_state;
+    std::vector<TrackSample> track;
+    RunSummary summary;
+    bool executed = false;
+    double turn_end = -1.0;
     const int rc = client.Run([&](const BodyState& b) {
-      const bool before = state.turned;
-      const ManeuverCommand c = UTurnStep(p, state, b.t, b.yaw);
-      if (!before && state.turned) turn_end = b.t;
-      if (b.t >= p.start) yaw_max = std::max(yaw_max, Deg(b.yaw));
-      return Actuation{c.thrust, c.rudder, c.elevator};
+      const double speed = std::hypot(b.x_dot, b.y_dot);
+      if (!executed && b.t >= c.start - 1e-9) {
+        executed = true;
+        summary.approach_speed = speed;
+        summary.approach_yaw = b.yaw;
+      }
+      summary.t_end = b.t;
+      if (executed) track.push_back({b.t, b.x, b.y, b.yaw, speed, b.r});
+      ManeuverCommand m;
+      switch (c.kind) {
+        case ManeuverKind::kCase1:
+        case ManeuverKind::kUTurn: {
+          const bool before = uturn_state.turned;
+          m = UTurnStep(uturn, uturn_state, b.t, b.yaw);
+          if (!before && uturn_state.turned) turn_end = b.t;
+          break;
+        }
+        case ManeuverKind::kZigZag:
+          m = ZigZagStep(zigzag, zigzag_state, b.t, b.yaw);
+          break;
+        case ManeuverKind::kTurningCircle:
+          m = TurningCircleStep(circle, circle_state, b.t, b.yaw);
+          break;
+      }
+      return Actuation{m.thrust, m.rudder, m.elevator};
     });
-    std::printf("maneuver_runner: %llu steps answered, turn ended at t = %g s\n",
-                static_cast<unsigned long long>(client.steps_answered()), turn_end);
+    std::printf("maneuver_runner: %s, %llu steps answered", ManeuverName(c.kind),
+                static_cast<unsigned long long>(client.steps_answered()));
+    std::string text, yaml;
+    switch (c.kind) {
+      case ManeuverKind::kCase1:
+      case ManeuverKind::kUTurn:
+        std::printf(", turn ended at t = %g s\n", turn_end);
+        yaml = "maneuver: " + std::string(ManeuverName(c.kind)) +
+               "\nturn_end: " + std::to_string(turn_end) + "\n";
+        break;
+      case ManeuverKind::kZigZag: {
+        const ZigZagResults r = ZigZagSheet(zigzag_state);
+        std::printf("\n");
+        text = ZigZagText(c, summary, r);
+        yaml = ZigZagYaml(c, summary, r);
+        break;
+      }
+      case ManeuverKind::kTurningCircle: {
+        const TurningCircleResults r = TurningCircleSheet(track);
+        std::printf("\n");
+        text = TurningCircleText(c, summary, r);
+        yaml = TurningCircleYaml(c, summary, r);
+        break;
+      }
+    }
+    std::fputs(text.c_str(), stdout);
+    std::fflush(stdout);
+    if (!c.results.empty()) {
+      std::FILE* out = std::fopen(c.results.c_str(), "w");
+      if (out == nullptr || std::fputs(yaml.c_str(), out) < 0 || std::fclose(out) != 0) {
+        std::fprintf(stderr, "maneuver_runner: error: cannot write --results %s\n",
+                     c.results.c_str());
+        return 1;
+      }
+    }
     return rc;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());

@@ -1,15 +1,20 @@
-// towfish_depth: holds a towed body at a commanded depth with its elevators (PID with
-// anti-windup and rate limit, towfish_depth/depth_law.h):
-//   towfish_depth [--body towfish] --depth D [--kp 0.15] [--ki 0.01] [--kd 0.5] [--max-elevator-deg 25]
-//                 [--rate-deg 20] [--max-pitch-deg 30]
-//                 [--elevator-sign -1] [--hold] [--domain 0] [--namespace /towsim] [--timeout 30]
+// towfish_depth: holds a towed body at a commanded depth, or at a commanded altitude above
+// the seabed, with its elevators (PID with anti-windup and rate limit,
+// towfish_depth/depth_law.h; altitude: towfish_depth/seabed.h):
+//   towfish_depth [--body towfish] (--depth D | --altitude A (--seabed-depth B |
+//                 --seabed-profile s0:d0,s1:d1,...) | --hold) [--kp 0.15] [--ki 0.01]
+//                 [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20] [--max-pitch-deg 30]
+//                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30]
 //                 [--log FILE]
-// --elevator-sign 1 for a body that dives on positive elevator (-1: it rises, the towfish); --hold commands zero elevator (the uncontrolled reference). --log writes "t z elevator" per
-// step. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run or on SIGINT/SIGTERM, 1 on
-// an error or a timeout, 2 on a bad command line.
+// Altitude mode: the commanded depth is seabed(s) - A, s the horizontal distance the body has
+// run since the first step (flat seabed at B, or piecewise linear through the profile).
+// --elevator-sign 1 for a body that dives on positive elevator (-1: it rises, the towfish);
+// --hold commands zero elevator (the uncontrolled reference). --log writes
+// "t z elevator target_depth" per step. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run
+// or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line.
 
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <string>
@@ -18,6 +23,7 @@
 #include "common/flags.h"
 #include "common/laws.h"
 #include "towfish_depth/depth_law.h"
+#include "towfish_depth/seabed.h"
 
 using namespace towsim::controllers;
 
@@ -26,12 +32,50 @@ int main(int argc, char** argv) {
   opt.name = "towfish_depth";
   DepthParams p;
   std::string log_path;
+  bool altitude_mode = false;
+  double altitude = 0.0;
+  SeabedProfile seabed;
   try {
     const Flags f(argc, argv,
-                  {"body", "depth", "kp", "ki", "kd", "max-elevator-deg", "rate-deg", "max-pitch-deg", "elevator-sign", "domain",
-                   "namespace", "timeout", "log"},
+                  {"body", "depth", "kp", "ki", "kd", "max-elevator-deg", "rate-deg",
+                   "max-pitch-deg", "elevator-sign", "domain", "namespace", "timeout", "log",
+                   "altitude", "seabed-depth", "seabed-profile"},
                   {"hold"});
-    if (!f.Has("depth") && !f.Has("hold")) throw std::runtime_error("--depth D is required");
+    altitude_mode = f.Has("altitude");
+    if (!f.Has("depth") && !f.Has("hold") && !altitude_mode) {
+      throw std::runtime_error("--depth D (or --altitude A with a seabed, or --hold) is required");
+    }
+    if (altitude_mode && f.Has("depth")) {
+      throw std::runtime_error("--depth and --altitude: give one of them");
+    }
+    if (altitude_mode) {
+      altitude = f.Number("altitude", 0.0);
+      if (!(altitude > 0.0)) {
+        throw std::runtime_error("--altitude " + f.String("altitude", "") + ": must be > 0 [m]");
+      }
+      if (f.Has("seabed-depth") == f.Has("seabed-profile")) {
+        throw std::runtime_error("--altitude needs one of --seabed-depth B, --seabed-profile");
+      }
+      if (f.Has("seabed-depth")) {
+        const double b = f.Number("seabed-depth", 0.0);
+        if (!(b > altitude)) {
+          throw std::runtime_error("--seabed-depth " + f.String("seabed-depth", "") +
+                                   ": must be > --altitude (the target depth seabed - altitude "
+                                   "must be below the surface)");
+        }
+        seabed = FlatSeabed(b);
+      } else {
+        seabed = ParseSeabedProfile(f.String("seabed-profile", ""), "--seabed-profile");
+        for (double d : seabed.depth) {
+          if (!(d > altitude)) {
+            throw std::runtime_error("--seabed-profile " + f.String("seabed-profile", "") +
+                                     ": every depth must be > --altitude");
+          }
+        }
+      }
+    } else if (f.Has("seabed-depth") || f.Has("seabed-profile")) {
+      throw std::runtime_error("--seabed-depth / --seabed-profile need --altitude A");
+    }
     opt.body = f.String("body", "towfish");
     opt.domain = static_cast<uint32_t>(f.Number("domain", 0));
     opt.ns = f.String("namespace", "/towsim");
@@ -60,9 +104,13 @@ int main(int argc, char** argv) {
     }
     LockstepClient client(opt);
     PidState state;
+    AlongTrack track;
     const int rc = client.Run([&](const BodyState& b) {
+      if (altitude_mode) p.depth = AltitudeTargetDepth(seabed, track.Update(b.x, b.y), altitude);
       const double elevator = DepthStep(p, state, b.z, b.z_dot, b.pitch, b.dt);
-      if (log != nullptr) std::fprintf(log, "%.6f %.6f %.6f\n", b.t, b.z, elevator);
+      if (log != nullptr) {
+        std::fprintf(log, "%.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth);
+      }
       return Actuation{0.0, 0.0, elevator};
     });
     if (log != nullptr) std::fclose(log);

@@ -55,13 +55,18 @@ std::string Usage() {
          "                        in step with the controllers) or offline (no DDS)\n"
          "  --domain N            DDS domain id (default 0)\n"
          "  --namespace NS        ROS 2 namespace of the topics (default /towsim)\n"
-         "  --duration S          simulated time [s] (default: the scene's time.duration)\n"
+         "  --duration S          simulated time [s] (default offline: the scene's\n"
+         "                        time.duration; DDS modes: until stopped)\n"
          "  --rate R              wall-clock pacing factor in realtime mode (default 1)\n"
          "  --set KEY.PATH=VALUE  override a scalar scene key, e.g. --set cable.elements=40\n"
          "                        (repeatable)\n"
          "  --csv DIR             write bodies.csv, cable.csv, forces.csv, status.csv to DIR\n"
          "                        at the scene's time.output_rate\n"
-         "  --record FILE.mcap    record to MCAP (not built yet)\n"
+         "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2)\n"
+         "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
+         "  --wait-for-controllers\n"
+         "                        DDS modes: the first step waits until every vehicle that\n"
+         "                        takes commands has received one (status: waiting)\n"
          "  -h, --help            print this help and exit\n"
          "  --version             print the version and exit\n"
          "\n"
@@ -86,6 +91,14 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     if (arg == "--version") {
       o.version = true;
+      continue;
+    }
+    if (arg == "--paused") {
+      o.paused = true;
+      continue;
+    }
+    if (arg == "--wait-for-controllers") {
+      o.wait_for_controllers = true;
       continue;
     }
     static const char* const kWithValue[] = {"--scene", "--mode",   "--duration", "--rate",
@@ -153,6 +166,10 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
+  if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
+    return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +
+                ": needs a DDS mode (realtime, fast or lockstep); offline takes no commands");
+  }
   return result;
 }
 

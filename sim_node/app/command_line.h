@@ -28,6 +28,8 @@ struct Options {
   std::string record_file;             // --record FILE.mcap; empty: no recording
   std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
+  bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)
+  bool wait_for_controllers = false;   // --wait-for-controllers: first step once all commanded
   bool help = false;                   // --help / -h
   bool version = false;                // --version
 };

@@ -14,6 +14,7 @@
 
 #include "app/dds_pacer.h"
 #include "app/dds_publisher.h"
+#include "app/mcap_recording.h"
 #include "app/stop_signal.h"
 #include "core/script.h"
 #include "dds/command_arbiter.h"
@@ -92,6 +93,7 @@ class DdsNode {
   bool WaitLockstep();
   // paused: status now and then, and wait for control requests
   void Idle();
+  bool AllCommanded() const;  // every vehicle that takes commands has received one
   // one step with the commands held; false on solver failure
   bool DoStep();
   // back to the scene's initial state; false on solver failure
@@ -113,6 +115,7 @@ class DdsNode {
   std::optional<core::Simulation> sim_;
   std::optional<core::ScriptRunner> script_;
   std::unique_ptr<dds::Participant> participant_;
+  std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
   PublishStrides strides_;
   long output_stride_ = 1;
@@ -123,6 +126,7 @@ class DdsNode {
   uint64_t step_ = 0;
   long steps_to_run_ = -1;  // < 0: no end
   bool paused_ = false;
+  bool waiting_for_controllers_ = false;  // --wait-for-controllers, before the first command
   long step_budget_ = 0;  // STEP n while paused: steps left
   core::StepStatus last_status_;
   double step_wall_ = 0.0;  // [s]
@@ -219,6 +223,14 @@ int DdsNode::Setup() {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;
   }
+  if (!opt_.record_file.empty()) {
+    try {
+      recording_ = std::make_unique<McapRecording>(opt_.record_file);
+      endpoints_->StartRecording(*participant_, recording_.get());
+    } catch (const std::exception& e) {
+      return bad("--record " + opt_.record_file + ": " + e.what());
+    }
+  }
 
   strides_.clock = Stride(opt_.rates.clock, h_);
   strides_.odom = Stride(opt_.rates.odom, h_);
@@ -229,6 +241,7 @@ int DdsNode::Setup() {
   output_stride_ = Stride(model_.time.output_rate, h_);
   if (std::isfinite(opt_.duration)) steps_to_run_ = std::max(0L, std::lround(opt_.duration / h_));
   paused_ = opt_.start_paused;
+  waiting_for_controllers_ = opt_.wait_for_controllers && arbiter_->size() > 0;
   run_id_ = NewRunId(model_.name);
   return kExitOk;
 }
@@ -260,6 +273,14 @@ int DdsNode::Run() {
       continue;
     }
     TakeCommands();
+    if (waiting_for_controllers_) {
+      if (!AllCommanded()) {
+        Idle();
+        continue;
+      }
+      waiting_for_controllers_ = false;
+      if (realtime()) pacer_.Start(period());  // the pacing starts with the first step
+    }
     if (lockstep() && !WaitLockstep()) continue;
     if (realtime()) {
       const bool on_time = pacer_.WaitForDeadline(
@@ -280,6 +301,12 @@ int DdsNode::Run() {
     Output(last_status_, std::lround(step_wall_ * 1e6));
   }
   Summary(Seconds(Clock::now() - start_wall_));
+  if (recording_) {
+    recording_->Close();
+    std::fprintf(stderr, "sim_node: recorded %llu messages on %zu topics to %s\n",
+                 static_cast<unsigned long long>(recording_->message_count()),
+                 recording_->topic_count(), recording_->path().c_str());
+  }
   return exit_code;
 }
 
@@ -307,6 +334,7 @@ void DdsNode::PublishInitial() {
 
 uint8_t DdsNode::RunningState() const {
   if (paused_ && step_budget_ == 0) return kPaused;
+  if (waiting_for_controllers_) return kWaiting;
   if (has_lockstep_vehicles_ && !arbiter_->ReadyFor(step_)) return kWaiting;
   return kRunning;
 }
@@ -468,9 +496,16 @@ bool DdsNode::WaitLockstep() {
 void DdsNode::Idle() {
   if (Seconds(Clock::now() - last_status_wall_) >= kIdleStatusPeriod) {
     endpoints_->PublishState(*sim_, step_, strides_, /*all=*/true);
-    PublishStatus(kPaused);
+    PublishStatus(RunningState());
   }
   endpoints_->WaitForInput(kWaitSlice);
+}
+
+bool DdsNode::AllCommanded() const {
+  for (int i = 0; i < arbiter_->size(); ++i) {
+    if (!arbiter_->commanded(i)) return false;
+  }
+  return true;
 }
 
 bool DdsNode::DoStep() {

@@ -61,6 +61,13 @@ struct DdsNodeOptions {
   PublishRates rates;
   bool use_script = true;     // the scene's script drives the vehicles between commands
   bool start_paused = false;  // wait for SimControl RESUME / STEP before the first step
+  // MCAP recording of every message the node publishes (sim_node --record); empty: none.
+  // Each message is serialized once and the same bytes are published and recorded (see
+  // app/dds_publisher.h); the file is completed at the end of the run and on SIGINT / SIGTERM.
+  std::string record_file;
+  // wait before the first step until every vehicle that takes commands has received one (so
+  // controllers started beside the node miss no step, in every mode; the status says waiting)
+  bool wait_for_controllers = false;
   // called with the state at t = 0, every k = max(1, round(1 / (output_rate h))) steps and at
   // the last state (e.g. CsvWriter::Write); may throw (then RunDdsNode throws)
   std::function<void(const core::Simulation&, const core::StepStatus&, long wall_us)> output;

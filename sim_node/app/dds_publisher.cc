@@ -1,6 +1,7 @@
 #include "app/dds_publisher.h"
 
 #include <cmath>
+#include <string>
 
 namespace towsim::app {
 namespace {
@@ -37,7 +38,7 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
     bodies_.push_back(std::make_unique<BodyEndpoints>(BodyEndpoints{
         std::move(odom_topic), std::move(force_topic), std::move(odom), std::move(force),
         std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, name),
-        std::make_unique<dds::WrenchStampedMessage>(name)}));
+        std::make_unique<dds::WrenchStampedMessage>(name), Recorded{}, Recorded{}}));
   }
   const int num_spheres = sim.num_spheres();
   for (int v : command_vehicles) {
@@ -50,45 +51,111 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
   waitset_.Attach(control_reader_.condition());
 }
 
+template <class T>
+void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg) {
+  if (recording_ == nullptr) {
+    writer.Write(msg);
+    return;
+  }
+  // serialized once: these bytes go to DDS and into the recording
+  const dds::CdrSample sample = dds::CdrSample::FromSample(*recorded.type, &msg);
+  const dds_time_t now = dds_time();
+  if (writer.matched()) {
+    const dds_return_t rc = sample.Write(writer.get(), now);
+    if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
+  }
+  sample.CopyTo(&buffer_);
+  recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                    buffer_.data(), buffer_.size());
+}
+
+NodeEndpoints::Recorded NodeEndpoints::AddRecorded(const dds::Participant& participant,
+                                                   const std::string& topic,
+                                                   const dds_topic_descriptor_t* descriptor,
+                                                   bool transient_local) {
+  Recorded r;
+  for (const auto& t : raw_types_) {
+    if (t->descriptor() == descriptor) r.type = t.get();
+  }
+  if (r.type == nullptr) {
+    raw_types_.push_back(std::make_unique<dds::RawType>(participant, descriptor));
+    r.type = raw_types_.back().get();
+  }
+  r.channel = recording_->AddTopic(topic, descriptor->m_typename, transient_local);
+  return r;
+}
+
+void NodeEndpoints::StartRecording(const dds::Participant& participant, McapRecording* recording) {
+  recording_ = recording;
+  if (recording_ == nullptr) return;
+  scene_rec_ = AddRecorded(participant, scene_.topic_name(), &towsim_msgs_msg_dds__SceneInfo__desc,
+                           /*transient_local=*/true);
+  clock_rec_ =
+      AddRecorded(participant, clock_.topic_name(), &rosgraph_msgs_msg_dds__Clock__desc, false);
+  status_rec_ =
+      AddRecorded(participant, status_.topic_name(), &towsim_msgs_msg_dds__SimStatus__desc, false);
+  cable_rec_ =
+      AddRecorded(participant, cable_.topic_name(), &towsim_msgs_msg_dds__CableState__desc, false);
+  for (auto& b : bodies_) {
+    b->odom_rec =
+        AddRecorded(participant, b->odom.topic_name(), &nav_msgs_msg_dds__Odometry__desc, false);
+    b->force_rec = AddRecorded(participant, b->force.topic_name(),
+                               &geometry_msgs_msg_dds__WrenchStamped__desc, false);
+  }
+}
+
 void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
                                  const PublishStrides& strides, bool all) {
   for (size_t b = 0; b < bodies_.size(); ++b) {
     BodyEndpoints& e = *bodies_[b];
-    if (Due(step, strides.odom, all) && e.odom.matched()) {
+    if (Due(step, strides.odom, all) && Wanted(e.odom)) {
       dds::ToOdometry(sim, static_cast<int>(b), &e.odom_msg->msg);
-      e.odom.Write(e.odom_msg->msg);
+      Emit(e.odom, e.odom_rec, e.odom_msg->msg);
     }
-    if (Due(step, strides.cable_force, all) && e.force.matched()) {
+    if (Due(step, strides.cable_force, all) && Wanted(e.force)) {
       dds::ToCableForce(sim, static_cast<int>(b), &e.force_msg->msg);
-      e.force.Write(e.force_msg->msg);
+      Emit(e.force, e.force_rec, e.force_msg->msg);
     }
   }
-  if (Due(step, strides.cable_state, all) && cable_.matched()) {
+  if (Due(step, strides.cable_state, all) && Wanted(cable_)) {
     dds::ToCableState(sim, step, cable_msg_.get());
-    cable_.Write(cable_msg_->msg);
+    Emit(cable_, cable_rec_, cable_msg_->msg);
   }
-  if (Due(step, strides.clock, all) && clock_.matched()) {
+  if (Due(step, strides.clock, all) && Wanted(clock_)) {
     dds::ToClock(sim.time(), &clock_msg_);
-    clock_.Write(clock_msg_);
+    Emit(clock_, clock_rec_, clock_msg_);
   }
 }
 
 void NodeEndpoints::PublishStatus(const dds::StatusSample& sample) {
-  if (!status_.matched()) return;
+  if (!Wanted(status_)) return;
   dds::ToSimStatus(sample, &status_msg_);
-  status_.Write(status_msg_.msg);
+  Emit(status_, status_rec_, status_msg_.msg);
 }
 
 void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
   // transient local: written even without a reader, for late joiners
   dds::ToSceneInfo(sample, &scene_msg_);
-  scene_.Write(scene_msg_.msg);
+  if (recording_ == nullptr) {
+    scene_.Write(scene_msg_.msg);
+    return;
+  }
+  const dds::CdrSample s = dds::CdrSample::FromSample(*scene_rec_.type, &scene_msg_.msg);
+  const dds_time_t now = dds_time();
+  const dds_return_t rc = s.Write(scene_.get(), now);
+  if (rc < 0) throw dds::DdsError("writing to " + scene_.topic_name(), rc);
+  s.CopyTo(&buffer_);
+  recording_->Write(scene_rec_.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                    buffer_.data(), buffer_.size());
 }
 
 void NodeEndpoints::Flush(double timeout) {
   dds_wait_for_acks(status_.get(), Nanoseconds(timeout));
 }
 
-void NodeEndpoints::WaitForInput(double timeout) { waitset_.Wait(Nanoseconds(timeout)); }
+void NodeEndpoints::WaitForInput(double timeout) {
+  waitset_.Wait(Nanoseconds(timeout));
+  if (recording_ != nullptr) recording_->FlushIfDue();  // idle: no Write() flushes
+}
 
 }  // namespace towsim::app

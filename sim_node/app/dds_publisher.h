@@ -8,9 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "app/mcap_recording.h"
 #include "core/simulation.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
+#include "dds/raw_cdr.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
 
@@ -38,6 +40,10 @@ class NodeEndpoints {
                     bool all);
   void PublishStatus(const dds::StatusSample& sample);
   void PublishSceneInfo(const dds::SceneInfoSample& sample);
+  // from now on, every message published is also written to `recording` (one channel per
+  // writer); throws dds::DdsError (serializer probe) or std::invalid_argument (a type without
+  // ROS 2 definition)
+  void StartRecording(const dds::Participant& participant, McapRecording* recording);
   // waits up to `timeout` [s] until the readers acknowledged status and scene info (exit)
   void Flush(double timeout);
 
@@ -49,12 +55,28 @@ class NodeEndpoints {
   void WaitForInput(double timeout);
 
  private:
+  // the recording side of one writer
+  struct Recorded {
+    const dds::RawType* type = nullptr;
+    std::uint16_t channel = 0;
+  };
+  template <class T>
+  bool Wanted(const dds::Writer<T>& writer) const {
+    return recording_ != nullptr || writer.matched();
+  }
+  // publishes `msg` on `writer` (if matched) and records it (if recording)
+  template <class T>
+  void Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg);
+  Recorded AddRecorded(const dds::Participant& participant, const std::string& topic,
+                       const dds_topic_descriptor_t* descriptor, bool transient_local);
+
   struct BodyEndpoints {
     dds::Topic odom_topic, force_topic;
     dds::Writer<dds::OdometryMsg> odom;
     dds::Writer<dds::WrenchStampedMsg> force;
     std::unique_ptr<dds::OdometryMessage> odom_msg;
     std::unique_ptr<dds::WrenchStampedMessage> force_msg;
+    Recorded odom_rec, force_rec;
   };
 
   dds::Topic clock_topic_, cable_topic_, status_topic_, scene_topic_, control_topic_;
@@ -72,6 +94,11 @@ class NodeEndpoints {
   std::unique_ptr<dds::CableStateMessage> cable_msg_;
   dds::SimStatusMessage status_msg_;
   dds::SceneInfoMessage scene_msg_;
+
+  McapRecording* recording_ = nullptr;
+  std::vector<std::unique_ptr<dds::RawType>> raw_types_;  // one per type recorded
+  Recorded clock_rec_, cable_rec_, status_rec_, scene_rec_;
+  std::vector<std::uint8_t> buffer_;  // the bytes of the message being recorded
 };
 
 }  // namespace towsim::app

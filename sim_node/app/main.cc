@@ -24,9 +24,11 @@ constexpr int kExitBadInput = 2;
 
 int Run(const towsim::app::Options& options) {
   using towsim::app::Mode;
-  if (!options.record_file.empty()) {
+  if (!options.record_file.empty() && options.mode == Mode::kOffline) {
+    // the recording holds what the node publishes on DDS; offline publishes nothing
     std::fprintf(stderr,
-                 "sim_node: error: --record %s: MCAP recording is not built yet; use --csv DIR\n",
+                 "sim_node: error: --record %s: recording needs a DDS mode (realtime, fast or "
+                 "lockstep): --mode offline publishes nothing; use --mode fast, or --csv DIR\n",
                  options.record_file.c_str());
     return kExitBadInput;
   }
@@ -63,6 +65,9 @@ int Run(const towsim::app::Options& options) {
     const towsim::core::Publishing& pub = model.publishing;
     dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
     dds.command_timeout = pub.command_timeout;
+    dds.record_file = options.record_file;
+    dds.start_paused = options.paused;
+    dds.wait_for_controllers = options.wait_for_controllers;
     if (csv) {
       dds.output = [&](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
                        long us) { csv->Write(s, st, us); };

@@ -49,6 +49,7 @@ std::uint16_t McapWriter::AddSchema(const std::string& name, const std::string& 
   // written at once, outside chunks, so a recovered file has it before any chunk using it
   WriteRecord(Op::kSchema, content.bytes());
   schema_records_.push_back(content.bytes());
+  schema_names_[id] = name;
   return id;
 }
 
@@ -69,6 +70,8 @@ std::uint16_t McapWriter::AddChannel(std::uint16_t schema_id, const std::string&
   content.Map(metadata);
   WriteRecord(Op::kChannel, content.bytes());
   channel_records_[id] = content.bytes();
+  channel_summaries_[id] = {topic, message_encoding,
+                            schema_id == 0 ? std::string() : schema_names_[schema_id], metadata, 0};
   return id;
 }
 
@@ -111,6 +114,15 @@ void McapWriter::Write(std::uint16_t channel_id, std::uint32_t sequence, std::ui
   ++channel_message_counts_[channel_id];
 
   if (chunk_.size() >= options_.chunk_size) CloseChunk();
+}
+
+std::map<std::uint16_t, McapWriter::ChannelSummary> McapWriter::channel_summaries() const {
+  std::map<std::uint16_t, ChannelSummary> out = channel_summaries_;
+  for (auto& [id, summary] : out) {
+    const auto it = channel_message_counts_.find(id);
+    summary.message_count = it == channel_message_counts_.end() ? 0 : it->second;
+  }
+  return out;
 }
 
 void McapWriter::AddMetadata(const std::string& name, const mcap::StringMap& metadata) {

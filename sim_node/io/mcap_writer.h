@@ -21,10 +21,10 @@
 // of log time; McapReader::Recover reads every complete chunk of such a file. A caller whose
 // messages may stop arriving (a recorder) should call Flush() on a wall-clock timer.
 //
-// The `rosbag2` metadata record (key serialized_metadata: the bag-info YAML) is not generated:
-// rosbag2's MCAP storage plugin treats it as optional and, without it, builds the bag info from
-// the summary (Statistics, Channels with metadata "offered_qos_profiles", Schemas named
-// "pkg/msg/Type"), all of which are written. A caller may add it with AddMetadata("rosbag2", ...).
+// The `rosbag2` metadata record (key serialized_metadata: the bag-info YAML) is written by
+// io/ros2_schemas AddRosbag2Metadata(writer) before Close(); rosbag2's MCAP storage plugin
+// completes it from the summary (Statistics, Channels with metadata "offered_qos_profiles",
+// Schemas named "pkg/msg/Type"), all of which are written.
 //
 // Not thread safe: the caller serializes calls.
 
@@ -94,6 +94,19 @@ class McapWriter {
   std::uint64_t message_count() const { return message_count_; }
   std::uint32_t chunk_count() const { return static_cast<std::uint32_t>(chunk_indexes_.size()); }
 
+  // what the summary will say so far, for records that describe the file (the rosbag2
+  // metadata record of io/ros2_schemas): per channel id its topic, schema and message count
+  struct ChannelSummary {
+    std::string topic;
+    std::string message_encoding;
+    std::string schema_name;  // "" for schema id 0
+    mcap::StringMap metadata;
+    std::uint64_t message_count = 0;
+  };
+  std::map<std::uint16_t, ChannelSummary> channel_summaries() const;
+  std::uint64_t message_start_time() const { return message_start_time_; }  // [ns], 0 if none
+  std::uint64_t message_end_time() const { return message_end_time_; }      // [ns], 0 if none
+
  private:
   void WriteBytes(const void* data, std::size_t size);
   void WriteRecord(mcap::Op op, const std::string& content);
@@ -115,6 +128,8 @@ class McapWriter {
   std::vector<std::string> chunk_indexes_;
   std::vector<std::string> metadata_indexes_;
   std::uint16_t next_schema_id_ = 1;
+  std::map<std::uint16_t, std::string> schema_names_;          // by schema id
+  std::map<std::uint16_t, ChannelSummary> channel_summaries_;  // counts filled on demand
 
   // statistics
   std::uint64_t message_count_ = 0;

@@ -433,6 +433,38 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
   EXPECT_NE(node.out().find("lockstep timeouts 2"), std::string::npos) << node.out();
 }
 
+// domain 51: --wait-for-controllers holds the first step until every commanded vehicle has a
+// command, so a controller started late misses nothing (realtime, where the node does not
+// otherwise wait): no failsafe, and the status says waiting meanwhile
+TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
+  constexpr uint8_t kWaiting = towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
+  Observer watch(51);
+  Process node(Node(kCase1, "realtime", 51,
+                    {"--duration", "10", "--rate", "20", "--wait-for-controllers", "--set",
+                     "script=[]"}),
+               LogPrefix("node"));
+  Status waiting;
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.state == kWaiting; }, &waiting));
+  EXPECT_EQ(waiting.step, 0u);
+  // 1.5 s of wall time is 30 s of simulated time at rate 20: without the wait the run
+  // would be over (and in failsafe) before the controller starts
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  Status still;
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.state == kWaiting; }, &still));
+  EXPECT_EQ(still.step, 0u);
+  Process controller(Controller(51, {"--command", "tow_vehicle@0=4500,0,0"}),
+                     LogPrefix("controller"));
+  Status end;
+  ASSERT_TRUE(
+      watch.WaitFor([](const Status& s) { return s.state == kFinished; }, &end, kProcessTimeout));
+  EXPECT_EQ(end.step, 200u);
+  EXPECT_EQ(end.failsafe_count, 0u);
+  EXPECT_GE(end.received, 2u * 200u);  // both vehicles, every step
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();
+}
+
 // domain 46
 TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
   Observer watch(46);

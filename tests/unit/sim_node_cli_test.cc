@@ -226,9 +226,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadArgs{"NamespaceWithoutSlash",
                 {"--scene", kCatenary, "--mode", "fast", "--namespace", "towsim"},
                 {"--namespace towsim", "must start with '/'"}},
-        BadArgs{"RecordNotBuilt",
+        BadArgs{"PausedOffline",
+                {"--scene", kCatenary, "--mode", "offline", "--paused"},
+                {"--paused", "needs a DDS mode"}},
+        BadArgs{"RecordOffline",
                 {"--scene", kCatenary, "--mode", "offline", "--record", "x.mcap"},
-                {"--record", "not built yet"}}),
+                {"--record x.mcap", "needs a DDS mode"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SimNodeCliTest, HelpAndVersionExitZero) {

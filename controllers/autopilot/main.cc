@@ -1,0 +1,101 @@
+// autopilot: speed, heading and (optionally) depth hold for a vehicle of a running sim_node,
+// with waypoint following (LOS) and lawn-mower surveys (autopilot/autopilot_law.h,
+// autopilot/guidance.h):
+//   autopilot [--config FILE.yaml] [--body tow_vehicle] [--speed 6] [--heading-deg 0]
+//             [--depth Z] [--legs N --leg-length L --spacing S [--survey-origin X,Y]
+//              [--survey-heading-deg H] [--turn starboard|port]] [--lookahead 60]
+//             [--acceptance-radius 30] [--heading-kp ..] [--heading-ki ..] [--heading-kd ..]
+//             [--speed-kp ..] [--speed-ki ..] [--log FILE] [--domain 0] [--namespace /towsim]
+//             [--timeout 30]
+// Setpoints from t = 0, changed by the file's `schedule`; with waypoints (file) or a survey
+// (flags or file) the heading setpoint comes from the guidance. --log writes one line per
+// step: "t x y yaw u speed_d heading_d thrust rudder elevator waypoint". At the end it prints
+// the waypoints with the time each was reached. Needs CYCLONEDDS_URI. Exit 0 at the end of
+// the node's run or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line or
+// configuration file (naming the flag or key, its value and the rule).
+
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+
+#include "autopilot/autopilot_config.h"
+#include "autopilot/autopilot_law.h"
+#include "autopilot/guidance.h"
+#include "common/client.h"
+#include "common/flags.h"
+#include "common/laws.h"
+
+using namespace towsim::controllers;
+
+int main(int argc, char** argv) {
+  ClientOptions opt;
+  opt.name = "autopilot";
+  AutopilotConfig c;
+  try {
+    const Flags f(argc, argv, AutopilotFlagNames(), AutopilotSwitchNames());
+    c = ResolveAutopilot(f);
+    opt.body = c.body;
+    opt.domain = static_cast<uint32_t>(f.Number("domain", 0));
+    opt.ns = f.String("namespace", "/towsim");
+    opt.timeout = f.Number("timeout", 30.0);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "autopilot: error: %s\n", e.what());
+    return 2;
+  }
+  if (c.gains.depth_enabled && c.body == "tow_vehicle") {
+    std::fprintf(stderr,
+                 "autopilot: note: depth hold on %s, a surface-piercing semi-submersible: its "
+                 "waterplane (49 kN/m) dominates the elevators' lift; expect < 0.2 m of effect\n",
+                 c.body.c_str());
+  }
+  std::FILE* log = nullptr;
+  try {
+    RequireDdsUri();
+    InstallStopHandlers();
+    if (!c.log.empty()) {
+      log = std::fopen(c.log.c_str(), "w");
+      if (log == nullptr) throw std::runtime_error("cannot write --log " + c.log);
+    }
+    LockstepClient client(opt);
+    AutopilotState state;
+    WaypointTracker tracker;
+    tracker.waypoints = c.waypoints;
+    tracker.lookahead = c.lookahead;
+    tracker.acceptance_radius = c.acceptance_radius;
+    const int rc = client.Run([&](const BodyState& b) {
+      AutopilotSetpoint sp = SetpointAt(c, b.t);
+      if (c.follow_waypoints) sp.heading = TrackWaypoints(tracker, b.t, b.x, b.y, b.yaw);
+      AutopilotMeasurement m;
+      m.u = b.u;
+      m.yaw = b.yaw;
+      m.r = b.r;
+      m.z = b.z;
+      m.z_dot = b.z_dot;
+      const AutopilotCommand a = AutopilotStep(c.gains, state, sp, m, b.dt);
+      if (log != nullptr) {
+        std::fprintf(log, "%.4f %.4f %.4f %.6f %.5f %.4f %.6f %.3f %.6f %.6f %zu\n", b.t, b.x, b.y,
+                     b.yaw, b.u, sp.speed, sp.heading, a.thrust, a.rudder, a.elevator,
+                     tracker.target);
+      }
+      return Actuation{a.thrust, a.rudder, a.elevator};
+    });
+    if (log != nullptr) std::fclose(log);
+    log = nullptr;
+    std::printf("autopilot: %llu steps answered\n",
+                static_cast<unsigned long long>(client.steps_answered()));
+    for (size_t i = 0; i < tracker.waypoints.size(); ++i) {
+      const bool reached = i < tracker.reached_at.size() && tracker.reached_at[i] >= 0.0;
+      std::printf("autopilot: waypoint %zu (%.1f, %.1f) %s", i + 1, tracker.waypoints[i].x,
+                  tracker.waypoints[i].y, reached ? "reached at t = " : "not reached\n");
+      if (reached) {
+        std::printf("%.2f s, %.1f m off\n", tracker.reached_at[i], tracker.miss[i]);
+      }
+    }
+    return rc;
+  } catch (const std::exception& e) {
+    if (log != nullptr) std::fclose(log);
+    std::fprintf(stderr, "autopilot: error: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,249 @@
+#include "app/export_csv.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <stdexcept>
+#include <system_error>
+#include <vector>
+
+#include "core/vehicle_model.h"
+#include "io/cdr_messages.h"
+#include "io/cdr_reader.h"
+#include "io/mcap_reader.h"
+
+namespace towsim::app {
+namespace {
+
+using io::cdr::CableState;
+using io::cdr::Odometry;
+using io::cdr::WrenchStamped;
+
+// a name as a CSV field, as io/csv_writer writes it: quoted (RFC 4180) only if it holds a
+// comma, quote or line break
+std::string Field(const std::string& name) {
+  if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
+  std::string quoted = "\"";
+  for (char c : name) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+std::int64_t StampNs(const io::cdr::Time& t) {
+  return static_cast<std::int64_t>(t.sec) * 1'000'000'000 + t.nanosec;
+}
+
+// what the node published at one time stamp
+struct Frame {
+  std::map<std::string, Odometry> odom;         // by body
+  std::map<std::string, WrenchStamped> forces;  // by body
+  std::optional<CableState> cable;
+};
+
+class CsvFile {
+ public:
+  CsvFile(const std::filesystem::path& path, const char* header) : path_(path.string()) {
+    f_ = std::fopen(path_.c_str(), "w");
+    if (f_ == nullptr) {
+      throw std::runtime_error("cannot open '" + path_ + "' for writing: " + std::strerror(errno));
+    }
+    std::fprintf(f_, "%s\n", header);
+  }
+  ~CsvFile() {
+    if (f_ != nullptr) std::fclose(f_);
+  }
+  std::FILE* get() { return f_; }
+  void Close() {
+    const bool failed = std::ferror(f_) != 0;
+    const int rc = std::fclose(f_);
+    f_ = nullptr;
+    if (failed || rc != 0) {
+      throw std::runtime_error("writing '" + path_ + "' failed: " + std::strerror(errno));
+    }
+  }
+
+ private:
+  std::string path_;
+  std::FILE* f_ = nullptr;
+};
+
+}  // namespace
+
+ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, const std::string& ns,
+                       bool recover) {
+  const io::McapReader reader =
+      recover ? io::McapReader::Recover(mcap_path) : io::McapReader::Open(mcap_path);
+
+  // the channels of the node under `ns`, by what they carry
+  enum class Kind { kOdom, kForce, kCable, kStatus, kSceneInfo };
+  struct Route {
+    Kind kind;
+    std::string body;  // kOdom, kForce
+  };
+  std::map<std::uint16_t, Route> routes;
+  std::vector<std::string> channel_bodies;  // bodies in channel order (fallback order)
+  std::string all_topics;
+  const std::string prefix = ns == "/" ? "/" : ns + "/";
+  for (const auto& [id, channel] : reader.channels()) {
+    all_topics += (all_topics.empty() ? "" : ", ") + channel.topic;
+    const auto schema = reader.schemas().find(channel.schema_id);
+    const std::string type = schema == reader.schemas().end() ? "" : schema->second.name;
+    if (channel.topic.rfind(prefix, 0) != 0) continue;
+    const std::string rest = channel.topic.substr(prefix.size());
+    auto expect = [&](const char* wanted) {
+      if (type != wanted || channel.message_encoding != "cdr") {
+        throw std::invalid_argument("topic " + channel.topic + " has type '" + type +
+                                    "' and encoding '" + channel.message_encoding + "', expected " +
+                                    wanted + " in cdr");
+      }
+    };
+    const auto slash = rest.find('/');
+    if (rest == "cable/state") {
+      expect("towsim_msgs/msg/CableState");
+      routes[id] = {Kind::kCable, ""};
+    } else if (rest == "status") {
+      expect("towsim_msgs/msg/SimStatus");
+      routes[id] = {Kind::kStatus, ""};
+    } else if (rest == "scene_info") {
+      expect("towsim_msgs/msg/SceneInfo");
+      routes[id] = {Kind::kSceneInfo, ""};
+    } else if (slash != std::string::npos && rest.substr(slash) == "/odom") {
+      expect("nav_msgs/msg/Odometry");
+      routes[id] = {Kind::kOdom, rest.substr(0, slash)};
+      channel_bodies.push_back(rest.substr(0, slash));
+    } else if (slash != std::string::npos && rest.substr(slash) == "/cable_force") {
+      expect("geometry_msgs/msg/WrenchStamped");
+      routes[id] = {Kind::kForce, rest.substr(0, slash)};
+    }
+  }
+  if (routes.empty()) {
+    throw std::invalid_argument("no towsim topics under the namespace '" + ns + "' in " +
+                                mcap_path +
+                                " (topics: " + (all_topics.empty() ? "none" : all_topics) + ")");
+  }
+
+  // decode every message of those channels, in log-time order
+  std::map<std::int64_t, Frame> frames;              // by stamp [ns]
+  std::map<std::int64_t, double> sim_time_of_stamp;  // from the status messages
+  std::vector<io::cdr::SimStatus> statuses;
+  std::optional<std::vector<std::string>> scene_bodies;
+  std::uint64_t index = 0;
+  reader.ForEachMessage([&](const io::McapMessage& m) {
+    ++index;
+    const auto route = routes.find(m.channel_id);
+    if (route == routes.end()) return;
+    const std::uint8_t* p = m.data.data();
+    const std::size_t n = m.data.size();
+    try {
+      switch (route->second.kind) {
+        case Kind::kOdom: {
+          Odometry o = io::cdr::DecodeOdometry(p, n);
+          frames[StampNs(o.header.stamp)].odom[route->second.body] = std::move(o);
+          break;
+        }
+        case Kind::kForce: {
+          WrenchStamped w = io::cdr::DecodeWrenchStamped(p, n);
+          frames[StampNs(w.header.stamp)].forces[route->second.body] = std::move(w);
+          break;
+        }
+        case Kind::kCable: {
+          CableState c = io::cdr::DecodeCableState(p, n);
+          const std::int64_t stamp = StampNs(c.header.stamp);
+          frames[stamp].cable = std::move(c);
+          break;
+        }
+        case Kind::kStatus: {
+          io::cdr::SimStatus s = io::cdr::DecodeSimStatus(p, n);
+          sim_time_of_stamp[StampNs(s.header.stamp)] = s.sim_time;
+          // the node repeats the last step's status with the final state: one row per step
+          if (!statuses.empty() && statuses.back().step == s.step &&
+              statuses.back().run_id == s.run_id) {
+            break;
+          }
+          statuses.push_back(std::move(s));
+          break;
+        }
+        case Kind::kSceneInfo:
+          if (!scene_bodies) scene_bodies = io::cdr::DecodeSceneInfo(p, n).bodies;
+          break;
+      }
+    } catch (const io::cdr::CdrError& e) {
+      throw io::cdr::CdrError("message " + std::to_string(index) + " on " +
+                                  reader.channels().at(m.channel_id).topic + " (log time " +
+                                  std::to_string(m.log_time) + " ns): " + e.what(),
+                              e.offset());
+    }
+  });
+
+  // row order of the bodies: the node's (scene info), then any other recorded body
+  std::vector<std::string> bodies = scene_bodies.value_or(std::vector<std::string>{});
+  for (const std::string& b : channel_bodies) {
+    if (std::find(bodies.begin(), bodies.end(), b) == bodies.end()) bodies.push_back(b);
+  }
+
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw std::runtime_error("cannot create CSV directory '" + dir + "': " + ec.message());
+  const std::filesystem::path d(dir);
+  CsvFile bodies_csv(d / "bodies.csv", "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r");
+  CsvFile cable_csv(d / "cable.csv", "t,node,x,y,z,tension");
+  CsvFile forces_csv(d / "forces.csv", "t,body,fx,fy,fz,mx,my,mz");
+  CsvFile status_csv(d / "status.csv", "t,step,newton_iterations,residual,wall_us");
+  ExportCounts counts;
+
+  for (const auto& [stamp, frame] : frames) {
+    const auto exact = sim_time_of_stamp.find(stamp);
+    const double t = exact != sim_time_of_stamp.end() ? exact->second : 1e-9 * stamp;
+    for (const std::string& b : bodies) {
+      const auto o = frame.odom.find(b);
+      if (o == frame.odom.end()) continue;
+      const Odometry& m = o->second;
+      const Eigen::Quaterniond q_WB(m.orientation.w, m.orientation.x, m.orientation.y,
+                                    m.orientation.z);
+      const core::Vec3 rpy = core::EulerZYX(q_WB);
+      std::fprintf(
+          bodies_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
+          t, Field(b).c_str(), m.position.x, m.position.y, m.position.z, rpy.x(), rpy.y(), rpy.z(),
+          m.linear.x, m.linear.y, m.linear.z, m.angular.x, m.angular.y, m.angular.z);
+      ++counts.bodies_rows;
+    }
+    if (frame.cable) {
+      const CableState& c = *frame.cable;
+      for (std::size_t i = 0; i < c.positions.size(); ++i) {
+        const double tension = i < c.tensions.size() ? c.tensions[i] : 0.0;
+        std::fprintf(cable_csv.get(), "%.9g,%zu,%.9g,%.9g,%.9g,%.9g\n", t, i, c.positions[i].x,
+                     c.positions[i].y, c.positions[i].z, tension);
+        ++counts.cable_rows;
+      }
+    }
+    for (const std::string& b : bodies) {
+      const auto w = frame.forces.find(b);
+      if (w == frame.forces.end()) continue;
+      const WrenchStamped& m = w->second;
+      std::fprintf(forces_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, Field(b).c_str(),
+                   m.force.x, m.force.y, m.force.z, m.torque.x, m.torque.y, m.torque.z);
+      ++counts.forces_rows;
+    }
+  }
+  for (const io::cdr::SimStatus& s : statuses) {
+    // the node's CSV: wall_us = lround(step wall time * 1e6), the same number it publishes
+    std::fprintf(status_csv.get(), "%.9g,%llu,%d,%.9g,%ld\n", s.sim_time,
+                 static_cast<unsigned long long>(s.step), s.newton_iterations, s.residual,
+                 std::lround(s.step_wall_time * 1e6));
+    ++counts.status_rows;
+  }
+  bodies_csv.Close();
+  cable_csv.Close();
+  forces_csv.Close();
+  status_csv.Close();
+  return counts;
+}
+
+}  // namespace towsim::app

@@ -1,0 +1,36 @@
+#pragma once
+// towsim_export --csv: a recording of a towsim node (MCAP, CDR payloads) back into the CSV
+// files of DESIGN §5, with the columns and number formatting of io/csv_writer ("%.9g"), so
+// that scripts (plot_paper.py, summarize.py) work on recordings as on `sim_node --csv` output.
+//
+// Topics used, under the namespace NS (default /towsim):
+//   NS/<b>/odom        nav_msgs/Odometry      -> bodies.csv  (Euler ZYX from the quaternion,
+//                                                 by the core's own EulerZYX)
+//   NS/<b>/cable_force geometry_msgs/WrenchStamped -> forces.csv
+//   NS/cable/state     towsim_msgs/CableState -> cable.csv
+//   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
+//                                                 the end-of-run repeat of a step is dropped)
+//   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
+// A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
+// status message has the same stamp, else the stamp (rounded to 1 ns by the node).
+// Not on the wire, hence not exported: the forces.csv rows of cable ends held by fixed or
+// driven supports ("cable.start", "cable.end"). One run per recording: after a RESET the
+// stamps repeat and the rows of equal stamps are merged.
+
+#include <cstdint>
+#include <string>
+
+namespace towsim::app {
+
+struct ExportCounts {
+  std::uint64_t bodies_rows = 0, cable_rows = 0, forces_rows = 0, status_rows = 0;
+};
+
+// reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files
+// into `dir` (created if needed). Throws mcap::McapError / cdr::CdrError (bad file: the
+// message names the offset and, for a payload, the topic), std::invalid_argument (no towsim
+// topics under `ns`, a topic with an unexpected type) or std::runtime_error (writing failed).
+ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, const std::string& ns,
+                       bool recover);
+
+}  // namespace towsim::app

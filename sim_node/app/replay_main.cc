@@ -1,0 +1,414 @@
+// towsim_replay: republishes an MCAP recording on DDS with its recorded timing (issue 6).
+//
+//   towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]
+//                 [--delay S] [--domain N] [--namespace NS] [--quiet]
+//
+// Every message of the chosen channels is written raw (the recorded CDR bytes, dds/raw_cdr;
+// Cyclone validates them against the type) on a writer of the channel's type (the schema name,
+// "nav_msgs/msg/Odometry", mapped to the generated descriptor of msgs/) with the QoS of the
+// towsim topics (DESIGN §3: reliable keep-last 1; scene_info transient local). Timing: message
+// i is written at t0 + (log_time_i - log_time_first) / rate of wall time (log time = receive
+// time of towsim_record, publish time of sim_node --record); --rate 0 or --fast: as fast as
+// possible. /clock is replayed like any topic, so nodes with use_sim_time follow it.
+//
+// Discovery: the first scene_info message (if replayed) is written first, then the replay
+// waits --delay S (default 1 s) so that subscribers started beside it (towsim_record, which
+// learns the bodies from scene_info) match the writers, then the timeline starts (without
+// that message). --start S skips the first S seconds of the recording; --loop starts again
+// at the end. --namespace NS republishes the recording's namespace (the prefix of its
+// scene_info or status topic) under NS; /clock stays at the root.
+//
+// Progress line on stderr (`[towsim_replay] 12.3/60.0 s  20%  4567/23000 messages`), summary on
+// stdout. SIGINT / SIGTERM stop it at once (exit 0). Exit 2: bad options, an unknown topic in
+// --topics (the message lists the recorded topics), a file that is not a complete, valid
+// MCAP file (the reader's message, naming the byte offset), a channel of a type outside the
+// contract, a DDS setup failure.
+
+#include <time.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "app/mcap_recording.h"
+#include "app/stop_signal.h"
+#include "app/topic_types.h"
+#include "dds/entities.h"
+#include "dds/messages.h"
+#include "dds/qos.h"
+#include "dds/raw_cdr.h"
+#include "dds/topic_names.h"
+#include "io/mcap_reader.h"
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitError = 1;
+constexpr int kExitBadInput = 2;
+constexpr double kMaxSleepSlice = 0.05;   // wake at least this often for signals [s]
+constexpr double kProgressPeriod = 0.25;  // progress line redraw [s]
+constexpr double kAckTimeout = 1.0;       // at the end, for subscribers to acknowledge [s]
+
+namespace dds = towsim::dds;
+namespace io = towsim::io;
+
+const char* kUsage =
+    "usage: towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]\n"
+    "                     [--delay S] [--domain N] [--namespace NS] [--quiet]\n"
+    "  --rate X        playback speed factor (default 1; 0: as fast as possible)\n"
+    "  --fast          the same as --rate 0\n"
+    "  --topics T ...  only these recorded topics (ROS names, /towsim/towfish/odom ...)\n"
+    "  --start S       skip the first S seconds of the recording (>= 0)\n"
+    "  --loop          start again at the end, until stopped\n"
+    "  --delay S       wait S seconds after creating the writers (discovery; default 1)\n"
+    "  --domain N      DDS domain id (default 0)\n"
+    "  --namespace NS  republish the recorded namespace under NS (/clock stays)\n"
+    "  --quiet         no progress line\n";
+
+struct Options {
+  std::string file;
+  double rate = 1.0;
+  std::vector<std::string> topics;
+  double start = 0.0;
+  bool loop = false;
+  double delay = 1.0;
+  uint32_t domain = 0;
+  std::string ns;  // empty: as recorded
+  bool quiet = false;
+};
+
+int Bad(const std::string& message) {
+  std::fprintf(stderr, "towsim_replay: error: %s\n", message.c_str());
+  return kExitBadInput;
+}
+
+bool Number(const std::string& v, double* out) {
+  char* end = nullptr;
+  *out = std::strtod(v.c_str(), &end);
+  return !v.empty() && *end == '\0' && std::isfinite(*out);
+}
+
+std::string Parse(int argc, char** argv, Options* o, bool* help) {
+  for (int i = 1; i < argc; ++i) {
+    std::string arg = argv[i], value;
+    bool has_value = false;
+    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
+      value = arg.substr(eq + 1);
+      arg = arg.substr(0, eq);
+      has_value = true;
+    }
+    auto next = [&](std::string* v) {
+      if (has_value) {
+        *v = value;
+        return true;
+      }
+      if (i + 1 >= argc) return false;
+      *v = argv[++i];
+      return true;
+    };
+    std::string v;
+    if (arg == "--help" || arg == "-h") {
+      *help = true;
+    } else if (arg == "--quiet") {
+      o->quiet = true;
+    } else if (arg == "--loop") {
+      o->loop = true;
+    } else if (arg == "--fast") {
+      o->rate = 0.0;
+    } else if (arg == "--rate") {
+      if (!next(&v)) return "--rate needs a value";
+      if (!Number(v, &o->rate) || o->rate < 0.0) return "--rate " + v + ": must be a number >= 0";
+    } else if (arg == "--start") {
+      if (!next(&v)) return "--start needs a value";
+      if (!Number(v, &o->start) || o->start < 0.0) {
+        return "--start " + v + ": must be a number >= 0 [s]";
+      }
+    } else if (arg == "--delay") {
+      if (!next(&v)) return "--delay needs a value";
+      if (!Number(v, &o->delay) || o->delay < 0.0) {
+        return "--delay " + v + ": must be a number >= 0 [s]";
+      }
+    } else if (arg == "--domain") {
+      if (!next(&v)) return "--domain needs a value";
+      char* end = nullptr;
+      const long d = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end != '\0' || d < 0 || d > 232) {
+        return "--domain " + v + ": must be an integer from 0 to 232";
+      }
+      o->domain = static_cast<uint32_t>(d);
+    } else if (arg == "--namespace") {
+      if (!next(&o->ns)) return "--namespace needs a value";
+      if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
+        return "--namespace " + o->ns + ": " + e;
+      }
+    } else if (arg == "--topics") {
+      std::vector<std::string> values;
+      if (has_value) values.push_back(value);
+      while (!has_value && i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) {
+        values.push_back(argv[++i]);
+      }
+      for (const std::string& t : values) {
+        size_t start = 0;
+        while (start <= t.size()) {
+          const size_t comma = t.find(',', start);
+          const std::string one =
+              t.substr(start, comma == std::string::npos ? comma : comma - start);
+          if (!one.empty()) o->topics.push_back(one[0] == '/' ? one : "/" + one);
+          if (comma == std::string::npos) break;
+          start = comma + 1;
+        }
+      }
+      if (o->topics.empty()) return "--topics needs at least one topic";
+    } else if (arg.rfind("--", 0) == 0 || !o->file.empty()) {
+      return "unknown option '" + arg + "'";
+    } else {
+      o->file = arg;
+    }
+  }
+  if (!*help && o->file.empty()) return "missing FILE.mcap";
+  return "";
+}
+
+// the recorded namespace: the prefix of a channel ending in /scene_info or /status
+std::string RecordedNamespace(const std::map<uint16_t, io::McapChannel>& channels) {
+  for (const char* suffix : {"/scene_info", "/status"}) {
+    const std::string s = suffix;
+    for (const auto& [id, c] : channels) {
+      if (c.topic.size() > s.size() &&
+          c.topic.compare(c.topic.size() - s.size(), s.size(), s) == 0) {
+        return c.topic.substr(0, c.topic.size() - s.size());
+      }
+    }
+  }
+  return "";
+}
+
+struct Output {
+  std::string ros_topic;  // as recorded
+  std::string dds_topic;  // as republished
+  const dds_topic_descriptor_t* descriptor = nullptr;
+  dds::RawType* type = nullptr;
+  dds::Entity topic, writer;
+  bool scene_info = false;
+};
+
+void SleepUntil(double wall_target) {
+  // absolute sleeps on CLOCK_REALTIME (dds_time's clock), in slices so that signals are seen
+  for (;;) {
+    if (towsim::app::StopRequested()) return;
+    const double now = static_cast<double>(dds_time()) * 1e-9;
+    const double left = wall_target - now;
+    if (left <= 0.0) return;
+    const double until = left > kMaxSleepSlice ? now + kMaxSleepSlice : wall_target;
+    timespec ts;
+    ts.tv_sec = static_cast<time_t>(std::floor(until));
+    ts.tv_nsec = static_cast<long>((until - std::floor(until)) * 1e9);
+    clock_nanosleep(CLOCK_REALTIME, TIMER_ABSTIME, &ts, nullptr);
+  }
+}
+
+int Replay(const Options& opt) {
+  io::McapReader reader = [&] {
+    return io::McapReader::Open(opt.file);  // throws McapError naming the offset
+  }();
+
+  // channels -> outputs
+  std::set<std::string> available;
+  for (const auto& [id, c] : reader.channels()) available.insert(c.topic);
+  for (const std::string& t : opt.topics) {
+    if (!available.count(t)) {
+      std::string list;
+      for (const std::string& a : available) list += (list.empty() ? "" : ", ") + a;
+      return Bad("--topics " + t + ": not in " + opt.file + " (recorded topics: " + list + ")");
+    }
+  }
+  const std::string recorded_ns = RecordedNamespace(reader.channels());
+  const char* uri = std::getenv("CYCLONEDDS_URI");
+  if (uri == nullptr || *uri == '\0') {
+    std::fprintf(stderr,
+                 "towsim_replay: warning: CYCLONEDDS_URI is not set: Cyclone DDS uses its "
+                 "defaults; the project's loopback configuration is config/cyclonedds.xml\n");
+  }
+  std::unique_ptr<dds::Participant> participant;
+  try {
+    participant = std::make_unique<dds::Participant>(opt.domain, uri == nullptr ? "" : uri);
+  } catch (const dds::DdsError& e) {
+    return Bad(std::string("DDS setup failed: ") + e.what());
+  }
+  std::vector<std::unique_ptr<dds::RawType>> types;
+  std::map<uint16_t, std::unique_ptr<Output>> outputs;
+  for (const auto& [id, c] : reader.channels()) {
+    if (!opt.topics.empty() &&
+        std::find(opt.topics.begin(), opt.topics.end(), c.topic) == opt.topics.end()) {
+      continue;
+    }
+    const auto schema = reader.schemas().find(c.schema_id);
+    const std::string type_name = schema == reader.schemas().end() ? "" : schema->second.name;
+    if (c.message_encoding != "cdr") {
+      return Bad(opt.file + ": channel " + c.topic + ": message encoding '" + c.message_encoding +
+                 "', expected cdr");
+    }
+    const dds_topic_descriptor_t* d = towsim::app::DescriptorOfRos2Type(type_name);
+    if (d == nullptr) {
+      return Bad(opt.file + ": channel " + c.topic + ": type '" + type_name +
+                 "' is not a towsim type (msgs/)");
+    }
+    auto out = std::make_unique<Output>();
+    out->ros_topic = c.topic;
+    std::string topic = c.topic;
+    if (!opt.ns.empty() && !recorded_ns.empty() && topic.rfind(recorded_ns + "/", 0) == 0) {
+      topic = (opt.ns == "/" ? "" : opt.ns) + topic.substr(recorded_ns.size());
+    }
+    out->dds_topic = towsim::app::DdsTopicName(topic);
+    out->descriptor = d;
+    out->scene_info = d == &towsim_msgs_msg_dds__SceneInfo__desc;
+    for (const auto& t : types) {
+      if (t->descriptor() == d) out->type = t.get();
+    }
+    try {
+      if (out->type == nullptr) {
+        types.push_back(std::make_unique<dds::RawType>(*participant, d));
+        out->type = types.back().get();
+      }
+      const dds_entity_t t =
+          dds_create_topic(participant->get(), d, out->dds_topic.c_str(), nullptr, nullptr);
+      if (t < 0) throw dds::DdsError("creating topic " + out->dds_topic, t);
+      out->topic = dds::Entity(t);
+      dds::Qos qos = out->scene_info                               ? dds::SceneInfoQos()
+                     : d == &towsim_msgs_msg_dds__SimControl__desc ? dds::ControlQos()
+                                                                   : dds::StateQos(1);
+      const dds_entity_t w = dds_create_writer(participant->get(), t, qos.get(), nullptr);
+      if (w < 0) throw dds::DdsError("creating a writer for " + out->dds_topic, w);
+      out->writer = dds::Entity(w);
+    } catch (const dds::DdsError& e) {
+      return Bad(std::string("DDS setup failed: ") + e.what());
+    }
+    outputs[id] = std::move(out);
+  }
+
+  // the timeline (log-time order, chunk CRCs checked here)
+  std::vector<io::McapMessage> messages;
+  reader.ForEachMessage([&](const io::McapMessage& m) {
+    if (outputs.count(m.channel_id)) messages.push_back(m);
+  });
+  if (messages.empty()) {
+    std::printf("towsim_replay: no messages to replay in %s\n", opt.file.c_str());
+    return kExitOk;
+  }
+  const uint64_t first_time = messages.front().log_time;
+  const uint64_t skip_before = first_time + static_cast<uint64_t>(std::llround(opt.start * 1e9));
+  size_t begin = 0;
+  while (begin < messages.size() && messages[begin].log_time < skip_before) ++begin;
+  if (begin == messages.size()) {
+    return Bad("--start " + std::to_string(opt.start) + ": the recording lasts only " +
+               std::to_string(1e-9 * static_cast<double>(messages.back().log_time - first_time)) +
+               " s");
+  }
+  auto publish = [&](const io::McapMessage& m) {
+    const Output& out = *outputs.at(m.channel_id);
+    dds::CdrSample sample;
+    try {
+      sample = dds::CdrSample::FromBytes(*out.type, m.data.data(), m.data.size());
+    } catch (const std::invalid_argument& e) {
+      throw std::invalid_argument(opt.file + ": message " + std::to_string(m.sequence) + " of " +
+                                  out.ros_topic + " (log time " + std::to_string(m.log_time) +
+                                  " ns): " + e.what());
+    }
+    const dds_return_t rc = sample.Write(out.writer.get(), dds_time());
+    if (rc < 0) throw dds::DdsError("writing to " + out.dds_topic, rc);
+  };
+
+  // scene_info first, then the discovery delay
+  size_t scene_index = messages.size();
+  for (size_t i = begin; i < messages.size(); ++i) {
+    if (outputs.at(messages[i].channel_id)->scene_info) {
+      scene_index = i;
+      break;
+    }
+  }
+  try {
+    if (scene_index < messages.size()) publish(messages[scene_index]);
+  } catch (const std::invalid_argument& e) {
+    return Bad(e.what());
+  }
+  SleepUntil(static_cast<double>(dds_time()) * 1e-9 + opt.delay);
+
+  const double span =
+      1e-9 * static_cast<double>(messages.back().log_time - messages[begin].log_time);
+  uint64_t sent = scene_index < messages.size() ? 1 : 0;
+  double last_progress = -1.0;
+  bool drawn = false;
+  const double replay_start = static_cast<double>(dds_time()) * 1e-9;
+  for (int pass = 0; !towsim::app::StopRequested(); ++pass) {
+    const double t0 = static_cast<double>(dds_time()) * 1e-9;
+    for (size_t i = begin; i < messages.size() && !towsim::app::StopRequested(); ++i) {
+      if (pass == 0 && i == scene_index) continue;  // sent before the delay
+      const io::McapMessage& m = messages[i];
+      const double offset = 1e-9 * static_cast<double>(m.log_time - messages[begin].log_time);
+      if (opt.rate > 0.0) SleepUntil(t0 + offset / opt.rate);
+      if (towsim::app::StopRequested()) break;
+      try {
+        publish(m);
+      } catch (const std::invalid_argument& e) {
+        return Bad(e.what());
+      }
+      ++sent;
+      const double now = static_cast<double>(dds_time()) * 1e-9;
+      if (!opt.quiet && (last_progress < 0.0 || now - last_progress >= kProgressPeriod)) {
+        last_progress = now;
+        drawn = true;
+        std::fprintf(stderr, "\r[towsim_replay] %.1f/%.1f s  %3.0f%%  %zu/%zu messages   ", offset,
+                     span, span > 0.0 ? 100.0 * offset / span : 100.0, i - begin + 1,
+                     messages.size() - begin);
+        std::fflush(stderr);
+      }
+    }
+    if (!opt.loop) break;
+  }
+  if (drawn) std::fputc('\n', stderr);
+  // let reliable subscribers acknowledge the last messages before the writers go
+  for (const auto& [id, out] : outputs) {
+    dds_wait_for_acks(out->writer.get(), static_cast<dds_duration_t>(kAckTimeout * 1e9));
+  }
+  std::printf("towsim_replay: %llu messages on %zu topics in %.1f s from %s\n",
+              static_cast<unsigned long long>(sent), outputs.size(),
+              static_cast<double>(dds_time()) * 1e-9 - replay_start, opt.file.c_str());
+  std::fflush(stdout);
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  bool help = false;
+  if (const std::string e = Parse(argc, argv, &options, &help); !e.empty()) {
+    std::fprintf(stderr, "towsim_replay: error: %s\n\n%s", e.c_str(), kUsage);
+    return kExitBadInput;
+  }
+  if (help) {
+    std::fputs(kUsage, stdout);
+    return kExitOk;
+  }
+  towsim::app::InstallStopHandlers();
+  try {
+    return Replay(options);
+  } catch (const io::mcap::McapError& e) {
+    return Bad(options.file + ": " + e.what());
+  } catch (const dds::DdsError& e) {
+    return Bad(std::string("DDS: ") + e.what());
+  } catch (const std::exception& e) {
+    // a file that cannot be opened is bad input too
+    const std::string what = e.what();
+    if (what.find(options.file) != std::string::npos) return Bad(what);
+    std::fprintf(stderr, "towsim_replay: error: %s\n", what.c_str());
+    return kExitError;
+  }
+}

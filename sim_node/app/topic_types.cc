@@ -1,0 +1,29 @@
+#include "app/topic_types.h"
+
+#include <stdexcept>
+
+#include "dds/messages.h"
+#include "io/ros2_schemas.h"
+
+namespace towsim::app {
+
+const std::vector<const dds_topic_descriptor_t*>& ContractTypes() {
+  static const std::vector<const dds_topic_descriptor_t*> types = {
+      &rosgraph_msgs_msg_dds__Clock__desc,         &nav_msgs_msg_dds__Odometry__desc,
+      &geometry_msgs_msg_dds__WrenchStamped__desc, &towsim_msgs_msg_dds__CableState__desc,
+      &towsim_msgs_msg_dds__SimStatus__desc,       &towsim_msgs_msg_dds__SceneInfo__desc,
+      &towsim_msgs_msg_dds__ActuatorCommand__desc, &towsim_msgs_msg_dds__SimControl__desc};
+  return types;
+}
+
+const dds_topic_descriptor_t* DescriptorOfRos2Type(const std::string& ros2_type) {
+  for (const dds_topic_descriptor_t* d : ContractTypes()) {
+    try {
+      if (io::Ros2TypeName(d->m_typename) == ros2_type) return d;
+    } catch (const std::invalid_argument&) {
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace towsim::app

@@ -1,0 +1,193 @@
+// towsim_export (issue 6): a run recorded by `sim_node --record` and exported with
+// `towsim_export --csv` gives the node's own `--csv` files of the same run, byte for byte
+// (same rows, every number equal to its 9 printed digits), with the publish rates of the scene
+// set to the CSV output rate. The only rows that cannot come back are the support reactions
+// of cable ends held by fixed / driven points ("cable.start", "cable.end" in forces.csv): they
+// are not published. --info lists the topics; a damaged recording exits 2 naming the offset.
+// DDS domains 91 and 92.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "process.h"
+
+namespace {
+
+using towsim::testing::Process;
+using towsim::testing::ReadFile;
+namespace fs = std::filesystem;
+
+constexpr double kTimeout = 60.0;  // [s] per process; the runs take < 2 s
+
+class ExportRoundTrip : public ::testing::Test {
+ protected:
+  ExportRoundTrip() {
+    setenv("CYCLONEDDS_URI", TOWSIM_DDS_URI, 1);
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("towsim_export_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  ~ExportRoundTrip() override { fs::remove_all(dir_); }
+
+  // runs `sim_node` in fast mode with --csv and --record, every topic at the output rate
+  void RecordRun(const std::string& scene, int domain, double duration) {
+    Process node({TOWSIM_SIM_NODE,
+                  "--scene",
+                  std::string(TOWSIM_SOURCE_DIR) + "/" + scene,
+                  "--mode",
+                  "fast",
+                  "--domain",
+                  std::to_string(domain),
+                  "--duration",
+                  std::to_string(duration),
+                  "--csv",
+                  (dir_ / "node").string(),
+                  "--record",
+                  (dir_ / "run.mcap").string(),
+                  "--set",
+                  "publish.odom=10",
+                  "--set",
+                  "publish.cable_force=10",
+                  "--set",
+                  "publish.cable_state=10",
+                  "--set",
+                  "publish.status=10"},
+                 (dir_ / "node").string());
+    ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
+    ASSERT_EQ(node.exit_code(), 0) << node.err();
+  }
+
+  Process Export(std::vector<std::string> args, const std::string& log) {
+    args.insert(args.begin(), TOWSIM_EXPORT);
+    return Process(args, (dir_ / log).string());
+  }
+
+  fs::path dir_;
+};
+
+std::vector<std::string> Lines(const std::string& path, bool drop_supports = false) {
+  std::vector<std::string> out;
+  std::istringstream in(ReadFile(path));
+  for (std::string line; std::getline(in, line);) {
+    if (drop_supports && (line.find(",cable.start,") != std::string::npos ||
+                          line.find(",cable.end,") != std::string::npos)) {
+      continue;
+    }
+    out.push_back(line);
+  }
+  return out;
+}
+
+void ExpectSameCsv(const fs::path& node, const fs::path& exported, std::size_t rows_per_file_min) {
+  for (const char* file : {"bodies.csv", "cable.csv", "forces.csv", "status.csv"}) {
+    SCOPED_TRACE(file);
+    const auto a = Lines((node / file).string(), std::string(file) == "forces.csv");
+    const auto b = Lines((exported / file).string());
+    EXPECT_GE(a.size(), rows_per_file_min);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a[i], b[i]) << "first difference at line " << i + 1;
+    }
+  }
+}
+
+TEST_F(ExportRoundTrip, SteadyTowRecordedAndExportedEqualsTheNodesCsv) {
+  RecordRun("config/scenes/steady_tow.yaml", 91, 20.0);
+  Process exp = Export(
+      {(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string(), "--info"}, "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  // 20 s at 10 Hz: 201 row sets (t = 0 included)
+  ExpectSameCsv(dir_ / "node", dir_ / "exported", 202);
+  // the node also writes the driven start's reaction: not on the wire, so not exported
+  EXPECT_NE(ReadFile((dir_ / "node/forces.csv").string()).find(",cable.start,"), std::string::npos);
+  // --info: like ros2 bag info
+  const std::string info = exp.out();
+  EXPECT_NE(info.find("Storage id:        mcap"), std::string::npos) << info;
+  EXPECT_NE(info.find("Topic: /towsim/towfish/odom | Type: nav_msgs/msg/Odometry | Count: 201 | "
+                      "Serialization Format: cdr"),
+            std::string::npos)
+      << info;
+  EXPECT_NE(info.find("Topic: /towsim/cable/state | Type: towsim_msgs/msg/CableState | Count: "
+                      "201"),
+            std::string::npos)
+      << info;
+  EXPECT_NE(info.find("MCAP profile:      ros2"), std::string::npos) << info;
+  EXPECT_NE(info.find("Metadata records:  rosbag2"), std::string::npos) << info;
+}
+
+TEST_F(ExportRoundTrip, TwoVehiclesRecordedAndExportedEqualsTheNodesCsv) {
+  // both cable ends on bodies: every row comes back, Euler angles and body rates non-zero
+  RecordRun("config/scenes/case1_forward.yaml", 92, 10.0);
+  Process exp =
+      Export({(dir_ / "run.mcap").string(), "--csv=" + (dir_ / "exported").string()}, "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  ExpectSameCsv(dir_ / "node", dir_ / "exported", 101);
+  EXPECT_EQ(ReadFile((dir_ / "node/forces.csv").string()),
+            ReadFile((dir_ / "exported/forces.csv").string()));
+}
+
+TEST_F(ExportRoundTrip, DamagedRecordingsAndBadFlagsExit2) {
+  RecordRun("config/scenes/steady_tow.yaml", 91, 2.0);
+  const std::string good = ReadFile((dir_ / "run.mcap").string());
+  ASSERT_GT(good.size(), 1000u);
+  struct Case {
+    std::string name, bytes, expected;
+  };
+  std::string corrupt = good;
+  corrupt[good.size() / 2] ^= 0x5A;  // a byte inside the chunk: its CRC fails
+  const std::vector<Case> cases = {
+      {"truncated", good.substr(0, good.size() - 100), "offset"},
+      {"corrupt", corrupt, "CRC"},
+      {"empty", "", "offset"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string path = (dir_ / (c.name + ".mcap")).string();
+    std::ofstream(path, std::ios::binary) << c.bytes;
+    Process exp = Export({path, "--csv", (dir_ / c.name).string()}, c.name);
+    ASSERT_TRUE(exp.Wait(kTimeout));
+    EXPECT_EQ(exp.exit_code(), 2) << exp.err();
+    EXPECT_NE(exp.err().find("towsim_export: error: " + path), std::string::npos) << exp.err();
+    EXPECT_NE(exp.err().find(c.expected), std::string::npos) << exp.err();
+    EXPECT_NE(exp.err().find("byte offset"), std::string::npos) << exp.err();
+  }
+  // the truncated file read with --recover: what its complete chunks hold
+  Process rec = Export({(dir_ / "truncated.mcap").string(), "--recover", "--info"}, "recover");
+  ASSERT_TRUE(rec.Wait(kTimeout));
+  EXPECT_EQ(rec.exit_code(), 0) << rec.err();
+  EXPECT_NE(rec.out().find("Recovered:"), std::string::npos) << rec.out();
+
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{(dir_ / "run.mcap").string()},
+        std::vector<std::string>{(dir_ / "run.mcap").string(), "--bogus"},
+        std::vector<std::string>{"--info"},
+        std::vector<std::string>{(dir_ / "missing.mcap").string(), "--info"},
+        std::vector<std::string>{(dir_ / "run.mcap").string(), "--info", "--namespace", "x"}}) {
+    Process exp = Export(args, "flags");
+    ASSERT_TRUE(exp.Wait(kTimeout));
+    EXPECT_EQ(exp.exit_code(), 2) << args.back() << ": " << exp.err();
+    EXPECT_NE(exp.err().find("towsim_export: error: "), std::string::npos) << exp.err();
+  }
+  // a namespace without towsim topics names the topics there are
+  Process ns = Export(
+      {(dir_ / "run.mcap").string(), "--csv", (dir_ / "ns").string(), "--namespace", "/other"},
+      "ns");
+  ASSERT_TRUE(ns.Wait(kTimeout));
+  EXPECT_EQ(ns.exit_code(), 2);
+  EXPECT_NE(ns.err().find("no towsim topics under the namespace '/other'"), std::string::npos)
+      << ns.err();
+  EXPECT_NE(ns.err().find("/towsim/cable/state"), std::string::npos) << ns.err();
+}
+
+}  // namespace

@@ -1,0 +1,16 @@
+# towsim_export round trips (issue 6): sim_node --record + --csv, then towsim_export --csv;
+# real processes over loopback DDS, domains 91 and 92. Included from tests/unit/mcap_tests.cmake.
+set(_export_dir ${PROJECT_SOURCE_DIR}/tests/integration)
+add_executable(export_roundtrip_test ${_export_dir}/export_roundtrip_test.cc
+  ${_export_dir}/process.cc)
+target_link_libraries(export_roundtrip_test PRIVATE GTest::gtest GTest::gtest_main)
+target_compile_definitions(export_roundtrip_test PRIVATE
+  TOWSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+  TOWSIM_DDS_URI="file://${PROJECT_SOURCE_DIR}/config/cyclonedds.xml"
+  TOWSIM_SIM_NODE="$<TARGET_FILE:sim_node>"
+  TOWSIM_EXPORT="$<TARGET_FILE:towsim_export>")
+add_dependencies(export_roundtrip_test sim_node towsim_export)
+gtest_discover_tests(export_roundtrip_test
+  PROPERTIES LABELS integration
+  ENVIRONMENT "CYCLONEDDS_URI=file://${PROJECT_SOURCE_DIR}/config/cyclonedds.xml"
+  DISCOVERY_TIMEOUT 60)

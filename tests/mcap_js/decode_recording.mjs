@@ -1,0 +1,251 @@
+// Decodes a towsim recording with independent readers and compares every value with what the
+// node wrote to its own --csv files during the same run:
+//   node decode_recording.mjs RUN.mcap CSV_DIR
+// - @mcap/core: McapIndexedReader (magic, footer, summary) reading every message with every
+//   chunk CRC validated; McapStreamReader (a linear read of every record, CRCs again); the
+//   data section CRC recomputed here
+// - @foxglove/rosmsg parses each channel's ros2msg schema (which must define every type it
+//   uses); @foxglove/rosmsg2-serialization decodes every message of every channel with it
+// - bodies.csv, cable.csv, forces.csv, status.csv of the node compared with the decoded
+//   odometry, cable state, cable force and status messages, row by row in order. The CSV
+//   prints 9 significant digits ("%.9g"), so a decoded value v and its CSV text c agree when
+//   |v - c| <= 5e-9 |c| (half a unit in the 9th digit) + kAbs; Euler angles are computed
+//   here from the quaternion, so they get kAbsAngle on top (float64 rounding of the formulas).
+// Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
+import { readFileSync } from "node:fs";
+import { join } from "node:path";
+
+let mcap, rosmsg, serialization;
+try {
+  mcap = await import("@mcap/core");
+  rosmsg = await import("@foxglove/rosmsg");
+  serialization = await import("@foxglove/rosmsg2-serialization");
+} catch (e) {
+  console.error(`node modules not installed (run "npm ci" in tests/mcap_js): ${e.message}`);
+  process.exit(77);
+}
+const { McapIndexedReader, McapStreamReader } = mcap;
+const { parse: parseMessageDefinition } = rosmsg;
+const { MessageReader } = serialization;
+
+const [file, csvDir] = process.argv.slice(2);
+const kRelCsv = 5e-9; // half a unit in the 9th significant digit
+const kAbs = 1e-300; // exact zeros print as 0
+const kAbsAngle = 1e-12; // [rad] Euler angles from the quaternion by another formula
+let failures = 0;
+function check(ok, what) {
+  if (!ok) {
+    failures += 1;
+    if (failures <= 20) console.error(`FAIL: ${what}`);
+  }
+  return ok;
+}
+function near(v, csvText, what, abs = kAbs) {
+  const c = Number(csvText);
+  return check(Math.abs(Number(v) - c) <= kRelCsv * Math.abs(c) + abs, `${what}: ${v} vs CSV ${csvText}`);
+}
+
+// CRC-32 (IEEE, reflected 0xEDB88320), written here: Debian 12's Node 18 has no zlib.crc32
+const kCrcTable = Array.from({ length: 256 }, (_, n) => {
+  let c = n;
+  for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
+  return c >>> 0;
+});
+function crc32(data) {
+  let c = 0xffffffff;
+  for (const byte of data) c = kCrcTable[(c ^ byte) & 0xff] ^ (c >>> 8);
+  return (c ^ 0xffffffff) >>> 0;
+}
+
+function readCsv(name) {
+  const lines = readFileSync(join(csvDir, name), "utf8").trim().split("\n");
+  const header = lines.shift().split(",");
+  return lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [header[i], v])));
+}
+
+const bytes = new Uint8Array(readFileSync(file));
+const readable = {
+  size: async () => BigInt(bytes.byteLength),
+  read: async (offset, size) => bytes.subarray(Number(offset), Number(offset + size)),
+};
+const reader = await McapIndexedReader.Initialize({ readable });
+check(reader.header.profile === "ros2", `profile ${reader.header.profile}`);
+
+// every channel: a ros2msg schema that parses completely, cdr messages
+const decoders = new Map();
+const topics = new Map();
+for (const channel of reader.channelsById.values()) {
+  const schema = reader.schemasById.get(channel.schemaId);
+  check(schema !== undefined, `channel ${channel.topic} has a schema`);
+  check(schema.encoding === "ros2msg", `${schema.name} encoding ${schema.encoding}`);
+  check(channel.messageEncoding === "cdr", `${channel.topic} encoding ${channel.messageEncoding}`);
+  const text = new TextDecoder().decode(schema.data);
+  const definitions = parseMessageDefinition(text, { ros2: true });
+  // every complex field type has its definition in the schema
+  const names = new Set(definitions.map((d) => d.name).filter((n) => n !== undefined));
+  for (const d of definitions) {
+    for (const f of d.definitions) {
+      if (f.isComplex) check(names.has(f.type), `${schema.name}: ${f.name} of type ${f.type} is defined`);
+    }
+  }
+  decoders.set(channel.id, new MessageReader(definitions));
+  topics.set(channel.id, { topic: channel.topic, type: schema.name });
+}
+
+// decode every message (chunk CRCs validated)
+const byTopic = new Map();
+let count = 0;
+for await (const m of reader.readMessages({ validateCrcs: true })) {
+  const { topic, type } = topics.get(m.channelId);
+  let value;
+  try {
+    value = decoders.get(m.channelId).readMessage(m.data);
+  } catch (e) {
+    check(false, `message ${count} on ${topic} (${type}) does not decode: ${e.message}`);
+    continue;
+  }
+  if (!byTopic.has(topic)) byTopic.set(topic, []);
+  byTopic.get(topic).push(value);
+  count += 1;
+}
+check(BigInt(count) === reader.statistics.messageCount, `decoded ${count} of ${reader.statistics.messageCount}`);
+
+// linear read of every record, and the data section CRC (bytes before the DataEnd record)
+const stream = new McapStreamReader({ validateCrcs: true });
+stream.append(bytes);
+let streamed = 0;
+let dataEnd;
+let footer;
+for (let r; (r = stream.nextRecord()); ) {
+  if (r.type === "Message") streamed += 1;
+  if (r.type === "DataEnd") dataEnd = r;
+  if (r.type === "Footer") footer = r;
+}
+check(stream.done() && streamed === count, `stream reader: ${streamed} messages`);
+const dataEndOffset = Number(footer.summaryStart) - 13;
+check(crc32(bytes.subarray(0, dataEndOffset)) === dataEnd.dataSectionCrc, "data section CRC");
+
+// the rosbag2 metadata record
+check(reader.metadataIndexes.some((i) => i.name === "rosbag2"), "rosbag2 metadata record");
+
+// --- decoded values against the node's CSV ---
+// builtin_interfaces/Time: rosmsg2-serialization names the fields {sec, nsec} (ROS 1 style)
+const stampSec = (t) => t.sec + 1e-9 * (t.nanosec ?? t.nsec);
+const sceneInfo = (byTopic.get("/towsim/scene_info") ?? [])[0];
+check(sceneInfo !== undefined, "scene_info recorded");
+const bodies = sceneInfo ? sceneInfo.bodies : [];
+
+// bodies.csv: per body, its rows in order = its odometry messages in order
+const bodyRows = readCsv("bodies.csv");
+let compared = 0;
+for (const body of bodies) {
+  const rows = bodyRows.filter((r) => r.body === body);
+  const odom = byTopic.get(`/towsim/${body}/odom`) ?? [];
+  check(rows.length > 0 && rows.length === odom.length, `${body}: ${rows.length} rows, ${odom.length} odometry messages`);
+  for (let i = 0; i < Math.min(rows.length, odom.length); i++) {
+    const r = rows[i];
+    const o = odom[i];
+    const p = o.pose.pose.position;
+    const q = o.pose.pose.orientation;
+    const v = o.twist.twist.linear;
+    const w = o.twist.twist.angular;
+    const what = `${body} row ${i}`;
+    near(stampSec(o.header.stamp), r.t, `${what} t`, 1e-9);
+    check(o.child_frame_id === body, `${what} child_frame_id ${o.child_frame_id}`);
+    check(o.header.frame_id === "world_ned", `${what} frame_id ${o.header.frame_id}`);
+    near(p.x, r.x, `${what} x`);
+    near(p.y, r.y, `${what} y`);
+    near(p.z, r.z, `${what} z`);
+    // ZYX Euler angles of q_WB (scalar last)
+    const roll = Math.atan2(2 * (q.w * q.x + q.y * q.z), 1 - 2 * (q.x * q.x + q.y * q.y));
+    const pitch = Math.asin(Math.max(-1, Math.min(1, 2 * (q.w * q.y - q.z * q.x))));
+    const yaw = Math.atan2(2 * (q.w * q.z + q.x * q.y), 1 - 2 * (q.y * q.y + q.z * q.z));
+    near(roll, r.roll, `${what} roll`, kAbsAngle);
+    near(pitch, r.pitch, `${what} pitch`, kAbsAngle);
+    near(yaw, r.yaw, `${what} yaw`, kAbsAngle);
+    near(v.x, r.u, `${what} u`);
+    near(v.y, r.v, `${what} v`);
+    near(v.z, r.w, `${what} w`);
+    near(w.x, r.p, `${what} p`);
+    near(w.y, r.q, `${what} q`);
+    near(w.z, r.r, `${what} r`);
+    compared += 1;
+  }
+}
+
+// cable.csv: each cable state message gives its nodes' rows, in order
+const cableRows = readCsv("cable.csv");
+const cable = byTopic.get("/towsim/cable/state") ?? [];
+const nodes = cable.length > 0 ? cable[0].positions.length : 0;
+check(nodes > 0 && cableRows.length === cable.length * nodes, `cable: ${cableRows.length} rows, ${cable.length} x ${nodes}`);
+cable.forEach((c, k) => {
+  check(c.positions.length === nodes && c.tensions.length === nodes, `cable message ${k} sizes`);
+  for (let i = 0; i < nodes && k * nodes + i < cableRows.length; i++) {
+    const r = cableRows[k * nodes + i];
+    const what = `cable message ${k} node ${i}`;
+    check(Number(r.node) === i, `${what} node ${r.node}`);
+    near(stampSec(c.header.stamp), r.t, `${what} t`, 1e-9);
+    near(c.positions[i].x, r.x, `${what} x`);
+    near(c.positions[i].y, r.y, `${what} y`);
+    near(c.positions[i].z, r.z, `${what} z`);
+    near(c.tensions[i], r.tension, `${what} tension`);
+    compared += 1;
+  }
+});
+
+// forces.csv: per body, its rows = its cable_force messages
+const forceRows = readCsv("forces.csv");
+for (const body of bodies) {
+  const rows = forceRows.filter((r) => r.body === body);
+  const forces = byTopic.get(`/towsim/${body}/cable_force`) ?? [];
+  check(rows.length > 0 && rows.length === forces.length, `${body}: ${rows.length} force rows, ${forces.length} messages`);
+  for (let i = 0; i < Math.min(rows.length, forces.length); i++) {
+    const { force: f, torque: m } = forces[i].wrench;
+    const r = rows[i];
+    const what = `${body} force row ${i}`;
+    near(stampSec(forces[i].header.stamp), r.t, `${what} t`, 1e-9);
+    near(f.x, r.fx, `${what} fx`);
+    near(f.y, r.fy, `${what} fy`);
+    near(f.z, r.fz, `${what} fz`);
+    near(m.x, r.mx, `${what} mx`);
+    near(m.y, r.my, `${what} my`);
+    near(m.z, r.mz, `${what} mz`);
+    compared += 1;
+  }
+}
+
+// status.csv: the status messages, the end-of-run repeat of the last step dropped
+const statusRows = readCsv("status.csv");
+const status = (byTopic.get("/towsim/status") ?? []).filter(
+  (s, i, all) => i === 0 || s.step !== all[i - 1].step,
+);
+check(statusRows.length === status.length, `status: ${statusRows.length} rows, ${status.length} messages`);
+for (let i = 0; i < Math.min(statusRows.length, status.length); i++) {
+  const s = status[i];
+  const r = statusRows[i];
+  const what = `status row ${i}`;
+  check(BigInt(s.step) === BigInt(r.step), `${what} step ${s.step} vs ${r.step}`);
+  check(s.newton_iterations === Number(r.newton_iterations), `${what} newton_iterations`);
+  near(s.sim_time, r.t, `${what} sim_time`);
+  near(s.residual, r.residual, `${what} residual`);
+  check(Math.round(s.step_wall_time * 1e6) === Number(r.wall_us), `${what} wall_us ${s.step_wall_time}`);
+  compared += 1;
+}
+const last = (byTopic.get("/towsim/status") ?? []).at(-1);
+check(last !== undefined && last.state === 3, `last status state ${last?.state} (3 = finished)`);
+
+// /clock: one per published step, increasing
+const clock = byTopic.get("/clock") ?? [];
+check(clock.length > 0, "clock messages");
+for (let i = 1; i < clock.length; i++) {
+  if (!check(stampSec(clock[i].clock) > stampSec(clock[i - 1].clock), `clock ${i} increases`)) break;
+}
+
+if (failures > 0) {
+  console.error(`${failures} failures`);
+  process.exit(1);
+}
+console.log(
+  `ok: ${count} messages on ${topics.size} topics decoded, ${compared} CSV rows matched, ` +
+    `${reader.chunkIndexes.length} chunks`,
+);
