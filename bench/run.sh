@@ -1,6 +1,28 @@
 #!/usr/bin/env bash
-# Runs the benchmarks (after ./test.sh or ./run.sh has built them).
+# Runs the benchmarks (after ./test.sh or ./run.sh has built them into build/).
+#   bench/run.sh [ARGS]     Google Benchmark of the shipped cable scenes (cable_bench ARGS)
+#   bench/run.sh sweep      accuracy against run time (~2-4 min): writes
+#                           bench/results/work_precision.csv, draws
+#                           docs/figures/work_precision_*.png and prints the Pareto fronts
+#   bench/run.sh targets    the shipped scenes at their own settings: real-time factor and the
+#                           towfish-track error against a run 4x finer (issue 7's targets)
+# BUILD_DIR=dir selects another build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-[ -x build/bench/cable_bench ] || { echo "build first: ./test.sh" >&2; exit 1; }
-exec build/bench/cable_bench --benchmark_counters_tabular=true "$@"
+build=${BUILD_DIR:-build}
+need() { [ -x "$build/bench/$1" ] || { echo "build first: ./test.sh (no $build/bench/$1)" >&2; exit 1; }; }
+case "${1:-}" in
+  sweep)
+    need work_precision
+    "$build/bench/work_precision" --out bench/results/work_precision.csv
+    /usr/bin/python3 bench/plot_work_precision.py bench/results/work_precision.csv docs/figures
+    ;;
+  targets)
+    need work_precision
+    exec "$build/bench/work_precision" --targets
+    ;;
+  *)
+    need cable_bench
+    exec "$build/bench/cable_bench" --benchmark_counters_tabular=true "$@"
+    ;;
+esac

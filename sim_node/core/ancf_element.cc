@@ -74,6 +74,7 @@ AncfElement::AncfElement(const ElementProperties& props) : props_(props) {
       54, 13 * l, 156, -22 * l,               //
       -13 * l, -3 * l * l, -22 * l, 4 * l * l;
   m *= props_.mass_per_length * l / 420.0;
+  mass4_ = m;
   mass_.setZero();
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) mass_.block<3, 3>(3 * i, 3 * j) = m(i, j) * Mat3::Identity();
@@ -91,8 +92,44 @@ double AncfElement::StrainEnergy(const Vec12& e) const {
   return u;
 }
 
+Vec12 AncfElement::MassTimes(const Vec12& e_ddot) const {
+  Vec12 f;
+  for (int i = 0; i < 4; ++i)
+    f.segment<3>(3 * i) = mass4_(i, 0) * e_ddot.segment<3>(0) +
+                          mass4_(i, 1) * e_ddot.segment<3>(3) +
+                          mass4_(i, 2) * e_ddot.segment<3>(6) + mass4_(i, 3) * e_ddot.segment<3>(9);
+  return f;
+}
+
+void AncfElement::InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const {
+  // as InternalForce below, without the Jacobians
+  force->setZero();
+  const double ea = props_.ea, c = props_.axial_damping;
+  const bool bending = props_.ei > 0.0;
+  for (const ShapeAtPoint& p : points_) {
+    const Vec3 a = Interpolate(p.dn, e);
+    double n = ea * 0.5 * (a.squaredNorm() - 1.0);
+    if (c > 0.0) n += ea * c * a.dot(Interpolate(p.dn, e_dot));
+    Vec3 f_a = n * a;
+    if (bending) {
+      const BendingDensity bd = Bending(props_.ei, a, Interpolate(p.ddn, e), false);
+      f_a += bd.u_a;
+      const Vec3 f_b = p.weight_dx * bd.u_b;
+      f_a *= p.weight_dx;
+      for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += p.dn[k] * f_a + p.ddn[k] * f_b;
+    } else {
+      f_a *= p.weight_dx;
+      for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += p.dn[k] * f_a;
+    }
+  }
+}
+
 void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
                                 Mat12* damping) const {
+  if (!stiffness && !damping) {
+    InternalForceOnly(e, e_dot, force);
+    return;
+  }
   force->setZero();
   if (stiffness) stiffness->setZero();
   if (damping) damping->setZero();

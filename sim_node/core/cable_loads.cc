@@ -23,6 +23,28 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
   const bool added = ctx.added_mass_per_length > 0.0;
   if (!ctx.drag && !added) return r;
 
+  if (!jac) {
+    // the residual alone (Newton iterations with a kept matrix): R -= int S^T f dx
+    for (const ShapeAtPoint& p : element.points()) {
+      const Vec3 a = Interpolate(p.dn, e);
+      Vec3 f = Vec3::Zero();
+      if (ctx.drag) {
+        const Vec3 v_rel = Interpolate(p.n, e_dot) - ctx.current;
+        f = scale * CableDrag(ctx.fluid, ctx.diameter, a, v_rel, false).f;
+      }
+      if (added) {
+        // f_am = -m_a (I - t t^T) r_ddot  (Eq. 22-23)
+        const Vec3 acc = Interpolate(p.n, e_ddot);
+        const Vec3 t = a.normalized();
+        f -= ctx.added_mass_per_length * (acc - t.dot(acc) * t);
+      }
+      f *= p.weight_dx;
+      for (int k = 0; k < 4; ++k) r.segment<3>(3 * k) -= p.n[k] * f;
+    }
+    return r;
+  }
+
+  // the residual and its Jacobians
   for (const ShapeAtPoint& p : element.points()) {
     const Vec3 a = Interpolate(p.dn, e);
     Vec3 f = Vec3::Zero();     // load per unit length, enters R with a minus sign
@@ -31,24 +53,21 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
     Mat3 m_pt = Mat3::Zero();  // added mass per length at this point
     if (ctx.drag) {
       const Vec3 v_rel = Interpolate(p.n, e_dot) - ctx.current;
-      const DragResult d = CableDrag(ctx.fluid, ctx.diameter, a, v_rel, jac != nullptr);
+      const DragResult d = CableDrag(ctx.fluid, ctx.diameter, a, v_rel, true);
       f += scale * d.f;
-      if (jac) {
-        f_a += scale * d.df_da;
-        f_v += scale * d.df_dv;
-      }
+      f_a += scale * d.df_da;
+      f_v += scale * d.df_dv;
     }
     if (added) {
       // f_am = -m_a (I - t t^T) r_ddot  (Eq. 22-23)
       const Vec3 acc = Interpolate(p.n, e_ddot);
       m_pt = ctx.added_mass_per_length * NormalProjector(a);
       f -= m_pt * acc;
-      if (jac) f_a += AddedMassTangentDerivative(ctx.added_mass_per_length, a, acc);
+      f_a += AddedMassTangentDerivative(ctx.added_mass_per_length, a, acc);
     }
     const double w = p.weight_dx;
     for (int k = 0; k < 4; ++k) {
       r.segment<3>(3 * k) -= (w * p.n[k]) * f;
-      if (!jac) continue;
       for (int j = 0; j < 4; ++j) {
         // R = -int S^T f dx: dR/de = -int S_k f_a S'_j, dR/de_dot = -int S_k f_v S_j
         jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.dn[j]) * f_a;

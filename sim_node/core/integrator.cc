@@ -40,6 +40,7 @@ bool Integrator::InitializeAcceleration(State* s) {
   s->a.setZero(n);
   s->lambda.setZero(m);
   JacobianCoefficients cf{0.0, 0.0, 1.0};
+  tangent_valid_ = false;  // jac_ now holds the mass matrix, not a Newton matrix
   system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_);
   // acceleration-level constraints: Phi_q a = 0 (linear joints, constant driven velocity)
   phi_.setZero();
@@ -50,7 +51,7 @@ bool Integrator::InitializeAcceleration(State* s) {
   return s->a.allFinite();
 }
 
-Integrator::Attempt Integrator::Newton(State* s, double h) {
+Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const State* guess) {
   Attempt at;
   const AlphaParameters& p = ap_;
   const IntegratorSettings& settings = system_.model().integrator;
@@ -67,24 +68,49 @@ Integrator::Attempt Integrator::Newton(State* s, double h) {
   v_star.noalias() = st.v + (h * (1.0 - p.gamma)) * st.a_alpha;
   a_const.noalias() = (p.alpha_m * st.a_alpha - p.alpha_f * st.a) / (1.0 - p.alpha_f);
   const double a_fac = (1.0 - p.alpha_m) / (1.0 - p.alpha_f);
-  a_hat = st.a_alpha;  // predictor a^_{n+1} = a^_n
+  if (guess) {
+    a_hat = guess->a_alpha;  // the nearby solution's a^_{n+1}
+    st.lambda = guess->lambda;
+  } else {
+    a_hat = st.a_alpha;  // predictor a^_{n+1} = a^_n
+  }
   st.q = q_star + (p.beta * h2) * a_hat;
   st.v = v_star + (p.gamma * h) * a_hat;
   st.a = a_const + a_fac * a_hat;
   const JacobianCoefficients cf{1.0, p.gamma / (p.beta * h), a_fac / (p.beta * h2)};
+  const double tol = settings.tolerance * q_scale_;
+  bool refresh = full || !tangent_valid_ || tangent_h_ != h;
+  ++theta_age_;  // one more step since the kept matrix's rate was measured
+  double dq_prev = 0.0;
   for (int it = 1; it <= settings.max_iterations; ++it) {
     at.iterations = it;
-    system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_, &jac_);
+    // residual always; the Newton matrix only when it is refreshed
+    system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_,
+                     refresh ? &jac_ : nullptr);
     if (!r_.allFinite() || !phi_.allFinite()) {
       at.non_finite = true;
       return at;
     }
     at.residual = r_.lpNorm<Eigen::Infinity>();
     r_.cwiseAbs().maxCoeff(&at.worst_dof);
+    if (refresh) {
+      tangent_valid_ = false;
+      if (!jac_.Factor()) {
+        at.non_finite = true;
+        return at;
+      }
+      tangent_valid_ = true;
+      tangent_h_ = h;
+      theta_ = 0.0;
+      theta_age_ = kMaxThetaAge + 1;  // the new matrix's rate is not known yet
+      ++tangent_refreshes_;
+    } else {
+      at.reused = true;
+    }
     // rhs = -[R; Phi] in block order (negated in place: no temporaries)
     system_.ToBlocks(r_, phi_, &rhs_);
     rhs_ = -rhs_;
-    if (!jac_.Solve(&rhs_)) {
+    if (!jac_.SolveFactored(&rhs_)) {
       at.non_finite = true;
       return at;
     }
@@ -94,21 +120,43 @@ Integrator::Attempt Integrator::Newton(State* s, double h) {
     a_hat += dq_ / (p.beta * h2);
     st.v = v_star + (p.gamma * h) * a_hat;
     st.a = a_const + a_fac * a_hat;
-    if (dq_.lpNorm<Eigen::Infinity>() <= settings.tolerance * q_scale_) {
+    // contraction rate of a kept matrix (a fresh one converges quadratically: theta = 0)
+    const double dq_norm = dq_.lpNorm<Eigen::Infinity>();
+    // measured: the same matrix gave this increment and the one before
+    const bool measured = !refresh && it > 1;
+    if (measured) {
+      theta_ = dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
+      theta_age_ = 0;
+    }
+    dq_prev = dq_norm;
+    // a fresh matrix: classic Newton test (quadratic convergence); a kept one: its rate must
+    // be known (measured in this step, or at most kMaxThetaAge steps ago for the first
+    // iteration) to bound the error left
+    const bool rate_known = refresh || measured || theta_age_ <= kMaxThetaAge;
+    const bool converged =
+        dq_norm <= tol && rate_known && theta_ < 1.0 && theta_ / (1.0 - theta_) * dq_norm <= tol;
+    if (converged) {
       at.ok = true;
       st.a_alpha = a_hat;
       st.t = t1;
       return at;
     }
+    refresh = full || theta_ > kMaxContraction;
   }
   return at;
 }
 
-StepStatus Integrator::Advance(State* s, double h, int level) {
+StepStatus Integrator::Advance(State* s, double h, int level, const State* guess) {
   StepStatus status;
   backup_[level] = *s;
-  const Attempt at = Newton(s, h);
+  Attempt at = Newton(s, h, false, guess);
   status.iterations = at.iterations;
+  if (!at.ok && at.reused) {
+    // the kept matrix may be what failed: retry with classic Newton before halving
+    *s = backup_[level];
+    at = Newton(s, h, true, nullptr);
+    status.iterations += at.iterations;
+  }
   status.residual = at.residual;
   if (at.ok) return status;
   last_failure_ = at;
@@ -119,9 +167,9 @@ StepStatus Integrator::Advance(State* s, double h, int level) {
   }
   StepStatus total;
   total.substeps = 0;
-  total.iterations = at.iterations;
+  total.iterations = status.iterations;
   for (int half = 0; half < 2; ++half) {
-    const StepStatus sub = Advance(s, 0.5 * h, level + 1);
+    const StepStatus sub = Advance(s, 0.5 * h, level + 1, nullptr);
     total.iterations += sub.iterations;
     total.substeps += sub.substeps;
     total.residual = std::max(total.residual, sub.residual);
@@ -133,9 +181,9 @@ StepStatus Integrator::Advance(State* s, double h, int level) {
   return total;
 }
 
-StepStatus Integrator::Step(State* s, double h) {
+StepStatus Integrator::Step(State* s, double h, const State* guess) {
   const double t0 = s->t;
-  StepStatus status = Advance(s, h, 0);
+  StepStatus status = Advance(s, h, 0, guess);
   if (status.ok() && !(s->q.allFinite() && s->v.allFinite())) status.code = StepStatus::kNonFinite;
   if (!status.ok()) {
     const int levels = system_.model().integrator.max_substep_level;

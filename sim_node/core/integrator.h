@@ -13,6 +13,16 @@
 //   [ Phi_q                   0       ] [dlambda] = [ -Phi ],
 // c_a = (1 - alpha_m) / ((1 - alpha_f) beta h^2), c_v = gamma / (beta h),
 // solved block-tridiagonally. A step whose Newton fails is halved recursively.
+//
+// Modified Newton: the factored Newton matrix is kept across iterations and steps (most steps
+// converge in one iteration, and a residual alone costs a fraction of residual + tangent +
+// factorization). It is refreshed when h changes (c_a, c_v depend on it) or when it contracts
+// too slowly: with theta = |dq_k| / |dq_{k-1}| the contraction rate of the kept matrix, the
+// error left after an increment dq is about theta / (1 - theta) |dq| (Hairer & Wanner, Solving
+// ODEs II, IV.8), so an iterate is accepted when |dq| and that estimate are both within the
+// tolerance, and a matrix with theta > kMaxContraction is replaced at the current iterate. A
+// step that fails with a kept matrix is retried with full Newton (a fresh matrix at every
+// iteration) before it is halved.
 
 #include <string>
 #include <vector>
@@ -35,21 +45,36 @@ class Integrator {
  public:
   explicit Integrator(const System& system);
 
-  // advance *state by h (sub-stepping on Newton failure)
-  StepStatus Step(State* state, double h);
+  // advance *state by h (sub-stepping on Newton failure). `guess`, if given, is a solution of
+  // a nearby problem over the same step (the previous vehicle-coupling pass, whose supports
+  // moved slightly): Newton starts from its a^_{n+1} and lambda instead of the predictor.
+  StepStatus Step(State* state, double h, const State* guess = nullptr);
   // consistent a and lambda at the current q, v: [M_eff Phi_q^T; Phi_q 0] [a; lambda] = [Q - F; 0]
   bool InitializeAcceleration(State* state);
+  // Newton matrices factored so far (full evaluations of the tangent), for profiling and tests
+  long tangent_refreshes() const { return tangent_refreshes_; }
+
+  // a kept Newton matrix is replaced once its contraction rate exceeds this: the remaining
+  // error is then at most theta / (1 - theta) = 0.43 of the last increment, and a fresh matrix
+  // (quadratic convergence) is cheaper than the extra iterations a slower rate would cost
+  static constexpr double kMaxContraction = 0.3;
+  // a first iteration with a kept matrix is accepted on the rate measured at most this many
+  // steps ago; otherwise one more iteration measures it (an increment alone does not bound the
+  // error of an inexact matrix: it may be stiffer than the true one in some direction)
+  static constexpr int kMaxThetaAge = 8;
 
  private:
   struct Attempt {
     bool ok = false;
     bool non_finite = false;
+    bool reused = false;  // a kept (not freshly computed) Newton matrix was used
     int iterations = 0;
     double residual = 0.0;
     int worst_dof = 0;
   };
-  Attempt Newton(State* state, double h);
-  StepStatus Advance(State* state, double h, int level);
+  // full: a fresh Newton matrix at every iteration (classic Newton); else modified Newton
+  Attempt Newton(State* state, double h, bool full, const State* guess);
+  StepStatus Advance(State* state, double h, int level, const State* guess);
 
   const System& system_;
   AlphaParameters ap_;
@@ -57,8 +82,14 @@ class Integrator {
   BlockTridiagonal jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
-  std::vector<State> backup_;  // one saved state per sub-stepping level
+  std::vector<State> backup_;                          // one saved state per sub-stepping level
   Attempt last_failure_;
+  // the factored Newton matrix in jac_: valid, for which step size, its contraction rate
+  bool tangent_valid_ = false;
+  double tangent_h_ = 0.0;
+  double theta_ = 0.0;
+  int theta_age_ = kMaxThetaAge + 1;  // steps since theta_ was measured
+  long tangent_refreshes_ = 0;
 };
 
 }  // namespace towsim::core

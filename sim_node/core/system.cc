@@ -172,7 +172,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     element_.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     const Vec12 rl =
         ElementLoadResidual(element_, loads_, ee, ed, ea, load_scale, jac ? &lj : nullptr);
-    residual->segment<12>(o) += mass * ea + force + rl;
+    residual->segment<12>(o) += element_.MassTimes(ea) + force + rl;
     if (!jac) continue;
     // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
     j = cf.c_a * (mass + lj.added_mass) + cf.c_q * (k + lj.d_de);

@@ -4,15 +4,36 @@
 #include <cmath>
 #include <sstream>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
 namespace towsim::core {
 
 VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
     : system_(system), integrator_(integrator) {
   const CableParams& c = system_->model().cable;
   const CableEnd* ends[2] = {&c.start, &c.end};
-  for (int e = 0; e < 2; ++e)
-    if (ends[e]->kind == EndKind::kVehicle) vehicle_end_[e] = ends[e]->body;
+  for (int e = 0; e < 2; ++e) {
+    if (ends[e]->kind != EndKind::kVehicle) continue;
+    vehicle_end_[e] = ends[e]->body;
+    // G = J M^-1 J^T, J = [I, -S(r)]: the point's acceleration per unit force at the point
+    const VehicleParams& vp = system_->model().vehicles[ends[e]->body].params;
+    const Mat6 m = RigidBodyMassMatrix(vp) + vp.added_mass;
+    const Vec3 r = ends[e]->at_B;
+    Eigen::Matrix<double, 3, 6> j;
+    // J = [I, -S(r)] (point velocity v + omega x r = v - S(r) omega)
+    j << Eigen::Matrix3d::Identity(),
+        (Eigen::Matrix3d() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0)
+            .finished();
+    const Eigen::Matrix3d g = j * m.partialPivLu().solve(j.transpose());
+    compliance_[e] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(0.5 * (g + g.transpose()),
+                                                                    Eigen::EigenvaluesOnly)
+                         .eigenvalues()
+                         .cwiseAbs()
+                         .maxCoeff();
+  }
   const size_t nv = system_->model().vehicles.size();
+  f_previous_.resize(nv);
   vehicles_.resize(nv);
   f0_.resize(nv);
   f1_.resize(nv);
@@ -35,11 +56,22 @@ Vec3 VehicleCoupling::JointForce(const State& state, int v) const {
 }
 
 void VehicleCoupling::HoldSupports(const State& state) {
+  have_previous_ = false;
+  previous_pass_ = state;  // sizes the work space (Step does not allocate)
   for (int e = 0; e < 2; ++e) {
     if (vehicle_end_[e] < 0) continue;
     const Vec3 p = AttachmentPoint(state.vehicles[vehicle_end_[e]], e);
     system_->SetVehicleSupport(e, p, state.t, p, state.t);
   }
+}
+
+StepStatus VehicleCoupling::Accept(const State& start, double h, StepStatus* status) {
+  // remember lambda_n for the next step's predictor
+  const int nv = static_cast<int>(f_previous_.size());
+  for (int v = 0; v < nv; ++v) f_previous_[v] = JointForce(start, v);
+  h_previous_ = h;
+  have_previous_ = true;
+  return *status;
 }
 
 StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>& commands,
@@ -57,7 +89,15 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   std::vector<Vec3>& f1 = f1_;
   std::vector<Vec3>& residual = residual_;
   std::vector<Vec3>& residual_prev = residual_prev_;
-  for (int v = 0; v < nv; ++v) f0[v] = f1[v] = JointForce(start_, v);
+  // predictor of lambda_{n+1}: linear extrapolation of the last two steps (strong scheme)
+  const bool predict = strong && have_previous_ && h_previous_ > 0.0;
+  for (int v = 0; v < nv; ++v) {
+    f0[v] = f1[v] = JointForce(start_, v);
+    if (predict) f1[v] += (h / h_previous_) * (f0[v] - f_previous_[v]);
+  }
+  // the largest point compliance of a vehicle end: the force tolerance of the residual test
+  double compliance = 0.0;
+  for (int e = 0; e < 2; ++e) compliance = std::max(compliance, compliance_[e]);
   Vec3 p_end_prev[2];
   double omega = 0.5;  // Aitken relaxation factor, first value
   StepStatus status;
@@ -69,8 +109,9 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     vehicles = start_.vehicles;  // same size: copies in place
     for (int v = 0; v < nv; ++v) {
       PointLoad load;
-      load.force_W0 = f0[v];
-      load.force_W1 = strong ? f1[v] : f0[v];
+      // strong: the mean of lambda_n and lambda_{n+1}, constant over the step (see the header)
+      load.force_W0 = strong ? 0.5 * (f0[v] + f1[v]) : f0[v];
+      load.force_W1 = load.force_W0;
       for (int e = 0; e < 2; ++e)
         if (vehicle_end_[e] == v)
           load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
@@ -88,8 +129,13 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       p_end_prev[e] = p1;
       system_->SetVehicleSupport(e, p0, t0, p1, t0 + h);
     }
+    // later passes start the cable's Newton from the previous pass (its supports moved a
+    // little); a pass that needed substeps is no such guess
+    const bool warm = k > 1 && previous_pass_substeps_ == 1;
+    if (warm) previous_pass_ = *state;  // same sizes: copies in place
     *state = start_;
-    const StepStatus cable = integrator_->Step(state, h);
+    const StepStatus cable = integrator_->Step(state, h, warm ? &previous_pass_ : nullptr);
+    previous_pass_substeps_ = cable.substeps;
     status.iterations += cable.iterations;
     status.substeps = std::max(status.substeps, cable.substeps);
     status.residual = cable.residual;
@@ -111,17 +157,20 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       status.message = m.str();
       return status;
     }
-    if (!strong || (k > 1 && moved <= tol)) return status;
+    if (!strong || (k > 1 && moved <= tol)) return Accept(start_, h, &status);
     // Aitken-relaxed update of the joint force at t_{n+1}
-    double num = 0.0, den = 0.0;
+    double num = 0.0, den = 0.0, r_max = 0.0;
     for (int v = 0; v < nv; ++v) {
       residual[v] = JointForce(*state, v) - f1[v];
+      r_max = std::max(r_max, residual[v].norm());
       if (k > 1) {
         const Vec3 d = residual[v] - residual_prev[v];
         num += residual_prev[v].dot(d);
         den += d.squaredNorm();
       }
     }
+    // the residual can no longer move an attachment point by the tolerance: converged
+    if (0.5 * h * h * compliance * r_max <= tol) return Accept(start_, h, &status);
     if (k > 1 && den > 0.0) omega = std::clamp(-omega * num / den, 0.05, 1.5);
     for (int v = 0; v < nv; ++v) {
       f1[v] += omega * residual[v];

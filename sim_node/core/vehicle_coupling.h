@@ -6,11 +6,28 @@
 // attachment points as driven supports, moving linearly from their positions at t_n to those
 // at t_{n+1}, which gives the new joint force.
 //   staggered (the paper's scheme): one pass, the vehicles see lambda_n (constant);
-//   strong: the pass is repeated with the vehicles seeing lambda varying linearly from lambda_n
-//   to the latest lambda_{n+1}, with Aitken's dynamic relaxation (Kuettler & Wall 2008) on
-//   lambda_{n+1}, until the attachment points move by less than the Newton tolerance.
+//   strong: the pass is repeated with the vehicles seeing the mean (lambda_n + lambda_{n+1}) / 2
+//   of the joint force, constant over the step, with Aitken's dynamic relaxation (Kuettler &
+//   Wall 2008) on lambda_{n+1}, until the attachment points move by less than the Newton
+//   tolerance.
+// Why the mean: the joint impulse is h (lambda_n + lambda_{n+1}) / 2 either way, but the
+// attachment point's displacement weights the two forces as the Newmark average-acceleration
+// rule (beta = 1/4: h^2/4 each), which is unconditionally stable against the stiff cable end
+// (k = EA / l_e). A force linear in time gives the linear-acceleration weights (h^2/3 on
+// lambda_n, h^2/6 on lambda_{n+1}; beta = 1/6), stable only for omega h < sqrt(12) with
+// omega^2 = k / m_vehicle: with the shipped cable that failed above h = 0.13 s, with E x10 at
+// h = 0.05 s (tests/stress). Both are second order.
 // The iteration converges when (stiffness of the cable end + its inertia / h^2) h^2 / (2 m_veh)
 // < 1, i.e. for any step at which the cable's own integration is meaningful.
+//
+// Cost (issue 7): each pass is a full cable solve, so the strong scheme starts from a predictor,
+// lambda_{n+1} ~ lambda_n + (h / h_prev)(lambda_n - lambda_{n-1}) (linear extrapolation of the
+// last two steps), and stops as soon as the joint-force residual r = lambda_{n+1} - guess
+// cannot move an attachment point by more than the tolerance: a force error growing linearly
+// to r over the step moves the point by at most (h^2 / 2) g |r|, g the largest eigenvalue of
+// the point's compliance G = J M^-1 J^T (M = M_RB + M_A, J = [I, -S(at_B)]: point velocity
+// from nu). Most steps then need one pass, like the staggered scheme, and still satisfy the
+// strong scheme's tolerance.
 
 #include <vector>
 
@@ -25,7 +42,8 @@ class VehicleCoupling {
  public:
   VehicleCoupling(System* system, Integrator* integrator);
 
-  // sets the attachment points of the current state as the (static) supports
+  // sets the attachment points of the current state as the (static) supports; forgets the
+  // joint-force history of the predictor (the state may have been replaced)
   void HoldSupports(const State& state);
   // one step of length h of cable and vehicles with the given vehicle commands
   StepStatus Step(State* state, const std::vector<VehicleCommand>& commands, double h);
@@ -37,12 +55,22 @@ class VehicleCoupling {
   Vec3 AttachmentPoint(const VehicleState& vs, int end) const;
 
  private:
+  // a converged step: keeps lambda_n (of `start`) and h for the next predictor
+  StepStatus Accept(const State& start, double h, StepStatus* status);
+
   System* system_;
   Integrator* integrator_;
-  int vehicle_end_[2] = {-1, -1};  // vehicle index holding each cable end, or -1
+  int vehicle_end_[2] = {-1, -1};      // vehicle index holding each cable end, or -1
+  double compliance_[2] = {0.0, 0.0};  // largest eigenvalue of G at each vehicle end [1/kg]
   int last_iterations_ = 0;
+  // joint forces of the previous step and its length, for the predictor
+  bool have_previous_ = false;
+  double h_previous_ = 0.0;
+  std::vector<Vec3> f_previous_;
   // per-step work space, sized once: Step does not allocate
   State start_;
+  State previous_pass_;  // the cable's solution of the previous strong-coupling pass
+  int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
   std::vector<Vec3> f0_, f1_, residual_, residual_prev_;
 };

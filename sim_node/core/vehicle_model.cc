@@ -146,9 +146,13 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   return tau;
 }
 
-VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
-                               const VehicleState& s, const VehicleCommand& cmd,
-                               const Vec3& force_B, const Vec3& moment_B) {
+namespace {
+
+// the right-hand side with the factored total mass M_RB + M_A (constant: factored once per RK4
+// step instead of once per stage)
+VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const VehicleState& s,
+                        const VehicleCommand& cmd, const Vec3& force_B, const Vec3& moment_B,
+                        const Mat6& m_rb, const Eigen::PartialPivLU<Mat6>& mass_lu) {
   VehicleDerivative d;
   const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   // p_dot_W = R_WB nu_1, attitude rate omega_B
@@ -159,9 +163,8 @@ VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
   Vec6 rhs = HydrodynamicForces(p, env, s);
   rhs.head<3>() += force_B;
   rhs.tail<3>() += moment_B;
-  const Mat6 m_rb = RigidBodyMassMatrix(p);
   rhs -= M2C(m_rb, s.nu) * s.nu;
-  d.nu_dot = (m_rb + p.added_mass).partialPivLu().solve(rhs);
+  d.nu_dot = mass_lu.solve(rhs);
 
   // actuators: thrust_dot = (clamp(cmd, [-max/4, max]) - thrust) / T; fins: rate-limited servo
   if (p.has_propeller) {
@@ -173,15 +176,27 @@ VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
   return d;
 }
 
+}  // namespace
+
+VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
+                               const VehicleState& s, const VehicleCommand& cmd,
+                               const Vec3& force_B, const Vec3& moment_B) {
+  const Mat6 m_rb = RigidBodyMassMatrix(p);
+  const Eigen::PartialPivLU<Mat6> lu(m_rb + p.added_mass);
+  return Rates(p, env, s, cmd, force_B, moment_B, m_rb, lu);
+}
+
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
                     const PointLoad& load, double h, VehicleState* s) {
   // classical RK4; stage c in {0, 1/2, 1}: f_W(c) = f_W0 + c (f_W1 - f_W0), applied at point_B
   // with the stage attitude: force_B = R^T f_W, moment_B = point_B x force_B (paper Eq. 29-30)
   const VehicleState s0 = *s;
+  const Mat6 m_rb = RigidBodyMassMatrix(p);
+  const Eigen::PartialPivLU<Mat6> mass_lu(m_rb + p.added_mass);
   auto rates = [&](const VehicleState& x, double c) {
     const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
     const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
-    return VehicleRates(p, env, x, cmd, f_b, load.point_B.cross(f_b));
+    return Rates(p, env, x, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu);
   };
   // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
   // components are integrated like the other states and renormalized at the end)

@@ -173,25 +173,23 @@ TEST(StressStiffness, SteadyTowTenTimesStiffer) {
   ExpectSteadyTowSettled(sim);
 }
 
-// With the two vehicles the 10x stiffer cable is a limit of the strong coupling at the shipped
-// step: the axial force's high-frequency content, fed back into the vehicles every coupling
-// iteration, grows (energy above the work put in) until Newton or the coupling fails (t ~ 8-9 s,
-// docs/stress_and_cost.md). That must end in a clean failure with its diagnosis, never in a
-// non-finite state; if the core gets past it, the run must be sane.
+// With the two vehicles the 10x stiffer cable was the limit of the strong coupling while the
+// vehicles saw the joint force linear in time over the step (Newmark linear-acceleration
+// weights, stable only for omega h < sqrt(12) with omega^2 = (EA / l_e) / m_vehicle): the run
+// failed at t ~ 8-9 s with the top tension swinging -20..+32 kN. The vehicles now see the
+// step's mean joint force (average-acceleration weights, unconditionally stable;
+// core/vehicle_coupling.h), and the run must go through and stay sane: no energy beyond the
+// work put in, and a smooth top tension (the staggered scheme's, below, swings to -5.4 kN).
 TEST(StressStiffness, Case2TenTimesStifferStrongCoupling) {
   const core::Model model = LoadShippedScene("case2_uturn.yaml", {"cable.youngs_modulus=7.0e9"});
   Simulation sim(model);
   const StressResult r = RunStress(&sim, 250.0);
   Print("case 2, E x 10, strong", r);
-  EXPECT_FALSE(r.nonfinite_state);
-  if (r.ok) {
-    ExpectSane(r, 250.0);
-  } else {
-    EXPECT_NE(r.failure.find("t = "), std::string::npos) << r.failure;
-    EXPECT_TRUE(r.failure.find("residual") != std::string::npos ||
-                r.failure.find("coupling did not converge") != std::string::npos)
-        << r.failure;
-  }
+  ExpectSane(r, 250.0);
+  // the cable never pushes: a compressive top force would be the instability's signature
+  // (measured minimum 3 N at the shipped step; the limit allows numerical noise of the slack
+  // cable in the turn)
+  EXPECT_GT(r.min_top_tension, -100.0);
 }
 
 // the paper's staggered scheme (vehicles with the previous step's force) runs it through
