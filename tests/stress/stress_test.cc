@@ -5,7 +5,7 @@
 // std::mt19937 for the random commands.
 //
 // Scenes: steady_tow (driven tow point, sphere), case1_forward (two 6-DOF vehicles, strong
-// coupling), case2_uturn (Case 1 plus a 20 deg turn). Numbers printed for docs/stress_and_cost.md.
+// coupling), case2_uturn (Case 1 plus a 20 deg turn). Numbers printed for docs/benchmarks.md ("Stability under stress").
 
 #include <algorithm>
 #include <cmath>
