@@ -37,7 +37,7 @@
 #include "core/script.h"
 #include "core/simulation.h"
 #include "scene/scene_loader.h"
-#include "towed_cable_steady.h"
+#include "towed_cable_steady_core.h"
 
 namespace {
 
@@ -201,26 +201,6 @@ double TensionError(const Run& r, const Run& ref) {
   return std::sqrt(num / den);
 }
 
-towsim::reference::TowedCableSolution SteadySolution(const towsim::core::Model& m) {
-  towsim::reference::TowedCableProblem p;
-  const towsim::core::CableParams& c = m.cable;
-  p.length = c.length;
-  p.diameter = c.diameter;
-  p.density = c.density;
-  p.youngs_modulus = c.youngs_modulus;
-  const towsim::core::SphereBody& b = m.bodies.at(0);
-  p.sphere_mass = b.mass;
-  p.sphere_volume = b.volume;
-  p.sphere_cd = b.drag_coefficient;
-  p.fluid.density = m.environment.water_density;
-  p.fluid.dynamic_viscosity = m.environment.dynamic_viscosity;
-  p.gravity = m.environment.gravity;
-  p.current = m.environment.current;
-  p.tow_velocity = c.start.velocity;
-  p.stretch_law = towsim::reference::StretchLaw::kGreenTrueTension;  // the core's law
-  return towsim::reference::SolveTowedCableSteady(p);
-}
-
 std::string Num(double x) {
   if (!std::isfinite(x)) return "nan";
   char b[32];
@@ -264,7 +244,10 @@ int Sweep(const std::string& out_path, const std::vector<SceneSweep>& scenes, bo
     }
     const bool steady = !sc.vehicles;
     towsim::reference::TowedCableSolution analytic;
-    if (steady) analytic = SteadySolution(ref.model);
+    if (steady) {
+      analytic =
+          towsim::reference::SolveTowedCableSteady(towsim::reference::SteadyTowProblem(ref.model));
+    }
     // the reference's own convergence in space: twice its elements (in time: the sweep's run at
     // twice its step, 40 elements, ga0.8, in the rows below)
     const Run finer =

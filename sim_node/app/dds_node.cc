@@ -14,6 +14,7 @@
 
 #include "app/dds_pacer.h"
 #include "app/dds_publisher.h"
+#include "app/dds_uri.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
 #include "core/script.h"
@@ -127,7 +128,7 @@ class DdsNode {
   long steps_to_run_ = -1;  // < 0: no end
   bool paused_ = false;
   bool waiting_for_controllers_ = false;  // --wait-for-controllers, before the first command
-  long step_budget_ = 0;  // STEP n while paused: steps left
+  long step_budget_ = 0;                  // STEP n while paused: steps left
   core::StepStatus last_status_;
   double step_wall_ = 0.0;  // [s]
   long last_output_ = -1;
@@ -204,16 +205,7 @@ int DdsNode::Setup() {
 
   // DDS: the configuration given, else $CYCLONEDDS_URI, plus the node's exit behaviour
   std::string config = opt_.dds_config;
-  if (config.empty()) {
-    const char* uri = std::getenv("CYCLONEDDS_URI");
-    if (uri == nullptr || *uri == '\0') {
-      std::fprintf(stderr,
-                   "sim_node: warning: CYCLONEDDS_URI is not set: Cyclone DDS uses its defaults; "
-                   "the project's loopback configuration is config/cyclonedds.xml\n");
-    } else {
-      config = uri;
-    }
-  }
+  if (config.empty()) config = DdsUriFromEnvironment("sim_node");
   config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
   try {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);

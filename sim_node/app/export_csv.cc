@@ -15,6 +15,7 @@
 #include "core/vehicle_model.h"
 #include "io/cdr_messages.h"
 #include "io/cdr_reader.h"
+#include "io/csv_writer.h"
 #include "io/mcap_reader.h"
 
 namespace towsim::app {
@@ -23,18 +24,6 @@ namespace {
 using io::cdr::CableState;
 using io::cdr::Odometry;
 using io::cdr::WrenchStamped;
-
-// a name as a CSV field, as io/csv_writer writes it: quoted (RFC 4180) only if it holds a
-// comma, quote or line break
-std::string Field(const std::string& name) {
-  if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
-  std::string quoted = "\"";
-  for (char c : name) {
-    if (c == '"') quoted += '"';
-    quoted += c;
-  }
-  return quoted + "\"";
-}
 
 std::int64_t StampNs(const io::cdr::Time& t) {
   return static_cast<std::int64_t>(t.sec) * 1'000'000'000 + t.nanosec;
@@ -192,10 +181,10 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create CSV directory '" + dir + "': " + ec.message());
   const std::filesystem::path d(dir);
-  CsvFile bodies_csv(d / "bodies.csv", "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r");
-  CsvFile cable_csv(d / "cable.csv", "t,node,x,y,z,tension");
-  CsvFile forces_csv(d / "forces.csv", "t,body,fx,fy,fz,mx,my,mz");
-  CsvFile status_csv(d / "status.csv", "t,step,newton_iterations,residual,wall_us");
+  CsvFile bodies_csv(d / "bodies.csv", io::kCsvBodiesHeader);
+  CsvFile cable_csv(d / "cable.csv", io::kCsvCableHeader);
+  CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
+  CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
   ExportCounts counts;
 
   for (const auto& [stamp, frame] : frames) {
@@ -210,8 +199,8 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
       const core::Vec3 rpy = core::EulerZYX(q_WB);
       std::fprintf(
           bodies_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-          t, Field(b).c_str(), m.position.x, m.position.y, m.position.z, rpy.x(), rpy.y(), rpy.z(),
-          m.linear.x, m.linear.y, m.linear.z, m.angular.x, m.angular.y, m.angular.z);
+          t, io::CsvField(b).c_str(), m.position.x, m.position.y, m.position.z, rpy.x(), rpy.y(),
+          rpy.z(), m.linear.x, m.linear.y, m.linear.z, m.angular.x, m.angular.y, m.angular.z);
       ++counts.bodies_rows;
     }
     if (frame.cable) {
@@ -227,8 +216,9 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
       const auto w = frame.forces.find(b);
       if (w == frame.forces.end()) continue;
       const WrenchStamped& m = w->second;
-      std::fprintf(forces_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t, Field(b).c_str(),
-                   m.force.x, m.force.y, m.force.z, m.torque.x, m.torque.y, m.torque.z);
+      std::fprintf(forces_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
+                   io::CsvField(b).c_str(), m.force.x, m.force.y, m.force.z, m.torque.x, m.torque.y,
+                   m.torque.z);
       ++counts.forces_rows;
     }
   }

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "app/dds_uri.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
 #include "dds/entities.h"
@@ -394,15 +395,10 @@ int main(int argc, char** argv) {
     return kExitOk;
   }
   towsim::app::InstallStopHandlers();
-  const char* uri = std::getenv("CYCLONEDDS_URI");
-  if (uri == nullptr || *uri == '\0') {
-    std::fprintf(stderr,
-                 "towsim_record: warning: CYCLONEDDS_URI is not set: Cyclone DDS uses its "
-                 "defaults; the project's loopback configuration is config/cyclonedds.xml\n");
-  }
+  const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_record");
   std::unique_ptr<Recorder> recorder;
   try {
-    recorder = std::make_unique<Recorder>(options, uri == nullptr ? "" : uri);
+    recorder = std::make_unique<Recorder>(options, uri);
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }

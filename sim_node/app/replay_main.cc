@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "app/dds_uri.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
 #include "app/topic_types.h"
@@ -230,15 +231,10 @@ int Replay(const Options& opt) {
     }
   }
   const std::string recorded_ns = RecordedNamespace(reader.channels());
-  const char* uri = std::getenv("CYCLONEDDS_URI");
-  if (uri == nullptr || *uri == '\0') {
-    std::fprintf(stderr,
-                 "towsim_replay: warning: CYCLONEDDS_URI is not set: Cyclone DDS uses its "
-                 "defaults; the project's loopback configuration is config/cyclonedds.xml\n");
-  }
+  const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_replay");
   std::unique_ptr<dds::Participant> participant;
   try {
-    participant = std::make_unique<dds::Participant>(opt.domain, uri == nullptr ? "" : uri);
+    participant = std::make_unique<dds::Participant>(opt.domain, uri);
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }

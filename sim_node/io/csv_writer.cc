@@ -11,13 +11,14 @@
 namespace towsim::io {
 namespace {
 
-constexpr char kBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
-constexpr char kCableHeader[] = "t,node,x,y,z,tension";
-constexpr char kForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
-constexpr char kStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+// a cable end held by the ground or a kinematic driver carries a support reaction of its own
+bool IsHeldSupport(const core::CableEnd& end) {
+  return end.kind == core::EndKind::kFixed || end.kind == core::EndKind::kDriven;
+}
 
-// a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
-std::string Field(const std::string& name) {
+}  // namespace
+
+std::string CsvField(const std::string& name) {
   if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
   std::string quoted = "\"";
   for (char c : name) {
@@ -27,13 +28,6 @@ std::string Field(const std::string& name) {
   return quoted + "\"";
 }
 
-// a cable end held by the ground or a kinematic driver carries a support reaction of its own
-bool IsHeldSupport(const core::CableEnd& end) {
-  return end.kind == core::EndKind::kFixed || end.kind == core::EndKind::kDriven;
-}
-
-}  // namespace
-
 CsvWriter::CsvWriter(const std::string& dir) : dir_(dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
@@ -41,10 +35,10 @@ CsvWriter::CsvWriter(const std::string& dir) : dir_(dir) {
     throw std::runtime_error("cannot create CSV directory '" + dir_ + "': " + ec.message());
   }
   try {
-    Open(bodies_, "bodies.csv", kBodiesHeader);
-    Open(cable_, "cable.csv", kCableHeader);
-    Open(forces_, "forces.csv", kForcesHeader);
-    Open(status_, "status.csv", kStatusHeader);
+    Open(bodies_, "bodies.csv", kCsvBodiesHeader);
+    Open(cable_, "cable.csv", kCsvCableHeader);
+    Open(forces_, "forces.csv", kCsvForcesHeader);
+    Open(status_, "status.csv", kCsvStatusHeader);
   } catch (...) {
     for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
       if (file->f != nullptr) std::fclose(file->f);
@@ -88,8 +82,8 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
     const core::Vec6 nu = sim.body_twist(b);
     std::fprintf(bodies_.f, "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-                 t, Field(sim.body_name(b)).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), rpy.x(), rpy.y(),
-                 rpy.z(), nu(0), nu(1), nu(2), nu(3), nu(4), nu(5));
+                 t, CsvField(sim.body_name(b)).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), rpy.x(),
+                 rpy.y(), rpy.z(), nu(0), nu(1), nu(2), nu(3), nu(4), nu(5));
   }
 
   for (int i = 0; i < sim.num_nodes(); ++i) {
@@ -103,7 +97,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     core::Vec3 f, m;
     sim.body_cable_wrench(b, &f, &m);
     std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
-                 Field(sim.body_name(b)).c_str(), f.x(), f.y(), f.z(), m.x(), m.y(), m.z());
+                 CsvField(sim.body_name(b)).c_str(), f.x(), f.y(), f.z(), m.x(), m.y(), m.z());
   }
   const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
   const char* end_names[2] = {"cable.start", "cable.end"};

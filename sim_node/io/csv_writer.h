@@ -29,6 +29,15 @@
 
 namespace towsim::io {
 
+// the header lines of the four files (above)
+inline constexpr char kCsvBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
+inline constexpr char kCsvCableHeader[] = "t,node,x,y,z,tension";
+inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
+inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+
+// a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
+std::string CsvField(const std::string& name);
+
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files and writes their

@@ -458,8 +458,12 @@ TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
   ASSERT_TRUE(
       watch.WaitFor([](const Status& s) { return s.state == kFinished; }, &end, kProcessTimeout));
   EXPECT_EQ(end.step, 200u);
+  // no failsafe: no vehicle went publish.command_timeout (0.5 s, 10 steps) without a command,
+  // the first steps included (realtime takes the freshest command at each step, so the
+  // count of commands received is not one per step and vehicle: answers to a status the node
+  // has already stepped past are superseded)
   EXPECT_EQ(end.failsafe_count, 0u);
-  EXPECT_GE(end.received, 2u * 200u);  // both vehicles, every step
+  EXPECT_GT(end.received, 0u);
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();

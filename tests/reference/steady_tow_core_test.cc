@@ -17,7 +17,7 @@
 #include "core/model.h"
 #include "core/simulation.h"
 #include "scene/scene_loader.h"
-#include "towed_cable_steady.h"
+#include "towed_cable_steady_core.h"
 
 namespace towsim::reference {
 namespace {
@@ -35,40 +35,6 @@ constexpr double kLaybackRelTol = 1e-2;
 constexpr double kDepthRelTol = 1e-2;
 constexpr double kTensionRelTol = 2e-2;
 
-struct Sample {
-  double t;
-  double layback;  // x_top - x_sphere [m]
-  double depth;    // z_sphere - z_top [m]
-  double tension;  // |force on the tow point| [N]
-};
-
-TowedCableProblem ReferenceProblem(const core::Model& m) {
-  TowedCableProblem p;
-  const core::CableParams& c = m.cable;
-  p.length = c.length;
-  p.diameter = c.diameter;
-  p.density = c.density;
-  p.youngs_modulus = c.youngs_modulus;
-  const core::SphereBody& b = m.bodies.at(0);
-  p.sphere_mass = b.mass;
-  p.sphere_volume = b.volume;
-  p.sphere_cd = b.drag_coefficient;
-  p.fluid.density = m.environment.water_density;
-  p.fluid.dynamic_viscosity = m.environment.dynamic_viscosity;
-  p.gravity = m.environment.gravity;
-  p.current = m.environment.current;
-  p.tow_velocity = c.start.velocity;
-  p.stretch_law = StretchLaw::kGreenTrueTension;  // the core's law
-  return p;
-}
-
-Sample Measure(const core::Simulation& sim) {
-  const core::CableEnd& top = sim.model().cable.start;
-  const Vec3 p_top = top.position + top.velocity * sim.time();
-  const Vec3 p_sphere = sim.body_position(0);
-  return {sim.time(), p_top.x() - p_sphere.x(), p_sphere.z() - p_top.z(), sim.end_force(0).norm()};
-}
-
 void CheckSteadyTow(const std::vector<std::string>& overrides, double speed, double run_time) {
   const core::Model model = scene::LoadScene(kScene, overrides);
   // the scene is what this test was written for
@@ -85,29 +51,29 @@ void CheckSteadyTow(const std::vector<std::string>& overrides, double speed, dou
   ASSERT_TRUE(model.bodies[0].velocity.isApprox(Vec3(speed, 0.0, 0.0)));
   ASSERT_TRUE(model.environment.current.isZero());
 
-  const TowedCableSolution ref = SolveTowedCableSteady(ReferenceProblem(model));
+  const TowedCableSolution ref = SolveTowedCableSteady(SteadyTowProblem(model));
 
   core::Simulation sim(model);
-  std::vector<Sample> history = {Measure(sim)};
+  std::vector<SteadyTowSample> history = {MeasureSteadyTow(sim)};
   const int steps = static_cast<int>(std::lround(run_time / model.time.step));
   const int per_second = static_cast<int>(std::lround(1.0 / model.time.step));
   for (int i = 1; i <= steps; ++i) {
     const core::StepStatus st = sim.Step();
     ASSERT_TRUE(st.ok()) << st.message << " at t = " << sim.time();
-    if (i % per_second == 0) history.push_back(Measure(sim));
+    if (i % per_second == 0) history.push_back(MeasureSteadyTow(sim));
   }
-  const Sample& last = history.back();
+  const SteadyTowSample& last = history.back();
 
   // settling: the last time any quantity was more than 0.1% away from its final value
   double settle = 0.0;
-  for (const Sample& s : history) {
+  for (const SteadyTowSample& s : history) {
     if (std::abs(s.layback / last.layback - 1.0) > kSettledRelTol ||
         std::abs(s.depth / last.depth - 1.0) > kSettledRelTol ||
         std::abs(s.tension / last.tension - 1.0) > kSettledRelTol) {
       settle = s.t;
     }
   }
-  const Sample& before = history[history.size() - 1 - static_cast<int>(kSettleWindow)];
+  const SteadyTowSample& before = history[history.size() - 1 - static_cast<int>(kSettleWindow)];
   std::printf(
       "steady tow %.0f m/s: settled to 0.1%% by t = %.0f s; change over the last "
       "%.0f s: layback %+.2e, depth %+.2e, tension %+.2e (relative)\n",
@@ -115,7 +81,7 @@ void CheckSteadyTow(const std::vector<std::string>& overrides, double speed, dou
       last.depth / before.depth - 1.0, last.tension / before.tension - 1.0);
   for (double t : {10.0, 30.0, 60.0, 100.0, 150.0, 200.0, 300.0, 450.0, 600.0}) {
     if (t > run_time) break;
-    const Sample& s = history.at(static_cast<int>(t));
+    const SteadyTowSample& s = history.at(static_cast<int>(t));
     std::printf("  t %5.0f s: layback %9.4f m, depth %8.4f m, top tension %9.2f N\n", s.t,
                 s.layback, s.depth, s.tension);
   }
@@ -153,12 +119,12 @@ TEST(SteadyTowCore, ThreeMetresPerSecond) {
 TEST(SteadyTowCore, StaticInitialIsTheSteadyState) {
   for (const double speed : {6.0, 3.0}) {
     const std::string v = "[" + std::to_string(speed) + ", 0, 0]";
-    const core::Model model = scene::LoadScene(
-        kScene, {"cable.initial=static", "cable.start.driven.velocity=" + v,
-                 "cable.initial_velocity=" + v, "bodies.towfish.velocity=" + v});
-    const TowedCableSolution ref = SolveTowedCableSteady(ReferenceProblem(model));
+    const core::Model model =
+        scene::LoadScene(kScene, {"cable.initial=static", "cable.start.driven.velocity=" + v,
+                                  "cable.initial_velocity=" + v, "bodies.towfish.velocity=" + v});
+    const TowedCableSolution ref = SolveTowedCableSteady(SteadyTowProblem(model));
     core::Simulation sim(model);
-    const Sample s0 = Measure(sim);
+    const SteadyTowSample s0 = MeasureSteadyTow(sim);
     // 20 elements against the converged reference: discretization error only (the dynamic
     // run above lands on the same values), an order below the tolerances
     constexpr double kStaticRelTol = 1e-3;
@@ -166,7 +132,7 @@ TEST(SteadyTowCore, StaticInitialIsTheSteadyState) {
     EXPECT_NEAR(s0.depth, ref.depth, kStaticRelTol * ref.depth) << speed;
     EXPECT_NEAR(s0.tension, ref.top_tension, kStaticRelTol * ref.top_tension) << speed;
     for (int i = 0; i < 200; ++i) ASSERT_TRUE(sim.Step().ok());
-    const Sample s1 = Measure(sim);
+    const SteadyTowSample s1 = MeasureSteadyTow(sim);
     // 10 s later: nothing moved (the static state is a solution of the dynamics)
     constexpr double kStayRelTol = 1e-6;
     EXPECT_NEAR(s1.layback, s0.layback, kStayRelTol * s0.layback) << speed;

@@ -2,8 +2,6 @@
 // with finite CSV files, or stops with exit code 3 and a diagnosis that names the time, the step
 // and the residual, leaving behind only finite rows; never silent NaN.
 
-#include <sys/wait.h>
-
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,46 +13,17 @@
 
 #include <gtest/gtest.h>
 
+#include "../unit/run_sim_node.h"
 #include "../unit/temp_dir.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using towsim::test::RunSimNode;
+using towsim::test::SimNodeResult;
 using towsim::test::TempDir;
 
 const fs::path kSourceDir = TOWSIM_SOURCE_DIR;
-const std::string kSimNode = TOWSIM_SIM_NODE;
-
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::string Quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-Result RunSimNode(const std::vector<std::string>& args, const fs::path& tmp) {
-  std::string command = Quote(kSimNode);
-  for (const std::string& arg : args) command += " " + Quote(arg);
-  const fs::path out = tmp / "stdout.txt", err = tmp / "stderr.txt";
-  command += " </dev/null >" + Quote(out.string()) + " 2>" + Quote(err.string());
-  const int status = std::system(command.c_str());
-  Result r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = ReadFile(out);
-  r.err = ReadFile(err);
-  return r;
-}
 
 // every field after the header of a CSV file parses as a finite number, except `text_column`
 // (the body name); returns the number of data rows
@@ -92,7 +61,7 @@ void CheckAllCsvFinite(const fs::path& dir, long* status_rows) {
 TEST(StressSimNode, ImpossibleStepExitsThreeWithDiagnosis) {
   TempDir tmp;
   const fs::path csv = tmp.path() / "csv";
-  const Result r =
+  const SimNodeResult r =
       RunSimNode({"--scene", (kSourceDir / "config/scenes/case1_forward.yaml").string(), "--mode",
                   "offline", "--duration", "20", "--csv", csv.string(), "--set", "time.step=1",
                   "--set", "cable.youngs_modulus=7e11", "--set", "integrator.max_substep_level=0"},
@@ -112,7 +81,7 @@ TEST(StressSimNode, ImpossibleStepExitsThreeWithDiagnosis) {
 TEST(StressSimNode, HugeStepWithSubsteppingNeverSilentNan) {
   TempDir tmp;
   const fs::path csv = tmp.path() / "csv";
-  const Result r =
+  const SimNodeResult r =
       RunSimNode({"--scene", (kSourceDir / "config/scenes/case1_forward.yaml").string(), "--mode",
                   "offline", "--duration", "20", "--csv", csv.string(), "--set", "time.step=1",
                   "--set", "cable.youngs_modulus=7e11"},
@@ -135,7 +104,7 @@ TEST(StressSimNode, HugeStepWithSubsteppingNeverSilentNan) {
 TEST(StressSimNode, StiffCableStrongCouplingCompletes) {
   TempDir tmp;
   const fs::path csv = tmp.path() / "csv";
-  const Result r = RunSimNode(
+  const SimNodeResult r = RunSimNode(
       {"--scene", (kSourceDir / "config/scenes/case2_uturn.yaml").string(), "--mode", "offline",
        "--csv", csv.string(), "--set", "time.step=0.1", "--set", "cable.youngs_modulus=7e9"},
       tmp.path());
@@ -150,7 +119,7 @@ TEST(StressSimNode, StiffCableStrongCouplingCompletes) {
 TEST(StressSimNode, StiffCableStaggeredCouplingCompletes) {
   TempDir tmp;
   const fs::path csv = tmp.path() / "csv";
-  const Result r =
+  const SimNodeResult r =
       RunSimNode({"--scene", (kSourceDir / "config/scenes/case2_uturn.yaml").string(), "--mode",
                   "offline", "--csv", csv.string(), "--set", "time.step=0.1", "--set",
                   "cable.youngs_modulus=7e9", "--set", "integrator.coupling=staggered"},

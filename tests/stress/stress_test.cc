@@ -5,7 +5,8 @@
 // std::mt19937 for the random commands.
 //
 // Scenes: steady_tow (driven tow point, sphere), case1_forward (two 6-DOF vehicles, strong
-// coupling), case2_uturn (Case 1 plus a 20 deg turn). Numbers printed for docs/benchmarks.md ("Stability under stress").
+// coupling), case2_uturn (Case 1 plus a 20 deg turn). Numbers printed for docs/benchmarks.md
+// ("Stability under stress").
 
 #include <algorithm>
 #include <cmath>
@@ -18,7 +19,7 @@
 
 #include "core/simulation.h"
 #include "stress_run.h"
-#include "towed_cable_steady.h"
+#include "towed_cable_steady_core.h"
 
 namespace towsim::stress {
 namespace {
@@ -62,26 +63,6 @@ void ExpectSane(const StressResult& r, double duration) {
 
 // --- steady tow against the independent steady towed-cable solver ---------------------------
 
-reference::TowedCableProblem SteadyTowProblem(const core::Model& m) {
-  reference::TowedCableProblem p;
-  const core::CableParams& c = m.cable;
-  p.length = c.length;
-  p.diameter = c.diameter;
-  p.density = c.density;
-  p.youngs_modulus = c.youngs_modulus;
-  const core::SphereBody& b = m.bodies.at(0);
-  p.sphere_mass = b.mass;
-  p.sphere_volume = b.volume;
-  p.sphere_cd = b.drag_coefficient;
-  p.fluid.density = m.environment.water_density;
-  p.fluid.dynamic_viscosity = m.environment.dynamic_viscosity;
-  p.gravity = m.environment.gravity;
-  p.current = m.environment.current;
-  p.tow_velocity = c.start.velocity;
-  p.stretch_law = reference::StretchLaw::kGreenTrueTension;
-  return p;
-}
-
 // the tolerances of tests/reference/steady_tow_core_test.cc (20 elements): the steady state of
 // the discrete scheme does not depend on h (a = 0 in the moving frame), so a large step or a
 // long run must land on the same state
@@ -91,13 +72,8 @@ constexpr double kTensionRelTol = 2e-2;
 
 void ExpectSteadyTowSettled(const Simulation& sim) {
   const reference::TowedCableSolution ref =
-      reference::SolveTowedCableSteady(SteadyTowProblem(sim.model()));
-  const core::CableEnd& top = sim.model().cable.start;
-  const Vec3 p_top = top.position + top.velocity * sim.time();
-  const Vec3 p_sphere = sim.body_position(0);
-  const double layback = p_top.x() - p_sphere.x();
-  const double depth = p_sphere.z() - p_top.z();
-  const double tension = sim.end_force(0).norm();
+      reference::SolveTowedCableSteady(reference::SteadyTowProblem(sim.model()));
+  const auto [t, layback, depth, tension] = reference::MeasureSteadyTow(sim);
   std::printf(
       "  layback %.4f m (ref %.4f), depth %.4f m (ref %.4f), top tension %.1f N (ref %.1f)\n",
       layback, ref.layback, depth, ref.depth, tension, ref.top_tension);

@@ -9,6 +9,7 @@
 #include "core/simulation.h"
 #include "core/state.h"
 #include "core/system.h"
+#include "steady_tow_model.h"
 
 namespace towsim::core {
 namespace {
@@ -96,23 +97,7 @@ TEST(Integrator, SubsteppingRescuesAHardStep) {
 // accepts agree with a run converged far tighter. The steady tow from vertical (the towing
 // point jerks to 6 m/s, the cable swings back) over its first 10 s, 20 elements, h = 0.05 s.
 Model SteadyTowFromVertical(double tolerance) {
-  Model m;
-  m.time.step = 0.05;
-  m.cable.length = 200;
-  m.cable.elements = 20;
-  m.cable.start.kind = EndKind::kDriven;
-  m.cable.start.position = Vec3(0, 0, 3.5);
-  m.cable.start.velocity = Vec3(6, 0, 0);
-  m.cable.end.kind = EndKind::kBody;
-  m.cable.end.body = 0;
-  m.cable.initial_velocity = Vec3(6, 0, 0);
-  SphereBody b;
-  b.name = "towfish";
-  b.mass = 416;
-  b.volume = 0.2;
-  b.position = Vec3(0, 0, 203.5);
-  b.velocity = Vec3(6, 0, 0);
-  m.bodies.push_back(b);
+  Model m = test::SteadyTowModel();
   m.integrator.tolerance = tolerance;
   return m;
 }

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "core/simulation.h"
+#include "steady_tow_model.h"
 
 namespace {
 std::atomic<long> g_news{0};
@@ -30,30 +31,11 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace towsim::core {
 namespace {
 
-Model SteadyTow() {
-  Model m;
-  m.time.step = 0.05;
-  m.cable.length = 200;
-  m.cable.elements = 20;
-  m.cable.start.kind = EndKind::kDriven;
-  m.cable.start.position = Vec3(0, 0, 3.5);
-  m.cable.start.velocity = Vec3(6, 0, 0);
-  m.cable.end.kind = EndKind::kBody;
-  m.cable.end.body = 0;
-  m.cable.initial_velocity = Vec3(6, 0, 0);
-  SphereBody b;
-  b.name = "towfish";
-  b.mass = 416;
-  b.volume = 0.2;
-  b.position = Vec3(0, 0, 203.5);
-  b.velocity = Vec3(6, 0, 0);
-  m.bodies.push_back(b);
-  return m;
-}
+using test::SteadyTowModel;
 
 // a towing vehicle (no hydrodynamic coefficients needed here) pulling the cable with a sphere
 Model WithVehicle(Coupling coupling) {
-  Model m = SteadyTow();
+  Model m = SteadyTowModel();
   m.integrator.coupling = coupling;
   m.cable.start.kind = EndKind::kVehicle;
   m.cable.start.body = 0;
@@ -89,7 +71,7 @@ void ExpectStepsDoNotAllocate(const Model& model) {
   EXPECT_EQ(g_news.load(), 0) << "operator new called during Step";
 }
 
-TEST(NoAllocation, CableWithASphere) { ExpectStepsDoNotAllocate(SteadyTow()); }
+TEST(NoAllocation, CableWithASphere) { ExpectStepsDoNotAllocate(SteadyTowModel()); }
 TEST(NoAllocation, VehicleStrongCoupling) {
   ExpectStepsDoNotAllocate(WithVehicle(Coupling::kStrong));
 }

@@ -22,6 +22,7 @@
 
 #include <gtest/gtest.h>
 
+#include "run_sim_node.h"
 #include "temp_dir.h"
 
 namespace {
@@ -31,43 +32,12 @@ namespace fs = std::filesystem;
 const fs::path kSourceDir = TOWSIM_SOURCE_DIR;
 const std::string kSimNode = TOWSIM_SIM_NODE;
 
+using towsim::test::ReadFile;
+using towsim::test::RunSimNode;
+using towsim::test::SimNodeResult;
 using towsim::test::TempDir;
 
-std::string ReadFile(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 void WriteFile(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
-
-std::string Quote(const std::string& s) {
-  std::string quoted = "'";
-  for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-struct Result {
-  int exit_code = -1;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-// runs sim_node with `args`, stdout and stderr captured in files of `tmp`
-Result RunSimNode(const std::vector<std::string>& args, const fs::path& tmp) {
-  std::string command = Quote(kSimNode);
-  for (const std::string& arg : args) command += " " + Quote(arg);
-  const fs::path out = tmp / "stdout.txt";
-  const fs::path err = tmp / "stderr.txt";
-  command += " </dev/null >" + Quote(out.string()) + " 2>" + Quote(err.string());
-  const int status = std::system(command.c_str());
-  Result result;
-  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  result.out = ReadFile(out);
-  result.err = ReadFile(err);
-  return result;
-}
 
 std::vector<std::string> Lines(const std::string& text) {
   std::vector<std::string> lines;
@@ -114,7 +84,7 @@ TEST(SimNodeCliTest, GoodSceneRuns) {
   // the base of the broken scenes below is itself valid
   TempDir tmp;
   WriteFile(tmp.path() / "good.yaml", kGoodScene);
-  const Result r =
+  const SimNodeResult r =
       RunSimNode({"--scene", (tmp.path() / "good.yaml").string(), "--mode", "offline"}, tmp.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("sim_node: cli_test: 20 steps, 1 s simulated"), std::string::npos) << r.out;
@@ -173,7 +143,7 @@ TEST_P(BadSceneTest, ExitsTwoNamingTheKey) {
   std::vector<std::string> args = {"--scene", scene.string(), "--mode",
                                    "offline", "--csv",        (tmp.path() / "csv").string()};
   args.insert(args.end(), c.extra_args.begin(), c.extra_args.end());
-  const Result r = RunSimNode(args, tmp.path());
+  const SimNodeResult r = RunSimNode(args, tmp.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.err.rfind("sim_node: error: ", 0), 0u) << r.err;
   for (const std::string& text : c.expected) {
@@ -198,7 +168,7 @@ class BadArgsTest : public ::testing::TestWithParam<BadArgs> {};
 TEST_P(BadArgsTest, ExitsTwoWithMessage) {
   const BadArgs& c = GetParam();
   TempDir tmp;
-  const Result r = RunSimNode(c.args, tmp.path());
+  const SimNodeResult r = RunSimNode(c.args, tmp.path());
   EXPECT_EQ(r.exit_code, 2) << r.err;
   for (const std::string& text : c.expected) {
     EXPECT_NE(r.err.find(text), std::string::npos) << "expected '" << text << "' in: " << r.err;
@@ -236,7 +206,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(SimNodeCliTest, HelpAndVersionExitZero) {
   TempDir tmp;
-  Result r = RunSimNode({"--help"}, tmp.path());
+  SimNodeResult r = RunSimNode({"--help"}, tmp.path());
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("usage: sim_node --scene FILE"), std::string::npos) << r.out;
   r = RunSimNode({"--version"}, tmp.path());
@@ -249,7 +219,7 @@ TEST(SimNodeCliTest, HelpAndVersionExitZero) {
 TEST(SimNodeCliTest, OfflineCatenaryWritesTheFourCsvFiles) {
   TempDir tmp;
   const fs::path csv = tmp.path() / "csv";
-  const Result r = RunSimNode(
+  const SimNodeResult r = RunSimNode(
       {"--scene", kCatenary, "--mode", "offline", "--duration", "1", "--csv", csv.string(),
        // pinned here, so that the row counts below hold whatever catenary.yaml says
        "--set", "time.step=0.05", "--set", "time.output_rate=10", "--set", "cable.elements=20"},
@@ -320,7 +290,7 @@ TEST(SimNodeCliTest, VehicleSceneRunsTheScript) {
     std::vector<std::string> args = {"--scene",    kCase1, "--mode", "offline",
                                      "--duration", "2",    "--csv",  csv.string()};
     if (!thrust) args.insert(args.end(), {"--set", "script=[]"});
-    const Result r = RunSimNode(args, tmp.path());
+    const SimNodeResult r = RunSimNode(args, tmp.path());
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(
         std::regex_search(r.out, std::regex(R"(substeps \d+, coupling iterations mean [0-9.]+\n)")))
@@ -353,7 +323,7 @@ TEST(SimNodeCliTest, VehicleSceneRunsTheScript) {
 
 TEST(SimNodeCliTest, BadScriptConditionExitsTwo) {
   TempDir tmp;
-  const Result r = RunSimNode(
+  const SimNodeResult r = RunSimNode(
       {"--scene", kCase1, "--mode", "offline", "--set",
        "script=[{at: 1, when: \"tow_vehicle.yaw >= 10\", body: tow_vehicle, rudder: 0}]"},
       tmp.path());
@@ -373,7 +343,7 @@ TEST(SimNodeCliTest, BadScriptConditionExitsTwo) {
 TEST(SimNodeCliTest, SolverFailureExitsThree) {
   TempDir tmp;
   const fs::path csv = tmp.path() / "csv";
-  const Result r = RunSimNode(
+  const SimNodeResult r = RunSimNode(
       {"--scene", (kSourceDir / "config/scenes/steady_tow.yaml").string(), "--mode", "offline",
        "--duration", "1", "--csv", csv.string(), "--set", "integrator.max_iterations=1", "--set",
        "integrator.max_substep_level=0", "--set", "integrator.tolerance=1e-14"},
