@@ -50,6 +50,8 @@ void Normals(const Vec3& s, Vec3* n1, Vec3* n2) {
 
 System::System(const Model& model)
     : model_(model), element_(MakeElementProperties(model.cable)), loads_(MakeLoadContext(model)) {
+  state_dependent_loads_ = loads_.drag || loads_.added_mass_per_length > 0.0;
+  weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
   const int nb = num_bodies();
   const int nn = num_nodes();
   cable_offset_ = 3 * nb;
@@ -170,13 +172,21 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     const int o = cable_dof(e);
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
     element_.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
-    const Vec12 rl =
-        ElementLoadResidual(element_, loads_, ee, ed, ea, load_scale, jac ? &lj : nullptr);
-    residual->segment<12>(o) += element_.MassTimes(ea) + force + rl;
-    if (!jac) continue;
-    // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
-    j = cf.c_a * (mass + lj.added_mass) + cf.c_q * (k + lj.d_de);
-    if (cf.c_v != 0.0) j += cf.c_v * (c + lj.d_dedot);
+    if (!state_dependent_loads_) {
+      // weight in water only: R_load = -scale Q_w, no Jacobian
+      residual->segment<12>(o) += element_.MassTimes(ea) + force - load_scale * weight_load_;
+      if (!jac) continue;
+      j = cf.c_a * mass + cf.c_q * k;
+      if (cf.c_v != 0.0) j += cf.c_v * c;
+    } else {
+      const Vec12 rl =
+          ElementLoadResidual(element_, loads_, ee, ed, ea, load_scale, jac ? &lj : nullptr);
+      residual->segment<12>(o) += element_.MassTimes(ea) + force + rl;
+      if (!jac) continue;
+      // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
+      j = cf.c_a * (mass + lj.added_mass) + cf.c_q * (k + lj.d_de);
+      if (cf.c_v != 0.0) j += cf.c_v * (c + lj.d_dedot);
+    }
     for (int r = 0; r < 4; ++r)
       for (int s = 0; s < 4; ++s) Add3(jac, o + 3 * r, o + 3 * s, j.block<3, 3>(3 * r, 3 * s));
   }

@@ -92,6 +92,11 @@ class System {
   Model model_;
   AncfElement element_;
   CableLoadContext loads_;
+  // without drag and added mass the load on an element is its weight in water alone, the same
+  // uniform load on every element with no Jacobian: a scene without those terms pays nothing
+  // for them (issue 7)
+  bool state_dependent_loads_ = false;
+  Vec12 weight_load_ = Vec12::Zero();  // UniformLoad(weight_per_length, l)
   int num_q_ = 0, num_lambda_ = 0, cable_offset_ = 0;
   int lambda_count_[2] = {0, 0};
   Eigen::Vector3d clamp_dirs_[2][2];  // two normals to the slope of a clamped end
