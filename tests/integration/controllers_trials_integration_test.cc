@@ -2,7 +2,7 @@
 // Case 1 scene (start from rest, no script) with real controller processes: the manoeuvre
 // runner's zig-zag and turning circle, the autopilot's heading step and lawn-mower survey, the
 // README's C example. Every number the controllers report is checked against the node's own
-// bodies.csv. Domains 70-74, 79 (tests/integration/README.md).
+// bodies.csv. Domains 70-75, 79 (tests/integration/README.md).
 
 #include <stdlib.h>
 
@@ -311,6 +311,63 @@ TEST(ControllerTrials, HelloControllerInCReachesTheOfflineSpeed) {
   EXPECT_NEAR(run.tow.back().u, reference.back().u, kSpeedTol * reference.back().u);
   EXPECT_GT(reference.back().u, 5.5);  // the offline run is at speed (6 m/s at 4165 N)
   EXPECT_LT(std::abs(run.tow.back().yaw * kDeg), 1.0);
+}
+
+// domain 75: the towfish's altitude mode. The tow vehicle runs Case 1 (4165 N, from rest);
+// towfish_depth holds the towfish 10 m above a seabed at 38 m that shoals to 33 m between
+// s = 500 and 900 m of run (piecewise linear). The reference is computed here from the
+// towfish's own track in bodies.csv: s = its horizontal distance run, target depth =
+// seabed(s) - altitude. Measured: the altitude within 0.05 m on the flat part, the towfish
+// lagging the 1.25 % slope by ~0.2 m of depth.
+TEST(ControllerTrials, TowfishAltitudeModeFollowsAShoalingSeabed) {
+  constexpr int kDomain = 75;
+  constexpr double kAltitude = 10.0;       // [m]
+  constexpr double kSettled = 110.0;       // [s] the towfish has come up from its vertical start
+  constexpr double kFlatTolerance = 0.3;   // [m] altitude error over the flat seabed
+  constexpr double kSlopeTolerance = 0.8;  // [m] while the seabed shoals (tracking lag)
+  setenv("CYCLONEDDS_URI", TOWSIM_DDS_URI, 1);
+  const std::string csv = LogPrefix("csv");
+  const std::string d = std::to_string(kDomain);
+  Process runner({TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--thrust", "4165", "--domain", d},
+                 LogPrefix("runner"));
+  Process fish({TOWSIM_TOWFISH_DEPTH, "--altitude", "10", "--seabed-profile", "0:38,500:38,900:33",
+                "--domain", d},
+               LogPrefix("towfish_depth"));
+  Process node({TOWSIM_SIM_NODE, "--scene", kCase1, "--mode", "lockstep", "--duration", "220",
+                "--domain", d, "--set", "script=[]", "--csv", csv},
+               LogPrefix("node"));
+  ASSERT_TRUE(node.Wait(kProcessTimeout)) << node.command_line();
+  ASSERT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_TRUE(runner.Wait(10.0));
+  EXPECT_TRUE(fish.Wait(10.0));
+  EXPECT_EQ(fish.exit_code(), 0) << fish.err();
+  EXPECT_NE(node.out().find("failsafes 0,"), std::string::npos) << node.out();
+
+  auto seabed = [](double s) {  // the profile above
+    if (s <= 500.0) return 38.0;
+    if (s >= 900.0) return 33.0;
+    return 38.0 + (s - 500.0) / 400.0 * (33.0 - 38.0);
+  };
+  const std::vector<Row> fish_rows = BodyRows(ReadFile(csv + "/bodies.csv"), "towfish");
+  ASSERT_GT(fish_rows.size(), 2000u);
+  double s = 0.0, worst_flat = 0.0, worst_slope = 0.0, s_end = 0.0;
+  for (size_t i = 0; i < fish_rows.size(); ++i) {
+    if (i > 0) {
+      s += std::hypot(fish_rows[i].x - fish_rows[i - 1].x, fish_rows[i].y - fish_rows[i - 1].y);
+    }
+    if (fish_rows[i].t < kSettled) continue;
+    const double error = std::fabs(seabed(s) - fish_rows[i].z - kAltitude);
+    double& worst = s <= 500.0 ? worst_flat : worst_slope;
+    worst = std::max(worst, error);
+    s_end = s;
+  }
+  std::printf(
+      "[ trials ] altitude mode: worst altitude error %.3f m (flat), %.3f m (slope), "
+      "run %.0f m\n",
+      worst_flat, worst_slope, s_end);
+  ASSERT_GT(s_end, 800.0) << "the run must reach the sloping part of the seabed";
+  EXPECT_LT(worst_flat, kFlatTolerance);
+  EXPECT_LT(worst_slope, kSlopeTolerance);
 }
 
 // domain 79 (no DDS traffic: they exit before creating a participant): bad configuration
