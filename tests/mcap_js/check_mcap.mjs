@@ -9,6 +9,8 @@
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
 import { readFileSync } from "node:fs";
 
+import { linearRead, readableOf } from "./mcap_file.mjs";
+
 let mcap;
 try {
   mcap = await import("@mcap/core");
@@ -24,17 +26,6 @@ const kT0 = 1700000000000000000n;
 const kMs = 1000000n;
 let failures = 0;
 
-// CRC-32 (IEEE, reflected 0xEDB88320), written here: Debian 12's Node 18 has no zlib.crc32
-const kCrcTable = Array.from({ length: 256 }, (_, n) => {
-  let c = n;
-  for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
-  return c >>> 0;
-});
-function crc32(data) {
-  let c = 0xffffffff;
-  for (const byte of data) c = kCrcTable[(c ^ byte) & 0xff] ^ (c >>> 8);
-  return (c ^ 0xffffffff) >>> 0;
-}
 function check(ok, what) {
   if (!ok) {
     failures += 1;
@@ -43,10 +34,7 @@ function check(ok, what) {
 }
 
 const bytes = new Uint8Array(readFileSync(file));
-const readable = {
-  size: async () => BigInt(bytes.byteLength),
-  read: async (offset, size) => bytes.subarray(Number(offset), Number(offset + size)),
-};
+const readable = readableOf(bytes);
 
 // indexed read
 const reader = await McapIndexedReader.Initialize({ readable });
@@ -90,26 +78,16 @@ for (const [id, count] of stats.channelMessageCounts) {
   check(BigInt(counts.get(id) ?? 0) === count, `channel ${id}: ${counts.get(id)} vs ${count}`);
 }
 
-// linear read of every record
-const stream = new McapStreamReader({ validateCrcs: true });
-stream.append(bytes);
-let streamed = 0;
-let dataEnd;
-let footer;
-for (let r; (r = stream.nextRecord()); ) {
-  if (r.type === "Message") streamed += 1;
-  if (r.type === "DataEnd") dataEnd = r;
-  if (r.type === "Footer") footer = r;
-}
-check(stream.done(), "stream reader reached the end");
-check(streamed === n, `stream reader read ${streamed} messages`);
-check(dataEnd !== undefined && footer !== undefined, "DataEnd and Footer records");
-
-// data section CRC (@mcap/core does not check it): bytes before the DataEnd record
-const dataEndOffset = Number(footer.summaryStart) - 13;
-check(bytes[dataEndOffset] === 0x0f, "DataEnd record right before the summary");
-const crc = crc32(bytes.subarray(0, dataEndOffset));
-check(crc === dataEnd.dataSectionCrc, `data CRC ${crc} vs ${dataEnd.dataSectionCrc}`);
+// linear read of every record, and the data section CRC (@mcap/core does not check it)
+const linear = linearRead(McapStreamReader, bytes);
+check(linear.done, "stream reader reached the end");
+check(linear.messages === n, `stream reader read ${linear.messages} messages`);
+check(linear.dataEnd !== undefined && linear.footer !== undefined, "DataEnd and Footer records");
+check(linear.dataEndOpcode === 0x0f, "DataEnd record right before the summary");
+check(
+  linear.dataEnd !== undefined && linear.dataCrc === linear.dataEnd.dataSectionCrc,
+  `data CRC ${linear.dataCrc} vs ${linear.dataEnd?.dataSectionCrc}`,
+);
 
 if (failures > 0) process.exit(1);
 console.log(`ok: ${n} messages, ${reader.chunkIndexes.length} chunks, ${counts.size} channels`);

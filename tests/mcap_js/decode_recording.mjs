@@ -15,6 +15,8 @@
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
 
+import { linearRead, readableOf } from "./mcap_file.mjs";
+
 let mcap, rosmsg, serialization;
 try {
   mcap = await import("@mcap/core");
@@ -45,18 +47,6 @@ function near(v, csvText, what, abs = kAbs) {
   return check(Math.abs(Number(v) - c) <= kRelCsv * Math.abs(c) + abs, `${what}: ${v} vs CSV ${csvText}`);
 }
 
-// CRC-32 (IEEE, reflected 0xEDB88320), written here: Debian 12's Node 18 has no zlib.crc32
-const kCrcTable = Array.from({ length: 256 }, (_, n) => {
-  let c = n;
-  for (let k = 0; k < 8; k++) c = c & 1 ? 0xedb88320 ^ (c >>> 1) : c >>> 1;
-  return c >>> 0;
-});
-function crc32(data) {
-  let c = 0xffffffff;
-  for (const byte of data) c = kCrcTable[(c ^ byte) & 0xff] ^ (c >>> 8);
-  return (c ^ 0xffffffff) >>> 0;
-}
-
 function readCsv(name) {
   const lines = readFileSync(join(csvDir, name), "utf8").trim().split("\n");
   const header = lines.shift().split(",");
@@ -64,10 +54,7 @@ function readCsv(name) {
 }
 
 const bytes = new Uint8Array(readFileSync(file));
-const readable = {
-  size: async () => BigInt(bytes.byteLength),
-  read: async (offset, size) => bytes.subarray(Number(offset), Number(offset + size)),
-};
+const readable = readableOf(bytes);
 const reader = await McapIndexedReader.Initialize({ readable });
 check(reader.header.profile === "ros2", `profile ${reader.header.profile}`);
 
@@ -111,19 +98,9 @@ for await (const m of reader.readMessages({ validateCrcs: true })) {
 check(BigInt(count) === reader.statistics.messageCount, `decoded ${count} of ${reader.statistics.messageCount}`);
 
 // linear read of every record, and the data section CRC (bytes before the DataEnd record)
-const stream = new McapStreamReader({ validateCrcs: true });
-stream.append(bytes);
-let streamed = 0;
-let dataEnd;
-let footer;
-for (let r; (r = stream.nextRecord()); ) {
-  if (r.type === "Message") streamed += 1;
-  if (r.type === "DataEnd") dataEnd = r;
-  if (r.type === "Footer") footer = r;
-}
-check(stream.done() && streamed === count, `stream reader: ${streamed} messages`);
-const dataEndOffset = Number(footer.summaryStart) - 13;
-check(crc32(bytes.subarray(0, dataEndOffset)) === dataEnd.dataSectionCrc, "data section CRC");
+const linear = linearRead(McapStreamReader, bytes);
+check(linear.done && linear.messages === count, `stream reader: ${linear.messages} messages`);
+check(linear.dataEnd !== undefined && linear.dataCrc === linear.dataEnd.dataSectionCrc, "data section CRC");
 
 // the rosbag2 metadata record
 check(reader.metadataIndexes.some((i) => i.name === "rosbag2"), "rosbag2 metadata record");
