@@ -645,7 +645,7 @@ def depth_control(ref_path, ctl_path, out):
     ref, ctl = Run(ref_path), Run(ctl_path)
     if ref.case != 2:
         sys.exit("paper_cases: error: --depth-control: %s is not a Case 2 (U-turn) run" % ref_path)
-    t_cmd = case2(ref, [].append)["t_cmd"]
+    t_cmd = turn_command_time(ref.bodies[ref.tow])
     r0, r1 = depth_range(ref, t_cmd), depth_range(ctl, t_cmd)
     e0, e1 = r0[1] - r0[0], r1[1] - r1[0]
     out("towfish depth excursion from the turn command (t >= %.1f s) on:" % t_cmd)
