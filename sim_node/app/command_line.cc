@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "dds/translators.h"
+
 namespace towsim::app {
 namespace {
 
@@ -138,7 +140,8 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.duration = s;
     } else if (name == "--rate") {
       double r = 0.0;
-      if (!ParseNumber(v, &r) || r <= 0.0) return fail("--rate " + v + ": must be a number > 0");
+      if (!ParseNumber(v, &r)) return fail("--rate " + v + ": must be a number");
+      if (const std::string e = dds::CheckRate(r); !e.empty()) return fail("--rate " + v + ": " + e);
       o.rate = r;
     } else if (name == "--set") {
       const auto eq = v.find('=');

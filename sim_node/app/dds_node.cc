@@ -20,6 +20,7 @@
 #include "core/script.h"
 #include "dds/command_arbiter.h"
 #include "dds/entities.h"
+#include "dds/port_mapping.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
 
@@ -207,6 +208,7 @@ int DdsNode::Setup() {
   std::string config = opt_.dds_config;
   if (config.empty()) config = DdsUriFromEnvironment("sim_node");
   config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
+  if (const std::string e = dds::CheckDomainPorts(opt_.domain, config); !e.empty()) return bad(e);
   try {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,

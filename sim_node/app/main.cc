@@ -22,6 +22,12 @@ constexpr int kExitOk = 0;
 constexpr int kExitError = 1;  // unexpected (e.g. a CSV write failed: disk full)
 constexpr int kExitBadInput = 2;
 
+std::string FormatSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
 int Run(const towsim::app::Options& options) {
   using towsim::app::Mode;
   if (!options.record_file.empty() && options.mode == Mode::kOffline) {
@@ -43,6 +49,14 @@ int Run(const towsim::app::Options& options) {
   if (model.name.empty()) model.name = std::filesystem::path(options.scene).stem().string();
   const double duration = options.duration.value_or(model.time.duration);
   model.time.duration = duration;
+  if (!(duration / model.time.step <= towsim::core::kMaxSteps)) {
+    std::fprintf(stderr,
+                 "sim_node: error: --duration %s: must be <= 1e12 steps of time.step = %g s "
+                 "(%g s)\n",
+                 FormatSeconds(duration).c_str(), model.time.step,
+                 towsim::core::kMaxSteps * model.time.step);
+    return kExitBadInput;
+  }
 
   std::unique_ptr<towsim::io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <new>
 
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
@@ -30,6 +31,12 @@ core::TimeSettings ReadTime(const Field& field) {
   // at least one step
   if (t.step > t.duration) {
     time.Get("step").Fail("must be <= time.duration (" + internal::FormatNumber(t.duration) + ")");
+  }
+  // a countable number of steps
+  if (!(t.duration / t.step <= core::kMaxSteps)) {
+    time.Get("step").Fail("must be >= time.duration / 1e12 (" +
+                          internal::FormatNumber(t.duration / core::kMaxSteps) +
+                          "): at most 1e12 steps");
   }
   return t;
 }
@@ -123,7 +130,12 @@ core::Model LoadScene(const std::string& path, const std::vector<std::string>& o
   // messages name the file by its basename; model paths are relative to its folder
   const std::filesystem::path file(path);
   const std::string base_dir = file.has_parent_path() ? file.parent_path().string() : ".";
-  return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+  try {
+    return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+  } catch (const std::bad_alloc&) {
+    // a tree too large for the memory left: the file is named, not a bare std::bad_alloc
+    throw ConfigError("scene", path, path, "out of memory while reading the scene file");
+  }
 }
 
 core::Model LoadSceneFromString(const std::string& yaml, const std::string& name_for_messages,
@@ -133,14 +145,8 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
   source->name = name_for_messages;
 
   // the text is YAML
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(name_for_messages, "<not YAML>", name_for_messages + line,
-                      "not valid YAML: " + e.msg);
-  }
+  const YAML::Node root =
+      internal::LoadOneDocument(yaml, name_for_messages, name_for_messages, "<not YAML>");
   // a scene is a map of keys
   if (!root.IsMap()) {
     throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
