@@ -64,7 +64,9 @@ std::string Usage() {
          "                        (repeatable)\n"
          "  --csv DIR             write bodies.csv, cable.csv, forces.csv, status.csv to DIR\n"
          "                        at the scene's time.output_rate\n"
-         "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2)\n"
+         "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2);\n"
+         "                        an existing file is refused unless --overwrite\n"
+         "  --overwrite           --record may replace an existing file\n"
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
          "  --wait-for-controllers\n"
          "                        DDS modes: the first step waits until every vehicle that\n"
@@ -103,9 +105,13 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.wait_for_controllers = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene", "--mode",   "--duration", "--rate",
-                                             "--set",   "--csv",    "--record",   "--domain",
-                                             "--namespace"};
+    if (arg == "--overwrite") {
+      o.overwrite = true;
+      continue;
+    }
+    static const char* const kWithValue[] = {"--scene",  "--mode",   "--duration",
+                                             "--rate",   "--set",    "--csv",
+                                             "--record", "--domain", "--namespace"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -141,7 +147,8 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     } else if (name == "--rate") {
       double r = 0.0;
       if (!ParseNumber(v, &r)) return fail("--rate " + v + ": must be a number");
-      if (const std::string e = dds::CheckRate(r); !e.empty()) return fail("--rate " + v + ": " + e);
+      if (const std::string e = dds::CheckRate(r); !e.empty())
+        return fail("--rate " + v + ": " + e);
       o.rate = r;
     } else if (name == "--set") {
       const auto eq = v.find('=');

@@ -23,6 +23,7 @@
 #include "dds/port_mapping.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
+#include "io/output_error.h"
 
 namespace towsim::app {
 namespace {
@@ -30,12 +31,16 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr int kExitOk = 0;
+constexpr int kExitError = 1;  // an output (CSV, recording) could not be written: disk full
 constexpr int kExitBadInput = 2;
 constexpr int kExitSolver = 3;
 
 constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
 constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
 constexpr double kLockstepHintAfter = 5.0;  // say what lockstep waits for after [s]
+// lockstep: a vehicle never heard from is waited for this long, then failsafe (README "DDS
+// node"; --wait-for-controllers waits without limit before the first step) [s]
+constexpr double kLockstepStartTimeout = 30.0;
 constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
 constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
 // On exit, Cyclone keeps each writer with unacknowledged samples alive for WriterLingerDuration
@@ -81,6 +86,9 @@ class DdsNode {
 
  private:
   int Setup();
+  // steps until the end, a signal or a failure; returns the exit code, sets the final state.
+  // Throws io::OutputError when an output cannot be written.
+  int Loop(uint8_t* end_state);
   bool lockstep() const { return opt_.mode == Mode::kLockstep; }
   bool realtime() const { return opt_.mode == Mode::kRealtime; }
   bool finished() const { return steps_to_run_ >= 0 && static_cast<long>(step_) >= steps_to_run_; }
@@ -148,7 +156,8 @@ class DdsNode {
            prior_timeouts_ = 0;
   int command_notes_ = 0;
   std::string failure_;
-  dds::StatusSample status_;  // reused: no allocation per step
+  bool output_failed_ = false;  // opt_.output threw io::OutputError
+  dds::StatusSample status_;    // reused: no allocation per step
 };
 
 int DdsNode::Setup() {
@@ -219,8 +228,12 @@ int DdsNode::Setup() {
   }
   if (!opt_.record_file.empty()) {
     try {
-      recording_ = std::make_unique<McapRecording>(opt_.record_file);
+      recording_ = std::make_unique<McapRecording>(opt_.record_file, opt_.overwrite);
       endpoints_->StartRecording(*participant_, recording_.get());
+    } catch (const io::OutputError& e) {  // created, not written: disk full
+      std::fprintf(stderr, "sim_node: error: --record %s: %s\n", opt_.record_file.c_str(),
+                   e.what());
+      return kExitError;
     } catch (const std::exception& e) {
       return bad("--record " + opt_.record_file + ": " + e.what());
     }
@@ -244,24 +257,59 @@ int DdsNode::Run() {
   InstallStopHandlers();
   if (const int rc = Setup(); rc != kExitOk) return rc;
 
-  start_wall_ = rtf_wall_ = last_status_wall_ = Clock::now();
-  PublishInitial();
-  if (realtime()) pacer_.Start(period());
-
   int exit_code = kExitOk;
   uint8_t end_state = kFinished;
+  start_wall_ = rtf_wall_ = last_status_wall_ = Clock::now();
+  try {
+    PublishInitial();
+    if (realtime()) pacer_.Start(period());
+    exit_code = Loop(&end_state);
+  } catch (const io::OutputError& e) {
+    // an output failed (README "Exit codes"): the run ends, FAILED with the reason, and what
+    // still works (DDS, the other output) ends cleanly
+    exit_code = kExitError;
+    end_state = kFailed;
+    failure_ = std::string("output failed: ") + e.what();
+    std::fprintf(stderr, "sim_node: %s\n", failure_.c_str());
+    if (recording_ && recording_->failed()) endpoints_->StopRecording();
+    if (output_failed_) opt_.output = nullptr;
+  }
+
+  PublishStatus(end_state);
+  endpoints_->Flush(kExitFlushTimeout);
+  if (last_output_ != static_cast<long>(step_) && end_state != kFailed) {
+    Output(last_status_, std::lround(step_wall_ * 1e6));
+  }
+  Summary(Seconds(Clock::now() - start_wall_));
+  if (recording_) {
+    try {
+      recording_->Close();
+      std::fprintf(stderr, "sim_node: recorded %llu messages on %zu topics to %s\n",
+                   static_cast<unsigned long long>(recording_->message_count()),
+                   recording_->topic_count(), recording_->path().c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr,
+                   "sim_node: error: the recording %s is incomplete (%s); towsim_export "
+                   "--recover reads what it holds\n",
+                   recording_->path().c_str(), e.what());
+      exit_code = kExitError;
+    }
+  }
+  return exit_code;
+}
+
+int DdsNode::Loop(uint8_t* end_state) {
   for (;;) {
     if (StopRequested()) {
-      end_state = kStopped;
-      break;
+      *end_state = kStopped;
+      return kExitOk;
     }
     HandleControl();
     if (!failure_.empty()) {
-      exit_code = kExitSolver;
-      end_state = kFailed;
-      break;
+      *end_state = kFailed;
+      return kExitSolver;
     }
-    if (finished()) break;
+    if (finished()) return kExitOk;
     if (paused_ && step_budget_ == 0) {
       Idle();
       continue;
@@ -283,25 +331,10 @@ int DdsNode::Run() {
       TakeCommands();  // the freshest
     }
     if (!DoStep()) {
-      exit_code = kExitSolver;
-      end_state = kFailed;
-      break;
+      *end_state = kFailed;
+      return kExitSolver;
     }
   }
-
-  PublishStatus(end_state);
-  endpoints_->Flush(kExitFlushTimeout);
-  if (last_output_ != static_cast<long>(step_) && end_state != kFailed) {
-    Output(last_status_, std::lround(step_wall_ * 1e6));
-  }
-  Summary(Seconds(Clock::now() - start_wall_));
-  if (recording_) {
-    recording_->Close();
-    std::fprintf(stderr, "sim_node: recorded %llu messages on %zu topics to %s\n",
-                 static_cast<unsigned long long>(recording_->message_count()),
-                 recording_->topic_count(), recording_->path().c_str());
-  }
-  return exit_code;
 }
 
 void DdsNode::PublishInitial() {
@@ -448,7 +481,7 @@ void DdsNode::TakeCommands() {
 bool DdsNode::WaitLockstep() {
   if (arbiter_->ReadyFor(step_)) return true;
   const Clock::time_point begin = Clock::now();
-  bool timed_out = false, hinted = false;
+  bool timed_out = false, start_timed_out = false, hinted = false;
   for (;;) {
     if (StopRequested()) return false;
     if (HandleControl()) return false;
@@ -456,9 +489,13 @@ bool DdsNode::WaitLockstep() {
     if (arbiter_->ReadyFor(step_)) return true;
     const Clock::time_point now = Clock::now();
     const double waited = Seconds(now - begin);
-    if (!timed_out && waited >= opt_.lockstep_timeout) {
+    // a vehicle heard from (even a rejected command) after lockstep_timeout, one never heard
+    // from after kLockstepStartTimeout: failsafe, no longer waited for
+    const bool start_over = waited >= kLockstepStartTimeout;
+    if ((!timed_out && waited >= opt_.lockstep_timeout) || (start_over && !start_timed_out)) {
       timed_out = true;
-      if (arbiter_->TimeOut(step_) > 0) {
+      start_timed_out = start_over;
+      if (arbiter_->TimeOut(step_, start_over) > 0) {
         std::fprintf(stderr, "sim_node: %s\n", arbiter_->last_event().c_str());
         PublishStatus(RunningState());
         if (arbiter_->ReadyFor(step_)) return true;
@@ -585,7 +622,12 @@ bool DdsNode::DoReset() {
 
 void DdsNode::Output(const core::StepStatus& status, long wall_us) {
   if (!opt_.output) return;
-  opt_.output(*sim_, status, wall_us);
+  try {
+    opt_.output(*sim_, status, wall_us);
+  } catch (const io::OutputError&) {
+    output_failed_ = true;
+    throw;
+  }
   last_output_ = static_cast<long>(step_);
 }
 

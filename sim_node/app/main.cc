@@ -14,6 +14,7 @@
 #include "app/stop_signal.h"
 #include "core/model.h"
 #include "io/csv_writer.h"
+#include "io/output_error.h"
 #include "scene/scene_loader.h"
 
 namespace {
@@ -26,6 +27,19 @@ std::string FormatSeconds(double s) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", s);
   return text;
+}
+
+// closes the CSV files after a run that ended with `code`; a failure to close is an output
+// failure (exit 1), told once
+int CloseCsv(towsim::io::CsvWriter* csv, int code) {
+  if (csv == nullptr) return code;
+  try {
+    csv->Close();
+  } catch (const std::exception& e) {
+    if (code != kExitError) std::fprintf(stderr, "sim_node: error: --csv: %s\n", e.what());
+    return kExitError;
+  }
+  return code;
 }
 
 int Run(const towsim::app::Options& options) {
@@ -62,6 +76,9 @@ int Run(const towsim::app::Options& options) {
   if (!options.csv_dir.empty()) {
     try {
       csv = std::make_unique<towsim::io::CsvWriter>(options.csv_dir);
+    } catch (const towsim::io::OutputError& e) {  // opened, not written: disk full
+      std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
+      return kExitError;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitBadInput;
@@ -80,19 +97,16 @@ int Run(const towsim::app::Options& options) {
     dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
+    dds.overwrite = options.overwrite;
     dds.start_paused = options.paused;
     dds.wait_for_controllers = options.wait_for_controllers;
     if (csv) {
       dds.output = [&](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
                        long us) { csv->Write(s, st, us); };
     }
-    const int code = towsim::app::RunDdsNode(model, dds);
-    if (csv) csv->Close();
-    return code;
+    return CloseCsv(csv.get(), towsim::app::RunDdsNode(model, dds));
   }
-  const int code = towsim::app::RunOffline(model, duration, csv.get());
-  if (csv) csv->Close();
-  return code;
+  return CloseCsv(csv.get(), towsim::app::RunOffline(model, duration, csv.get()));
 }
 
 }  // namespace

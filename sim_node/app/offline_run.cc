@@ -11,6 +11,7 @@
 #include "app/stop_signal.h"
 #include "core/script.h"
 #include "core/simulation.h"
+#include "io/output_error.h"
 
 namespace towsim::app {
 namespace {
@@ -49,44 +50,50 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
 
   core::StepStatus status;  // of the last completed step; default (0 iterations) at t = 0
   long wall_us = 0;         // wall time of the last completed step [us]
-  if (csv != nullptr) csv->Write(*sim, status, wall_us);
-  long written = 0;  // last step written to CSV
+  long written = 0;         // last step written to CSV
   int exit_code = 0;
+  try {
+    if (csv != nullptr) csv->Write(*sim, status, wall_us);
+    for (long k = 1; k <= steps; ++k) {
+      if (const int signal = StopRequested()) {
+        exit_code = 128 + signal;
+        break;
+      }
+      const double t_before = sim->time();
+      // the script entries due at the state reached (t = 0 first) hold during this step
+      script.Apply(&*sim);
+      const Clock::time_point t0 = Clock::now();
+      const core::StepStatus step_status = sim->Step();
+      const Clock::time_point t1 = Clock::now();
 
-  for (long k = 1; k <= steps; ++k) {
-    if (const int signal = StopRequested()) {
-      exit_code = 128 + signal;
-      break;
+      if (!step_status.ok()) {
+        progress.Finish();
+        std::fprintf(stderr, "sim_node: solver failure at t = %.9g s (step %ld): %s\n", t_before, k,
+                     step_status.message.c_str());
+        exit_code = 3;
+        break;
+      }
+      status = step_status;
+      wall_us =
+          static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
+      stats.Add(status, sim->coupling_iterations());
+      t_reached = sim->time();
+      if (csv != nullptr && k % stride == 0) {
+        csv->Write(*sim, status, wall_us);
+        written = k;
+      }
+      progress.Update(t_reached - t_start, Seconds(t1 - start));
     }
-    const double t_before = sim->time();
-    // the script entries due at the state reached (t = 0 first) hold during this step
-    script.Apply(&*sim);
-    const Clock::time_point t0 = Clock::now();
-    const core::StepStatus step_status = sim->Step();
-    const Clock::time_point t1 = Clock::now();
 
-    if (!step_status.ok()) {
-      progress.Finish();
-      std::fprintf(stderr, "sim_node: solver failure at t = %.9g s (step %ld): %s\n", t_before, k,
-                   step_status.message.c_str());
-      exit_code = 3;
-      break;
-    }
-    status = step_status;
-    wall_us =
-        static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
-    stats.Add(status, sim->coupling_iterations());
-    t_reached = sim->time();
-    if (csv != nullptr && k % stride == 0) {
+    // the last state reached, unless already written or not trustworthy (failed step)
+    if (csv != nullptr && exit_code != 3 && written != stats.steps) {
       csv->Write(*sim, status, wall_us);
-      written = k;
     }
-    progress.Update(t_reached - t_start, Seconds(t1 - start));
-  }
-
-  // the last state reached, unless already written or not trustworthy (failed step)
-  if (csv != nullptr && exit_code != 3 && written != stats.steps) {
-    csv->Write(*sim, status, wall_us);
+  } catch (const io::OutputError& e) {
+    // the CSV holds every row set written before (README "Exit codes": 1)
+    progress.Finish();
+    std::fprintf(stderr, "sim_node: error: --csv: %s\n", e.what());
+    exit_code = 1;
   }
   progress.Finish();
 

@@ -46,8 +46,8 @@ std::vector<std::string> SplitUri(const std::string& config) {
 }  // namespace
 
 long PortMapping::HighestPort(uint32_t domain) const {
-  const long unicast = std::max(unicast_meta_offset, unicast_data_offset) +
-                       participant_gain * max_participant_index;
+  const long unicast =
+      std::max(unicast_meta_offset, unicast_data_offset) + participant_gain * max_participant_index;
   const long multicast = std::max(multicast_meta_offset, multicast_data_offset);
   return base_port + domain_gain * static_cast<long>(domain) + std::max(unicast, multicast);
 }
@@ -93,8 +93,8 @@ std::string CheckDomainPorts(uint32_t domain, const std::string& config) {
   return "--domain " + std::to_string(domain) + ": its ports go up to " + std::to_string(highest) +
          " > 65535 with this DDS configuration (BasePort " + std::to_string(m.base_port) +
          ", DomainGain " + std::to_string(m.domain_gain) + ", MaxAutoParticipantIndex " +
-         std::to_string(m.max_participant_index) + "): the domain id must be <= " +
-         std::to_string(m.MaxDomain());
+         std::to_string(m.max_participant_index) +
+         "): the domain id must be <= " + std::to_string(m.MaxDomain());
 }
 
 }  // namespace towsim::dds
