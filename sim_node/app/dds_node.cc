@@ -34,6 +34,7 @@ constexpr int kExitOk = 0;
 constexpr int kExitError = 1;  // an output (CSV, recording) could not be written: disk full
 constexpr int kExitBadInput = 2;
 constexpr int kExitSolver = 3;
+constexpr int kExitStoppedInSetup = -1;  // Setup(): a signal stopped it (Run() exits 0)
 
 constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
 constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
@@ -205,7 +206,10 @@ int DdsNode::Setup() {
 
   // the initial state (may solve statics)
   try {
-    sim_.emplace(model_);
+    sim_.emplace(model_, [] { return StopRequested() != 0; });  // Ctrl-C in the static solve
+  } catch (const core::StopRequestedError& e) {
+    std::fprintf(stderr, "sim_node: %s (no DDS participant yet)\n", e.what());
+    return kExitStoppedInSetup;
   } catch (const core::SolverError& e) {
     std::fprintf(stderr, "sim_node: solver failure while building the initial state: %s\n",
                  e.what());
@@ -255,7 +259,7 @@ int DdsNode::Setup() {
 
 int DdsNode::Run() {
   InstallStopHandlers();
-  if (const int rc = Setup(); rc != kExitOk) return rc;
+  if (const int rc = Setup(); rc != kExitOk) return rc == kExitStoppedInSetup ? kExitOk : rc;
 
   int exit_code = kExitOk;
   uint8_t end_state = kFinished;
@@ -597,8 +601,10 @@ bool DdsNode::DoReset() {
   prior_failsafes_ += arbiter_->failsafe_count();
   prior_timeouts_ += arbiter_->lockstep_timeouts();
   try {
-    core::Simulation fresh(model_);  // the old state stays valid if this throws
-    *sim_ = std::move(fresh);
+    core::Simulation fresh(model_, [] { return StopRequested() != 0; });
+    *sim_ = std::move(fresh);  // the old state stays valid if the above throws
+  } catch (const core::StopRequestedError&) {
+    return true;  // the run loop ends on the stop request
   } catch (const core::SolverError& e) {
     failure_ = std::string("reset: the initial state could not be built: ") + e.what();
     std::fprintf(stderr, "sim_node: solver failure: %s\n", failure_.c_str());

@@ -25,7 +25,12 @@ double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
   std::optional<core::Simulation> sim;
   try {
-    sim.emplace(model);
+    sim.emplace(model, [] { return StopRequested() != 0; });  // Ctrl-C in the static solve
+  } catch (const core::StopRequestedError& e) {
+    std::fprintf(stderr, "sim_node: %s\n", e.what());
+    std::printf("%s\n", SummaryLine(model.name.empty() ? "scene" : model.name, RunStats{}).c_str());
+    std::fflush(stdout);
+    return 128 + StopRequested();
   } catch (const core::SolverError& e) {
     std::fprintf(stderr, "sim_node: solver failure while building the initial state: %s\n",
                  e.what());
