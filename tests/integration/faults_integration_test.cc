@@ -26,6 +26,7 @@
 #include <gtest/gtest.h>
 
 #include "dds_observer.h"
+#include "io/mcap_reader.h"
 #include "process.h"
 
 namespace towsim::testing {
@@ -467,6 +468,82 @@ TEST_F(FaultsTest, DiskFullWhileWritingCsvEndsTheRunFailed) {
   const SmallDisk disk(Path("disk"), 256);
   ASSERT_TRUE(disk.mounted()) << "mount tmpfs: " << disk.error() << " (the test needs root)";
   DiskFullEndsTheRun(this, "--csv", 124, Path("disk/csv"));
+}
+
+// ---------------------------------------------------------------------------------------------
+// `towsim_export --recover` on a file with one flipped byte in chunk 2 exited 0 with the rows of
+// chunk 1 only; a flipped header length recovered nothing, also with exit 0. Now every intact
+// chunk is kept, the skipped byte ranges are on stderr with their message counts, and the exit
+// code is 4. towsim_replay --recover the same. Domains 126 (the run), 127 (the replay).
+
+// the number of rows in a CSV file, without the header
+long CsvRows(const std::string& path) {
+  const std::string text = ReadFile(path);
+  return static_cast<long>(std::count(text.begin(), text.end(), '\n')) - 1;
+}
+
+TEST_F(FaultsTest, RecoverKeepsEveryIntactChunkAndReportsTheLoss) {
+  // 3 s of wall time: a chunk every 0.5 s
+  const std::string good = Path("good.mcap");
+  std::string out, err;
+  ASSERT_EQ(Run(WithDomain(Node(kSteadyTow, "realtime",
+                                {"--rate", "20", "--duration", "60", "--record", good}),
+                           126),
+                "node", &out, &err),
+            0)
+      << err;
+  const io::McapReader intact = io::McapReader::Open(good);
+  ASSERT_GE(intact.chunk_indexes().size(), 4u);
+  // the reference: the intact file's export, and the odometry messages of chunk 2
+  ASSERT_EQ(Run({TOWSIM_EXPORT, good, "--csv", Path("good")}, "export_good", &out, &err), 0) << err;
+  const long good_rows = CsvRows(Path("good/bodies.csv"));
+  const io::McapChunkIndex chunk = intact.chunk_indexes()[1];
+  uint64_t odom_in_chunk = 0, all_in_chunk = 0;
+  for (const io::McapMessage& m : intact.ReadMessages()) {
+    if (m.log_time < chunk.message_start_time || m.log_time > chunk.message_end_time) continue;
+    ++all_in_chunk;
+    odom_in_chunk += Contains(intact.channels().at(m.channel_id).topic, "/odom");
+  }
+  ASSERT_GT(odom_in_chunk, 0u);
+
+  // one flipped byte in the middle of chunk 2
+  std::string bytes = ReadFile(good);
+  bytes[chunk.chunk_start_offset + chunk.chunk_length / 2] ^= 0x10;
+  const std::string damaged = WriteFile("damaged.mcap", bytes);
+  EXPECT_EQ(Run({TOWSIM_EXPORT, damaged, "--csv", Path("damaged"), "--recover"}, "export_damaged",
+                &out, &err),
+            4);
+  EXPECT_TRUE(Contains(err, "skipped bytes " + std::to_string(chunk.chunk_start_offset) + "-" +
+                                std::to_string(chunk.chunk_start_offset + chunk.chunk_length)))
+      << err;
+  EXPECT_TRUE(Contains(err, std::to_string(all_in_chunk) + " messages by its message indexes"))
+      << err;
+  EXPECT_TRUE(Contains(err, "chunk CRC mismatch")) << err;
+  // every row but those of the damaged chunk's odometry
+  EXPECT_EQ(CsvRows(Path("damaged/bodies.csv")), good_rows - static_cast<long>(odom_in_chunk));
+
+  // a flipped header length: everything after the header is recovered
+  std::string header = ReadFile(good);
+  header[9] ^= 0x40;
+  const std::string bad_header = WriteFile("header.mcap", header);
+  EXPECT_EQ(Run({TOWSIM_EXPORT, bad_header, "--csv", Path("header"), "--recover"}, "export_header",
+                &out, &err),
+            4);
+  EXPECT_TRUE(Contains(err, "skipped bytes 8-")) << err;
+  EXPECT_EQ(CsvRows(Path("header/bodies.csv")), good_rows);
+
+  // the replay of the damaged file sends every message of the intact chunks
+  const uint64_t total = intact.statistics().message_count;
+  EXPECT_EQ(Run({TOWSIM_REPLAY, damaged, "--fast", "--recover", "--delay", "0", "--quiet",
+                 "--domain", "127"},
+                "replay", &out, &err),
+            4);
+  EXPECT_TRUE(Contains(out, "towsim_replay: " + std::to_string(total - all_in_chunk) + " messages"))
+      << out;
+  EXPECT_TRUE(Contains(err, "skipped bytes " + std::to_string(chunk.chunk_start_offset))) << err;
+  // without --recover it is refused, as before
+  EXPECT_EQ(Run({TOWSIM_REPLAY, damaged, "--fast", "--domain", "127"}, "replay_plain", &out, &err),
+            2);
 }
 
 }  // namespace
