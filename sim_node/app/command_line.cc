@@ -67,6 +67,8 @@ std::string Usage() {
          "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2);\n"
          "                        an existing file is refused unless --overwrite\n"
          "  --overwrite           --record may replace an existing file\n"
+         "  --allow-another-node  DDS modes: run although another node publishes in the\n"
+         "                        same domain and namespace (else exit 2; status warns)\n"
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
          "  --wait-for-controllers\n"
          "                        DDS modes: the first step waits until every vehicle that\n"
@@ -107,6 +109,10 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     if (arg == "--overwrite") {
       o.overwrite = true;
+      continue;
+    }
+    if (arg == "--allow-another-node") {
+      o.allow_another_node = true;
       continue;
     }
     static const char* const kWithValue[] = {"--scene",  "--mode",   "--duration",

@@ -16,7 +16,9 @@
 #include "app/dds_publisher.h"
 #include "app/dds_uri.h"
 #include "app/mcap_recording.h"
+#include "app/peer_nodes.h"
 #include "app/stop_signal.h"
+#include "app/unknown_commands.h"
 #include "core/script.h"
 #include "dds/command_arbiter.h"
 #include "dds/entities.h"
@@ -128,6 +130,9 @@ class DdsNode {
   std::unique_ptr<dds::Participant> participant_;
   std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
+  std::unique_ptr<PeerNodes> peers_;          // other nodes in the namespace
+  std::unique_ptr<UnknownCommands> unknown_;  // commands on topics of no commandable body
+  std::string peer_note_;                     // the warning about them, for the status
   PublishStrides strides_;
   long output_stride_ = 1;
   bool has_lockstep_vehicles_ = false;
@@ -224,8 +229,24 @@ int DdsNode::Setup() {
   if (const std::string e = dds::CheckDomainPorts(opt_.domain, config); !e.empty()) return bad(e);
   try {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
+    // another node in this domain and namespace: refused (README "DDS node")
+    peers_ = std::make_unique<PeerNodes>(*participant_, dds::TopicNames(opt_.ns));
+    if (peers_->WaitForAny(PeerNodes::kStartWindow, [] { return StopRequested() != 0; })) {
+      const std::string where = "DDS domain " + std::to_string(opt_.domain) + ", namespace " +
+                                opt_.ns + " (" + peers_->Names() + ")";
+      if (!opt_.allow_another_node) {
+        return bad("another sim_node runs on " + where +
+                   ": controllers would drive both; stop it, pick another --domain or "
+                   "--namespace, or pass --allow-another-node");
+      }
+      peer_note_ = "warning: another node runs on " + where;
+      std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
+    }
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
+    std::vector<std::string> commanded;
+    for (int i = 0; i < arbiter_->size(); ++i) commanded.push_back(arbiter_->vehicle(i).name);
+    unknown_ = std::make_unique<UnknownCommands>(*participant_, opt_.ns, commanded);
   } catch (const dds::DdsError& e) {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;
@@ -393,10 +414,16 @@ void DdsNode::PublishStatus(uint8_t state) {
   for (int i = 0; i < arbiter_->size(); ++i) {
     if (arbiter_->failsafe(i)) s.failsafe_bodies.push_back(arbiter_->vehicle(i).name);
   }
-  s.commands_received = arbiter_->received();
-  s.commands_rejected = arbiter_->rejected();
+  s.commands_received = arbiter_->received() + unknown_->count();
+  s.commands_rejected = arbiter_->rejected() + unknown_->count();
   s.commands_clamped = arbiter_->clamped();
   s.lockstep_timeouts = arbiter_->lockstep_timeouts();
+  if (peers_ && peers_->Poll()) {
+    // one that appeared while this node runs: both go on, warned (README "DDS node")
+    peer_note_ = "warning: another node runs on DDS domain " + std::to_string(opt_.domain) +
+                 ", namespace " + opt_.ns + " (" + peers_->Names() + ")";
+    std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
+  }
   if (state == kFailed) {
     s.health = kHealthError;
     s.message = failure_;
@@ -405,8 +432,12 @@ void DdsNode::PublishStatus(uint8_t state) {
     s.message = arbiter_->last_event();
   } else {
     s.health = kHealthOk;
-    if (!control_note_.empty()) {
+    if (!peer_note_.empty()) {
+      s.message = peer_note_;
+    } else if (!control_note_.empty()) {
       s.message = control_note_;
+    } else if (!unknown_->last_event().empty() && arbiter_->last_event().empty()) {
+      s.message = unknown_->last_event();
     } else if (s.message != arbiter_->last_event()) {
       s.message = arbiter_->last_event();
     }
@@ -473,6 +504,10 @@ void DdsNode::NoteCommand(const dds::CheckedCommand& c, int i) {
 }
 
 void DdsNode::TakeCommands() {
+  if (unknown_->Poll() > 0 && command_notes_ < kMaxCommandNotes) {
+    ++command_notes_;
+    std::fprintf(stderr, "sim_node: %s\n", unknown_->last_event().c_str());
+  }
   const double t = sim_->time();
   for (int i = 0; i < endpoints_->num_command_readers(); ++i) {
     endpoints_->command_reader(i).TakeEach(
@@ -649,10 +684,14 @@ void DdsNode::Summary(double wall) const {
       model_.name.c_str(), ModeName(opt_.mode), total_steps_, sim_time, wall, rtf < 10.0 ? 2 : 0,
       rtf, static_cast<unsigned long long>(pacer_.overruns()),
       static_cast<unsigned long long>(prior_failsafes_ + arbiter_->failsafe_count()),
-      static_cast<unsigned long long>(prior_received_ + arbiter_->received()),
-      static_cast<unsigned long long>(prior_rejected_ + arbiter_->rejected()),
+      static_cast<unsigned long long>(prior_received_ + arbiter_->received() + unknown_->count()),
+      static_cast<unsigned long long>(prior_rejected_ + arbiter_->rejected() + unknown_->count()),
       static_cast<unsigned long long>(prior_clamped_ + arbiter_->clamped()),
       static_cast<unsigned long long>(prior_timeouts_ + arbiter_->lockstep_timeouts()), resets_);
+  if (peers_ && !peers_->run_ids().empty() && n > 0 && n < static_cast<int>(sizeof line)) {
+    n += std::snprintf(line + n, sizeof line - n, ", other nodes in the namespace: %s",
+                       peers_->Names().c_str());
+  }
   if (realtime() && pacer_.stats().count() > 0 && n > 0 && n < static_cast<int>(sizeof line)) {
     const LatenessStats& l = pacer_.stats();
     std::snprintf(line + n, sizeof line - n, ", lateness p50 %.0f us p99 %.0f us max %.0f us",

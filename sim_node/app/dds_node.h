@@ -67,6 +67,9 @@ struct DdsNodeOptions {
   // app/dds_publisher.h); the file is completed at the end of the run and on SIGINT / SIGTERM.
   std::string record_file;
   bool overwrite = false;  // record_file may replace an existing file (else exit 2)
+  // run although another node publishes in this domain and namespace (else exit 2; the
+  // status warns either way, app/peer_nodes.h)
+  bool allow_another_node = false;
   // wait before the first step until every vehicle that takes commands has received one (so
   // controllers started beside the node miss no step, in every mode; the status says waiting)
   bool wait_for_controllers = false;

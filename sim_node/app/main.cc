@@ -98,6 +98,7 @@ int Run(const towsim::app::Options& options) {
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
     dds.overwrite = options.overwrite;
+    dds.allow_another_node = options.allow_another_node;
     dds.start_paused = options.paused;
     dds.wait_for_controllers = options.wait_for_controllers;
     if (csv) {

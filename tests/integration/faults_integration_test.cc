@@ -546,5 +546,86 @@ TEST_F(FaultsTest, RecoverKeepsEveryIntactChunkAndReportsTheLoss) {
             2);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Two sim_nodes on the same domain and namespace both ran: controllers drove both, status
+// samples interleaved. The second is refused (exit 2, naming the first's run id), or runs with
+// --allow-another-node and a warning in the status; the first reports it too. Domain 128.
+
+TEST_F(FaultsTest, SecondNodeInTheNamespaceIsRefusedOrWarned) {
+  constexpr int kDomain = 128;
+  Observer watch(kDomain);
+  Process first(WithDomain(Node(kSteadyTow, "realtime"), kDomain), Log("first"));
+  Status running;
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.step > 0; }, &running)) << first.err();
+  std::string out, err;
+  EXPECT_EQ(
+      Run(WithDomain(Node(kCatenary, "fast", {"--duration", "1"}), kDomain), "second", &out, &err),
+      2);
+  EXPECT_TRUE(Contains(err, "another sim_node runs on DDS domain 128, namespace /towsim (run id " +
+                                running.run_id + ")"))
+      << err;
+  EXPECT_TRUE(Contains(err, "--allow-another-node")) << err;
+  // another namespace is another system
+  EXPECT_EQ(
+      Run(WithDomain(Node(kCatenary, "fast", {"--duration", "1", "--namespace", "/b"}), kDomain),
+          "other_ns", &out, &err),
+      0)
+      << err;
+  // run anyway: warned in its status and summary, and the first node warns too
+  EXPECT_EQ(
+      Run(WithDomain(Node(kCatenary, "fast", {"--duration", "1", "--allow-another-node"}), kDomain),
+          "allowed", &out, &err),
+      0)
+      << err;
+  EXPECT_TRUE(Contains(out, "other nodes in the namespace: run id " + running.run_id)) << out;
+  Status warned;
+  EXPECT_TRUE(watch.WaitFor(
+      [&](const Status& s) {
+        return s.run_id != running.run_id &&
+               Contains(s.message, "warning: another node runs on DDS domain 128") &&
+               Contains(s.message, running.run_id);
+      },
+      &warned));
+  EXPECT_TRUE(watch.WaitFor(
+      [&](const Status& s) {
+        return s.run_id == running.run_id && Contains(s.message, "warning: another node runs");
+      },
+      nullptr));
+  first.Signal(SIGINT);
+  ASSERT_TRUE(first.Wait(kProcessTimeout));
+  EXPECT_EQ(first.exit_code(), 0) << first.err();
+  EXPECT_TRUE(Contains(first.out(), "other nodes in the namespace: run id catenary-"))
+      << first.out();
+}
+
+// ---------------------------------------------------------------------------------------------
+// A command on an unknown body's topic (ghost/command) was ignored without a word, although
+// ActuatorCommand.msg says rejected commands are counted. Now counted as received and
+// rejected, named in the status and the summary. Domain 130.
+
+TEST_F(FaultsTest, CommandsOnAnUnknownBodysTopicAreCountedAsRejected) {
+  constexpr int kDomain = 130;
+  Observer watch(kDomain);
+  Process node(WithDomain(Node(kSteadyTow, "realtime"), kDomain), Log("node"));
+  ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.step > 0; }, nullptr)) << node.err();
+  // the node's reader for it matches (the observer waits for that), then three commands; the
+  // steady tow's towfish is a sphere: it takes no commands either
+  // (one at a time: the writer keeps the last sample only)
+  Status counted;
+  for (uint64_t i = 1; i <= 4; ++i) {
+    watch.Command(i <= 3 ? "ghost" : "towfish", 0, 100.0, 0.0, 0.0);
+    ASSERT_TRUE(watch.WaitFor([i](const Status& s) { return s.rejected == i; }, &counted))
+        << node.err();
+  }
+  EXPECT_EQ(counted.received, 4u);
+  EXPECT_TRUE(Contains(counted.message, "command rejected (no body ")) << counted.message;
+  node.Signal(SIGINT);
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_TRUE(Contains(node.out(), "commands 4 (rejected 4, clamped 0)")) << node.out();
+  EXPECT_TRUE(Contains(node.err(),
+                       "ghost: command rejected (no body ghost that takes commands in this scene)"))
+      << node.err();
+}
+
 }  // namespace
 }  // namespace towsim::testing
