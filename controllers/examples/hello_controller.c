@@ -28,7 +28,6 @@ static double arg(int argc, char** argv, int i, const char* name, double fallbac
 }
 
 int main(int argc, char** argv) {
-  if (argc > 4) return fprintf(stderr, "hello_controller: error: at most 3 arguments\n"), 2;
   const double domain = arg(argc, argv, 1, "domain", 0.0, 0.0, 232.0);
   if (domain != floor(domain)) return fprintf(stderr, "hello_controller: error: domain = %s: "
                                                       "must be an integer\n", argv[1]), 2;

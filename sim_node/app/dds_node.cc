@@ -18,6 +18,7 @@
 #include "app/mcap_recording.h"
 #include "app/peer_nodes.h"
 #include "app/stop_signal.h"
+#include "app/strain_watch.h"
 #include "app/unknown_commands.h"
 #include "core/script.h"
 #include "dds/command_arbiter.h"
@@ -133,6 +134,7 @@ class DdsNode {
   std::unique_ptr<PeerNodes> peers_;          // other nodes in the namespace
   std::unique_ptr<UnknownCommands> unknown_;  // commands on topics of no commandable body
   std::string peer_note_;                     // the warning about them, for the status
+  StrainWatch strain_;                        // the largest cable strain, at the output times
   PublishStrides strides_;
   long output_stride_ = 1;
   bool has_lockstep_vehicles_ = false;
@@ -226,10 +228,18 @@ int DdsNode::Setup() {
   std::string config = opt_.dds_config;
   if (config.empty()) config = DdsUriFromEnvironment("sim_node");
   config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
-  if (const std::string e = dds::CheckDomainPorts(opt_.domain, config); !e.empty()) return bad(e);
+  if (const std::string e = dds::CheckDomainPorts(opt_.domain, config); !e.empty()) {
+    return bad("DDS setup failed: " + e);
+  }
   try {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
-    // another node in this domain and namespace: refused (README "DDS node")
+    endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
+                                                 command_vehicles_);
+    std::vector<std::string> commanded;
+    for (int i = 0; i < arbiter_->size(); ++i) commanded.push_back(arbiter_->vehicle(i).name);
+    unknown_ = std::make_unique<UnknownCommands>(*participant_, opt_.ns, commanded);
+    // another node in this domain and namespace: refused (README "DDS node"); nothing of
+    // this node is published yet
     peers_ = std::make_unique<PeerNodes>(*participant_, dds::TopicNames(opt_.ns));
     if (peers_->WaitForAny(PeerNodes::kStartWindow, [] { return StopRequested() != 0; })) {
       const std::string where = "DDS domain " + std::to_string(opt_.domain) + ", namespace " +
@@ -242,11 +252,6 @@ int DdsNode::Setup() {
       peer_note_ = "warning: another node runs on " + where;
       std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
     }
-    endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
-                                                 command_vehicles_);
-    std::vector<std::string> commanded;
-    for (int i = 0; i < arbiter_->size(); ++i) commanded.push_back(arbiter_->vehicle(i).name);
-    unknown_ = std::make_unique<UnknownCommands>(*participant_, opt_.ns, commanded);
   } catch (const dds::DdsError& e) {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;
@@ -434,6 +439,8 @@ void DdsNode::PublishStatus(uint8_t state) {
     s.health = kHealthOk;
     if (!peer_note_.empty()) {
       s.message = peer_note_;
+    } else if (strain_.extreme()) {
+      s.message = strain_.Warning();
     } else if (!control_note_.empty()) {
       s.message = control_note_;
     } else if (!unknown_->last_event().empty() && arbiter_->last_event().empty()) {
@@ -622,6 +629,7 @@ bool DdsNode::DoStep() {
     PublishStatus(RunningState());
   }
   if (static_cast<long>(step_) % output_stride_ == 0) {
+    if (strain_.Observe(sim)) std::fprintf(stderr, "sim_node: %s\n", strain_.Warning().c_str());
     Output(status, std::lround(step_wall_ * 1e6));
   }
   if (realtime()) pacer_.EndStep();
@@ -688,6 +696,9 @@ void DdsNode::Summary(double wall) const {
       static_cast<unsigned long long>(prior_rejected_ + arbiter_->rejected() + unknown_->count()),
       static_cast<unsigned long long>(prior_clamped_ + arbiter_->clamped()),
       static_cast<unsigned long long>(prior_timeouts_ + arbiter_->lockstep_timeouts()), resets_);
+  if (strain_.extreme() && n > 0 && n < static_cast<int>(sizeof line)) {
+    n += std::snprintf(line + n, sizeof line - n, "%s", strain_.SummaryPart().c_str());
+  }
   if (peers_ && !peers_->run_ids().empty() && n > 0 && n < static_cast<int>(sizeof line)) {
     n += std::snprintf(line + n, sizeof line - n, ", other nodes in the namespace: %s",
                        peers_->Names().c_str());

@@ -9,6 +9,7 @@
 #include "app/progress.h"
 #include "app/run_stats.h"
 #include "app/stop_signal.h"
+#include "app/strain_watch.h"
 #include "core/script.h"
 #include "core/simulation.h"
 #include "io/output_error.h"
@@ -55,7 +56,9 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
 
   core::StepStatus status;  // of the last completed step; default (0 iterations) at t = 0
   long wall_us = 0;         // wall time of the last completed step [us]
-  long written = 0;         // last step written to CSV
+  StrainWatch strain;       // at the output times
+  strain.Observe(*sim);
+  long written = 0;  // last step written to CSV
   int exit_code = 0;
   try {
     if (csv != nullptr) csv->Write(*sim, status, wall_us);
@@ -83,6 +86,10 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
           static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
       stats.Add(status, sim->coupling_iterations());
       t_reached = sim->time();
+      if (k % stride == 0 && strain.Observe(*sim)) {
+        progress.Finish();
+        std::fprintf(stderr, "sim_node: %s\n", strain.Warning().c_str());
+      }
       if (csv != nullptr && k % stride == 0) {
         csv->Write(*sim, status, wall_us);
         written = k;
@@ -105,7 +112,8 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
   stats.sim_time = t_reached - t_start;
   stats.wall_time = Seconds(Clock::now() - start);
   const std::string name = model.name.empty() ? std::string("scene") : model.name;
-  std::printf("%s\n", SummaryLine(name, stats).c_str());
+  strain.Observe(*sim);
+  std::printf("%s%s\n", SummaryLine(name, stats).c_str(), strain.SummaryPart().c_str());
   std::fflush(stdout);
   return exit_code;
 }

@@ -21,7 +21,7 @@ namespace towsim::app {
 class PeerNodes {
  public:
   // wall time given at start to discover a node that runs already [s]
-  static constexpr double kStartWindow = 0.5;
+  static constexpr double kStartWindow = 0.3;
 
   PeerNodes(const dds::Participant& participant, const dds::TopicNames& names);
 

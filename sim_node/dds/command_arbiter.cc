@@ -83,7 +83,8 @@ int CommandArbiter::TimeOut(uint64_t step, bool unheard_too) {
     s.waited_for = false;
     ++lockstep_timeouts_;
     ++n;
-    EnterFailsafe(v, std::string(s.heard ? "lockstep: no valid command" : "lockstep: no command") +
+    EnterFailsafe(v, std::string(s.has_command || !s.heard ? "lockstep: no command"
+                                                           : "lockstep: no valid command") +
                          " for step " + std::to_string(step) + " in time");
   }
   return n;
