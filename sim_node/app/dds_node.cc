@@ -637,22 +637,23 @@ bool DdsNode::DoStep() {
 }
 
 bool DdsNode::DoReset() {
+  std::optional<core::Simulation> fresh;  // the old run stays as it is if this throws
+  try {
+    fresh.emplace(model_, [] { return StopRequested() != 0; });
+  } catch (const core::StopRequestedError&) {
+    return true;  // the run loop ends on the stop request, with the old run's state
+  } catch (const core::SolverError& e) {
+    failure_ = std::string("reset: the initial state could not be built: ") + e.what();
+    std::fprintf(stderr, "sim_node: solver failure: %s\n", failure_.c_str());
+    return false;
+  }
   total_sim_time_ += sim_->time();
   prior_received_ += arbiter_->received();
   prior_rejected_ += arbiter_->rejected();
   prior_clamped_ += arbiter_->clamped();
   prior_failsafes_ += arbiter_->failsafe_count();
   prior_timeouts_ += arbiter_->lockstep_timeouts();
-  try {
-    core::Simulation fresh(model_, [] { return StopRequested() != 0; });
-    *sim_ = std::move(fresh);  // the old state stays valid if the above throws
-  } catch (const core::StopRequestedError&) {
-    return true;  // the run loop ends on the stop request
-  } catch (const core::SolverError& e) {
-    failure_ = std::string("reset: the initial state could not be built: ") + e.what();
-    std::fprintf(stderr, "sim_node: solver failure: %s\n", failure_.c_str());
-    return false;
-  }
+  *sim_ = std::move(*fresh);
   script_.emplace(model_);
   arbiter_->Reset();
   step_ = 0;
