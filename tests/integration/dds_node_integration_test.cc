@@ -23,7 +23,7 @@
 #include "core/simulation.h"
 #include "dds/dds.h"
 #include "nav_msgs.h"
-#include "process.h"
+#include "testing/process.h"
 #include "scene/scene_loader.h"
 #include "towsim_msgs.h"
 
