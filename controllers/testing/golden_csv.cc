@@ -103,7 +103,7 @@ bool UpdateGoldenRequested() {
       if (!(error <= allowed)) {
         if (failures++ == 0) {
           first << "row " << row << " (" << fg[0] << (key_columns > 1 ? "," + fg[1] : "")
-                << "): " << header[c] << " = " << x << ", golden " << y << ", |error| " << error
+                << "): " << header[c] << " = " << fa[c] << ", golden " << fg[c] << ", |error| " << error
                 << " > " << allowed;
         }
         if (error - allowed > worst_excess || worst.empty()) {
