@@ -38,7 +38,8 @@ install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common tows
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)
-install(FILES controllers/common/client.h controllers/common/flags.h controllers/common/laws.h
+install(FILES controllers/common/client.h controllers/common/dds_qos.h controllers/common/flags.h
+              controllers/common/laws.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/common)
 install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/testing
         FILES_MATCHING PATTERN "*.h")

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
 #include "nav_msgs.h"
@@ -28,17 +29,6 @@ double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 dds_entity_t Check(dds_entity_t e, const std::string& what) {
   if (e < 0) throw std::runtime_error(what + ": " + dds_strretcode(e));
   return e;
-}
-
-dds_qos_t* ReliableQos(int depth, bool transient_local) {
-  dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  dds_qset_durability(q,
-                      transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
-  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
-  dds_qset_data_representation(q, 1, &xcdr1);
-  return q;
 }
 
 double StampSeconds(int32_t sec, uint32_t nanosec) { return sec + 1e-9 * nanosec; }

@@ -20,14 +20,13 @@ namespace towsim::testing {
     high = std::max(high, x);
     if (!(x >= lo && x <= hi)) {  // a NaN fails too
       return ::testing::AssertionFailure()
-             << what << " = " << x << " at t = " << s.t << " s (run " << run
-             << "): outside [" << lo << ", " << hi << "] required from t = " << after << " s";
+             << what << " = " << x << " at t = " << s.t << " s (run " << run << "): outside [" << lo
+             << ", " << hi << "] required from t = " << after << " s";
     }
   }
   if (checked == 0) {
-    return ::testing::AssertionFailure() << what << ": no sample at t >= " << after
-                                         << " s (run " << run << ", " << samples.size()
-                                         << " samples in all)";
+    return ::testing::AssertionFailure() << what << ": no sample at t >= " << after << " s (run "
+                                         << run << ", " << samples.size() << " samples in all)";
   }
   return ::testing::AssertionSuccess() << what << " in [" << low << ", " << high << "] over "
                                        << checked << " samples from t = " << after << " s";

@@ -17,9 +17,9 @@ namespace {
 
 std::string LockPath(int id) {
   const char* dir = std::getenv("TOWSIM_DOMAIN_LOCK_DIR");
-  const std::filesystem::path base =
-      dir != nullptr && *dir != '\0' ? std::filesystem::path(dir)
-                                     : std::filesystem::temp_directory_path();
+  const std::filesystem::path base = dir != nullptr && *dir != '\0'
+                                         ? std::filesystem::path(dir)
+                                         : std::filesystem::temp_directory_path();
   return (base / ("towsim-dds-domain-" + std::to_string(id) + ".lock")).string();
 }
 
@@ -48,9 +48,9 @@ void AutoDomainRange(int* first, int* last) {
   int a = 0, b = 0;
   char end = 0;
   if (std::sscanf(text, "%d-%d%c", &a, &b, &end) != 2 || a < 0 || b < a || b > kLastAutoDomain) {
-    throw std::runtime_error("TOWSIM_TEST_DOMAINS = " + std::string(text) +
-                             ": must be FIRST-LAST with 0 <= FIRST <= LAST <= " +
-                             std::to_string(kLastAutoDomain));
+    throw std::runtime_error(
+        "TOWSIM_TEST_DOMAINS = " + std::string(text) +
+        ": must be FIRST-LAST with 0 <= FIRST <= LAST <= " + std::to_string(kLastAutoDomain));
   }
   *first = a;
   *last = b;

@@ -6,26 +6,10 @@
 #include <sstream>
 #include <vector>
 
-#include "testing/process.h"
+#include "testing/csv_file.h"
 
 namespace towsim::testing {
 namespace {
-
-std::vector<std::string> Split(const std::string& line) {
-  std::vector<std::string> f;
-  std::stringstream s(line);
-  std::string cell;
-  while (std::getline(s, cell, ',')) f.push_back(cell);
-  return f;
-}
-
-std::vector<std::string> Lines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::stringstream s(text);
-  std::string line;
-  while (std::getline(s, line)) lines.push_back(line);
-  return lines;
-}
 
 bool Number(const std::string& text, double* x) {
   char* end = nullptr;
@@ -41,8 +25,8 @@ bool UpdateGoldenRequested() {
 }
 
 ::testing::AssertionResult MatchesGoldenCsv(const std::string& actual_path,
-                                            const std::string& golden_path,
-                                            CsvTolerance tolerance, int key_columns) {
+                                            const std::string& golden_path, CsvTolerance tolerance,
+                                            int key_columns) {
   namespace fs = std::filesystem;
   if (!fs::is_regular_file(actual_path)) {
     return ::testing::AssertionFailure() << "no file " << actual_path;
@@ -61,50 +45,52 @@ bool UpdateGoldenRequested() {
            << "golden file " << golden_path
            << " does not exist: run the test with TOWSIM_UPDATE_GOLDEN=1 to write it";
   }
-  const std::vector<std::string> a = Lines(ReadFile(actual_path));
-  const std::vector<std::string> g = Lines(ReadFile(golden_path));
+  const CsvTable a = ReadCsv(actual_path);
+  const CsvTable g = ReadCsv(golden_path);
   const std::string how = " (rewrite it on purpose with TOWSIM_UPDATE_GOLDEN=1)";
-  if (a.empty() || g.empty() || a[0] != g[0]) {
-    return ::testing::AssertionFailure() << golden_path << ": header '" << (g.empty() ? "" : g[0])
-                                         << "' but " << actual_path << " has '"
-                                         << (a.empty() ? "" : a[0]) << "'" << how;
+  if (a.header.empty() || a.header != g.header) {
+    return ::testing::AssertionFailure()
+           << golden_path << ": header '" << JoinCsvRow(g.header) << "' but " << actual_path
+           << " has '" << JoinCsvRow(a.header) << "'" << how;
   }
-  if (a.size() != g.size()) {
-    return ::testing::AssertionFailure() << actual_path << " has " << a.size() - 1 << " rows, "
-                                         << golden_path << " " << g.size() - 1 << how;
+  if (a.rows.size() != g.rows.size()) {
+    return ::testing::AssertionFailure() << actual_path << " has " << a.rows.size() << " rows, "
+                                         << golden_path << " " << g.rows.size() << how;
   }
-  const std::vector<std::string> header = Split(g[0]);
+  const std::vector<std::string>& header = g.header;
   int failures = 0;
   std::ostringstream first;
   double worst_excess = 0.0;
   std::string worst;
-  for (size_t row = 1; row < g.size(); ++row) {
-    const std::vector<std::string> fa = Split(a[row]), fg = Split(g[row]);
+  for (size_t i = 0; i < g.rows.size(); ++i) {
+    const size_t row = i + 1;  // data rows from 1
+    const std::vector<std::string>& fa = a.rows[i];
+    const std::vector<std::string>& fg = g.rows[i];
     if (fa.size() != fg.size() || fa.size() != header.size()) {
-      return ::testing::AssertionFailure() << "row " << row << ": '" << a[row] << "' vs golden '"
-                                           << g[row] << "'" << how;
+      return ::testing::AssertionFailure() << "row " << row << ": '" << JoinCsvRow(fa)
+                                           << "' vs golden '" << JoinCsvRow(fg) << "'" << how;
     }
     for (size_t c = 0; c < fg.size(); ++c) {
       if (static_cast<int>(c) < key_columns) {
         if (fa[c] != fg[c]) {
-          return ::testing::AssertionFailure() << "row " << row << ": " << header[c] << " "
-                                               << fa[c] << " vs golden " << fg[c] << how;
+          return ::testing::AssertionFailure() << "row " << row << ": " << header[c] << " " << fa[c]
+                                               << " vs golden " << fg[c] << how;
         }
         continue;
       }
       double x = 0.0, y = 0.0;
       if (!Number(fa[c], &x) || !Number(fg[c], &y)) {
         if (fa[c] == fg[c]) continue;
-        return ::testing::AssertionFailure() << "row " << row << ": " << header[c] << " '"
-                                             << fa[c] << "' vs golden '" << fg[c] << "'" << how;
+        return ::testing::AssertionFailure() << "row " << row << ": " << header[c] << " '" << fa[c]
+                                             << "' vs golden '" << fg[c] << "'" << how;
       }
       const double allowed = tolerance.abs + tolerance.rel * std::abs(y);
       const double error = std::abs(x - y);
       if (!(error <= allowed)) {
         if (failures++ == 0) {
           first << "row " << row << " (" << fg[0] << (key_columns > 1 ? "," + fg[1] : "")
-                << "): " << header[c] << " = " << fa[c] << ", golden " << fg[c] << ", |error| " << error
-                << " > " << allowed;
+                << "): " << header[c] << " = " << fa[c] << ", golden " << fg[c] << ", |error| "
+                << error << " > " << allowed;
         }
         if (error - allowed > worst_excess || worst.empty()) {
           worst_excess = error - allowed;
@@ -116,13 +102,12 @@ bool UpdateGoldenRequested() {
     }
   }
   if (failures > 0) {
-    return ::testing::AssertionFailure() << actual_path << " vs " << golden_path << ": "
-                                         << failures << " values beyond |error| <= "
-                                         << tolerance.abs << " + " << tolerance.rel
-                                         << " |golden|; first " << first.str() << "; worst "
-                                         << worst << how;
+    return ::testing::AssertionFailure()
+           << actual_path << " vs " << golden_path << ": " << failures
+           << " values beyond |error| <= " << tolerance.abs << " + " << tolerance.rel
+           << " |golden|; first " << first.str() << "; worst " << worst << how;
   }
-  return ::testing::AssertionSuccess() << a.size() - 1 << " rows within tolerance";
+  return ::testing::AssertionSuccess() << a.rows.size() << " rows within tolerance";
 }
 
 }  // namespace towsim::testing

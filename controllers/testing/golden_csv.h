@@ -26,7 +26,7 @@ struct CsvTolerance {
 bool UpdateGoldenRequested();
 
 ::testing::AssertionResult MatchesGoldenCsv(const std::string& actual_path,
-                                            const std::string& golden_path,
-                                            CsvTolerance tolerance, int key_columns = 2);
+                                            const std::string& golden_path, CsvTolerance tolerance,
+                                            int key_columns = 2);
 
 }  // namespace towsim::testing

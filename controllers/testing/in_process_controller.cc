@@ -7,8 +7,7 @@
 
 namespace towsim::testing {
 
-InProcessController::InProcessController(const SimNode& node,
-                                         controllers::ClientOptions options,
+InProcessController::InProcessController(const SimNode& node, controllers::ClientOptions options,
                                          controllers::LockstepClient::Law law) {
   options.domain = static_cast<uint32_t>(node.domain());
   options.ns = node.ns();

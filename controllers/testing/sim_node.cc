@@ -14,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
 #include "geometry_msgs.h"
@@ -28,18 +29,6 @@ using Clock = std::chrono::steady_clock;
 
 double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 double Stamp(const builtin_interfaces_msg_dds__Time_& s) { return s.sec + 1e-9 * s.nanosec; }
-
-// the node's QoS (README "DDS node"): reliable, XCDR1; readers keep `depth` samples
-dds_qos_t* ReaderQos(int depth, bool transient_local) {
-  dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  dds_qset_durability(q,
-                      transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
-  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
-  dds_qset_data_representation(q, 1, &xcdr1);
-  return q;
-}
 
 std::string Prefix(const std::string& ns) { return ns == "/" ? "rt/" : "rt" + ns + "/"; }
 
@@ -58,10 +47,22 @@ std::string DefaultLogDir(int domain) {
 std::string SceneFile(const std::string& scene, const std::string& data_dir) {
   std::error_code ec;
   if (fs::exists(scene, ec) || fs::path(scene).has_parent_path()) return scene;
-  for (const std::string& c : {data_dir + "/scenes/" + scene, data_dir + "/scenes/" + scene + ".yaml"}) {
+  for (const std::string& c :
+       {data_dir + "/scenes/" + scene, data_dir + "/scenes/" + scene + ".yaml"}) {
     if (fs::is_regular_file(c, ec)) return c;
   }
   return scene;
+}
+
+// appends `sample` to `history`, or replaces the last one if it is of the same state: the
+// paused / waiting node repeats its state, one sample per state is kept
+template <typename Sample>
+void AppendState(std::vector<Sample>& history, const Sample& sample) {
+  if (!history.empty() && history.back().run == sample.run && history.back().t == sample.t) {
+    history.back() = sample;
+  } else {
+    history.push_back(sample);
+  }
 }
 
 // the sample's run: the RESETs seen on that topic (sim time going back)
@@ -195,13 +196,7 @@ struct SimNode::Impl {
       o.p = tw.angular.x;
       o.q = tw.angular.y;
       o.r = tw.angular.z;
-      std::vector<OdometrySample>& h = odom[it->second];
-      // the paused / waiting node repeats its state: keep one sample per state
-      if (!h.empty() && h.back().run == o.run && h.back().t == o.t) {
-        h.back() = o;
-      } else {
-        h.push_back(o);
-      }
+      AppendState(odom[it->second], o);
     } else if (const auto jt = force_readers.find(reader); jt != force_readers.end()) {
       const auto* m = static_cast<const geometry_msgs_msg_dds__WrenchStamped_*>(sample);
       WrenchSample f;
@@ -213,12 +208,7 @@ struct SimNode::Impl {
       f.mx = m->wrench.torque.x;
       f.my = m->wrench.torque.y;
       f.mz = m->wrench.torque.z;
-      std::vector<WrenchSample>& h = forces[jt->second];
-      if (!h.empty() && h.back().run == f.run && h.back().t == f.t) {
-        h.back() = f;
-      } else {
-        h.push_back(f);
-      }
+      AppendState(forces[jt->second], f);
     }
   }
 
@@ -227,9 +217,8 @@ struct SimNode::Impl {
     const dds_entity_t topic =
         dds_create_topic(participant, type, (prefix + name).c_str(), nullptr, nullptr);
     if (topic < 0) Fail("topic " + prefix + name + ": " + dds_strretcode(topic));
-    dds_qos_t* qos = ReaderQos(depth, transient_local);
-    const dds_entity_t r =
-        dds_create_reader(participant, topic, qos, listen ? listener : nullptr);
+    dds_qos_t* qos = controllers::ReliableQos(depth, transient_local);
+    const dds_entity_t r = dds_create_reader(participant, topic, qos, listen ? listener : nullptr);
     dds_delete_qos(qos);
     if (r < 0) Fail("reader " + prefix + name + ": " + dds_strretcode(r));
     return r;
@@ -282,7 +271,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   Impl& m = *impl_;
   m.opt = std::move(options);
   const SimNodeOptions& o = m.opt;
-  m.lease = o.domain < 0 ? std::make_unique<DomainLease>() : std::make_unique<DomainLease>(o.domain);
+  m.lease =
+      o.domain < 0 ? std::make_unique<DomainLease>() : std::make_unique<DomainLease>(o.domain);
   const int domain = m.lease->id();
   if (m.opt.log_dir.empty()) m.opt.log_dir = DefaultLogDir(domain);
   fs::remove_all(o.log_dir);
@@ -291,7 +281,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
 
   // the project's loopback configuration, for this process and the node
   const std::string xml = o.data_dir + "/cyclonedds.xml";
-  if (!fs::is_regular_file(xml)) m.Fail("no DDS configuration " + xml + " (SimNodeOptions::data_dir)");
+  if (!fs::is_regular_file(xml))
+    m.Fail("no DDS configuration " + xml + " (SimNodeOptions::data_dir)");
   m.dds_uri = "file://" + xml;
   setenv("CYCLONEDDS_URI", m.dds_uri.c_str(), 1);
 
@@ -314,15 +305,17 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
     const dds_entity_t topic =
         dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimControl__desc,
                          (m.prefix + "sim_control").c_str(), nullptr, nullptr);
-    dds_qos_t* qos = ReaderQos(32, false);
+    dds_qos_t* qos = controllers::ReliableQos(32, false);
     m.control_writer = dds_create_writer(m.participant, topic, qos, nullptr);
     dds_delete_qos(qos);
-    if (m.control_writer < 0) m.Fail("sim_control writer: " + std::string(dds_strretcode(m.control_writer)));
+    if (m.control_writer < 0)
+      m.Fail("sim_control writer: " + std::string(dds_strretcode(m.control_writer)));
   }
 
-  std::vector<std::string> argv = {o.sim_node, "--scene", SceneFile(o.scene, o.data_dir),
-                                   "--mode", o.mode, "--domain", std::to_string(domain),
-                                   "--namespace", o.ns, "--paused"};
+  std::vector<std::string> argv = {
+      o.sim_node, "--scene",  SceneFile(o.scene, o.data_dir), "--mode",
+      o.mode,     "--domain", std::to_string(domain),         "--namespace",
+      o.ns,       "--paused"};
   auto number = [](double x) {
     std::ostringstream s;
     s.precision(17);
@@ -341,8 +334,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   const Clock::time_point begin = Clock::now();
   auto check_alive = [&](const std::string& waiting_for) {
     if (!m.process->running()) {
-      m.Fail("sim_node exited (code " + std::to_string(m.process->exit_code()) +
-             ") before " + waiting_for);
+      m.Fail("sim_node exited (code " + std::to_string(m.process->exit_code()) + ") before " +
+             waiting_for);
     }
     if (Seconds(Clock::now() - begin) > o.startup_timeout) {
       m.Fail("no " + waiting_for + " within " + number(o.startup_timeout) + " s");
@@ -360,7 +353,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
       m.scene.step_size = s->step_size;
       m.scene.duration = s->duration;
       m.scene.command_timeout = s->command_timeout;
-      for (uint32_t k = 0; k < s->bodies._length; ++k) m.scene.bodies.push_back(s->bodies._buffer[k]);
+      for (uint32_t k = 0; k < s->bodies._length; ++k)
+        m.scene.bodies.push_back(s->bodies._buffer[k]);
       for (uint32_t k = 0; k < s->commanded_bodies._length; ++k) {
         m.scene.commanded_bodies.push_back(s->commanded_bodies._buffer[k]);
       }
@@ -376,7 +370,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     for (const std::string& b : m.scene.bodies) {
-      m.odom_readers[m.Reader(&nav_msgs_msg_dds__Odometry__desc, b + "/odom", 1000, false, true)] = b;
+      m.odom_readers[m.Reader(&nav_msgs_msg_dds__Odometry__desc, b + "/odom", 1000, false, true)] =
+          b;
       m.force_readers[m.Reader(&geometry_msgs_msg_dds__WrenchStamped__desc, b + "/cable_force",
                                1000, false, true)] = b;
     }
@@ -469,9 +464,7 @@ std::optional<StatusSample> SimNode::WaitForStatus(
 }
 
 void SimNode::Pause() { impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_PAUSE, 0, 0.0); }
-void SimNode::Resume() {
-  impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_RESUME, 0, 0.0);
-}
+void SimNode::Resume() { impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_RESUME, 0, 0.0); }
 void SimNode::Step(uint32_t steps) {
   impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, steps, 0.0);
 }

@@ -36,16 +36,16 @@ namespace towsim::testing {
 struct SimNodeOptions {
   // a scene file, or the name of an installed scene ("case1_forward": data_dir/scenes/NAME.yaml)
   std::string scene;
-  std::string mode = "lockstep";     // lockstep, fast or realtime
-  double duration = 10.0;            // --duration [s] of simulated time
-  double rate = 1.0;                 // --rate (realtime)
-  std::vector<std::string> set;      // --set KEY.PATH=VALUE each
+  std::string mode = "lockstep";        // lockstep, fast or realtime
+  double duration = 10.0;               // --duration [s] of simulated time
+  double rate = 1.0;                    // --rate (realtime)
+  std::vector<std::string> set;         // --set KEY.PATH=VALUE each
   std::vector<std::string> extra_args;  // further sim_node flags, e.g. --wait-for-controllers
-  std::string ns = "/towsim";        // --namespace
-  int domain = -1;                   // -1: a free one (DomainLease), else exactly this id
-  bool csv = true;                   // --csv <log dir>/csv (bodies.csv, ... of DESIGN §5)
-  bool start_paused = false;         // stay paused after start-up (Resume() starts)
-  double startup_timeout = 30.0;     // [s] for scene_info and the first state
+  std::string ns = "/towsim";           // --namespace
+  int domain = -1;                      // -1: a free one (DomainLease), else exactly this id
+  bool csv = true;                      // --csv <log dir>/csv (bodies.csv, ... of DESIGN §5)
+  bool start_paused = false;            // stay paused after start-up (Resume() starts)
+  double startup_timeout = 30.0;        // [s] for scene_info and the first state
   // where the installation is: the defaults come from find_package(towsim)
   std::string sim_node = TOWSIM_TESTING_SIM_NODE;  // the sim_node executable
   std::string data_dir = TOWSIM_TESTING_DATA_DIR;  // share/towsim: scenes/, cyclonedds.xml
@@ -62,20 +62,20 @@ struct SceneInfo {
 
 struct OdometrySample {
   int run = 0;
-  double t = 0.0;                          // sim time [s]
-  double x = 0, y = 0, z = 0;              // world NED [m]
-  double qx = 0, qy = 0, qz = 0, qw = 1;   // attitude, body -> world NED
-  double roll = 0, pitch = 0, yaw = 0;     // ZYX [rad]
-  double u = 0, v = 0, w = 0;              // body frame [m/s]
-  double p = 0, q = 0, r = 0;              // body frame [rad/s]
+  double t = 0.0;                         // sim time [s]
+  double x = 0, y = 0, z = 0;             // world NED [m]
+  double qx = 0, qy = 0, qz = 0, qw = 1;  // attitude, body -> world NED
+  double roll = 0, pitch = 0, yaw = 0;    // ZYX [rad]
+  double u = 0, v = 0, w = 0;             // body frame [m/s]
+  double p = 0, q = 0, r = 0;             // body frame [rad/s]
 };
 
 struct CableSample {
   int run = 0;
   uint64_t step = 0;
   double t = 0.0;
-  std::vector<double> x, y, z;   // node positions, world NED [m]
-  std::vector<double> tension;   // axial force at each node [N]
+  std::vector<double> x, y, z;  // node positions, world NED [m]
+  std::vector<double> tension;  // axial force at each node [N]
 };
 
 struct WrenchSample {  // the cable's force and moment on a body, body frame
@@ -90,8 +90,8 @@ struct StatusSample {
   uint8_t state = 0, health = 0;  // towsim_msgs SimStatus STATE_*, HEALTH_*
   uint64_t step = 0;
   double t = 0.0;
-  uint64_t failsafe_count = 0, commands_received = 0, commands_rejected = 0,
-           commands_clamped = 0, lockstep_timeouts = 0;
+  uint64_t failsafe_count = 0, commands_received = 0, commands_rejected = 0, commands_clamped = 0,
+           lockstep_timeouts = 0;
   std::vector<std::string> failsafe_bodies;
   bool running() const;
   bool paused() const;
@@ -123,7 +123,7 @@ class SimNode {
   const std::string& log_dir() const;
   std::string csv_dir() const;  // <log dir>/csv (bodies.csv, cable.csv, forces.csv, status.csv)
   std::string command_line() const;
-  std::string log() const;      // the node's stdout and stderr so far
+  std::string log() const;  // the node's stdout and stderr so far
 
   // the latest sample, if any
   std::optional<OdometrySample> odometry(const std::string& body) const;

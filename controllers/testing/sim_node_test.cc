@@ -14,9 +14,9 @@ SimNode& SimNodeTest::StartNode(SimNodeOptions options) {
 
 Process& SimNodeTest::StartController(const SimNode& node, std::vector<std::string> argv,
                                       const std::string& name) {
-  controllers_.push_back(std::make_unique<Process>(
-      std::move(argv), node.log_dir() + "/" + name,
-      std::vector<std::string>{"CYCLONEDDS_URI=" + node.dds_uri()}));
+  controllers_.push_back(
+      std::make_unique<Process>(std::move(argv), node.log_dir() + "/" + name,
+                                std::vector<std::string>{"CYCLONEDDS_URI=" + node.dds_uri()}));
   return *controllers_.back();
 }
 

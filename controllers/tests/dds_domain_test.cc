@@ -48,7 +48,10 @@ TEST_F(DomainLeaseTest, DistinctIdsUntilTheRangeIsUsedUp) {
 }
 
 TEST_F(DomainLeaseTest, AReleasedIdIsTakenAgain) {
-  { const DomainLease a; EXPECT_EQ(a.id(), 220); }
+  {
+    const DomainLease a;
+    EXPECT_EQ(a.id(), 220);
+  }
   const DomainLease b;
   EXPECT_EQ(b.id(), 220);
 }

@@ -53,7 +53,8 @@ TEST_F(GoldenCsvTest, HeaderRowsAndKeysMustMatch) {
   const std::string header = Write(tmp_.path() / "h.csv", "t,body,x,pitch\n0,a,1,2\n");
   EXPECT_NE(std::string(MatchesGoldenCsv(header, golden, {1, 1}).message()).find("header"),
             std::string::npos);
-  const std::string rows = Write(tmp_.path() / "r.csv", std::string(kHeader) + "0,a,1,2\n0,b,1,2\n");
+  const std::string rows =
+      Write(tmp_.path() / "r.csv", std::string(kHeader) + "0,a,1,2\n0,b,1,2\n");
   EXPECT_NE(std::string(MatchesGoldenCsv(rows, golden, {1, 1}).message()).find("has 2 rows"),
             std::string::npos);
   const std::string key = Write(tmp_.path() / "k.csv", std::string(kHeader) + "0,b,1,2\n");
@@ -66,8 +67,9 @@ TEST_F(GoldenCsvTest, UpdateRewritesAndMissingSaysHow) {
   const std::string golden = (tmp_.path() / "sub" / "golden.csv").string();
   const ::testing::AssertionResult missing = MatchesGoldenCsv(actual, golden, {0, 0});
   ASSERT_FALSE(missing);
-  EXPECT_NE(std::string(missing.message()).find("does not exist: run the test with "
-                                                "TOWSIM_UPDATE_GOLDEN=1"),
+  EXPECT_NE(std::string(missing.message())
+                .find("does not exist: run the test with "
+                      "TOWSIM_UPDATE_GOLDEN=1"),
             std::string::npos)
       << missing.message();
   setenv("TOWSIM_UPDATE_GOLDEN", "1", 1);

@@ -11,13 +11,13 @@
 namespace controller_ci {
 
 struct HeadingHoldParams {
-  double heading = 0.0;      // psi_d, commanded from t >= heading_from [rad]
-  double heading_from = 0.0; // [s]
+  double heading = 0.0;          // psi_d, commanded from t >= heading_from [rad]
+  double heading_from = 0.0;     // [s]
   double initial_heading = 0.0;  // psi_d before heading_from [rad]
-  double thrust = 4165.0;    // [N] (Case 1's calibrated 6 m/s)
-  double kp = 1.0;           // [rad rudder / rad error]
-  double kd = 2.0;           // [s]
-  double max_rudder = 0.436; // [rad] (25 deg)
+  double thrust = 4165.0;        // [N] (Case 1's calibrated 6 m/s)
+  double kp = 1.0;               // [rad rudder / rad error]
+  double kd = 2.0;               // [s]
+  double max_rudder = 0.436;     // [rad] (25 deg)
 };
 
 towsim::controllers::Actuation HeadingHold(const HeadingHoldParams& p,

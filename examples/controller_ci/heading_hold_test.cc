@@ -3,14 +3,18 @@
 // the scene's script off: the controllers drive), the towfish answered by towsim's own
 // towfish_depth controller. Every number asserted is explained where it is set.
 
+#include "heading_hold.h"
+
 #include <cmath>
+#include <cstdio>
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "common/laws.h"
-#include "heading_hold.h"
 #include "testing/assertions.h"
 #include "testing/golden_csv.h"
 #include "testing/in_process_controller.h"
@@ -24,15 +28,15 @@ using towsim::controllers::BodyState;
 using towsim::controllers::Rad;
 using namespace towsim::testing;
 
-constexpr double kTargetDeg = 30.0;   // the commanded heading [deg]
-constexpr double kStepAt = 20.0;      // heading 0 until then, the vehicle gathering way [s]
-constexpr double kSettled = 40.0;     // the heading must be held from here [s]
+constexpr double kTargetDeg = 30.0;     // the commanded heading [deg]
+constexpr double kStepAt = 20.0;        // heading 0 until then, the vehicle gathering way [s]
+constexpr double kSettled = 40.0;       // the heading must be held from here [s]
 constexpr double kHeadingTolDeg = 2.0;  // [deg] the autopilot trials' tolerance
-constexpr double kFishDepth = 25.0;   // towfish_depth's commanded depth [m]
+constexpr double kFishDepth = 25.0;     // towfish_depth's commanded depth [m]
 // the towfish starts 203.7 m deep on a hanging cable and rises to the commanded depth as the
 // tow gathers way (25 m first reached at ~58 s); from kFishFrom it must stay above kFishLimit:
 // the commanded depth + 2 m (measured: 22.1-24.7 m over 65-90 s, the loop overshooting upward)
-constexpr double kFishFrom = 65.0;    // [s]
+constexpr double kFishFrom = 65.0;               // [s]
 constexpr double kFishLimit = kFishDepth + 2.0;  // [m]
 // the cable's working load in this example's requirements [N]; measured peak 4.83 kN at
 // t = 65.5 s, the top node, as the towfish is pulled up through the turn
@@ -42,7 +46,7 @@ SimNodeOptions Case1(double duration) {
   SimNodeOptions o;
   o.scene = "case1_forward";  // the installed share/towsim/scenes/case1_forward.yaml
   o.duration = duration;
-  o.set = {"script=[]"};      // no scripted thrust: the controllers drive
+  o.set = {"script=[]"};  // no scripted thrust: the controllers drive
   return o;
 }
 
@@ -51,6 +55,19 @@ controller_ci::HeadingHoldParams Params() {
   p.heading = Rad(kTargetDeg);
   p.heading_from = kStepAt;
   return p;
+}
+
+// what the controller saw and did at every step, exactly
+struct Record {
+  BodyState state;
+  Actuation command;
+};
+
+// its numbers: t, position, attitude, velocities, rates, thrust, rudder
+std::vector<double> Fields(const Record& r) {
+  const BodyState& s = r.state;
+  return {s.t, s.x, s.y, s.z, s.roll, s.pitch,          s.yaw,           s.u,
+          s.v, s.w, s.p, s.q, s.r,    r.command.thrust, r.command.rudder};
 }
 
 class HeadingHoldTest : public SimNodeTest {
@@ -62,6 +79,33 @@ class HeadingHoldTest : public SimNodeTest {
                             std::to_string(kFishDepth)},
                            "towfish_depth");
   }
+  // the heading hold in this process, on the tow vehicle; `law` wraps it (to record)
+  std::unique_ptr<InProcessController> StartHeadingHold(
+      const SimNode& node, std::function<Actuation(const BodyState&)> law = nullptr) {
+    towsim::controllers::ClientOptions client;
+    client.body = "tow_vehicle";
+    if (!law) law = [](const BodyState& s) { return controller_ci::HeadingHold(Params(), s); };
+    return std::make_unique<InProcessController>(node, client, law);
+  }
+  // a run of `duration` [s] with the heading hold in this process, recording every step;
+  // the node's CSV files stay in `*csv_dir`
+  std::vector<Record> RecordedRun(double duration, std::string* csv_dir) {
+    std::vector<Record> records;
+    SimNode& node = StartNode(Case1(duration));
+    Process& fish = StartTowfish(node);
+    const std::unique_ptr<InProcessController> ctl =
+        StartHeadingHold(node, [&records](const BodyState& s) {
+          const Actuation a = controller_ci::HeadingHold(Params(), s);
+          records.push_back({s, a});
+          return a;
+        });
+    const NodeResult end = node.Wait(120.0);
+    EXPECT_EQ(end.exit_code, 0) << end.summary;
+    EXPECT_EQ(ctl->Join(), 0) << ctl->error();
+    EXPECT_TRUE(fish.Wait(10.0));
+    *csv_dir = node.csv_dir();
+    return records;
+  }
 };
 
 // the controller as its own process reaches and holds the heading; the trajectory equals the
@@ -71,10 +115,11 @@ TEST_F(HeadingHoldTest, ReachesTheCommandedHeading) {
   options.set.push_back("time.output_rate=2");  // a golden file of 2 Hz rows is enough
   SimNode& node = StartNode(options);
   Process& fish = StartTowfish(node);
-  Process& ctl = StartController(
-      node, {HEADING_HOLD, "--domain", std::to_string(node.domain()), "--heading-deg",
-             std::to_string(kTargetDeg), "--from", std::to_string(kStepAt)},
-      "heading_hold");
+  Process& ctl =
+      StartController(node,
+                      {HEADING_HOLD, "--domain", std::to_string(node.domain()), "--heading-deg",
+                       std::to_string(kTargetDeg), "--from", std::to_string(kStepAt)},
+                      "heading_hold");
   const NodeResult end = node.Wait(120.0);
   ASSERT_EQ(end.exit_code, 0) << end.summary;
   EXPECT_NE(end.summary.find("lockstep, 1200 steps"), std::string::npos) << end.summary;
@@ -87,7 +132,7 @@ TEST_F(HeadingHoldTest, ReachesTheCommandedHeading) {
                           Rad(kHeadingTolDeg), "heading error [rad]"));
   EXPECT_TRUE(NoFailsafe(node.status_history()));
 
-  // the node's own bodies.csv (10 Hz, 9 digits) against the golden run. The run is
+  // the node's own bodies.csv (2 Hz, 9 digits) against the golden run. The run is
   // deterministic (see IsDeterministic): on one machine the files are identical. The
   // tolerance admits what another compiler or CPU may change (floating-point contraction,
   // libm) while any change of the controller's behaviour shows: 1e-6 m, rad, m/s.
@@ -103,27 +148,21 @@ TEST_F(HeadingHoldTest, KeepsTheTowfishAboveADepth) {
   SimNode& node = StartNode(Case1(90.0));
   EXPECT_EQ(node.scene_info().bodies, (std::vector<std::string>{"tow_vehicle", "towfish"}));
   StartTowfish(node);
-  towsim::controllers::ClientOptions client;
-  client.body = "tow_vehicle";
-  const controller_ci::HeadingHoldParams p = Params();
-  InProcessController ctl(node, client, [&p](const BodyState& s) {
-    return controller_ci::HeadingHold(p, s);
-  });
+  const std::unique_ptr<InProcessController> ctl = StartHeadingHold(node);
   const NodeResult end = node.Wait(120.0);
   ASSERT_EQ(end.exit_code, 0) << end.summary;
-  EXPECT_EQ(ctl.Join(), 0) << ctl.error();
+  EXPECT_EQ(ctl->Join(), 0) << ctl->error();
   // steps 0..1799, and the final state 1800 too when its status arrives before the end of the
   // run (the node ignores that answer)
-  EXPECT_GE(ctl.steps_answered(), 1800u);
-  EXPECT_LE(ctl.steps_answered(), 1801u);
+  EXPECT_GE(ctl->steps_answered(), 1800u);
+  EXPECT_LE(ctl->steps_answered(), 1801u);
 
   const auto depth = [](const OdometrySample& s) { return s.z; };  // NED: z down [m]
-  const testing::AssertionResult above =
-      StaysWithin(node.odometry_history("towfish"), kFishFrom, depth, 0.0, kFishLimit,
-                  "towfish depth [m]");
+  const ::testing::AssertionResult above = StaysWithin(node.odometry_history("towfish"), kFishFrom,
+                                                       depth, 0.0, kFishLimit, "towfish depth [m]");
   EXPECT_TRUE(above);
   std::printf("%s\n", above.message());
-  const testing::AssertionResult tension = TensionBelow(node.max_tension_history(), kMaxTension);
+  const ::testing::AssertionResult tension = TensionBelow(node.max_tension_history(), kMaxTension);
   EXPECT_TRUE(tension);
   std::printf("%s\n", tension.message());
   EXPECT_TRUE(NoFailsafe(node.status_history()));
@@ -139,12 +178,7 @@ TEST_F(HeadingHoldTest, KeepsTheTowfishAboveADepth) {
 TEST_F(HeadingHoldTest, SurvivesAReset) {
   SimNode& node = StartNode(Case1(40.0));
   StartTowfish(node);
-  towsim::controllers::ClientOptions client;
-  client.body = "tow_vehicle";
-  const controller_ci::HeadingHoldParams p = Params();
-  InProcessController ctl(node, client, [&p](const BodyState& s) {
-    return controller_ci::HeadingHold(p, s);
-  });
+  const std::unique_ptr<InProcessController> ctl = StartHeadingHold(node);
   const std::string first_run = node.scene_info().run_id;
   ASSERT_TRUE(node.WaitForStatus([](const StatusSample& s) { return s.t >= 30.0; }));
   node.Reset();
@@ -155,7 +189,7 @@ TEST_F(HeadingHoldTest, SurvivesAReset) {
   const NodeResult end = node.Wait(120.0);
   ASSERT_EQ(end.exit_code, 0) << end.summary;
   EXPECT_NE(end.summary.find("resets 1"), std::string::npos) << end.summary;
-  EXPECT_EQ(ctl.Join(), 0) << ctl.error();
+  EXPECT_EQ(ctl->Join(), 0) << ctl->error();
   // run 1 (after the reset) reaches the heading as run 0 did
   const std::vector<OdometrySample> tow = node.odometry_history("tow_vehicle");
   EXPECT_TRUE(StaysWithin(tow, 35.0, HeadingError(Rad(kTargetDeg)), -Rad(kHeadingTolDeg),
@@ -163,36 +197,12 @@ TEST_F(HeadingHoldTest, SurvivesAReset) {
   EXPECT_TRUE(NoFailsafe(node.status_history()));
 }
 
-// what the controller saw and did at every step, exactly
-struct Record {
-  BodyState state;
-  Actuation command;
-};
-
-std::vector<Record> RecordedRun(SimNode& node, Process& fish) {
-  std::vector<Record> records;
-  towsim::controllers::ClientOptions client;
-  client.body = "tow_vehicle";
-  const controller_ci::HeadingHoldParams p = Params();
-  InProcessController ctl(node, client, [&](const BodyState& s) {
-    const Actuation a = controller_ci::HeadingHold(p, s);
-    records.push_back({s, a});
-    return a;
-  });
-  const NodeResult end = node.Wait(120.0);
-  EXPECT_EQ(end.exit_code, 0) << end.summary;
-  EXPECT_EQ(ctl.Join(), 0) << ctl.error();
-  EXPECT_TRUE(fish.Wait(10.0));
-  return records;
-}
-
 // two runs of the same scene and controllers are bit-identical: every state the controller
 // received and every command it sent, and the node's CSV files
 TEST_F(HeadingHoldTest, IsDeterministic) {
-  SimNode& a = StartNode(Case1(30.0));
-  const std::vector<Record> first = RecordedRun(a, StartTowfish(a));
-  SimNode& b = StartNode(Case1(30.0));
-  const std::vector<Record> second = RecordedRun(b, StartTowfish(b));
+  std::string csv_a, csv_b;
+  const std::vector<Record> first = RecordedRun(30.0, &csv_a);
+  const std::vector<Record> second = RecordedRun(30.0, &csv_b);
   // steps 0..599 (and maybe the final state 600, see KeepsTheTowfishAboveADepth)
   constexpr size_t kSteps = 600;
   ASSERT_GE(first.size(), kSteps);
@@ -200,17 +210,14 @@ TEST_F(HeadingHoldTest, IsDeterministic) {
   for (size_t k = 0; k < kSteps; ++k) {
     const BodyState& x = first[k].state;
     const BodyState& y = second[k].state;
-    const double xs[] = {x.t, x.x, x.y, x.z, x.roll, x.pitch, x.yaw, x.u, x.v, x.w, x.p, x.q, x.r,
-                         first[k].command.thrust, first[k].command.rudder};
-    const double ys[] = {y.t, y.x, y.y, y.z, y.roll, y.pitch, y.yaw, y.u, y.v, y.w, y.p, y.q, y.r,
-                         second[k].command.thrust, second[k].command.rudder};
+    const std::vector<double> xs = Fields(first[k]), ys = Fields(second[k]);
     ASSERT_EQ(x.step, y.step);
-    for (size_t i = 0; i < std::size(xs); ++i) {
+    for (size_t i = 0; i < xs.size(); ++i) {
       ASSERT_EQ(xs[i], ys[i]) << "step " << x.step << ", field " << i;
     }
   }
   for (const char* file : {"bodies.csv", "cable.csv", "forces.csv"}) {
-    EXPECT_EQ(ReadFile(a.csv_dir() + "/" + file), ReadFile(b.csv_dir() + "/" + file)) << file;
+    EXPECT_EQ(ReadFile(csv_a + "/" + file), ReadFile(csv_b + "/" + file)) << file;
   }
 }
 

@@ -20,9 +20,9 @@ int main(int argc, char** argv) {
   opt.name = "heading_hold";
   controller_ci::HeadingHoldParams p;
   try {
-    const Flags f(argc, argv,
-                  {"heading-deg", "from", "thrust", "kp", "kd", "body", "domain", "namespace",
-                   "timeout"});
+    const Flags f(
+        argc, argv,
+        {"heading-deg", "from", "thrust", "kp", "kd", "body", "domain", "namespace", "timeout"});
     if (!f.Has("heading-deg")) throw std::runtime_error("--heading-deg H is required");
     p.heading = towsim::controllers::Rad(f.Number("heading-deg", 0.0));
     p.heading_from = f.Number("from", 0.0);

@@ -21,8 +21,8 @@ std::string ResolveScene(const std::string& scene, const std::optional<fs::path>
   if (fs::exists(scene, ec) || !data_dir) return scene;
   const fs::path name(scene);
   if (name.has_parent_path()) return scene;
-  for (const fs::path& candidate : {*data_dir / "scenes" / name,
-                                    *data_dir / "scenes" / (scene + ".yaml")}) {
+  for (const fs::path& candidate :
+       {*data_dir / "scenes" / name, *data_dir / "scenes" / (scene + ".yaml")}) {
     if (fs::is_regular_file(candidate, ec)) return candidate.string();
   }
   return scene;

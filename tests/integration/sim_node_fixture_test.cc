@@ -7,7 +7,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -15,7 +14,7 @@
 
 #include <gtest/gtest.h>
 
-#include "testing/process.h"
+#include "testing/csv_file.h"
 #include "testing/sim_node.h"
 
 namespace towsim::testing {
@@ -48,8 +47,7 @@ TEST(SimNodeFixture, StartsPausedStepsAndStops) {
   EXPECT_TRUE(node.status()->paused());
 
   node.Step(5);
-  ASSERT_TRUE(node.WaitForStatus(
-      [](const StatusSample& s) { return s.step == 5 && s.paused(); }));
+  ASSERT_TRUE(node.WaitForStatus([](const StatusSample& s) { return s.step == 5 && s.paused(); }));
   // 5 steps of 0.05 s (the stamp: sec + 1e-9 nanosec, rounded)
   ASSERT_TRUE(node.odometry("towfish").has_value());
   EXPECT_NEAR(node.odometry("towfish")->t, 0.25, 1e-12);
@@ -74,15 +72,10 @@ TEST(SimNodeFixture, StartsPausedStepsAndStops) {
 
   // the fixture's samples are the node's: its bodies.csv (10 Hz: t = 0, 0.1, 0.2, and the
   // final state 0.25) at 9 digits
-  std::stringstream csv(ReadFile(node.csv_dir() + "/bodies.csv"));
-  std::string row;
-  std::getline(csv, row);
+  const CsvTable csv = ReadCsv(node.csv_dir() + "/bodies.csv");
   int rows = 0;
-  while (std::getline(csv, row)) {
-    std::vector<std::string> f;
-    std::stringstream s(row);
-    std::string cell;
-    while (std::getline(s, cell, ',')) f.push_back(cell);
+  for (const std::vector<std::string>& f : csv.rows) {
+    const std::string row = JoinCsvRow(f);
     ASSERT_EQ(f.size(), 14u) << row;
     const double t = std::stod(f[0]);
     const OdometrySample* match = nullptr;
