@@ -11,6 +11,7 @@
 // throws with a clear message. Works in every DDS mode (realtime and fast answer each status
 // they see; lockstep waits for the answer).
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -24,6 +25,8 @@ struct ClientOptions {
   std::string body;        // the commanded body
   double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
   std::string name = "controller";  // for messages
+  // when set (by another thread), the constructor's waits and Run end as on a stop signal
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // the state of the body at one step, from its odometry

@@ -11,6 +11,7 @@ InProcessController::InProcessController(const SimNode& node, controllers::Clien
                                          controllers::LockstepClient::Law law) {
   options.domain = static_cast<uint32_t>(node.domain());
   options.ns = node.ns();
+  options.stop = &stop_;
   thread_ = std::thread([this, options, law = std::move(law)] {
     try {
       controllers::LockstepClient client(options);
@@ -24,6 +25,7 @@ InProcessController::InProcessController(const SimNode& node, controllers::Clien
 }
 
 InProcessController::~InProcessController() {
+  stop_.store(true);
   if (thread_.joinable()) thread_.join();
 }
 

@@ -3,6 +3,7 @@
 // (common/client.h): a LockstepClient on its own thread, started after the node is up. The
 // law runs on that thread; read what it recorded after Join().
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <thread>
@@ -19,7 +20,8 @@ class InProcessController {
   // the end of the node's run; `options.domain` and `options.ns` are taken from the node
   InProcessController(const SimNode& node, controllers::ClientOptions options,
                       controllers::LockstepClient::Law law);
-  ~InProcessController();  // joins
+  // joins; a controller still running (a test that ended early) is stopped first
+  ~InProcessController();
   InProcessController(const InProcessController&) = delete;
   InProcessController& operator=(const InProcessController&) = delete;
 
@@ -30,6 +32,7 @@ class InProcessController {
   uint64_t steps_answered() const { return steps_; }
 
  private:
+  std::atomic<bool> stop_{false};
   std::thread thread_;
   int code_ = -1;
   uint64_t steps_ = 0;

@@ -2,11 +2,13 @@
 // build tree's sim_node: start-up paused, SimControl STEP, the latest samples of every topic,
 // the samples equal to the node's own bodies.csv, stop with exit code and summary, a bad scene
 // reported with the node's message, and parallel nodes on distinct automatic domain ids.
-// Domains 170 and 171 (fixed), automatic ones from 180-231 (tests/integration/README.md).
+// Realtime mode too. Domains 170 and 171 (fixed), automatic ones from 180-231
+// (tests/integration/README.md).
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -129,6 +131,24 @@ TEST(SimNodeFixture, ParallelNodesGetDistinctDomains) {
     EXPECT_EQ(s.back().step, 10u);
     for (const StatusSample& x : s) EXPECT_EQ(x.run_id, s.front().run_id);
   }
+}
+
+// realtime mode (automatic id): 2 s of simulated time at --rate 10 is 0.2 s of wall time
+TEST(SimNodeFixture, RealtimeModeRunsPaced) {
+  SimNodeOptions o;
+  o.scene = "steady_tow";
+  o.mode = "realtime";
+  o.rate = 10.0;
+  o.duration = 2.0;
+  SimNode node(o);
+  const NodeResult end = node.Wait();
+  EXPECT_EQ(end.exit_code, 0) << node.log();
+  EXPECT_EQ(end.summary.rfind("sim_node: steady_tow: realtime, 40 steps, 2 s simulated", 0), 0u)
+      << end.summary;
+  const std::optional<StatusSample> last = node.status();
+  ASSERT_TRUE(last.has_value());
+  EXPECT_TRUE(last->finished());
+  EXPECT_EQ(last->mode, "realtime");
 }
 
 }  // namespace
