@@ -6,7 +6,8 @@
 //     (and sim time) of the state it answers,
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
-//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step.
+//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
+//     after a RESET (a new run id) it drops the old run's odometry still queued.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. Works in every DDS mode (realtime and fast answer each status
 // they see; lockstep waits for the answer).

@@ -3,7 +3,10 @@
 //
 //   class MyControllerTest : public towsim::testing::SimNodeTest {};
 //   TEST_F(MyControllerTest, ReachesTheHeading) {
-//     SimNode& node = StartNode({.scene = "case1_forward", .duration = 60});
+//     SimNodeOptions o;
+//     o.scene = "case1_forward";
+//     o.duration = 60.0;
+//     SimNode& node = StartNode(o);
 //     StartController({"/path/to/my_controller", "--domain", std::to_string(node.domain())});
 //     NodeResult end = node.Wait();
 //     ...
