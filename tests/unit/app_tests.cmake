@@ -17,3 +17,10 @@ towsim_add_test(sim_node_cli_test LABEL unit
 foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
+
+# the installed-scene lookup of sim_node --scene
+towsim_add_test(installed_data_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/installed_data.cc)
+target_include_directories(installed_data_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node
+                                                       ${CMAKE_CURRENT_LIST_DIR})
