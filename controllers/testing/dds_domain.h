@@ -9,7 +9,7 @@
 // 7400 + 250 * id + 10) must be free on 127.0.0.1. So programs that take no lock (sim_node
 // started by hand) are avoided too.
 //
-// Ids come from TOWSIM_TEST_DOMAINS ("FIRST-LAST", default 180-231) and the lock directory
+// Ids come from TOWSIM_TEST_DOMAINS ("FIRST-LAST", default 200-231) and the lock directory
 // from TOWSIM_DOMAIN_LOCK_DIR (default the system temp dir). 231 is the highest id the
 // project's cyclonedds.xml can use: the user port of participant index
 // MaxAutoParticipantIndex = 120 is 7400 + 250 * id + 11 + 2 * 120 <= 65535.
@@ -18,7 +18,7 @@
 
 namespace towsim::testing {
 
-inline constexpr int kFirstAutoDomain = 180;
+inline constexpr int kFirstAutoDomain = 200;
 inline constexpr int kLastAutoDomain = 231;
 
 // the UDP port of discovery for participant index 0 on domain `id` (Cyclone's defaults:

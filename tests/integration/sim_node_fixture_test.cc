@@ -2,7 +2,7 @@
 // build tree's sim_node: start-up paused, SimControl STEP, the latest samples of every topic,
 // the samples equal to the node's own bodies.csv, stop with exit code and summary, a bad scene
 // reported with the node's message, and parallel nodes on distinct automatic domain ids.
-// Realtime mode too. Domains 170 and 171 (fixed), automatic ones from 180-231
+// Realtime mode too. Domains 170 and 171 (fixed), automatic ones from 200-231
 // (tests/integration/README.md).
 
 #include <chrono>
