@@ -17,3 +17,11 @@ towsim_add_test(sim_node_cli_test LABEL unit
 foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
+
+# towsim_sweep (docs/sweeps.md): the combinator and the results of a case
+towsim_add_test(sweep_combinator_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_combinator_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_signals_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_signals_test.cc
+  LIBS towsim_sweep_lib)
