@@ -4,6 +4,7 @@
 # runs every test (unit, reference, integration) with ctest. Exits non-zero on any failure.
 set -euo pipefail
 TOWSIM_WITH_NODE=1
+TOWSIM_WITH_SLURM=1
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh"
 
 # the independent readers of the recordings (@mcap/core, @foxglove/rosmsg,
