@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# test.sh — installs what is missing (Debian packages, Node.js and npm included), builds build/
+# test.sh — installs what is missing (Debian packages, Node.js, npm, Slurm and munge included), builds build/
 # (Release), installs the Node.js test dependencies of tests/ from their lockfiles (npm ci) and
 # runs every test (unit, reference, integration) with ctest. Exits non-zero on any failure.
 set -euo pipefail

@@ -117,8 +117,9 @@ t0=$(date +%s.%N)
 t1=$(date +%s.%N)
 "$sweep_bin" "$sweep_file" --out "$tmp/slurm" --slurm || fail "towsim_sweep --slurm failed"
 t2=$(date +%s.%N)
-awk -v a="$t0" -v b="$t1" -v c="$t2" \
-  'BEGIN { printf "SweepSlurm: local %.2f s, Slurm %.2f s for 8 cases\n", b - a, c - b }'
+awk -v a="$t0" -v b="$t1" -v c="$t2" -v n="$cpus" 'BEGIN {
+  printf "SweepSlurm: 8 cases: local (2 workers) %.2f s, Slurm (%d CPUs) %.2f s: ", b - a, n, c - b
+  printf "Slurm overhead %.2f s per case\n", (c - b - (b - a)) / 8 }'
 
 # the tables agree apart from wall_s (column 5; the fields before it hold no commas here)
 strip() { cut -d, -f1-4,6- "$1"; }
