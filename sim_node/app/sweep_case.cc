@@ -8,32 +8,12 @@
 #include <stdexcept>
 
 #include "app/sweep_signals.h"
+#include "app/text_file.h"
 
 namespace towsim::app {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string ReadText(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// writes `text` to `path` by way of path.tmp and a rename: readers see all of it or nothing
-void WriteAtomically(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (f == nullptr) throw std::runtime_error(tmp.string() + ": cannot be written");
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !written) {
-    throw std::runtime_error(tmp.string() + ": write failed (disk full?)");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error(path.string() + ": cannot be replaced: " + ec.message());
-}
 
 }  // namespace
 
@@ -64,7 +44,7 @@ void PrepareCase(const std::string& case_dir, const std::string& sim_node,
   if (ec) throw std::runtime_error(case_dir + ": cannot be created: " + ec.message());
   std::string args_text;
   for (const std::string& a : arguments) args_text += a + "\n";
-  WriteAtomically(fs::path(case_dir) / "case_args.txt", args_text);
+  WriteTextFileAtomically((fs::path(case_dir) / "case_args.txt").string(), args_text);
 
   // the same run as the local runner's, timed by the shell (a Slurm task runs this)
   std::string command = ShellWord(sim_node);
@@ -83,7 +63,7 @@ void PrepareCase(const std::string& case_dir, const std::string& sim_node,
       "'BEGIN { printf \"exit_code=%d\\nwall_s=%.3f\\n\", c, e - s }' >case_status.txt.tmp &&\n"
       "  mv case_status.txt.tmp case_status.txt\n"
       "exit \"$code\"\n";
-  WriteAtomically(fs::path(case_dir) / "command.sh", script);
+  WriteTextFileAtomically((fs::path(case_dir) / "command.sh").string(), script);
   fs::permissions(fs::path(case_dir) / "command.sh", fs::perms::owner_exec | fs::perms::group_exec,
                   fs::perm_options::add, ec);
 }
@@ -91,14 +71,14 @@ void PrepareCase(const std::string& case_dir, const std::string& sim_node,
 bool SameArguments(const std::string& case_dir, const std::vector<std::string>& arguments) {
   std::string expected;
   for (const std::string& a : arguments) expected += a + "\n";
-  return ReadText(fs::path(case_dir) / "case_args.txt") == expected;
+  return ReadTextFile((fs::path(case_dir) / "case_args.txt").string()) == expected;
 }
 
 void WriteCaseStatus(const std::string& case_dir, const CaseStatus& status) {
   char text[96];
   std::snprintf(text, sizeof text, "exit_code=%d\nwall_s=%.3f\n", status.exit_code,
                 status.wall_s);
-  WriteAtomically(fs::path(case_dir) / "case_status.txt", text);
+  WriteTextFileAtomically((fs::path(case_dir) / "case_status.txt").string(), text);
 }
 
 std::optional<CaseStatus> ReadCaseStatus(const std::string& case_dir) {
@@ -149,7 +129,7 @@ std::optional<SweepRow> CollectCase(const scene::SweepSpec& spec, const SweepCas
   row.wall_s = status->wall_s;
   for (const auto& [path, value] : c.values) row.parameters.push_back(value);
   if (status->exit_code != 0) {
-    row.message = LastLine(ReadText(fs::path(case_dir) / "sim_node.err"));
+    row.message = LastLine(ReadTextFile((fs::path(case_dir) / "sim_node.err").string()));
     if (row.message.empty()) {
       row.message = status->exit_code > 128
                         ? "sim_node ended by signal " + std::to_string(status->exit_code - 128)
@@ -159,7 +139,7 @@ std::optional<SweepRow> CollectCase(const scene::SweepSpec& spec, const SweepCas
   }
   try {
     row.results = ComputeSweepResults(spec.results, case_dir,
-                                      ReadText(fs::path(case_dir) / "sim_node.out"));
+                                      ReadTextFile((fs::path(case_dir) / "sim_node.out").string()));
     row.ok = true;
   } catch (const std::exception& e) {
     row.message = std::string("results: ") + e.what();

@@ -24,6 +24,7 @@
 #include "app/sweep_signals.h"
 #include "app/sweep_slurm.h"
 #include "app/sweep_table.h"
+#include "app/text_file.h"
 #include "core/model.h"
 #include "scene/config_error.h"
 #include "scene/scene_loader.h"
@@ -147,16 +148,6 @@ std::string FindSimNode() {
   return {};
 }
 
-void WriteText(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream f(tmp);
-    f << text;
-    if (!f) throw std::runtime_error(tmp.string() + ": cannot be written");
-  }
-  fs::rename(tmp, path);
-}
-
 int Run(const Options& o) {
   // the sweep file, its scene, its results (exit 2 for any rule broken)
   towsim::scene::SweepSpec spec;
@@ -267,8 +258,9 @@ int Run(const Options& o) {
   // the table (complete), the summary, the plot
   towsim::app::WriteResultsTable(table.string(), spec, rows);
   const std::string summary = towsim::app::SweepSummary(spec, cases, rows, timing);
-  WriteText(out / "summary.txt", summary);
-  WriteText(out / "results.svg", towsim::app::SweepPlotSvg(spec, rows));
+  towsim::app::WriteTextFileAtomically((out / "summary.txt").string(), summary);
+  towsim::app::WriteTextFileAtomically((out / "results.svg").string(),
+                                       towsim::app::SweepPlotSvg(spec, rows));
   std::fputs(summary.c_str(), stdout);
   std::fflush(stdout);
   if (code != 0) return code;  // stopped by a signal

@@ -16,6 +16,7 @@
 
 #include "app/stop_signal.h"
 #include "app/sweep_case.h"
+#include "app/text_file.h"
 
 extern char** environ;
 
@@ -31,13 +32,6 @@ struct CommandResult {
   int exit_code = -1;  // 127: could not be started
   std::string out, err;
 };
-
-std::string ReadText(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // runs `argv` (found on the PATH), stdout and stderr to files under `dir`, and waits
 CommandResult RunCommand(const std::vector<std::string>& argv_text, const std::string& dir) {
@@ -65,15 +59,9 @@ CommandResult RunCommand(const std::vector<std::string>& argv_text, const std::s
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.out = ReadText(out);
-  result.err = ReadText(err);
+  result.out = ReadTextFile(out);
+  result.err = ReadTextFile(err);
   return result;
-}
-
-void WriteFile(const fs::path& path, const std::string& text) {
-  std::ofstream f(path);
-  f << text;
-  if (!f) throw std::runtime_error(path.string() + ": cannot be written");
 }
 
 std::string Trimmed(std::string s) {
@@ -104,9 +92,9 @@ int RunOnSlurm(const SlurmRun& run, const std::function<bool(size_t case_index)>
   for (const std::string& dir : run.case_dirs) {
     cases += fs::absolute(dir).lexically_normal().string() + "\n";
   }
-  WriteFile(slurm_dir / "cases.txt", cases);
+  WriteTextFileAtomically((slurm_dir / "cases.txt").string(), cases);
   const std::string cases_txt = ShellWord((slurm_dir / "cases.txt").string());
-  WriteFile(slurm_dir / "sweep.sbatch",
+  WriteTextFileAtomically((slurm_dir / "sweep.sbatch").string(),
             "#!/bin/bash\n"
             "#SBATCH --job-name=towsim_sweep\n"
             "#SBATCH --output=" + (slurm_dir / "task_%a.out").string() + "\n"
@@ -132,7 +120,7 @@ int RunOnSlurm(const SlurmRun& run, const std::function<bool(size_t case_index)>
   // --parsable: "<job id>[;<cluster>]"
   std::string job = Trimmed(submitted.out);
   job = job.substr(0, job.find(';'));
-  WriteFile(slurm_dir / "job_id", job + "\n");
+  WriteTextFileAtomically((slurm_dir / "job_id").string(), job + "\n");
   std::fprintf(stderr, "towsim_sweep: submitted Slurm job %s, array %s (%zu cases)\n",
                job.c_str(), array.c_str(), run.todo.size());
   if (!run.wait) return 0;

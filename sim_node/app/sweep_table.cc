@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "app/text_file.h"
 #include "io/csv_writer.h"
 
 namespace towsim::app {
@@ -40,14 +41,7 @@ void WriteResultsTable(const std::string& path, const scene::SweepSpec& spec,
     }
     text += "\n";
   }
-  const std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (f == nullptr) throw std::runtime_error(tmp + ": cannot be written");
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !written) throw std::runtime_error(tmp + ": write failed");
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error(path + ": cannot be replaced: " + ec.message());
+  WriteTextFileAtomically(path, text);
 }
 
 std::string SweepSummary(const scene::SweepSpec& spec, const std::vector<SweepCase>& cases,

@@ -145,7 +145,15 @@ TEST(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
     EXPECT_EQ(row["newton_max"], max.substr(0, max.find(','))) << line;
     EXPECT_EQ(row["substeps"], "0");
   }
-  EXPECT_NE(ReadFile(out + "/results.svg").find("<svg"), std::string::npos);
+  // the plot: one point per ok case and result (2 x 7), the failed cases counted per panel
+  const std::string svg = ReadFile(out + "/results.svg");
+  size_t points = 0;
+  for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) {
+    ++points;
+  }
+  EXPECT_EQ(points, 14u);
+  EXPECT_NE(svg.find("towfish_depth (towfish.depth, final), 2 failed case(s) not shown"),
+            std::string::npos);
 
   // the same folder again without --resume: refused, nothing touched
   const Sweep again = RunSweep({kLocalSweep, "--out", out}, Tmp("again"));

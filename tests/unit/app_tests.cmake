@@ -25,3 +25,12 @@ towsim_add_test(sweep_combinator_test LABEL unit
 towsim_add_test(sweep_signals_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_signals_test.cc
   LIBS towsim_sweep_lib)
+towsim_add_test(sweep_case_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_case_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_slurm_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_slurm_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(csv_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/csv_reader_test.cc
+  LIBS towsim::io towsim::core)
