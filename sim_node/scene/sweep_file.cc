@@ -209,11 +209,10 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
   }
   YAML::Node root;
   try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw ConfigError("scene", spec.scene, scene_location, "not valid YAML: " + e.msg);
+    root = internal::LoadYamlMap(text, spec.scene, "a scene must be a map of keys");
+  } catch (const ConfigError& e) {
+    throw ConfigError("scene", spec.scene, scene_location, e.what());
   }
-  if (!root.IsMap()) throw ConfigError("scene", spec.scene, scene_location, "not a scene");
   for (size_t i = 0; i < spec.parameters.size(); ++i) {
     const SweepParameter& p = spec.parameters[i];
     internal::Source source;
@@ -249,20 +248,9 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
                               const std::string& base_dir) {
   auto source = std::make_shared<internal::Source>();
   source->name = name_for_messages;
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(name_for_messages, "<not YAML>", name_for_messages + line,
-                      "not valid YAML: " + e.msg);
-  }
-  if (!root.IsMap()) {
-    throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
-                      name_for_messages,
-                      "a sweep file must be a map of keys (scene, duration, combine, "
-                      "parameters, results)");
-  }
+  const YAML::Node root = internal::LoadYamlMap(
+      yaml, name_for_messages,
+      "a sweep file must be a map of keys (scene, duration, combine, parameters, results)");
   const Field top(root, root.Mark(), "", source);
   const auto entries =
       CheckedEntries(top, {"scene", "duration", "combine", "parameters", "results"});
