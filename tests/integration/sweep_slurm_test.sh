@@ -8,7 +8,8 @@
 # folder, all inside a network namespace of its own (so the daemons' ports and traffic are
 # private to the test; root needed, as in CI). Then runs the sweep locally and as one job array
 # (--slurm), and checks that the two results.csv are equal apart from wall_s; then deletes one
-# case's status and checks that --slurm --resume submits that case alone. Every daemon is
+# case's status and checks that --slurm --resume submits that case alone; then submits with
+# --no-wait, waits for the job with squeue and checks that --collect gives the same table. Every daemon is
 # stopped and the folder removed when the script ends, also on failure (trap). Where Slurm
 # cannot be started the test says why and FAILS.
 set -euo pipefail
@@ -140,4 +141,18 @@ rm "$tmp/slurm/case_0003/case_status.txt"
 grep -q "array 3 (1 cases)" "$tmp/resume.err" || { cat "$tmp/resume.err" >&2; fail "resume array"; }
 diff <(strip "$tmp/local/results.csv") <(strip "$tmp/slurm/results.csv") ||
   fail "the table after --resume differs"
-echo "SweepSlurm: PASS (Slurm table equals the local one; --resume submitted case 3 alone)"
+# --no-wait returns once submitted; --collect tabulates when the job has ended
+"$sweep_bin" "$sweep_file" --out "$tmp/later" --slurm --no-wait >"$tmp/later.out" 2>&1 ||
+  { cat "$tmp/later.out" >&2; fail "--slurm --no-wait failed"; }
+grep -q -- "--collect" "$tmp/later.out" || { cat "$tmp/later.out" >&2; fail "--no-wait: no hint"; }
+job="$(cat "$tmp/later/slurm/job_id")"
+for _ in $(seq 600); do
+  [[ -z "$(squeue -h -j "$job" 2>/dev/null)" ]] && break
+  sleep 0.1
+done
+[[ -z "$(squeue -h -j "$job" 2>/dev/null)" ]] || fail "job $job did not end"
+"$sweep_bin" "$sweep_file" --out "$tmp/later" --collect >/dev/null || fail "--collect failed"
+diff <(strip "$tmp/local/results.csv") <(strip "$tmp/later/results.csv") ||
+  fail "the table of --no-wait + --collect differs"
+echo "SweepSlurm: PASS (Slurm table equals the local one; --resume submitted case 3 alone;" \
+  "--no-wait then --collect gives the same table)"

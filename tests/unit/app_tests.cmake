@@ -34,3 +34,6 @@ towsim_add_test(sweep_slurm_test LABEL unit
 towsim_add_test(csv_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/csv_reader_test.cc
   LIBS towsim::io towsim::core)
+towsim_add_test(sweep_table_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_table_test.cc
+  LIBS towsim_sweep_lib)
