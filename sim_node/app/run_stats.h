@@ -39,8 +39,8 @@ std::string SummaryLine(const std::string& scene_name, const RunStats& stats);
 // The numbers of a summary line, read back (towsim_sweep reads each case's stdout)
 struct RunSummary {
   long steps = 0;
-  double sim_time = 0.0;         // [s]
-  double wall_time = 0.0;        // [s], 3 decimals as printed
+  double sim_time = 0.0;   // [s]
+  double wall_time = 0.0;  // [s], 3 decimals as printed
   double real_time_factor = 0.0;
   double iterations_mean = 0.0;  // Newton iterations per step
   int iterations_max = 0;

@@ -53,7 +53,9 @@ void PrepareCase(const std::string& case_dir, const std::string& sim_node,
   std::string script =
       "#!/bin/bash\n"
       "# one case of a towsim sweep (docs/sweeps.md): sim_node offline, then case_status.txt\n"
-      "cd " + dir + " || exit 1\n"
+      "cd " +
+      dir +
+      " || exit 1\n"
       "rm -f case_status.txt\n"
       "start=$(date +%s.%N)\n" +
       command + " </dev/null >sim_node.out 2>sim_node.err\n" +
@@ -76,8 +78,7 @@ bool SameArguments(const std::string& case_dir, const std::vector<std::string>& 
 
 void WriteCaseStatus(const std::string& case_dir, const CaseStatus& status) {
   char text[96];
-  std::snprintf(text, sizeof text, "exit_code=%d\nwall_s=%.3f\n", status.exit_code,
-                status.wall_s);
+  std::snprintf(text, sizeof text, "exit_code=%d\nwall_s=%.3f\n", status.exit_code, status.wall_s);
   WriteTextFileAtomically((fs::path(case_dir) / "case_status.txt").string(), text);
 }
 

@@ -71,8 +71,7 @@ int ExitCode(int status) {
 }  // namespace
 
 int RunLocal(const std::string& sim_node, const std::vector<LocalCase>& cases, int workers,
-             const std::function<bool(size_t case_number)>& on_finished,
-             SweepProgress* progress) {
+             const std::function<bool(size_t case_number)>& on_finished, SweepProgress* progress) {
   const Clock::time_point start = Clock::now();
   std::vector<Running> running;
   size_t next = 0;
@@ -114,8 +113,7 @@ int RunLocal(const std::string& sim_node, const std::vector<LocalCase>& cases, i
       progress->Update(done, failed, static_cast<int>(running.size()),
                        Seconds(Clock::now() - start), true);
     }
-    progress->Update(done, failed, static_cast<int>(running.size()),
-                     Seconds(Clock::now() - start));
+    progress->Update(done, failed, static_cast<int>(running.size()), Seconds(Clock::now() - start));
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   progress->Finish();

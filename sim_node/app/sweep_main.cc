@@ -238,14 +238,16 @@ int Run(const Options& o) {
     code = towsim::app::RunOnSlurm(run, on_finished, &progress);
     if (code == 1) return kExitError;
     if (o.no_wait) {
-      std::printf("towsim_sweep: %zu cases submitted; when the job has ended: towsim_sweep %s "
-                  "--out %s --collect\n",
-                  todo.size(), o.file.c_str(), o.out.c_str());
+      std::printf(
+          "towsim_sweep: %zu cases submitted; when the job has ended: towsim_sweep %s "
+          "--out %s --collect\n",
+          todo.size(), o.file.c_str(), o.out.c_str());
       return kExitOk;
     }
   } else {
-    const int workers = o.workers > 0 ? o.workers
-                                      : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const int workers = o.workers > 0
+                            ? o.workers
+                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     timing.workers = workers;
     std::vector<towsim::app::LocalCase> local;
     for (size_t i : todo) local.push_back({dirs[i], arguments[i]});

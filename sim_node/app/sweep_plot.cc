@@ -8,17 +8,22 @@
 namespace towsim::app {
 namespace {
 
-constexpr double kWidth = 640.0, kPanelHeight = 240.0;             // [px]
+constexpr double kWidth = 640.0, kPanelHeight = 240.0;  // [px]
 constexpr double kLeft = 80.0, kRight = 20.0, kTop = 30.0, kBottom = 40.0;
 
 std::string Escape(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '&') out += "&amp;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
+    if (c == '<')
+      out += "&lt;";
+    else if (c == '>')
+      out += "&gt;";
+    else if (c == '&')
+      out += "&amp;";
+    else if (c == '"')
+      out += "&quot;";
+    else
+      out += c;
   }
   return out;
 }
@@ -52,10 +57,12 @@ std::string SweepPlotSvg(const scene::SweepSpec& spec,
                          const std::vector<std::optional<SweepRow>>& rows) {
   const size_t panels = std::max<size_t>(1, spec.results.size());
   const double height = kPanelHeight * static_cast<double>(panels);
-  std::string svg = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
-                    "width=\"" + Fmt("%.0f", kWidth) + "\" height=\"" + Fmt("%.0f", height) +
-                    "\" font-family=\"sans-serif\" font-size=\"11\">\n"
-                    "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  std::string svg =
+      "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
+      "width=\"" +
+      Fmt("%.0f", kWidth) + "\" height=\"" + Fmt("%.0f", height) +
+      "\" font-family=\"sans-serif\" font-size=\"11\">\n"
+      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   const std::string x_name = spec.parameters.empty() ? "" : spec.parameters.front().path;
 
   // x positions: numbers if every value is one, else categories
@@ -83,7 +90,8 @@ std::string SweepPlotSvg(const scene::SweepSpec& spec,
   }
   for (size_t i = 0; i < spec.results.size(); ++i) {
     const double top = kPanelHeight * static_cast<double>(i);
-    const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kTop, y1 = top + kPanelHeight - kBottom;
+    const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kTop,
+                 y1 = top + kPanelHeight - kBottom;
     std::vector<std::pair<double, double>> points;
     int failed = 0;
     for (const auto& row : rows) {
@@ -96,7 +104,8 @@ std::string SweepPlotSvg(const scene::SweepSpec& spec,
     }
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
     for (const auto& [x, y] : points) {
-      xlo = std::min(xlo, x), xhi = std::max(xhi, x), ylo = std::min(ylo, y), yhi = std::max(yhi, y);
+      xlo = std::min(xlo, x), xhi = std::max(xhi, x), ylo = std::min(ylo, y),
+      yhi = std::max(yhi, y);
     }
     if (points.empty()) xlo = xhi = ylo = yhi = 0.0;
     const auto [xa, xb] = Span(xlo, xhi);
@@ -118,8 +127,7 @@ std::string SweepPlotSvg(const scene::SweepSpec& spec,
       svg += "<text x=\"" + Fmt("%.1f", x0 - 4) + "\" y=\"" + Fmt("%.1f", py(y) + 4) +
              "\" text-anchor=\"end\">" + Fmt("%.4g", y) + "</text>\n";
       svg += "<line x1=\"" + Fmt("%.1f", x0) + "\" x2=\"" + Fmt("%.1f", x1) + "\" y1=\"" +
-             Fmt("%.1f", py(y)) + "\" y2=\"" + Fmt("%.1f", py(y)) +
-             "\" stroke=\"#ddd\"/>\n";
+             Fmt("%.1f", py(y)) + "\" y2=\"" + Fmt("%.1f", py(y)) + "\" stroke=\"#ddd\"/>\n";
     }
     // x ticks: 5 numbers, or the categories
     if (numeric) {

@@ -21,8 +21,7 @@ const std::vector<std::string> kBodyDerived = {"depth", "speed", "track_error"};
 const std::vector<std::string> kForceColumns = {"fx", "fy", "fz", "mx", "my", "mz"};
 const std::vector<std::string> kCableSignals = {"layback", "top_tension", "end_tension",
                                                 "max_tension"};
-const std::vector<std::string> kStatusSignals = {"newton_iterations", "residual",
-                                                 "step_wall_us"};
+const std::vector<std::string> kStatusSignals = {"newton_iterations", "residual", "step_wall_us"};
 const std::vector<std::string> kRunTotals = {"steps",
                                              "rtf",
                                              "run_wall_s",
@@ -131,14 +130,14 @@ Series SignalSeries(const std::string& signal, CaseFiles* files) {
       Series s;
       for (size_t i = 0; i < x.size(); ++i) {
         const double dx = x[i].second - x[0].second, dy = y[i].second - y[0].second;
-        s.emplace_back(x[i].first,
-                       -dx * std::sin(yaw[0].second) + dy * std::cos(yaw[0].second));
+        s.emplace_back(x[i].first, -dx * std::sin(yaw[0].second) + dy * std::cos(yaw[0].second));
       }
       return s;
     }
     if (quantity == "speed") {
-      return BodySeries(t, file, body,
-                        [](const auto& r) { return std::sqrt(r[8] * r[8] + r[9] * r[9] + r[10] * r[10]); });
+      return BodySeries(t, file, body, [](const auto& r) {
+        return std::sqrt(r[8] * r[8] + r[9] * r[9] + r[10] * r[10]);
+      });
     }
     const std::string column = quantity == "depth" ? "z" : quantity;
     const int c = t.Column(column);
@@ -148,8 +147,9 @@ Series SignalSeries(const std::string& signal, CaseFiles* files) {
     const io::CsvTable& t = files->Get("forces.csv", io::kCsvForcesHeader);
     const std::string file = files->Path("forces.csv");
     if (quantity == "cable_force") {
-      return BodySeries(t, file, body,
-                        [](const auto& r) { return std::sqrt(r[2] * r[2] + r[3] * r[3] + r[4] * r[4]); });
+      return BodySeries(t, file, body, [](const auto& r) {
+        return std::sqrt(r[2] * r[2] + r[3] * r[3] + r[4] * r[4]);
+      });
     }
     const int c = t.Column(quantity);
     return BodySeries(t, file, body, [c](const auto& r) { return r[c]; });
@@ -230,8 +230,9 @@ void CheckSweepResults(std::vector<scene::SweepResult>* results,
     const auto [body, quantity] = Split(r.signal);
     if (body.empty() && In(kRunTotals, quantity)) {
       if (!r.stat.empty() || r.from || r.to) {
-        fail("is a total of the whole run (sim_node's summary line): it takes no stat, from "
-             "or to");
+        fail(
+            "is a total of the whole run (sim_node's summary line): it takes no stat, from "
+            "or to");
       }
       continue;
     }
@@ -264,8 +265,8 @@ std::vector<double> ComputeSweepResults(const std::vector<scene::SweepResult>& r
     if (body.empty() && In(kRunTotals, quantity)) {
       if (!summary) summary = ParseSummaryLine(sim_node_stdout);
       if (!summary) {
-        throw std::runtime_error("results." + r.name + ": no sim_node summary line in " +
-                                 case_dir + "/sim_node.out");
+        throw std::runtime_error("results." + r.name + ": no sim_node summary line in " + case_dir +
+                                 "/sim_node.out");
       }
       values.push_back(RunTotal(quantity, *summary));
       continue;

@@ -52,7 +52,8 @@ CommandResult RunCommand(const std::vector<std::string>& argv_text, const std::s
   CommandResult result;
   if (error != 0) {
     result.exit_code = 127;
-    result.err = argv_text[0] + ": " + std::strerror(error) + " (is Slurm installed and on the PATH?)";
+    result.err =
+        argv_text[0] + ": " + std::strerror(error) + " (is Slurm installed and on the PATH?)";
     return result;
   }
   int status = 0;
@@ -94,35 +95,39 @@ int RunOnSlurm(const SlurmRun& run, const std::function<bool(size_t case_index)>
   }
   WriteTextFileAtomically((slurm_dir / "cases.txt").string(), cases);
   const std::string cases_txt = ShellWord((slurm_dir / "cases.txt").string());
-  WriteTextFileAtomically((slurm_dir / "sweep.sbatch").string(),
-            "#!/bin/bash\n"
-            "#SBATCH --job-name=towsim_sweep\n"
-            "#SBATCH --output=" + (slurm_dir / "task_%a.out").string() + "\n"
-            "#SBATCH --ntasks=1\n"
-            "#SBATCH --cpus-per-task=1\n"
-            "# one array task = one case of a towsim sweep (docs/sweeps.md): task i runs the\n"
-            "# command.sh of case i, whose folder is line i + 1 of cases.txt\n"
-            "case_dir=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " + cases_txt + ")\n"
-            "exec bash \"$case_dir/command.sh\"\n");
+  WriteTextFileAtomically(
+      (slurm_dir / "sweep.sbatch").string(),
+      "#!/bin/bash\n"
+      "#SBATCH --job-name=towsim_sweep\n"
+      "#SBATCH --output=" +
+          (slurm_dir / "task_%a.out").string() +
+          "\n"
+          "#SBATCH --ntasks=1\n"
+          "#SBATCH --cpus-per-task=1\n"
+          "# one array task = one case of a towsim sweep (docs/sweeps.md): task i runs the\n"
+          "# command.sh of case i, whose folder is line i + 1 of cases.txt\n"
+          "case_dir=$(sed -n \"$((SLURM_ARRAY_TASK_ID + 1))p\" " +
+          cases_txt +
+          ")\n"
+          "exec bash \"$case_dir/command.sh\"\n");
   for (size_t i : run.todo) ClearCaseStatus(run.case_dirs[i]);
 
   std::string array = ArrayIndices(run.todo);
   if (run.max_parallel > 0) array += "%" + std::to_string(run.max_parallel);
-  const CommandResult submitted =
-      RunCommand({"sbatch", "--parsable", "--array=" + array,
-                  (slurm_dir / "sweep.sbatch").string()},
-                 slurm_dir.string());
+  const CommandResult submitted = RunCommand(
+      {"sbatch", "--parsable", "--array=" + array, (slurm_dir / "sweep.sbatch").string()},
+      slurm_dir.string());
   if (submitted.exit_code != 0) {
-    std::fprintf(stderr, "towsim_sweep: error: sbatch failed (exit %d): %s\n",
-                 submitted.exit_code, Trimmed(submitted.err).c_str());
+    std::fprintf(stderr, "towsim_sweep: error: sbatch failed (exit %d): %s\n", submitted.exit_code,
+                 Trimmed(submitted.err).c_str());
     return 1;
   }
   // --parsable: "<job id>[;<cluster>]"
   std::string job = Trimmed(submitted.out);
   job = job.substr(0, job.find(';'));
   WriteTextFileAtomically((slurm_dir / "job_id").string(), job + "\n");
-  std::fprintf(stderr, "towsim_sweep: submitted Slurm job %s, array %s (%zu cases)\n",
-               job.c_str(), array.c_str(), run.todo.size());
+  std::fprintf(stderr, "towsim_sweep: submitted Slurm job %s, array %s (%zu cases)\n", job.c_str(),
+               array.c_str(), run.todo.size());
   if (!run.wait) return 0;
 
   const Clock::time_point start = Clock::now();
@@ -138,8 +143,8 @@ int RunOnSlurm(const SlurmRun& run, const std::function<bool(size_t case_index)>
       stop_signal = signal;
     }
     // the job's tasks still known to squeue: one state per line (R, PD, CG, ...)
-    const CommandResult queue = RunCommand({"squeue", "-h", "-j", job, "-o", "%t"},
-                                           slurm_dir.string());
+    const CommandResult queue =
+        RunCommand({"squeue", "-h", "-j", job, "-o", "%t"}, slurm_dir.string());
     int running = 0;
     std::stringstream states(queue.out);
     std::string state;
@@ -156,8 +161,8 @@ int RunOnSlurm(const SlurmRun& run, const std::function<bool(size_t case_index)>
         over = true;
       } else if (++squeue_failures > 120) {
         progress->Finish();
-        std::fprintf(stderr, "towsim_sweep: error: squeue fails (exit %d): %s\n",
-                     queue.exit_code, Trimmed(queue.err).c_str());
+        std::fprintf(stderr, "towsim_sweep: error: squeue fails (exit %d): %s\n", queue.exit_code,
+                     Trimmed(queue.err).c_str());
         return 1;
       }
     } else {

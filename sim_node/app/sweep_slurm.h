@@ -20,11 +20,11 @@
 namespace towsim::app {
 
 struct SlurmRun {
-  std::string out_dir;                  // DIR
-  std::vector<std::string> case_dirs;   // of every case, by case index
-  std::vector<size_t> todo;             // case indices to run, ascending
-  int max_parallel = 0;                 // tasks at once (%N); 0: as Slurm schedules
-  bool wait = true;                     // false: submit and return
+  std::string out_dir;                 // DIR
+  std::vector<std::string> case_dirs;  // of every case, by case index
+  std::vector<size_t> todo;            // case indices to run, ascending
+  int max_parallel = 0;                // tasks at once (%N); 0: as Slurm schedules
+  bool wait = true;                    // false: submit and return
 };
 
 // "0-3,5,7-9" from ascending indices

@@ -61,8 +61,8 @@ std::string SweepSummary(const scene::SweepSpec& spec, const std::vector<SweepCa
   char line[512];
   const double per_minute = timing.wall_s > 0.0 ? 60.0 * timing.ran / timing.wall_s : 0.0;
   const std::string where =
-      timing.slurm ? "on Slurm" : std::to_string(timing.workers) + " worker" +
-                                      (timing.workers == 1 ? "" : "s");
+      timing.slurm ? "on Slurm"
+                   : std::to_string(timing.workers) + " worker" + (timing.workers == 1 ? "" : "s");
   std::snprintf(line, sizeof line,
                 "towsim_sweep: %s: %zu cases: %d ok, %d failed, %d not run; %d run in %.1f s "
                 "(%s, %.1f cases/min)\n",
@@ -89,8 +89,7 @@ std::string SweepSummary(const scene::SweepSpec& spec, const std::vector<SweepCa
     }
     if (n == 0) continue;
     std::snprintf(line, sizeof line, "  %s: min %.6g (%s), max %.6g (%s), mean %.6g\n",
-                  spec.results[i].name.c_str(), lo, lo_case.c_str(), hi, hi_case.c_str(),
-                  sum / n);
+                  spec.results[i].name.c_str(), lo, lo_case.c_str(), hi, hi_case.c_str(), sum / n);
     text += line;
   }
   return text;

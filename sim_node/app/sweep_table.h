@@ -27,7 +27,7 @@ struct SweepTiming {
   double wall_s = 0.0;  // of this invocation [s]
   int workers = 1;      // local workers, or Slurm tasks at once (0: as Slurm schedules)
   bool slurm = false;
-  int ran = 0;          // cases run by this invocation
+  int ran = 0;  // cases run by this invocation
 };
 
 // the summary: counts, the failed cases with their messages, the range of each result over

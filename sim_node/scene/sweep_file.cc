@@ -1,12 +1,12 @@
 #include "scene/sweep_file.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <memory>
+
+#include <yaml-cpp/yaml.h>
 
 #include "scene/config_error.h"
 #include "scene/overrides.h"
@@ -24,8 +24,7 @@ constexpr const char* kValuesRule =
     "must be a list of values, a range {from, to, step} or {from, to, count}, or seeded draws "
     "{random: uniform|normal|integer, ..., count, seed}";
 // the columns of results.csv before the parameters (docs/sweeps.md)
-const std::vector<std::string> kFixedColumns = {"case", "status", "exit_code", "message",
-                                                "wall_s"};
+const std::vector<std::string> kFixedColumns = {"case", "status", "exit_code", "message", "wall_s"};
 
 // a YAML value as one line of flow style, complete ("[3, 0, 0]", "{fixed: [0, 0, 5]}")
 std::string FlowText(const YAML::Node& node) {
@@ -128,13 +127,13 @@ std::vector<std::string> ReadDraws(const Field& field) {
   if (!seed_field.present()) seed_field.Fail("is required: every draw is seeded (reproducible)");
   const auto seed = static_cast<std::uint64_t>(seed_field.Integer(Range::Closed(0, 2147483647)));
   // only the keys of this kind
-  const std::vector<std::string> own = k == 1 ? std::vector<std::string>{"mean", "stddev"}
-                                              : std::vector<std::string>{"low", "high"};
+  const std::vector<std::string> own =
+      k == 1 ? std::vector<std::string>{"mean", "stddev"} : std::vector<std::string>{"low", "high"};
   for (const auto& [name, entry] : entries) {
     if (name == "random" || name == "count" || name == "seed") continue;
     if (std::find(own.begin(), own.end(), name) == own.end()) {
-      entry.Fail("not a key of random: " + kind.String() + " (it takes " + own[0] + ", " +
-                 own[1] + ", count, seed)");
+      entry.Fail("not a key of random: " + kind.String() + " (it takes " + own[0] + ", " + own[1] +
+                 ", count, seed)");
     }
   }
   if (k == 1) {
@@ -204,8 +203,9 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
   std::string why;
   if (!internal::ReadTextFile(spec.scene, &text, &why)) {
     throw ConfigError("scene", spec.scene, scene_location,
-                      "cannot read the scene file (" + why + "; the path is relative to the "
-                      "sweep file)");
+                      "cannot read the scene file (" + why +
+                          "; the path is relative to the "
+                          "sweep file)");
   }
   YAML::Node root;
   try {
@@ -228,8 +228,8 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
 }  // namespace
 
 const std::vector<std::string>& SweepStats() {
-  static const std::vector<std::string> kStats = {"final", "initial", "min", "max",
-                                                  "max_abs", "mean", "rms", "std"};
+  static const std::vector<std::string> kStats = {"final",   "initial", "min", "max",
+                                                  "max_abs", "mean",    "rms", "std"};
   return kStats;
 }
 
@@ -265,8 +265,8 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
   if (duration.present()) spec.duration = duration.Number(Range::AtLeast(0.0));
   const Field combine = Get(entries, "combine", top);
   if (combine.present()) {
-    spec.combine = combine.Choice({"product", "zip"}) == 0 ? SweepCombine::kProduct
-                                                           : SweepCombine::kZip;
+    spec.combine =
+        combine.Choice({"product", "zip"}) == 0 ? SweepCombine::kProduct : SweepCombine::kZip;
   }
 
   const Field parameters = Get(entries, "parameters", top);

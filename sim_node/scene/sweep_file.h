@@ -40,9 +40,9 @@ struct SweepResult {
 };
 
 struct SweepSpec {
-  std::string name;                 // the sweep file's name for messages (basename)
-  std::string scene;                // the scene file, resolved against the sweep file's folder
-  std::optional<double> duration;   // sim_node --duration of every case [s]
+  std::string name;                // the sweep file's name for messages (basename)
+  std::string scene;               // the scene file, resolved against the sweep file's folder
+  std::optional<double> duration;  // sim_node --duration of every case [s]
   SweepCombine combine = SweepCombine::kProduct;
   std::vector<SweepParameter> parameters;  // file order; at least one
   std::vector<SweepResult> results;        // file order

@@ -30,8 +30,8 @@ constexpr double kTimeout = 60.0;  // [s] a sweep that takes longer has hung
 
 std::string Tmp(const std::string& what) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string dir = ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" +
-                          info->name() + "_" + what;
+  const std::string dir =
+      ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" + what;
   fs::remove_all(dir);
   return dir;
 }
@@ -109,8 +109,8 @@ TEST(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
   for (int i = 0; i < 4; ++i) {
     const std::string name = "case_000" + std::to_string(i);
     const std::string direct_csv = Tmp("direct_" + std::to_string(i));
-    std::vector<std::string> argv = {TOWSIM_SIM_NODE, "--scene", scene, "--mode", "offline",
-                                     "--duration", "2"};
+    std::vector<std::string> argv = {TOWSIM_SIM_NODE, "--scene",    scene, "--mode",
+                                     "offline",       "--duration", "2"};
     for (const std::string& set : sets[i]) argv.insert(argv.end(), {"--set", set});
     argv.insert(argv.end(), {"--csv", direct_csv});
     Process direct(argv, Tmp("direct_log_" + std::to_string(i)));
@@ -214,12 +214,12 @@ TEST(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   EXPECT_NE(sweep.out().find(std::to_string(6 - finished) + " not run"), std::string::npos)
       << sweep.out();
 
-  const Sweep resumed = RunSweep({file, "--out", out, "--resume", "--workers", "2"},
-                                 dir + "/resume");
+  const Sweep resumed =
+      RunSweep({file, "--out", out, "--resume", "--workers", "2"}, dir + "/resume");
   EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
-  EXPECT_NE(resumed.out.find("6 ok, 0 failed, 0 not run; " + std::to_string(6 - finished) +
-                             " run in"),
-            std::string::npos)
+  EXPECT_NE(
+      resumed.out.find("6 ok, 0 failed, 0 not run; " + std::to_string(6 - finished) + " run in"),
+      std::string::npos)
       << resumed.out;
   auto all = Table(out + "/results.csv");
   ASSERT_EQ(all.size(), 6u);

@@ -34,8 +34,8 @@ TEST(CsvReader, ChecksTheHeaderAndTheFieldCount) {
     ReadCsvFile(path, kCsvBodiesHeader);
     ADD_FAILURE();
   } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), path + ":1: header is " + kCsvStatusHeader + ", expected " +
-                                         kCsvBodiesHeader);
+    EXPECT_EQ(std::string(e.what()),
+              path + ":1: header is " + kCsvStatusHeader + ", expected " + kCsvBodiesHeader);
   }
   std::ofstream(path) << kCsvStatusHeader << "\n0,0,0\n";
   try {

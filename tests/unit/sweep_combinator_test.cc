@@ -40,7 +40,8 @@ TEST(SweepCombinator, CaseNamesHaveAtLeastFourDigitsAndSortInOrder) {
   EXPECT_EQ(CaseName(7, 10001), "case_00007");
   EXPECT_EQ(CaseName(10000, 10001), "case_10000");
   // a product too large to run is refused before anything is allocated
-  const std::vector<SweepParameter> big(7, SweepParameter{"a", std::vector<std::string>(10, "1"), ""});
+  const std::vector<SweepParameter> big(7,
+                                        SweepParameter{"a", std::vector<std::string>(10, "1"), ""});
   EXPECT_THROW(CombineParameters(big, SweepCombine::kProduct), std::invalid_argument);
 }
 

@@ -49,8 +49,7 @@ results:
   EXPECT_EQ(s.parameters[0].values, (std::vector<std::string>{"10", "20", "30", "40"}));
   EXPECT_EQ(s.parameters[1].values, (std::vector<std::string>{"0.6", "0.7", "0.8", "0.9"}));
   EXPECT_EQ(s.parameters[2].values, (std::vector<std::string>{"[3, 0, 0]", "[6, 0, 0]"}));
-  EXPECT_EQ(s.parameters[3].values,
-            (std::vector<std::string>{"generalized_alpha", "trapezoidal"}));
+  EXPECT_EQ(s.parameters[3].values, (std::vector<std::string>{"generalized_alpha", "trapezoidal"}));
   // the draws are the values of UniformDraws with that seed, as %.9g
   const std::vector<double> draws = UniformDraws(1020, 1030, 3, 7);
   ASSERT_EQ(s.parameters[4].values.size(), 3u);
@@ -116,8 +115,9 @@ TEST(SweepFile, BrokenTopLevelAndResults) {
             "parameter = {cable.elements: [1]} (sweep.yaml:2): unknown key; did you mean "
             "parameters? (allowed: scene, duration, combine, parameters, results)");
   EXPECT_EQ(Error("scene: nope.yaml\nparameters:\n  cable.elements: [1]\n"),
-            "scene = " + kScenes + "/nope.yaml (sweep.yaml:1): cannot read the scene file (no "
-            "such file; the path is relative to the sweep file)");
+            "scene = " + kScenes +
+                "/nope.yaml (sweep.yaml:1): cannot read the scene file (no "
+                "such file; the path is relative to the sweep file)");
   EXPECT_EQ(Error("scene: steady_tow.yaml\n"),
             "parameters = <missing> (sweep.yaml:1): is required: a map of scene key paths to "
             "values");

@@ -40,20 +40,24 @@ class SweepSignals : public ::testing::Test {
     // the towfish starts at (10, 20) heading 90 deg (east, +y): its track is the line x = 10,
     // starboard is -x; it drifts to x = 7 (3 m to starboard) and to z = 30
     const std::string yaw = "1.57079632679";
-    Write(dir_.path() / "bodies.csv",
-          std::string(io::kCsvBodiesHeader) + "\n" +
-              "0,tow,0,0,3,0,0,0,1,0,0,0,0,0\n"
-              "0,towfish,10,20,25,0,0," + yaw + ",3,4,0,0,0,0\n"
-              "1,tow,1,0,3,0,0,0,1,0,0,0,0,0\n"
-              "1,towfish,8,25,28,0,0," + yaw + ",0,0,0,0,0,0\n"
-              "2,tow,2,0,3,0,0,0,1,0,0,0,0,0\n"
-              "2,towfish,7,30,30,0,0," + yaw + ",0,0,0,0,0,0\n");
+    Write(dir_.path() / "bodies.csv", std::string(io::kCsvBodiesHeader) + "\n" +
+                                          "0,tow,0,0,3,0,0,0,1,0,0,0,0,0\n"
+                                          "0,towfish,10,20,25,0,0," +
+                                          yaw +
+                                          ",3,4,0,0,0,0\n"
+                                          "1,tow,1,0,3,0,0,0,1,0,0,0,0,0\n"
+                                          "1,towfish,8,25,28,0,0," +
+                                          yaw +
+                                          ",0,0,0,0,0,0\n"
+                                          "2,tow,2,0,3,0,0,0,1,0,0,0,0,0\n"
+                                          "2,towfish,7,30,30,0,0," +
+                                          yaw + ",0,0,0,0,0,0\n");
     // two nodes: tensions 3, 4 at t=0; 5, 1 at t=1; layback from node 0 to node 1
     Write(dir_.path() / "cable.csv", std::string(io::kCsvCableHeader) + "\n" +
                                          "0,0,0,0,0,3\n0,1,3,4,10,4\n"
                                          "1,0,0,0,0,5\n1,1,6,8,10,1\n");
-    Write(dir_.path() / "forces.csv", std::string(io::kCsvForcesHeader) + "\n" +
-                                          "0,tow,3,4,12,0,0,0\n0,towfish,0,0,0,0,0,0\n");
+    Write(dir_.path() / "forces.csv",
+          std::string(io::kCsvForcesHeader) + "\n" + "0,tow,3,4,12,0,0,0\n0,towfish,0,0,0,0,0,0\n");
     Write(dir_.path() / "status.csv", std::string(io::kCsvStatusHeader) + "\n" +
                                           "0,0,0,0,0\n1,10,4,1e-9,200\n2,20,2,3e-9,100\n");
   }
@@ -66,7 +70,7 @@ class SweepSignals : public ::testing::Test {
 TEST_F(SweepSignals, StatisticsOfBodyCableAndStatusSignals) {
   EXPECT_NEAR(One(R("towfish.depth", "final")), 30.0, kExact);
   EXPECT_NEAR(One(R("towfish.z", "initial")), 25.0, kExact);
-  EXPECT_NEAR(One(R("towfish.speed", "max")), 5.0, kExact);  // |(3, 4, 0)|
+  EXPECT_NEAR(One(R("towfish.speed", "max")), 5.0, kExact);        // |(3, 4, 0)|
   EXPECT_NEAR(One(R("towfish.track_error", "final")), 3.0, 1e-9);  // yaw to 12 digits
   EXPECT_NEAR(One(R("towfish.track_error", "max_abs")), 3.0, 1e-9);
   EXPECT_NEAR(One(R("tow.x", "mean")), 1.0, kExact);

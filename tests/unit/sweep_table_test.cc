@@ -30,7 +30,7 @@ scene::SweepSpec Spec() {
 
 std::vector<std::optional<SweepRow>> Rows() {
   SweepRow ok{"case_0000", true, 0, "", 1.25, {"10", "[0, 0, 1]"}, {12.5}};
-  SweepRow failed{"case_0001", false, 2, "sim_node: error: a = 1, b (--set): rule", 0.5,
+  SweepRow failed{"case_0001",         false, 2, "sim_node: error: a = 1, b (--set): rule", 0.5,
                   {"20", "[0, 0, 1]"}, {}};
   return {ok, failed, std::nullopt};
 }
