@@ -123,7 +123,8 @@ std::string LastLine(const std::string& text) {
 std::optional<SweepRow> CollectCase(const scene::SweepSpec& spec, const SweepCase& c,
                                     const std::string& case_dir) {
   const std::optional<CaseStatus> status = ReadCaseStatus(case_dir);
-  if (!status) return std::nullopt;
+  // stopped by SIGINT / SIGTERM (the sweep stopped, the Slurm job cancelled): not finished
+  if (!status || status->exit_code == 130 || status->exit_code == 143) return std::nullopt;
   SweepRow row;
   row.case_name = c.name;
   row.exit_code = status->exit_code;

@@ -56,8 +56,9 @@ struct SweepRow {
   std::vector<double> results;          // empty for a failed case
 };
 
-// The row of a finished case (nullopt if it has not finished): ok when sim_node exited 0 and
-// every result could be computed from its files.
+// The row of a finished case (nullopt if it has not finished, or sim_node was stopped by
+// SIGINT / SIGTERM: exit 130 / 143): ok when sim_node exited 0 and every result could be
+// computed from its files.
 std::optional<SweepRow> CollectCase(const scene::SweepSpec& spec, const SweepCase& c,
                                     const std::string& case_dir);
 

@@ -9,7 +9,8 @@
 # private to the test; root needed, as in CI). Then runs the sweep locally and as one job array
 # (--slurm), and checks that the two results.csv are equal apart from wall_s; then deletes one
 # case's status and checks that --slurm --resume submits that case alone; then submits with
-# --no-wait, waits for the job with squeue and checks that --collect gives the same table. Every daemon is
+# --no-wait, waits for the job with squeue and checks that --collect gives the same table;
+# then interrupts a sweep of longer cases (SIGINT) and checks that its job was cancelled. Every daemon is
 # stopped and the folder removed when the script ends, also on failure (trap). Where Slurm
 # cannot be started the test says why and FAILS.
 set -euo pipefail
@@ -154,5 +155,32 @@ done
 "$sweep_bin" "$sweep_file" --out "$tmp/later" --collect >/dev/null || fail "--collect failed"
 diff <(strip "$tmp/local/results.csv") <(strip "$tmp/later/results.csv") ||
   fail "the table of --no-wait + --collect differs"
+# SIGINT while the job runs: the job is cancelled (scancel), the sweep exits 130 with the
+# cases finished so far in its table; 8 cases of the steady tow for 2000 s (~0.5 s each)
+cat >"$tmp/long.yaml" <<YAML
+scene: $(cd "$(dirname "$sweep_file")" && pwd)/../../../config/scenes/steady_tow.yaml
+duration: 2000
+parameters:
+  cable.elements: [10, 11, 12, 13, 14, 15, 16, 17]
+results:
+  depth: {signal: towfish.depth}
+YAML
+"$sweep_bin" "$tmp/long.yaml" --out "$tmp/stop" --slurm >"$tmp/stop.out" 2>&1 &
+stop_pid=$!
+for _ in $(seq 300); do
+  compgen -G "$tmp/stop/case_*/case_status.txt" >/dev/null && break
+  sleep 0.1
+done
+kill -INT "$stop_pid"
+stop_code=0
+wait "$stop_pid" || stop_code=$?
+[[ $stop_code == 130 ]] || { cat "$tmp/stop.out" >&2; fail "SIGINT: exit $stop_code, not 130"; }
+stop_job="$(cat "$tmp/stop/slurm/job_id")"
+[[ -z "$(squeue -h -j "$stop_job" 2>/dev/null)" ]] || fail "SIGINT: job $stop_job not cancelled"
+stop_rows=$(($(wc -l <"$tmp/stop/results.csv") - 1))
+((stop_rows >= 1 && stop_rows < 8)) || fail "SIGINT: $stop_rows rows in the table"
+grep -q "$((8 - stop_rows)) not run" "$tmp/stop.out" || { cat "$tmp/stop.out" >&2; fail "summary"; }
+
 echo "SweepSlurm: PASS (Slurm table equals the local one; --resume submitted case 3 alone;" \
-  "--no-wait then --collect gives the same table)"
+  "--no-wait then --collect gives the same table; SIGINT cancels the job," \
+  "$stop_rows of 8 cases finished before it are in the table)"
