@@ -18,6 +18,7 @@
 
 #include "io/csv_reader.h"
 #include "process.h"
+#include "temp_dir.h"
 
 namespace towsim::testing {
 namespace {
@@ -28,13 +29,15 @@ const std::string kSource = TOWSIM_SOURCE_DIR;
 const std::string kLocalSweep = kSource + "/tests/integration/sweeps/local_sweep.yaml";
 constexpr double kTimeout = 60.0;  // [s] a sweep that takes longer has hung
 
-std::string Tmp(const std::string& what) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::string dir =
-      ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" + what;
-  fs::remove_all(dir);
-  return dir;
-}
+// a folder of the test's own (removed at its end): the pid in its name keeps apart the runs of
+// other checkouts on the machine
+class SweepLocal : public ::testing::Test {
+ protected:
+  std::string Tmp(const std::string& what) const { return (tmp_.path() / what).string(); }
+
+ private:
+  test::TempDir tmp_;
+};
 
 struct Sweep {
   int exit_code = -1;
@@ -71,7 +74,7 @@ std::vector<std::string> LastBodyRow(const std::string& bodies_csv, const std::s
 
 fs::file_time_type Mtime(const fs::path& p) { return fs::last_write_time(p); }
 
-TEST(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
+TEST_F(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
   const std::string out = Tmp("out");
   const Sweep s = RunSweep({kLocalSweep, "--out", out, "--workers", "2"}, Tmp("log"));
   // two cases fail: the sweep ran to its end and says so with exit 4
@@ -182,7 +185,7 @@ TEST(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
   }
 }
 
-TEST(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
+TEST_F(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   // six cases of ~0.3 s each (Case 1 for 400 s) on one worker; SIGTERM during the third
   const std::string dir = Tmp("sweep");
   fs::create_directories(dir);
@@ -226,7 +229,7 @@ TEST(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   for (auto& [name, row] : rows) EXPECT_EQ(all[name], row) << name;  // kept as they were
 }
 
-TEST(SweepLocal, BadSweepFilesAndFlagsExit2) {
+TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
   const std::string dir = Tmp("bad");
   fs::create_directories(dir);
   const std::string file = dir + "/bad.yaml";
