@@ -1,7 +1,8 @@
 # cmake --install build --prefix P (docs/testing_controllers.md, "The installed package"):
 #   P/bin/                     sim_node, the tools and the controllers (TOWSIM_INSTALLED_PROGRAMS)
-#   P/share/towsim/            scenes/, vehicles/, maneuvers/, autopilot/, cyclonedds.xml (the
-#                              loopback configuration for CYCLONEDDS_URI), idl/*.idl,
+#   P/share/towsim/            scenes/, vehicles/, maneuvers/, autopilot/, sweeps/,
+#                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
+#                              cyclonedds_two_hosts.xml, idl/*.idl,
 #                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/
 #   P/include/towsim/          msgs/*.h (generated from the IDL), common/*.h (client library),
 #                              testing/*.h (test fixture)
@@ -19,6 +20,7 @@ set(TOWSIM_INSTALLED_PROGRAMS
   towsim_record
   towsim_replay
   towsim_export
+  towsim_sweep
   maneuver_runner
   towfish_depth
   autopilot
@@ -46,9 +48,10 @@ install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/t
 
 # the configuration, the wire contract and the example
 set(TOWSIM_DATA_DESTINATION ${CMAKE_INSTALL_DATADIR}/towsim)
-install(DIRECTORY config/scenes config/vehicles config/maneuvers config/autopilot
+install(DIRECTORY config/scenes config/vehicles config/maneuvers config/autopilot config/sweeps
         DESTINATION ${TOWSIM_DATA_DESTINATION})
-install(FILES config/cyclonedds.xml DESTINATION ${TOWSIM_DATA_DESTINATION})
+install(FILES config/cyclonedds.xml config/cyclonedds_two_hosts.xml
+        DESTINATION ${TOWSIM_DATA_DESTINATION})
 install(FILES ${TOWSIM_IDL_FILES} DESTINATION ${TOWSIM_DATA_DESTINATION}/idl)
 install(DIRECTORY msgs/towsim_msgs DESTINATION ${TOWSIM_DATA_DESTINATION}/ros2)
 install(DIRECTORY examples/controller_ci DESTINATION ${TOWSIM_DATA_DESTINATION}/examples

@@ -132,22 +132,11 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
   auto source = std::make_shared<internal::Source>();
   source->name = name_for_messages;
 
-  // the text is YAML
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(name_for_messages, "<not YAML>", name_for_messages + line,
-                      "not valid YAML: " + e.msg);
-  }
-  // a scene is a map of keys
-  if (!root.IsMap()) {
-    throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
-                      name_for_messages,
-                      "a scene must be a map of keys (name, time, environment, cable, bodies, "
-                      "integrator, script)");
-  }
+  // the text is YAML, a map of keys
+  YAML::Node root = internal::LoadYamlMap(
+      yaml, name_for_messages,
+      "a scene must be a map of keys (name, time, environment, cable, bodies, integrator, "
+      "script)");
 
   internal::ApplyOverrides(overrides, root, source.get());
   return BuildModel(Field(root, root.Mark(), "", source), base_dir);

@@ -100,6 +100,21 @@ bool ReadTextFile(const std::string& path, std::string* text, std::string* why) 
   return true;
 }
 
+YAML::Node LoadYamlMap(const std::string& yaml, const std::string& name,
+                       const std::string& not_a_map_rule) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception& e) {
+    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
+    throw ConfigError(name, "<not YAML>", name + line, "not valid YAML: " + e.msg);
+  }
+  if (!root.IsMap()) {
+    throw ConfigError(name, root.IsNull() ? "<empty>" : FormatNode(root), name, not_a_map_rule);
+  }
+  return root;
+}
+
 std::string JoinPath(const std::string& parent, const std::string& key) {
   return parent.empty() ? key : parent + "." + key;
 }

@@ -54,6 +54,12 @@ std::string Trim(const std::string& text);
 // Reads the file at `path` into `text`; false with the reason in `why` when it cannot.
 bool ReadTextFile(const std::string& path, std::string* text, std::string* why);
 
+// `yaml` parsed as one YAML document that must be a map of keys (a scene, a sweep file).
+// Throws ConfigError: "<name> = <not YAML> (<name>:<line>): not valid YAML: ..." or, for a
+// document that is not a map, the value and `not_a_map_rule`.
+YAML::Node LoadYamlMap(const std::string& yaml, const std::string& name,
+                       const std::string& not_a_map_rule);
+
 // "a.b" from "a" and "b"; "b" when the parent is the root ("").
 std::string JoinPath(const std::string& parent, const std::string& key);
 // a number for messages: %g
