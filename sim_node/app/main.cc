@@ -10,6 +10,7 @@
 
 #include "app/command_line.h"
 #include "app/dds_node.h"
+#include "app/installed_data.h"
 #include "app/offline_run.h"
 #include "app/stop_signal.h"
 #include "core/model.h"
@@ -54,13 +55,16 @@ int Run(const towsim::app::Options& options) {
   }
 
   towsim::core::Model model;
+  // a bare scene name also finds the scenes of an installed towsim (P/share/towsim/scenes)
+  const std::string scene =
+      towsim::app::ResolveScene(options.scene, towsim::app::InstalledDataDir());
   try {
-    model = towsim::scene::LoadScene(options.scene, options.overrides);
+    model = towsim::scene::LoadScene(scene, options.overrides);
   } catch (const std::exception& e) {  // scene::ConfigError: what() is the full message
     std::fprintf(stderr, "sim_node: error: %s\n", e.what());
     return kExitBadInput;
   }
-  if (model.name.empty()) model.name = std::filesystem::path(options.scene).stem().string();
+  if (model.name.empty()) model.name = std::filesystem::path(scene).stem().string();
   const double duration = options.duration.value_or(model.time.duration);
   model.time.duration = duration;
   if (!(duration / model.time.step <= towsim::core::kMaxSteps)) {

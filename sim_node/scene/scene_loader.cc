@@ -1,10 +1,10 @@
 #include "scene/scene_loader.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <filesystem>
 #include <memory>
 #include <new>
+
+#include <yaml-cpp/yaml.h>
 
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
@@ -144,16 +144,11 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
   auto source = std::make_shared<internal::Source>();
   source->name = name_for_messages;
 
-  // the text is YAML
-  const YAML::Node root =
-      internal::LoadOneDocument(yaml, name_for_messages, name_for_messages, "<not YAML>");
-  // a scene is a map of keys
-  if (!root.IsMap()) {
-    throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
-                      name_for_messages,
-                      "a scene must be a map of keys (name, time, environment, cable, bodies, "
-                      "integrator, script)");
-  }
+  // the text is YAML, a map of keys
+  YAML::Node root = internal::LoadYamlMap(
+      yaml, name_for_messages,
+      "a scene must be a map of keys (name, time, environment, cable, bodies, integrator, "
+      "script)");
 
   internal::ApplyOverrides(overrides, root, source.get());
   return BuildModel(Field(root, root.Mark(), "", source), base_dir);

@@ -129,8 +129,7 @@ YAML::Node LoadOneDocument(const std::string& text, const std::string& name_for_
     documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(key, value_if_invalid, name_for_messages + line,
-                      "not valid YAML: " + e.msg);
+    throw ConfigError(key, value_if_invalid, name_for_messages + line, "not valid YAML: " + e.msg);
   }
   if (documents.size() > 1) {
     const YAML::Mark second = documents[1].Mark();
@@ -140,6 +139,15 @@ YAML::Node LoadOneDocument(const std::string& text, const std::string& name_for_
                       "a file must hold one YAML document (the second starts here)");
   }
   return documents.empty() ? YAML::Node() : documents[0];
+}
+
+YAML::Node LoadYamlMap(const std::string& yaml, const std::string& name,
+                       const std::string& not_a_map_rule) {
+  const YAML::Node root = LoadOneDocument(yaml, name, name, "<not YAML>");
+  if (!root.IsMap()) {
+    throw ConfigError(name, root.IsNull() ? "<empty>" : FormatNode(root), name, not_a_map_rule);
+  }
+  return root;
 }
 
 std::string JoinPath(const std::string& parent, const std::string& key) {

@@ -3,8 +3,6 @@
 // path, the value as written, where it was written (file:line, or --set) and the rule.
 // Private to the scene layer: the core and the app never see yaml-cpp.
 
-#include <yaml-cpp/yaml.h>
-
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -12,6 +10,8 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "core/model.h"
 #include "scene/scene_schema.h"
@@ -65,6 +65,13 @@ bool ReadTextFile(const std::string& path, std::string* text, std::string* why);
 // name_for_messages:line, rule).
 YAML::Node LoadOneDocument(const std::string& text, const std::string& name_for_messages,
                            const std::string& key, const std::string& value_if_invalid);
+
+// `yaml` parsed as one YAML document (LoadOneDocument) that must be a map of keys (a scene,
+// a sweep file).
+// Throws ConfigError: "<name> = <not YAML> (<name>:<line>): not valid YAML: ..." or, for a
+// document that is not a map, the value and `not_a_map_rule`.
+YAML::Node LoadYamlMap(const std::string& yaml, const std::string& name,
+                       const std::string& not_a_map_rule);
 
 // "a.b" from "a" and "b"; "b" when the parent is the root ("").
 std::string JoinPath(const std::string& parent, const std::string& key);

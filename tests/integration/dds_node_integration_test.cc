@@ -24,8 +24,9 @@
 #include "dds/dds.h"
 #include "dds_observer.h"
 #include "nav_msgs.h"
-#include "process.h"
 #include "scene/scene_loader.h"
+#include "testing/csv_file.h"
+#include "testing/process.h"
 #include "towsim_msgs.h"
 
 namespace towsim::testing {
@@ -228,16 +229,12 @@ TEST_F(DdsNodeTest, LockstepWithTheScriptsCommandsEqualsOffline) {
                   LogPrefix("offline"));
   ASSERT_TRUE(offline.Wait(kProcessTimeout));
   ASSERT_EQ(offline.exit_code(), 0) << offline.err();
-  std::stringstream csv(ReadFile(dir + "/bodies.csv"));
-  std::string row;
-  std::getline(csv, row);  // header t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
+  // header t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
+  const CsvTable csv = ReadCsv(dir + "/bodies.csv");
   const long stride = std::max(1L, std::lround(1.0 / (model.time.output_rate * model.time.step)));
   int rows = 0;
-  while (std::getline(csv, row)) {
-    std::vector<std::string> f;
-    std::stringstream s(row);
-    std::string cell;
-    while (std::getline(s, cell, ',')) f.push_back(cell);
+  for (const std::vector<std::string>& f : csv.rows) {
+    const std::string row = JoinCsvRow(f);
     ASSERT_EQ(f.size(), 14u) << row;
     const long k = stride * (rows / 2);
     const OdomLine* l = Find(log, k, f[1]);

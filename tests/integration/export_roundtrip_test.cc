@@ -16,7 +16,7 @@
 
 #include <gtest/gtest.h>
 
-#include "process.h"
+#include "testing/process.h"
 
 namespace {
 

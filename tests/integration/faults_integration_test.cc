@@ -27,7 +27,7 @@
 
 #include "dds_observer.h"
 #include "io/mcap_reader.h"
-#include "process.h"
+#include "testing/process.h"
 
 namespace towsim::testing {
 namespace {

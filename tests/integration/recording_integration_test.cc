@@ -24,7 +24,7 @@
 #include "dds/raw_cdr.h"
 #include "io/mcap_reader.h"
 #include "nav_msgs.h"
-#include "process.h"
+#include "testing/process.h"
 #include "towsim_msgs.h"
 
 namespace towsim::testing {
