@@ -208,9 +208,11 @@ int DdsNode::Setup() {
   if (config.empty()) config = DdsUriFromEnvironment("sim_node");
   config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
   try {
-    participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
+    participant_ = std::make_unique<dds::Participant>(opt_.domain, config, opt_.security);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
+  } catch (const dds::SecurityError& e) {
+    return bad(e.what());
   } catch (const dds::DdsError& e) {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;

@@ -1,7 +1,7 @@
 // towsim_record: records the topics of a towsim node from DDS into MCAP (issue 6).
 //
 //   towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]
-//                 [--duration S] [--quiet]
+//                 [--duration S] [--quiet] [--security DIR/NAME]
 //
 // It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
 // first), then subscribes to every towsim topic of the namespace (DESIGN §3: per body odom,
@@ -56,7 +56,7 @@ namespace dds = towsim::dds;
 
 const char* kUsage =
     "usage: towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]\n"
-    "                     [--duration S] [--quiet]\n"
+    "                     [--duration S] [--quiet] [--security DIR/NAME]\n"
     "  --output FILE.mcap  the recording (created or replaced)\n"
     "  --domain N          DDS domain id (default 0)\n"
     "  --namespace NS      ROS 2 namespace of the node's topics (default /towsim)\n"
@@ -64,6 +64,8 @@ const char* kUsage =
     "                      default: every towsim topic of the namespace and /clock\n"
     "  --duration S        stop after S seconds of wall time (> 0)\n"
     "  --quiet             no progress line\n"
+    "  --security DIR/NAME DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
+    "                      docs/security.md)\n"
     "Ends with a complete file on SIGINT / SIGTERM or when the node's run ends.\n";
 
 struct Options {
@@ -73,6 +75,7 @@ struct Options {
   std::vector<std::string> topics;
   double duration = INFINITY;
   bool quiet = false;
+  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -103,6 +106,8 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
+    } else if (arg == "--security") {
+      if (!next(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
     } else if (arg == "--output") {
       if (!next(&o->output)) return "--output needs a value";
     } else if (arg == "--namespace") {
@@ -174,7 +179,7 @@ dds::Qos RecorderQos(bool transient_local) {
 class Recorder {
  public:
   Recorder(const Options& o, const std::string& config)
-      : opt_(o), names_(o.ns), participant_(o.domain, config), waitset_(participant_) {}
+      : opt_(o), names_(o.ns), participant_(o.domain, config, o.security), waitset_(participant_) {}
 
   int Run();
 
@@ -399,6 +404,8 @@ int main(int argc, char** argv) {
   std::unique_ptr<Recorder> recorder;
   try {
     recorder = std::make_unique<Recorder>(options, uri);
+  } catch (const dds::SecurityError& e) {
+    return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }

@@ -1,7 +1,7 @@
 // towsim_replay: republishes an MCAP recording on DDS with its recorded timing (issue 6).
 //
 //   towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]
-//                 [--delay S] [--domain N] [--namespace NS] [--quiet]
+//                 [--delay S] [--domain N] [--namespace NS] [--quiet] [--security DIR/NAME]
 //
 // Every message of the chosen channels is written raw (the recorded CDR bytes, dds/raw_cdr;
 // Cyclone validates them against the type) on a writer of the channel's type (the schema name,
@@ -63,6 +63,7 @@ namespace io = towsim::io;
 const char* kUsage =
     "usage: towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]\n"
     "                     [--delay S] [--domain N] [--namespace NS] [--quiet]\n"
+    "                     [--security DIR/NAME]\n"
     "  --rate X        playback speed factor (default 1; 0: as fast as possible)\n"
     "  --fast          the same as --rate 0\n"
     "  --topics T ...  only these recorded topics (ROS names, /towsim/towfish/odom ...)\n"
@@ -71,7 +72,9 @@ const char* kUsage =
     "  --delay S       wait S seconds after creating the writers (discovery; default 1)\n"
     "  --domain N      DDS domain id (default 0)\n"
     "  --namespace NS  republish the recorded namespace under NS (/clock stays)\n"
-    "  --quiet         no progress line\n";
+    "  --quiet         no progress line\n"
+    "  --security DIR/NAME  DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
+    "                  the node's, DIR/sim_node, to republish its outputs; docs/security.md)\n";
 
 struct Options {
   std::string file;
@@ -83,6 +86,7 @@ struct Options {
   uint32_t domain = 0;
   std::string ns;  // empty: as recorded
   bool quiet = false;
+  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -119,6 +123,9 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
+    } else if (arg == "--security") {
+      if (!next(&v) || v.empty()) return "--security needs DIR/NAME";
+      o->security = v;
     } else if (arg == "--loop") {
       o->loop = true;
     } else if (arg == "--fast") {
@@ -234,7 +241,9 @@ int Replay(const Options& opt) {
   const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_replay");
   std::unique_ptr<dds::Participant> participant;
   try {
-    participant = std::make_unique<dds::Participant>(opt.domain, uri);
+    participant = std::make_unique<dds::Participant>(opt.domain, uri, opt.security);
+  } catch (const dds::SecurityError& e) {
+    return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }
