@@ -14,7 +14,7 @@
 # `sim_node` is the node's identity: it publishes every topic except the inputs and subscribes
 # to everything. Any other NAME subscribes to everything and publishes the commands of the
 # BODYs listed (rt<NS>/<BODY>/command); the pseudo-body `sim_control` grants
-# rt<NS>/sim_control. A NAME without bodies reads and commands nothing.
+# rt<NS>/sim_control. A NAME without bodies reads everything and commands nothing.
 # A NAME that already exists is made anew (new key, certificate and permissions).
 #
 # options:
@@ -181,11 +181,12 @@ for spec in "$@"; do
     -out "$out/cert.pem"
   rm -f "$out/cert.csr"
 
-  # the rules: deny first, the first match decides
+  # the rules: the first that names the topic decides (for a topic: in any criterion; for a
+  # reader or writer: in its subscribe or publish criterion)
   if [[ "$name" == sim_node ]]; then
-    rules="$(rule deny publish "${prefix}*/command" "${prefix}sim_control"
-             rule allow publish '*'
-             rule allow subscribe '*')"
+    rules="$(rule allow subscribe '*'
+             rule deny publish "${prefix}*/command" "${prefix}sim_control"
+             rule allow publish '*')"
   else
     publish=()
     for body in "${bodies[@]}"; do
@@ -195,8 +196,10 @@ for spec in "$@"; do
         publish+=("${prefix}$body/command")
       fi
     done
-    rules=""
-    ((${#publish[@]} > 0)) && rules="$(rule allow publish "${publish[@]}")"$'\n'
+    # towsim_sertype_probe/*: the process-local probe topic of the recording tools
+    # (dds/raw_cdr.h: how Cyclone serializes a type), never seen by another process
+    publish+=("towsim_sertype_probe/*")
+    rules="$(rule allow publish "${publish[@]}")"$'\n'
     rules+="$(rule allow subscribe '*')"
   fi
   subject="$(openssl x509 -in "$out/cert.pem" -noout -subject -nameopt RFC2253 | sed 's/^subject=//')"
