@@ -8,7 +8,7 @@
 #   2. realtime at 100 Hz (time.step = 0.01), 20 s, the controller answering every step: the
 #      node's step lateness p50 / p99 / max and overruns.
 #   bench/security_cost.sh [BUILD_DIR] [RUNS]        (default: build, 5)
-# DDS domains 148-149 (tests/integration/README.md), config/cyclonedds.xml (loopback); run it
+# DDS domains 150-151 (tests/integration/README.md), config/cyclonedds.xml (loopback); run it
 # inside `unshare -n` on a shared machine. Wall-clock numbers: run it on a quiet machine.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -39,12 +39,12 @@ echo "== lockstep: $scene, 100 s (2000 steps), thrust $thrust N, median of $runs
 for ((i = 0; i < runs; ++i)); do
   for v in "${variants[@]}"; do
     # shellcheck disable=SC2046
-    "$node" --scene "$scene" --mode lockstep --domain 148 --duration 100 --set 'script=[]' \
+    "$node" --scene "$scene" --mode lockstep --domain 150 --duration 100 --set 'script=[]' \
       $(security_args "$v" sim_node) >/dev/null &
     pid=$!
     # "test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step"
     # shellcheck disable=SC2046
-    us=$("$controller" --domain 148 --command "tow_vehicle@0=$thrust,0,0" --stats \
+    us=$("$controller" --domain 150 --command "tow_vehicle@0=$thrust,0,0" --stats \
       $(security_args "$v" ctl) | awk '{print $9}')
     wait "$pid"
     lockstep[$v]+="$us "
@@ -60,12 +60,12 @@ done
 echo "== realtime at 100 Hz (time.step = 0.01), 20 s, the controller answering every step"
 for v in "${variants[@]}"; do
   # shellcheck disable=SC2046
-  "$node" --scene "$scene" --mode realtime --domain 149 --duration 20 --set time.step=0.01 \
+  "$node" --scene "$scene" --mode realtime --domain 151 --duration 20 --set time.step=0.01 \
     --set 'script=[]' --wait-for-controllers $(security_args "$v" sim_node) \
     >"$keys/rt_$v.out" &
   pid=$!
   # shellcheck disable=SC2046
-  "$controller" --domain 149 --command "tow_vehicle@0=$thrust,0,0" \
+  "$controller" --domain 151 --command "tow_vehicle@0=$thrust,0,0" \
     $(security_args "$v" ctl) >/dev/null
   wait "$pid"
   printf "realtime  %-8s %s, %s\n" "$v" \

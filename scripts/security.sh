@@ -8,6 +8,8 @@
 #   DIR/identity_ca.pem, identity_ca_key.pem        the identity CA (signs the certificates)
 #   DIR/permissions_ca.pem, permissions_ca_key.pem  the permissions CA (signs the documents)
 #   DIR/governance.xml, DIR/governance.p7s          config/security/governance.xml, S/MIME-signed
+#   DIR/governance_open.xml, governance_open.p7s    with --open-outputs: the node's, admitting
+#                                                   participants without a certificate
 # and for each NAME an identity DIR/NAME/:
 #   cert.pem, key.pem                               EC P-256 key, certificate "CN=NAME,O=towsim"
 #   permissions.xml, permissions.p7s                config/security/permissions.xml, signed
@@ -21,6 +23,9 @@
 #   --encrypt       payloads encrypted (AES-GCM) instead of signed (GMAC); rewrites the
 #                   governance of an existing DIR (every identity of DIR follows it)
 #   --sign          payloads signed (the default of a new DIR); rewrites the governance
+#   --open-outputs  the outputs (every topic but the commands and sim_control) unprotected, so
+#                   that a node whose scene sets security.open_outputs may let participants
+#                   without a certificate read them; rewrites the governance
 #   --namespace NS  the ROS 2 namespace the permissions name (default /towsim); fnmatch
 #                   wildcards allowed, e.g. '/*' for any namespace (then a controller may
 #                   command its body in every system of the domain)
@@ -44,10 +49,12 @@ protection=""
 ns=/towsim
 days=3650
 expired=0
+open_outputs=0
 while (($# > 0)); do
   case "$1" in
     --encrypt) protection=ENCRYPT ;;
     --sign) protection=SIGN ;;
+    --open-outputs) open_outputs=1 ;;
     --namespace)
       (($# >= 2)) || fail "--namespace needs a value"
       ns="$2"
@@ -145,12 +152,20 @@ sign() {  # sign XML P7S: S/MIME (clear text, detached) by the permissions CA
 }
 
 # the governance: kept unless missing or a protection was asked for
-if [[ -z "$protection" && -f "$dir/governance.p7s" ]]; then
+governance() {  # governance ALLOW_UNAUTHENTICATED STEM
+  local data="${protection:-SIGN}" output_data="${protection:-SIGN}" output_discovery=true
+  if ((open_outputs)); then output_data=NONE output_discovery=false; fi
+  sed -e "s/@DATA_PROTECTION@/$data/g" -e "s/@OUTPUT_DATA_PROTECTION@/$output_data/g" \
+    -e "s/@OUTPUT_DISCOVERY_PROTECTION@/$output_discovery/g" \
+    -e "s/@ALLOW_UNAUTHENTICATED@/$1/g" "$templates/governance.xml" >"$dir/$2.xml"
+  sign "$dir/$2.xml" "$dir/$2.p7s"
+}
+if [[ -z "$protection" && $open_outputs == 0 && -f "$dir/governance.p7s" ]]; then
   :
 else
-  sed "s/@DATA_PROTECTION@/${protection:-SIGN}/g" "$templates/governance.xml" \
-    >"$dir/governance.xml"
-  sign "$dir/governance.xml" "$dir/governance.p7s"
+  governance false governance
+  rm -f "$dir/governance_open.xml" "$dir/governance_open.p7s"
+  if ((open_outputs)); then governance true governance_open; fi
 fi
 
 topics() {  # topics INDENT TOPIC...

@@ -208,7 +208,9 @@ int DdsNode::Setup() {
   if (config.empty()) config = DdsUriFromEnvironment("sim_node");
   config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
   try {
-    participant_ = std::make_unique<dds::Participant>(opt_.domain, config, opt_.security);
+    participant_ = std::make_unique<dds::Participant>(
+        opt_.domain, config, opt_.security,
+        opt_.open_outputs ? dds::Admit::kOpenOutputs : dds::Admit::kAuthenticated);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
   } catch (const dds::SecurityError& e) {

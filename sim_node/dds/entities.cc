@@ -11,7 +11,7 @@ void Entity::Reset() {
 }
 
 Participant::Participant(uint32_t domain_id, const std::string& config,
-                         const std::string& security)
+                         const std::string& security, Admit admit)
     : domain_id_(domain_id) {
   const std::string where = "DDS domain " + std::to_string(domain_id);
   if (!config.empty()) {
@@ -20,7 +20,7 @@ Participant::Participant(uint32_t domain_id, const std::string& config,
     domain_ = Entity(d);
   }
   if (!security.empty()) {
-    participant_ = Entity(CreateSecureParticipant(domain_id, security));
+    participant_ = Entity(CreateSecureParticipant(domain_id, security, nullptr, admit));
     return;
   }
   const dds_entity_t p = dds_create_participant(domain_id, nullptr, nullptr);

@@ -64,7 +64,8 @@ class Entity {
 // missing file, or the plugins refused the identity, with Cyclone's reason).
 class Participant {
  public:
-  Participant(uint32_t domain_id, const std::string& config, const std::string& security = "");
+  Participant(uint32_t domain_id, const std::string& config, const std::string& security = "",
+              Admit admit = Admit::kAuthenticated);
   dds_entity_t get() const { return participant_.get(); }
   uint32_t domain_id() const { return domain_id_; }
 

@@ -181,7 +181,7 @@ void SetLibrary(dds_qos_t* qos, const std::string& prefix, const std::string& li
 
 const char* SecurityPluginDirectory() { return TOWSIM_DDS_SECURITY_PLUGIN_DIR; }
 
-SecurityFiles FindSecurityFiles(const std::string& identity) {
+SecurityFiles FindSecurityFiles(const std::string& identity, Admit admit) {
   const std::string where = "--security " + identity;
   if (identity.empty()) throw SecurityError("--security needs DIR/NAME");
   const std::string path = Absolute(WithoutTrailingSlash(identity));
@@ -193,13 +193,19 @@ SecurityFiles FindSecurityFiles(const std::string& identity) {
   SecurityFiles f;
   f.identity_ca = dir + "/identity_ca.pem";
   f.permissions_ca = dir + "/permissions_ca.pem";
-  f.governance = dir + "/governance.p7s";
+  f.governance = dir + (admit == Admit::kOpenOutputs ? "/governance_open.p7s" : "/governance.p7s");
   f.certificate = path + "/cert.pem";
   f.private_key = path + "/key.pem";
   f.permissions = path + "/permissions.p7s";
   for (const std::string* file : {&f.identity_ca, &f.permissions_ca, &f.governance,
                                   &f.certificate, &f.private_key, &f.permissions}) {
-    if (access(file->c_str(), F_OK) != 0) throw SecurityError(where + ": " + *file + ": no such file");
+    if (access(file->c_str(), F_OK) != 0) {
+      throw SecurityError(where + ": " + *file + ": no such file" +
+                          (file == &f.governance && admit == Admit::kOpenOutputs
+                               ? " (the scene's security.open_outputs needs a DIR made by "
+                                 "scripts/security.sh --open-outputs)"
+                               : ""));
+    }
     if (access(file->c_str(), R_OK) != 0) throw SecurityError(where + ": " + *file + ": not readable");
   }
   return f;
@@ -221,7 +227,7 @@ void AddSecurityProperties(const SecurityFiles& files, dds_qos_t* qos) {
 }
 
 dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identity,
-                                     const dds_qos_t* qos) {
+                                     const dds_qos_t* qos, Admit admit) {
   const std::string where = "DDS domain " + std::to_string(domain);
   if (identity.empty()) {
     const dds_entity_t p = dds_create_participant(domain, qos, nullptr);
@@ -230,7 +236,7 @@ dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identit
     }
     return p;
   }
-  const SecurityFiles files = FindSecurityFiles(identity);
+  const SecurityFiles files = FindSecurityFiles(identity, admit);
   // Cyclone accepts a private key that is not the certificate's at creation (every handshake
   // fails later): refuse it here
   if (const std::string e = Diagnose(files); e.find(files.private_key) == 0) {

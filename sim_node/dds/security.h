@@ -43,9 +43,17 @@ struct SecurityFiles {
   std::string permissions;     // DIR/NAME/permissions.p7s
 };
 
+// What a participant admits besides authenticated ones.
+enum class Admit {
+  kAuthenticated,     // DIR/governance.p7s: only participants with a valid identity
+  kOpenOutputs,       // DIR/governance_open.p7s (scripts/security.sh --open-outputs): also
+                      // participants without a certificate, on the unprotected outputs only
+};
+
 // The files of `identity` (DIR/NAME). Throws SecurityError if DIR/NAME is not a directory or a
 // file is missing or unreadable: "--security /k/ctl: /k/ctl/cert.pem: no such file".
-SecurityFiles FindSecurityFiles(const std::string& identity);
+SecurityFiles FindSecurityFiles(const std::string& identity,
+                                Admit admit = Admit::kAuthenticated);
 
 // Adds the dds.sec.* properties of `files` and of the builtin plugins to `qos`.
 void AddSecurityProperties(const SecurityFiles& files, dds_qos_t* qos);
@@ -55,7 +63,8 @@ void AddSecurityProperties(const SecurityFiles& files, dds_qos_t* qos);
 // $CYCLONEDDS_URI. Throws SecurityError (refused by the plugins: Cyclone's reason) or
 // std::runtime_error (other DDS failures, with Cyclone's return-code text).
 dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identity,
-                                     const dds_qos_t* qos = nullptr);
+                                     const dds_qos_t* qos = nullptr,
+                                     Admit admit = Admit::kAuthenticated);
 
 // the directory of Cyclone's security plugins found at build time ("" if none)
 const char* SecurityPluginDirectory();

@@ -3,7 +3,7 @@
 // scripts/security.sh in the test's own directory; participants of the test process itself
 // play the intruders (no certificate, a certificate without the right to command). The
 // references: the same run without security (bit-identical files), and what the node counts
-// in its summary line (commands received). DDS domains 140-147 (tests/integration/README.md).
+// in its summary line (commands received). DDS domains 140-148 (tests/integration/README.md).
 
 #include <algorithm>
 #include <csignal>
@@ -423,6 +423,63 @@ TEST_F(SecurityTest, SecurityRecordedSecuredRunExportsTheSameCsvAsAnUnsecuredRun
     EXPECT_NE(std::find(exported_rows.begin(), exported_rows.end(), row), exported_rows.end())
         << row;
   }
+}
+
+// domain 148: a DIR made with --open-outputs and a scene with security.open_outputs: a
+// participant without a certificate reads the outputs, its commands still reach nothing; the
+// controller (DIR/governance.p7s, admitting authenticated participants only) drives as before.
+// Without --open-outputs the node refuses the scene key at start.
+TEST_F(SecurityTest, SecurityOpenOutputsLetAViewerWithoutCertificateReadButNotCommand) {
+  constexpr int kDomain = 148;
+  const std::vector<std::string> open = {"--set", "security.open_outputs=true"};
+  {
+    Process node(NodeArgs(kDomain, Keys("sim_node"), open), Log("closed_node"), Env());
+    ASSERT_TRUE(node.Wait(kProcessTimeout));
+    EXPECT_EQ(node.exit_code(), 2);
+    EXPECT_NE(node.err().find((keys_ / "governance_open.p7s").string() + ": no such file"),
+              std::string::npos)
+        << node.err();
+  }
+  const fs::path keys = tmp_.path() / "open_keys";
+  MakeIdentities({"--open-outputs", "sim_node", "ctl:tow_vehicle,towfish"}, keys);
+  Intruder viewer(kDomain, "");
+  const dds_entity_t status =
+      viewer.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "rt/towsim/status");
+  const dds_entity_t command =
+      viewer.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command");
+  ASSERT_GT(status, 0);
+  ASSERT_GT(command, 0);
+  Process node(NodeArgs(kDomain, (keys / "sim_node").string(), open), Log("node"), Env());
+  const Clock::time_point until = Clock::now() + std::chrono::seconds(20);
+  while (SubscriptionMatches(status) == 0 && Clock::now() < until) Sleep(0.01);
+  EXPECT_EQ(SubscriptionMatches(status), 1);
+  Sleep(kDiscoverySeconds);
+  EXPECT_EQ(PublicationMatches(command), 0);
+  Process controller(ControllerArgs(kDomain, (keys / "ctl").string()), Log("ctl"), Env());
+  long statuses = 0;
+  for (uint64_t k = 0; node.running() && k < 100000; ++k) {
+    const auto c = RogueCommand(k % (kSteps + 1));
+    dds_write(command, &c);
+    void* samples[16] = {};
+    dds_sample_info_t infos[16];
+    const dds_return_t n = dds_take(status, samples, infos, 16, 16);
+    if (n > 0) {
+      statuses += n;
+      dds_return_loan(status, samples, n);
+    }
+    Sleep(0.002);
+  }
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  ASSERT_TRUE(controller.Wait(kProcessTimeout));
+  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
+  EXPECT_EQ(CommandsReceived(node.out()), kSteps * kCommandedBodies) << node.out();
+  EXPECT_NE(node.out().find("rejected 0, clamped 0"), std::string::npos) << node.out();
+  // the viewer watched the run: a status per step (best effort, keep last 1: some may be
+  // overwritten between two takes)
+  EXPECT_GT(statuses, 10);
+  std::printf("[ security ] the viewer without a certificate took %ld statuses of %d steps\n",
+              statuses, kSteps);
 }
 
 }  // namespace
