@@ -26,8 +26,8 @@ thrust=4500
 
 keys="$(mktemp -d /tmp/towsim_security_cost.XXXXXX)"
 trap 'rm -rf "$keys"' EXIT
-scripts/security.sh "$keys/sign" sim_node ctl:tow_vehicle
-scripts/security.sh --encrypt "$keys/encrypt" sim_node ctl:tow_vehicle
+scripts/security.sh "$keys/sign" sim_node ctl:tow_vehicle,towfish
+scripts/security.sh --encrypt "$keys/encrypt" sim_node ctl:tow_vehicle,towfish
 
 # security_args VARIANT WHO -> the --security option of WHO (sim_node or ctl)
 security_args() { [[ "$1" == none ]] || echo "--security $keys/$1/$2"; }

@@ -203,6 +203,36 @@ towsim_msgs_msg_dds__ActuatorCommand_ RogueCommand(uint64_t step) {
   return c;
 }
 
+// waits up to kMatchSeconds for `done()`; its last value
+constexpr double kMatchSeconds = 20.0;  // a secured match takes well under a second
+template <class F>
+bool WaitFor(F done) {
+  const Clock::time_point until =
+      Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                         std::chrono::duration<double>(kMatchSeconds));
+  while (!done() && Clock::now() < until) Sleep(0.01);
+  return done();
+}
+
+// while `node` runs: a rogue command every 2 ms on `command` (stamped with every step in
+// turn) and every status `status` can take; returns the number of statuses taken
+long RogueWhileRunning(Process& node, dds_entity_t command, dds_entity_t status) {
+  long statuses = 0;
+  for (uint64_t k = 0; node.running() && k < 100000; ++k) {
+    const auto c = RogueCommand(k % (kSteps + 1));
+    dds_write(command, &c);
+    void* samples[16] = {};
+    dds_sample_info_t infos[16];
+    const dds_return_t n = dds_take(status, samples, infos, 16, 16);
+    if (n > 0) {
+      statuses += n;
+      dds_return_loan(status, samples, n);
+    }
+    Sleep(0.002);
+  }
+  return statuses;
+}
+
 // domains 140 (without security) and 141 (with): same commands, the same files bit for bit
 TEST_F(SecurityTest, SecurityAuthorisedControllerDrivesLockstepBitIdenticalToUnsecured) {
   const fs::path plain = tmp_.path() / "plain", secured = tmp_.path() / "secured";
@@ -234,22 +264,13 @@ TEST_F(SecurityTest, SecurityParticipantWithoutCertificateSeesNothingAndCommands
   EXPECT_EQ(SubscriptionMatches(status), 0);
   EXPECT_TRUE(intruder.DiscoveredTopics().empty());
   Process controller(ControllerArgs(kDomain, Keys("ctl")), Log("ctl"), Env());
-  // rogue commands for every step while the run goes
-  for (uint64_t k = 0; node.running() && k < 100000; ++k) {
-    const auto c = RogueCommand(k % (kSteps + 1));
-    dds_write(command, &c);
-    Sleep(0.002);
-  }
+  EXPECT_EQ(RogueWhileRunning(node, command, status), 0);  // the node's status never came
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   ASSERT_TRUE(controller.Wait(kProcessTimeout));
   EXPECT_EQ(controller.exit_code(), 0) << controller.err();
   EXPECT_EQ(CommandsReceived(node.out()), kSteps * kCommandedBodies) << node.out();
   EXPECT_NE(node.out().find("rejected 0, clamped 0"), std::string::npos) << node.out();
-  // the node's status never reached it
-  void* samples[1] = {};
-  dds_sample_info_t info;
-  EXPECT_EQ(dds_take(status, samples, &info, 1, 1), 0);
   EXPECT_TRUE(intruder.DiscoveredTopics().empty());
 }
 
@@ -270,9 +291,7 @@ TEST_F(SecurityTest, SecurityIdentityWithoutCommandPermissionIsRefused) {
 
   Process node(NodeArgs(kDomain, Keys("sim_node")), Log("node"), Env());
   // authenticated: its reader of the node's status matches
-  const Clock::time_point until = Clock::now() + std::chrono::seconds(20);
-  while (SubscriptionMatches(status) == 0 && Clock::now() < until) Sleep(0.01);
-  EXPECT_EQ(SubscriptionMatches(status), 1);
+  EXPECT_TRUE(WaitFor([&] { return SubscriptionMatches(status) == 1; }));
   Process controller(ControllerArgs(kDomain, Keys("ctl")), Log("ctl"), Env());
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
@@ -300,9 +319,7 @@ TEST_F(SecurityTest, SecurityTowfishOnlyControllerCannotCommandTheTowVehicle) {
 
   Process node(NodeArgs(kDomain, Keys("sim_node")), Log("node"), Env());
   // the towfish command writer matches the node's reader
-  const Clock::time_point until = Clock::now() + std::chrono::seconds(20);
-  while (PublicationMatches(towfish) == 0 && Clock::now() < until) Sleep(0.01);
-  EXPECT_EQ(PublicationMatches(towfish), 1);
+  EXPECT_TRUE(WaitFor([&] { return PublicationMatches(towfish) == 1; }));
   Process runner({TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--body", "tow_vehicle",
                   "--domain", std::to_string(kDomain), "--timeout", "10", "--security",
                   Keys("fish")},
@@ -392,11 +409,7 @@ TEST_F(SecurityTest, SecurityRecordedSecuredRunExportsTheSameCsvAsAnUnsecuredRun
                "--security", Keys("recorder")},
               Log("rec"), Env());
   Process node(NodeArgs(kDomain, Keys("sim_node"), rates), Log("node"), Env());
-  const Clock::time_point until = Clock::now() + std::chrono::seconds(20);
-  while (rec.err().find("towsim_record: recording") == std::string::npos && rec.running() &&
-         Clock::now() < until) {
-    Sleep(0.02);
-  }
+  WaitFor([&] { return rec.err().find("towsim_record: recording") != std::string::npos; });
   ASSERT_NE(rec.err().find("towsim_record: recording"), std::string::npos) << rec.err();
   Sleep(kDiscoverySeconds);  // the recorder's readers match the node's writers
   Process controller(ControllerArgs(kDomain, Keys("ctl")), Log("ctl"), Env());
@@ -450,25 +463,11 @@ TEST_F(SecurityTest, SecurityOpenOutputsLetAViewerWithoutCertificateReadButNotCo
   ASSERT_GT(status, 0);
   ASSERT_GT(command, 0);
   Process node(NodeArgs(kDomain, (keys / "sim_node").string(), open), Log("node"), Env());
-  const Clock::time_point until = Clock::now() + std::chrono::seconds(20);
-  while (SubscriptionMatches(status) == 0 && Clock::now() < until) Sleep(0.01);
-  EXPECT_EQ(SubscriptionMatches(status), 1);
+  EXPECT_TRUE(WaitFor([&] { return SubscriptionMatches(status) == 1; }));
   Sleep(kDiscoverySeconds);
   EXPECT_EQ(PublicationMatches(command), 0);
   Process controller(ControllerArgs(kDomain, (keys / "ctl").string()), Log("ctl"), Env());
-  long statuses = 0;
-  for (uint64_t k = 0; node.running() && k < 100000; ++k) {
-    const auto c = RogueCommand(k % (kSteps + 1));
-    dds_write(command, &c);
-    void* samples[16] = {};
-    dds_sample_info_t infos[16];
-    const dds_return_t n = dds_take(status, samples, infos, 16, 16);
-    if (n > 0) {
-      statuses += n;
-      dds_return_loan(status, samples, n);
-    }
-    Sleep(0.002);
-  }
+  const long statuses = RogueWhileRunning(node, command, status);
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   ASSERT_TRUE(controller.Wait(kProcessTimeout));
