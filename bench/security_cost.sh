@@ -50,11 +50,15 @@ for ((i = 0; i < runs; ++i)); do
     lockstep[$v]+="$us "
   done
 done
+lowest() { sort -n | head -n 1; }
 for v in "${variants[@]}"; do
   m=$(tr ' ' '\n' <<<"${lockstep[$v]}" | grep . | median)
   base=$(tr ' ' '\n' <<<"${lockstep[none]}" | grep . | median)
-  printf "lockstep  %-8s %7.1f us/step  (x%.2f)   runs: %s\n" "$v" "$m" \
-    "$(awk -v a="$m" -v b="$base" 'BEGIN {print a / b}')" "${lockstep[$v]}"
+  lo=$(tr ' ' '\n' <<<"${lockstep[$v]}" | grep . | lowest)
+  base_lo=$(tr ' ' '\n' <<<"${lockstep[none]}" | grep . | lowest)
+  printf "lockstep  %-8s median %7.1f us/step (x%.2f), min %7.1f (x%.2f)   runs: %s\n" "$v" "$m" \
+    "$(awk -v a="$m" -v b="$base" 'BEGIN {print a / b}')" "$lo" \
+    "$(awk -v a="$lo" -v b="$base_lo" 'BEGIN {print a / b}')" "${lockstep[$v]}"
 done
 
 echo "== realtime at 100 Hz (time.step = 0.01), 20 s, the controller answering every step"

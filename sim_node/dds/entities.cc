@@ -10,8 +10,8 @@ void Entity::Reset() {
   handle_ = 0;
 }
 
-Participant::Participant(uint32_t domain_id, const std::string& config,
-                         const std::string& security, Admit admit)
+Participant::Participant(uint32_t domain_id, const std::string& config, const std::string& security,
+                         Admit admit)
     : domain_id_(domain_id) {
   const std::string where = "DDS domain " + std::to_string(domain_id);
   if (!config.empty()) {

@@ -1,5 +1,10 @@
 #include "dds/security.h"
 
+#include <openssl/bio.h>
+#include <openssl/err.h>
+#include <openssl/pem.h>
+#include <openssl/pkcs7.h>
+#include <openssl/x509.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -8,12 +13,6 @@
 #include <memory>
 #include <mutex>
 #include <string>
-
-#include <openssl/bio.h>
-#include <openssl/err.h>
-#include <openssl/pem.h>
-#include <openssl/pkcs7.h>
-#include <openssl/x509.h>
 
 #include "dds/ddsrt/log.h"
 
@@ -45,9 +44,7 @@ std::string WithoutTrailingSlash(std::string s) {
 // the messages Cyclone logs while a participant is made (its reason for a refusal)
 class LogCapture {
  public:
-  LogCapture() {
-    dds_set_log_sink(&LogCapture::Sink, this);
-  }
+  LogCapture() { dds_set_log_sink(&LogCapture::Sink, this); }
   ~LogCapture() { dds_set_log_sink(nullptr, nullptr); }  // back to stderr
   LogCapture(const LogCapture&) = delete;
   LogCapture& operator=(const LogCapture&) = delete;
@@ -108,8 +105,7 @@ Cert ReadCertificate(const std::string& path, std::string* error) {
 // `cert` against the CA in `ca_path` (validity period included)
 std::string VerifyCertificate(X509* cert, const std::string& cert_path, const std::string& ca_path,
                               X509* ca) {
-  std::unique_ptr<X509_STORE, decltype(&X509_STORE_free)> store(X509_STORE_new(),
-                                                               &X509_STORE_free);
+  std::unique_ptr<X509_STORE, decltype(&X509_STORE_free)> store(X509_STORE_new(), &X509_STORE_free);
   std::unique_ptr<X509_STORE_CTX, decltype(&X509_STORE_CTX_free)> ctx(X509_STORE_CTX_new(),
                                                                       &X509_STORE_CTX_free);
   X509_STORE_add_cert(store.get(), ca);
@@ -127,8 +123,7 @@ std::string VerifyDocument(const std::string& path, const std::string& ca_path, 
       bio ? SMIME_read_PKCS7(bio.get(), &content) : nullptr, &PKCS7_free);
   Bio content_owner(content, &BIO_free);
   if (!p7) return path + ": not an S/MIME document (" + OpenSslError() + ")";
-  std::unique_ptr<X509_STORE, decltype(&X509_STORE_free)> store(X509_STORE_new(),
-                                                               &X509_STORE_free);
+  std::unique_ptr<X509_STORE, decltype(&X509_STORE_free)> store(X509_STORE_new(), &X509_STORE_free);
   X509_STORE_add_cert(store.get(), ca);
   Bio out(BIO_new(BIO_s_mem()), &BIO_free);
   if (PKCS7_verify(p7.get(), nullptr, store.get(), content, out.get(), PKCS7_TEXT) != 1) {
@@ -197,8 +192,8 @@ SecurityFiles FindSecurityFiles(const std::string& identity, Admit admit) {
   f.certificate = path + "/cert.pem";
   f.private_key = path + "/key.pem";
   f.permissions = path + "/permissions.p7s";
-  for (const std::string* file : {&f.identity_ca, &f.permissions_ca, &f.governance,
-                                  &f.certificate, &f.private_key, &f.permissions}) {
+  for (const std::string* file : {&f.identity_ca, &f.permissions_ca, &f.governance, &f.certificate,
+                                  &f.private_key, &f.permissions}) {
     if (access(file->c_str(), F_OK) != 0) {
       throw SecurityError(where + ": " + *file + ": no such file" +
                           (file == &f.governance && admit == Admit::kOpenOutputs
@@ -206,7 +201,8 @@ SecurityFiles FindSecurityFiles(const std::string& identity, Admit admit) {
                                  "scripts/security.sh --open-outputs)"
                                : ""));
     }
-    if (access(file->c_str(), R_OK) != 0) throw SecurityError(where + ": " + *file + ": not readable");
+    if (access(file->c_str(), R_OK) != 0)
+      throw SecurityError(where + ": " + *file + ": not readable");
   }
   return f;
 }
@@ -262,8 +258,8 @@ dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identit
              "Cyclone's reason)";
     }
     throw SecurityError("--security " + identity + ": " + file + "; Cyclone refused the " +
-                        "participant in " + where + " (" + dds_strretcode(p) + "): " +
-                        (log.empty() ? std::string("no reason logged") : log));
+                        "participant in " + where + " (" + dds_strretcode(p) +
+                        "): " + (log.empty() ? std::string("no reason logged") : log));
   }
   return p;
 }

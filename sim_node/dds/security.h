@@ -45,15 +45,14 @@ struct SecurityFiles {
 
 // What a participant admits besides authenticated ones.
 enum class Admit {
-  kAuthenticated,     // DIR/governance.p7s: only participants with a valid identity
-  kOpenOutputs,       // DIR/governance_open.p7s (scripts/security.sh --open-outputs): also
-                      // participants without a certificate, on the unprotected outputs only
+  kAuthenticated,  // DIR/governance.p7s: only participants with a valid identity
+  kOpenOutputs,    // DIR/governance_open.p7s (scripts/security.sh --open-outputs): also
+                   // participants without a certificate, on the unprotected outputs only
 };
 
 // The files of `identity` (DIR/NAME). Throws SecurityError if DIR/NAME is not a directory or a
 // file is missing or unreadable: "--security /k/ctl: /k/ctl/cert.pem: no such file".
-SecurityFiles FindSecurityFiles(const std::string& identity,
-                                Admit admit = Admit::kAuthenticated);
+SecurityFiles FindSecurityFiles(const std::string& identity, Admit admit = Admit::kAuthenticated);
 
 // Adds the dds.sec.* properties of `files` and of the builtin plugins to `qos`.
 void AddSecurityProperties(const SecurityFiles& files, dds_qos_t* qos);

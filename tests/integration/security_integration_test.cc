@@ -37,8 +37,8 @@ constexpr double kRunSeconds = 5.0;       // simulated: 100 steps of case1 (h = 
 constexpr int kSteps = 100;
 constexpr int kCommandedBodies = 2;  // tow_vehicle and towfish take commands in case1
 // what the test controller sends (thrust, rudder, elevator from t): a turn and a dive
-const std::vector<std::string> kCommands = {"--command", "tow_vehicle@0=4500,0.05,0",
-                                            "--command", "towfish@1=0,0,-0.1"};
+const std::vector<std::string> kCommands = {"--command", "tow_vehicle@0=4500,0.05,0", "--command",
+                                            "towfish@1=0,0,-0.1"};
 // long enough for a secured discovery and handshake (~0.3 s on loopback) many times over
 constexpr double kDiscoverySeconds = 2.0;
 
@@ -61,7 +61,8 @@ class SecurityTest : public ::testing::Test {
     for (const std::string& n : names) command += " '" + n + "'";
     command += " 2>" + (tmp_.path() / "security_sh.err").string();
     ASSERT_EQ(std::system(command.c_str()), 0)
-        << command << "\n" << ReadFile((tmp_.path() / "security_sh.err").string());
+        << command << "\n"
+        << ReadFile((tmp_.path() / "security_sh.err").string());
   }
 
   std::string Keys(const std::string& name) const { return (keys_ / name).string(); }
@@ -70,9 +71,17 @@ class SecurityTest : public ::testing::Test {
   // sim_node on case1 in lockstep for kRunSeconds with the scene's script off
   std::vector<std::string> NodeArgs(int domain, const std::string& security,
                                     std::vector<std::string> extra = {}) const {
-    std::vector<std::string> a = {TOWSIM_SIM_NODE, "--scene", kCase1, "--mode", "lockstep",
-                                  "--duration", std::to_string(kRunSeconds), "--set", "script=[]",
-                                  "--domain", std::to_string(domain)};
+    std::vector<std::string> a = {TOWSIM_SIM_NODE,
+                                  "--scene",
+                                  kCase1,
+                                  "--mode",
+                                  "lockstep",
+                                  "--duration",
+                                  std::to_string(kRunSeconds),
+                                  "--set",
+                                  "script=[]",
+                                  "--domain",
+                                  std::to_string(domain)};
     if (!security.empty()) a.insert(a.end(), {"--security", security});
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
@@ -89,8 +98,7 @@ class SecurityTest : public ::testing::Test {
                           const fs::path& csv, std::vector<std::string> extra = {}) {
     extra.insert(extra.end(), {"--csv", csv.string()});
     Process node(NodeArgs(domain, node_id, extra), Log("node" + std::to_string(domain)), Env());
-    Process controller(ControllerArgs(domain, ctl_id), Log("ctl" + std::to_string(domain)),
-                       Env());
+    Process controller(ControllerArgs(domain, ctl_id), Log("ctl" + std::to_string(domain)), Env());
     EXPECT_TRUE(node.Wait(kProcessTimeout)) << node.command_line();
     EXPECT_EQ(node.exit_code(), 0) << node.err();
     EXPECT_TRUE(controller.Wait(kProcessTimeout));
@@ -100,8 +108,7 @@ class SecurityTest : public ::testing::Test {
 
   void SetUp() override {
     keys_ = tmp_.path() / "keys";
-    MakeIdentities({"sim_node", "ctl:tow_vehicle,towfish", "fish:towfish", "viewer",
-                    "recorder"},
+    MakeIdentities({"sim_node", "ctl:tow_vehicle,towfish", "fish:towfish", "viewer", "recorder"},
                    keys_);
   }
 
@@ -207,9 +214,8 @@ towsim_msgs_msg_dds__ActuatorCommand_ RogueCommand(uint64_t step) {
 constexpr double kMatchSeconds = 20.0;  // a secured match takes well under a second
 template <class F>
 bool WaitFor(F done) {
-  const Clock::time_point until =
-      Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(kMatchSeconds));
+  const Clock::time_point until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                     std::chrono::duration<double>(kMatchSeconds));
   while (!done() && Clock::now() < until) Sleep(0.01);
   return done();
 }
@@ -320,10 +326,10 @@ TEST_F(SecurityTest, SecurityTowfishOnlyControllerCannotCommandTheTowVehicle) {
   Process node(NodeArgs(kDomain, Keys("sim_node")), Log("node"), Env());
   // the towfish command writer matches the node's reader
   EXPECT_TRUE(WaitFor([&] { return PublicationMatches(towfish) == 1; }));
-  Process runner({TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--body", "tow_vehicle",
-                  "--domain", std::to_string(kDomain), "--timeout", "10", "--security",
-                  Keys("fish")},
-                 Log("runner"), Env());
+  Process runner(
+      {TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--body", "tow_vehicle", "--domain",
+       std::to_string(kDomain), "--timeout", "10", "--security", Keys("fish")},
+      Log("runner"), Env());
   ASSERT_TRUE(runner.Wait(kProcessTimeout));
   EXPECT_NE(runner.exit_code(), 0);
   EXPECT_NE(runner.err().find("command writer: Not Allowed By Security"), std::string::npos)
@@ -369,7 +375,8 @@ TEST_F(SecurityTest, SecurityTamperedPermissionsAndExpiredCertificateAreRefusedA
     ASSERT_TRUE(node.Wait(kProcessTimeout));
     EXPECT_EQ(node.exit_code(), 2);
     const std::string err = node.err();
-    EXPECT_NE(err.find("sim_node: error: --security " + c.identity + ": " + c.file), std::string::npos)
+    EXPECT_NE(err.find("sim_node: error: --security " + c.identity + ": " + c.file),
+              std::string::npos)
         << err;
     EXPECT_NE(err.find(c.reason), std::string::npos) << err;
     if (c.identity != Keys("nobody")) {
@@ -377,8 +384,8 @@ TEST_F(SecurityTest, SecurityTamperedPermissionsAndExpiredCertificateAreRefusedA
     }
   }
   // the other programs stop the same way
-  Process depth({TOWSIM_TOWFISH_DEPTH, "--hold", "--domain", std::to_string(kDomain),
-                 "--security", Keys("old")},
+  Process depth({TOWSIM_TOWFISH_DEPTH, "--hold", "--domain", std::to_string(kDomain), "--security",
+                 Keys("old")},
                 Log("depth"), Env());
   Process rec({TOWSIM_RECORD, "--output", Log("rec.mcap"), "--domain", std::to_string(kDomain),
                "--security", Keys("tampered")},
@@ -396,10 +403,9 @@ TEST_F(SecurityTest, SecurityTamperedPermissionsAndExpiredCertificateAreRefusedA
 // towsim_record): the exported recording equals the unsecured run's CSV
 TEST_F(SecurityTest, SecurityRecordedSecuredRunExportsTheSameCsvAsAnUnsecuredRun) {
   // every topic at the CSV output rate, as towsim_export expects (docs/recording.md)
-  const std::vector<std::string> rates = {"--set", "publish.odom=10",        "--set",
-                                          "publish.cable_force=10", "--set",
-                                          "publish.cable_state=10", "--set",
-                                          "publish.status=10"};
+  const std::vector<std::string> rates = {
+      "--set", "publish.odom=10",        "--set", "publish.cable_force=10",
+      "--set", "publish.cable_state=10", "--set", "publish.status=10"};
   const fs::path plain = tmp_.path() / "plain";
   LockstepRun(146, "", "", plain, rates);
 
@@ -423,7 +429,8 @@ TEST_F(SecurityTest, SecurityRecordedSecuredRunExportsTheSameCsvAsAnUnsecuredRun
   Process exp({TOWSIM_EXPORT, mcap, "--csv", exported.string()}, Log("export"), Env());
   ASSERT_TRUE(exp.Wait(kProcessTimeout));
   ASSERT_EQ(exp.exit_code(), 0) << exp.err();
-  for (const char* f : {"bodies.csv", "cable.csv", "forces.csv"}) ExpectSameFile(plain / f, exported / f);
+  for (const char* f : {"bodies.csv", "cable.csv", "forces.csv"})
+    ExpectSameFile(plain / f, exported / f);
   // status.csv: the node writes every 10 Hz row, lockstep publishes the status of every step;
   // each row of the node's (without wall_us, the wall time of a step) is among the exported
   const std::vector<std::string> node_rows =
