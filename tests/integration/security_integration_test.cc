@@ -20,6 +20,7 @@
 
 #include "dds/dds.h"
 #include "dds/security.h"
+#include "nav_msgs.h"
 #include "process.h"
 #include "temp_dir.h"
 #include "towsim_msgs.h"
@@ -221,9 +222,14 @@ bool WaitFor(F done) {
 }
 
 // while `node` runs: a rogue command every 2 ms on `command` (stamped with every step in
-// turn) and every status `status` can take; returns the number of statuses taken
-long RogueWhileRunning(Process& node, dds_entity_t command, dds_entity_t status) {
+// turn), every status `status` can take, and the most readers any of `watched` matched
+struct Rogue {
   long statuses = 0;
+  int most_matches = 0;
+};
+Rogue RogueWhileRunning(Process& node, dds_entity_t command, dds_entity_t status,
+                        const std::vector<dds_entity_t>& watched) {
+  Rogue r;
   for (uint64_t k = 0; node.running() && k < 100000; ++k) {
     const auto c = RogueCommand(k % (kSteps + 1));
     dds_write(command, &c);
@@ -231,12 +237,15 @@ long RogueWhileRunning(Process& node, dds_entity_t command, dds_entity_t status)
     dds_sample_info_t infos[16];
     const dds_return_t n = dds_take(status, samples, infos, 16, 16);
     if (n > 0) {
-      statuses += n;
+      r.statuses += n;
       dds_return_loan(status, samples, n);
+    }
+    for (const dds_entity_t w : watched) {
+      r.most_matches = std::max(r.most_matches, PublicationMatches(w));
     }
     Sleep(0.002);
   }
-  return statuses;
+  return r;
 }
 
 // domains 140 (without security) and 141 (with): same commands, the same files bit for bit
@@ -270,7 +279,9 @@ TEST_F(SecurityTest, SecurityParticipantWithoutCertificateSeesNothingAndCommands
   EXPECT_EQ(SubscriptionMatches(status), 0);
   EXPECT_TRUE(intruder.DiscoveredTopics().empty());
   Process controller(ControllerArgs(kDomain, Keys("ctl")), Log("ctl"), Env());
-  EXPECT_EQ(RogueWhileRunning(node, command, status), 0);  // the node's status never came
+  const Rogue rogue = RogueWhileRunning(node, command, status, {command});
+  EXPECT_EQ(rogue.statuses, 0);  // the node's status never came
+  EXPECT_EQ(rogue.most_matches, 0);
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   ASSERT_TRUE(controller.Wait(kProcessTimeout));
@@ -467,14 +478,24 @@ TEST_F(SecurityTest, SecurityOpenOutputsLetAViewerWithoutCertificateReadButNotCo
       viewer.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "rt/towsim/status");
   const dds_entity_t command =
       viewer.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command");
+  // forged odometry and run control: refused by the controller (its governance admits
+  // authenticated participants only) and by the node (protected payloads)
+  const dds_entity_t odom =
+      viewer.Writer(&nav_msgs_msg_dds__Odometry__desc, "rt/towsim/tow_vehicle/odom");
+  const dds_entity_t control =
+      viewer.Writer(&towsim_msgs_msg_dds__SimControl__desc, "rt/towsim/sim_control");
   ASSERT_GT(status, 0);
   ASSERT_GT(command, 0);
+  ASSERT_GT(odom, 0);
+  ASSERT_GT(control, 0);
   Process node(NodeArgs(kDomain, (keys / "sim_node").string(), open), Log("node"), Env());
   EXPECT_TRUE(WaitFor([&] { return SubscriptionMatches(status) == 1; }));
   Sleep(kDiscoverySeconds);
   EXPECT_EQ(PublicationMatches(command), 0);
   Process controller(ControllerArgs(kDomain, (keys / "ctl").string()), Log("ctl"), Env());
-  const long statuses = RogueWhileRunning(node, command, status);
+  const Rogue rogue = RogueWhileRunning(node, command, status, {command, odom, control});
+  EXPECT_EQ(rogue.most_matches, 0);  // through the whole run
+  const long statuses = rogue.statuses;
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   ASSERT_TRUE(controller.Wait(kProcessTimeout));
