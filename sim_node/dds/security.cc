@@ -253,14 +253,13 @@ dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identit
   if (p < 0) {
     // "<file>: <why>" where OpenSSL finds the fault, then Cyclone's reason
     std::string file = Diagnose(files);
-    if (file.empty()) {
-      file = "DIR/NAME = " + identity + " (the certificates and the documents verify; see " +
-             "Cyclone's reason)";
-    }
+    if (file.empty()) file = "its files verify with OpenSSL (see Cyclone's reason)";
     throw SecurityError("--security " + identity + ": " + file + "; Cyclone refused the " +
                         "participant in " + where + " (" + dds_strretcode(p) +
                         "): " + (log.empty() ? std::string("no reason logged") : log));
   }
+  // errors Cyclone logged that did not stop it: as it would have printed them
+  if (!log.empty()) std::fprintf(stderr, "%s\n", log.c_str());
   return p;
 }
 
