@@ -162,6 +162,12 @@ struct Intruder {
     const dds_entity_t t = Topic(type, name);
     return t < 0 ? t : dds_create_reader(participant, t, nullptr, nullptr);
   }
+  dds_entity_t StatusReader() {
+    return Reader(&towsim_msgs_msg_dds__SimStatus__desc, "rt/towsim/status");
+  }
+  dds_entity_t CommandWriter(const std::string& body) {
+    return Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/" + body + "/command");
+  }
   // the names of the topics of every remote writer / reader discovered (builtin topics)
   std::vector<std::string> DiscoveredTopics() {
     std::vector<std::string> names;
@@ -248,6 +254,16 @@ Rogue RogueWhileRunning(Process& node, dds_entity_t command, dds_entity_t status
   return r;
 }
 
+// the run ends well and the node counted the authorised controller's commands, nothing else
+void ExpectTheControllersCommandsOnly(Process& node, Process& controller) {
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  ASSERT_TRUE(controller.Wait(kProcessTimeout));
+  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
+  EXPECT_EQ(CommandsReceived(node.out()), kSteps * kCommandedBodies) << node.out();
+  EXPECT_NE(node.out().find("rejected 0, clamped 0"), std::string::npos) << node.out();
+}
+
 // domains 140 (without security) and 141 (with): same commands, the same files bit for bit
 TEST_F(SecurityTest, SecurityAuthorisedControllerDrivesLockstepBitIdenticalToUnsecured) {
   const fs::path plain = tmp_.path() / "plain", secured = tmp_.path() / "secured";
@@ -267,10 +283,8 @@ TEST_F(SecurityTest, SecurityAuthorisedControllerDrivesLockstepBitIdenticalToUns
 TEST_F(SecurityTest, SecurityParticipantWithoutCertificateSeesNothingAndCommandsNothing) {
   constexpr int kDomain = 142;
   Intruder intruder(kDomain, "");
-  const dds_entity_t command =
-      intruder.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command");
-  const dds_entity_t status =
-      intruder.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "rt/towsim/status");
+  const dds_entity_t command = intruder.CommandWriter("tow_vehicle");
+  const dds_entity_t status = intruder.StatusReader();
   ASSERT_GT(command, 0);
   ASSERT_GT(status, 0);
   Process node(NodeArgs(kDomain, Keys("sim_node")), Log("node"), Env());
@@ -282,12 +296,7 @@ TEST_F(SecurityTest, SecurityParticipantWithoutCertificateSeesNothingAndCommands
   const Rogue rogue = RogueWhileRunning(node, command, status, {command});
   EXPECT_EQ(rogue.statuses, 0);  // the node's status never came
   EXPECT_EQ(rogue.most_matches, 0);
-  ASSERT_TRUE(node.Wait(kProcessTimeout));
-  EXPECT_EQ(node.exit_code(), 0) << node.err();
-  ASSERT_TRUE(controller.Wait(kProcessTimeout));
-  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
-  EXPECT_EQ(CommandsReceived(node.out()), kSteps * kCommandedBodies) << node.out();
-  EXPECT_NE(node.out().find("rejected 0, clamped 0"), std::string::npos) << node.out();
+  ExpectTheControllersCommandsOnly(node, controller);
   EXPECT_TRUE(intruder.DiscoveredTopics().empty());
 }
 
@@ -296,11 +305,9 @@ TEST_F(SecurityTest, SecurityParticipantWithoutCertificateSeesNothingAndCommands
 TEST_F(SecurityTest, SecurityIdentityWithoutCommandPermissionIsRefused) {
   constexpr int kDomain = 143;
   Intruder viewer(kDomain, Keys("viewer"));
-  const dds_entity_t status =
-      viewer.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "rt/towsim/status");
+  const dds_entity_t status = viewer.StatusReader();
   ASSERT_GT(status, 0);
-  const dds_entity_t command =
-      viewer.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command");
+  const dds_entity_t command = viewer.CommandWriter("tow_vehicle");
   EXPECT_EQ(command, DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) << dds_strretcode(command);
   const dds_entity_t control =
       viewer.Writer(&towsim_msgs_msg_dds__SimControl__desc, "rt/towsim/sim_control");
@@ -310,10 +317,7 @@ TEST_F(SecurityTest, SecurityIdentityWithoutCommandPermissionIsRefused) {
   // authenticated: its reader of the node's status matches
   EXPECT_TRUE(WaitFor([&] { return SubscriptionMatches(status) == 1; }));
   Process controller(ControllerArgs(kDomain, Keys("ctl")), Log("ctl"), Env());
-  ASSERT_TRUE(node.Wait(kProcessTimeout));
-  EXPECT_EQ(node.exit_code(), 0) << node.err();
-  ASSERT_TRUE(controller.Wait(kProcessTimeout));
-  EXPECT_EQ(CommandsReceived(node.out()), kSteps * kCommandedBodies) << node.out();
+  ExpectTheControllersCommandsOnly(node, controller);
   // and it read the status
   void* samples[1] = {};
   dds_sample_info_t info;
@@ -327,11 +331,9 @@ TEST_F(SecurityTest, SecurityIdentityWithoutCommandPermissionIsRefused) {
 TEST_F(SecurityTest, SecurityTowfishOnlyControllerCannotCommandTheTowVehicle) {
   constexpr int kDomain = 144;
   Intruder fish(kDomain, Keys("fish"));
-  const dds_entity_t towfish =
-      fish.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/towfish/command");
+  const dds_entity_t towfish = fish.CommandWriter("towfish");
   ASSERT_GT(towfish, 0) << dds_strretcode(towfish);
-  const dds_entity_t tow_vehicle =
-      fish.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command");
+  const dds_entity_t tow_vehicle = fish.CommandWriter("tow_vehicle");
   EXPECT_EQ(tow_vehicle, DDS_RETCODE_NOT_ALLOWED_BY_SECURITY) << dds_strretcode(tow_vehicle);
 
   Process node(NodeArgs(kDomain, Keys("sim_node")), Log("node"), Env());
@@ -474,10 +476,8 @@ TEST_F(SecurityTest, SecurityOpenOutputsLetAViewerWithoutCertificateReadButNotCo
   const fs::path keys = tmp_.path() / "open_keys";
   MakeIdentities({"--open-outputs", "sim_node", "ctl:tow_vehicle,towfish"}, keys);
   Intruder viewer(kDomain, "");
-  const dds_entity_t status =
-      viewer.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "rt/towsim/status");
-  const dds_entity_t command =
-      viewer.Writer(&towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command");
+  const dds_entity_t status = viewer.StatusReader();
+  const dds_entity_t command = viewer.CommandWriter("tow_vehicle");
   // forged odometry and run control: refused by the controller (its governance admits
   // authenticated participants only) and by the node (protected payloads)
   const dds_entity_t odom =
@@ -496,12 +496,7 @@ TEST_F(SecurityTest, SecurityOpenOutputsLetAViewerWithoutCertificateReadButNotCo
   const Rogue rogue = RogueWhileRunning(node, command, status, {command, odom, control});
   EXPECT_EQ(rogue.most_matches, 0);  // through the whole run
   const long statuses = rogue.statuses;
-  ASSERT_TRUE(node.Wait(kProcessTimeout));
-  EXPECT_EQ(node.exit_code(), 0) << node.err();
-  ASSERT_TRUE(controller.Wait(kProcessTimeout));
-  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
-  EXPECT_EQ(CommandsReceived(node.out()), kSteps * kCommandedBodies) << node.out();
-  EXPECT_NE(node.out().find("rejected 0, clamped 0"), std::string::npos) << node.out();
+  ExpectTheControllersCommandsOnly(node, controller);
   // the viewer watched the run: a status per step (best effort, keep last 1: some may be
   // overwritten between two takes)
   EXPECT_GT(statuses, 10);
