@@ -29,6 +29,7 @@ enum class MapKind {
   kCommand,      // bodies.<name>.command
   kIntegrator,   // integrator
   kPublish,      // publish
+  kSecurity,     // security
   kScriptEntry,  // script[i]
 };
 
