@@ -116,6 +116,9 @@ struct IntegratorSettings {
   int max_iterations = 20;    // Newton iterations per (sub)step
   int max_substep_level = 6;  // halve the step at most this many times (2^6 substeps)
   int max_coupling_iterations = 30;  // kStrong: joint-force iterations per step
+  // resample the waves at every Newton iteration instead of once per step (integrator.h; for
+  // accuracy checks)
+  bool waves_per_iteration = false;
 };
 
 // A 6-DOF vehicle of the scene (its model from config/vehicles/*.yaml).
