@@ -15,7 +15,7 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity) {
   const Model& m = sys.model();
   const CableParams& c = m.cable;
   const Environment& env = m.environment;
-  const double rel = (frame_velocity - env.current).norm();
+  const double rel = (frame_velocity - env.current.Velocity(0.0, 0.0)).norm();
   double f = std::abs(c.density - env.water_density) * c.area() * env.gravity * c.length;
   f += 0.5 * env.water_density * c.diameter * 1.2 * rel * rel * c.length;
   for (const SphereBody& b : m.bodies)

@@ -27,7 +27,7 @@ CableLoadContext MakeLoadContext(const Model& m) {
   ctx.fluid = {env.water_density, env.dynamic_viscosity};
   ctx.diameter = c.diameter;
   ctx.drag = c.loads.drag;
-  ctx.current = env.current;
+  ctx.current = env.current.Velocity(0.0, 0.0);  // the surface value of the field
   ctx.added_mass_per_length =
       c.loads.added_mass ? c.added_mass_coefficient * env.water_density * c.area() : 0.0;
   // Eq. 15-16: rho_c A g e_z (gravity) and -rho_w A g e_z (buoyancy), NED z down
@@ -196,7 +196,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   for (int b = 0; b < num_bodies(); ++b) {
     const SphereBody& body = model_.bodies[b];
     const int o = body_dof(b);
-    const Vec3 vr = v.segment<3>(o) - env.current;
+    const Vec3 vr = v.segment<3>(o) - env.current.Velocity(0.0, 0.0);
     const double speed = vr.norm();
     const double net_weight = (body.mass - env.water_density * body.volume) * env.gravity;
     Vec3 r = body_mass_eff_[b] * a.segment<3>(o) + load_scale * body_drag_k_[b] * speed * vr;

@@ -80,7 +80,7 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   const Vec3 omega = s.nu.tail<3>();
   // nu_r = nu - [R^T U_W; 0]: velocity relative to the (uniform, steady) current
-  const Vec3 v_c = r_wb.transpose() * env.current;
+  const Vec3 v_c = r_wb.transpose() * env.current.Velocity(0.0, 0.0);
   Vec6 nu_r = s.nu;
   nu_r.head<3>() -= v_c;
   const double u = nu_r(0), v = nu_r(1), w = nu_r(2);

@@ -23,7 +23,7 @@ Model FullModel() {
   m.cable.start.slope = Vec3(-1, 0, 2).normalized();
   m.cable.end.kind = EndKind::kBody;
   m.cable.end.body = 0;
-  m.environment.current = Vec3(0.2, 0.4, 0.0);
+  m.environment.current = CurrentField::Uniform(Vec3(0.2, 0.4, 0.0));
   SphereBody b;
   b.name = "fish";
   b.mass = 50;
