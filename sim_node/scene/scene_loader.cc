@@ -40,7 +40,7 @@ core::Environment ReadEnvironment(const Field& field) {
   e.water_density = env.Number("water_density", Range::Above(0.0), e.water_density);
   e.dynamic_viscosity = env.Number("dynamic_viscosity", Range::Above(0.0), e.dynamic_viscosity);
   e.gravity = env.Number("gravity", Range::AtLeast(0.0), e.gravity);
-  e.current = env.Vector("current", e.current);
+  e.current = core::CurrentField::Uniform(env.Vector("current", core::Vec3::Zero()));
   return e;
 }
 

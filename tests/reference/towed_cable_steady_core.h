@@ -28,7 +28,7 @@ inline TowedCableProblem SteadyTowProblem(const core::Model& m) {
   p.fluid.density = m.environment.water_density;
   p.fluid.dynamic_viscosity = m.environment.dynamic_viscosity;
   p.gravity = m.environment.gravity;
-  p.current = m.environment.current;
+  p.current = m.environment.current.Velocity(0.0, 0.0);
   p.tow_velocity = c.start.velocity;
   p.stretch_law = StretchLaw::kGreenTrueTension;  // the core's law
   return p;
