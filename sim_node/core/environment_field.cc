@@ -41,6 +41,9 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
     s.a_omega.push_back(p.amplitude * p.omega);
     s.a_omega2.push_back(p.amplitude * p.omega * p.omega);
     s.q.push_back(std::isfinite(wave_depth_) ? std::exp(-2.0 * p.k * wave_depth_) : 0.0);
+    s.inv_1mq.push_back(1.0 / (1.0 - s.q.back()));
+    s.cos_b.push_back(std::cos(p.direction));
+    s.sin_b.push_back(std::sin(p.direction));
   }
   amplitude_sum_ = std::accumulate(s.a.begin(), s.a.end(), 0.0);
 }
@@ -83,6 +86,11 @@ double EnvironmentField::Elevation(double x, double y, double t) const {
 }
 
 WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) const {
+  return SumWaves<true>(p_W, d_W, t);
+}
+
+template <bool kDerivative>
+WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const {
   WaveSample out;
   if (!has_waves_) return out;
   double r_rate;
@@ -107,7 +115,7 @@ WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) c
     // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: e^{k zeta})
     const double e = std::exp(k * ze);
     const double q = s.q[i];
-    const double inv = 1.0 / (1.0 - q);
+    const double inv = s.inv_1mq[i];
     if (always_wet && e * inv < kDecayCutoff) break;
     const double f = q / e;
     const double cc = (e + f) * inv, ss = (e - f) * inv;
@@ -115,13 +123,14 @@ WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) c
     const double c = std::cos(th), sn = std::sin(th);
     eta += s.a[i] * c;
     // direction of travel (cos b, sin b) = (kx, ky) / k
-    const double cb = k > 0.0 ? s.kx[i] / k : 1.0, sb = k > 0.0 ? s.ky[i] / k : 0.0;
+    const double cb = s.cos_b[i], sb = s.sin_b[i];
     const double aw = s.a_omega[i], aw2 = s.a_omega2[i];
     // u_h = a w C cos th, u_up = a w S sin th; du/dt: th_t = -w
     const double uh = aw * cc * c, up = aw * ss * sn;
     const double ah = aw2 * cc * sn, ap = -aw2 * ss * c;
     ux += uh * cb, uy += uh * sb, uu += up;
     ax += ah * cb, ay += ah * sb, au += ap;
+    if (!kDerivative) continue;
     // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
     const double g = s.kx[i] * d_W.x() + s.ky[i] * d_W.y();
     const double dcc = k * ss * dze, dss = k * cc * dze;
@@ -136,15 +145,20 @@ WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) c
   const Vec3 u(ux, uy, -uu), a(ax, ay, -au), du(dux, duy, -duu), da(dax, day, -dau);
   out.velocity = r * u;
   out.acceleration = r * a + r_rate * u;
-  out.d_velocity = r * du;
-  out.d_acceleration = r * da + r_rate * du;
+  if (kDerivative) {
+    out.d_velocity = r * du;
+    out.d_acceleration = r * da + r_rate * du;
+  }
   return out;
 }
+
+template WaveSample EnvironmentField::SumWaves<true>(const Vec3&, const Vec3&, double) const;
+template WaveSample EnvironmentField::SumWaves<false>(const Vec3&, const Vec3&, double) const;
 
 FlowSample EnvironmentField::Flow(const Vec3& p_W, double t) const {
   FlowSample f = Current(p_W, t);
   if (has_waves_) {
-    const WaveSample w = Waves(p_W, Vec3::Zero(), t);
+    const WaveSample w = SumWaves<false>(p_W, Vec3::Zero(), t);
     f.velocity += w.velocity;
     f.acceleration += w.acceleration;
   }

@@ -72,8 +72,10 @@ class EnvironmentField {
   // the wave components, structure of arrays, sorted by increasing k (so that a point at depth
   // can stop at the first component that has decayed, see kDecayCutoff)
   struct Components {
-    std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q;
+    std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
   };
+  template <bool kDerivative>
+  WaveSample SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const;
   double Ramp(double t, double* rate) const;
 
   Environment env_;

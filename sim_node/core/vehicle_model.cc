@@ -9,6 +9,7 @@
 #include "core/gauss_quadrature.h"
 #include "core/lifting_surface.h"
 #include "core/model.h"
+#include "core/seabed_contact.h"
 
 namespace towsim::core {
 namespace {
@@ -236,7 +237,8 @@ namespace {
 VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const VehicleState& s,
                         const VehicleFlow& flow, const VehicleCommand& cmd, const Vec3& force_B,
                         const Vec3& moment_B, const Mat6& m_rb,
-                        const Eigen::PartialPivLU<Mat6>& mass_lu) {
+                        const Eigen::PartialPivLU<Mat6>& mass_lu,
+                        const EnvironmentField* sea = nullptr) {
   VehicleDerivative d;
   const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   // p_dot_W = R_WB nu_1, attitude rate omega_B
@@ -245,6 +247,7 @@ VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const Ve
 
   // (M_RB + M_A) nu_dot = tau_hyd + tau_ext - C_RB(nu) nu   (paper Eq. 27-28, Fossen form)
   Vec6 rhs = HydrodynamicForces(p, env, s, flow);
+  if (sea && sea->has_seabed()) rhs += SeabedContactWrench(p, *sea, s);
   rhs.head<3>() += force_B;
   rhs.tail<3>() += moment_B;
   rhs -= M2C(m_rb, s.nu) * s.nu;
@@ -278,9 +281,31 @@ void AdvanceVehicle(const VehicleParams& p, const Environment& env, const Vehicl
   AdvanceVehicle(p, env, flow, flow, cmd, load, h, s);
 }
 
+Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
+                         const VehicleState& s) {
+  Vec6 tau = Vec6::Zero();
+  if (!sea.has_seabed()) return tau;
+  const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
+  const Vec3 v_o = s.nu.head<3>(), omega = s.nu.tail<3>();
+  const double area = p.length > 0.0 ? p.volume / p.length : 0.0;  // one hull section
+  auto contact = [&](const Vec3& r_B) {
+    const Vec3 x_W = s.p_W + r_wb * r_B;
+    const Vec3 v_W = r_wb * (v_o + omega.cross(r_B));
+    const ContactLoad c = SeabedContactLoad(sea, area, x_W, v_W, Vec3::Zero(), false);
+    if (!c.active) return;
+    const Vec3 f_B = r_wb.transpose() * c.f;
+    tau.head<3>() += f_B;
+    tau.tail<3>() += r_B.cross(f_B);
+  };
+  contact(Vec3(0.5 * p.length, 0.0, 0.0));
+  contact(Vec3(-0.5 * p.length, 0.0, 0.0));
+  for (const LiftingSurface& surf : p.surfaces) contact(surf.position_B);
+  return tau;
+}
+
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
                     const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
-                    double h, VehicleState* s) {
+                    double h, VehicleState* s, const EnvironmentField* sea) {
   // classical RK4; stage c in {0, 1/2, 1}: f_W(c) = f_W0 + c (f_W1 - f_W0), applied at point_B
   // with the stage attitude: force_B = R^T f_W, moment_B = point_B x force_B (paper Eq. 29-30)
   const VehicleState s0 = *s;
@@ -290,7 +315,7 @@ void AdvanceVehicle(const VehicleParams& p, const Environment& env, const Vehicl
     const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
     const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
     return Rates(p, env, x, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb,
-                 mass_lu);
+                 mass_lu, sea);
   };
   // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
   // components are integrated like the other states and renormalized at the end)

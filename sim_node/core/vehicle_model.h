@@ -171,12 +171,18 @@ VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
                                const Vec3& force_B, const Vec3& moment_B,
                                const VehicleFlow& flow = VehicleFlow());
 
+// Contact of the hull with the seabed (seabed_contact.h) at its contact points, the nose
+// (L/2, 0, 0), the tail (-L/2, 0, 0) and every lifting surface's centre of pressure (fins,
+// wings), each on a contact area of one hull section V / L: the wrench in B about O (zero
+// without a seabed).
+Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea, const VehicleState& s);
+
 // one explicit RK4 step of length h with the point load interpolated linearly in time and the
-// water interpolated linearly from flow0 (at the start) to flow1 (at the end);
-// the quaternion is renormalized
+// water interpolated linearly from flow0 (at the start) to flow1 (at the end); with `sea`, the
+// seabed contact at every stage (not lagged); the quaternion is renormalized
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
                     const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
-                    double h, VehicleState* s);
+                    double h, VehicleState* s, const EnvironmentField* sea = nullptr);
 // the same in still water
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
                     const PointLoad& load, double h, VehicleState* s);
