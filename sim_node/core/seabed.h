@@ -14,8 +14,8 @@
 // Normal into the water: the bottom is the surface F = z - d(x, y) = 0 with the water on the
 // side F < 0, so n = -grad F / |grad F| = (d_x, d_y, -1) / sqrt(1 + d_x^2 + d_y^2) (NED, it
 // points up). On the grid, d_x and d_y are those of the bilinear patch that holds the point
-// (one-sided on a cell edge: the cell with the larger index; outside the grid, the extended
-// constants give zero slope across the edge).
+// (on an interior cell edge, those of the cell with the larger index; outside the grid the
+// extended constants give zero slope across the edge the point lies beyond).
 //
 // The water depth the waves' dispersion relation uses (WaveDepth): the depth d(0, 0) under
 // the scene origin for every kind (flat: its depth), infinity when there is no seabed.
