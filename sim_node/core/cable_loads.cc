@@ -106,6 +106,13 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
       f_a -= AddedMassTangentDerivative(c, a, flow.acceleration);
     }
     Mat3 f_pos = f_r ? Mat3(-f_v * shear * Vec3::UnitZ().transpose()) : Mat3(Mat3::Zero());
+    if (fluid_inertia && !shear.isZero()) {
+      // the current's material acceleration U_z dU/dz varies with z: d/dz = (dU_z/dz) dU/dz
+      // (a piecewise-linear profile has no U'')
+      f_pos += ctx.fluid_inertia_per_length * NormalProjector(a) * (shear.z() * shear) *
+               Vec3::UnitZ().transpose();
+      f_r = true;
+    }
     if (contact) {
       // the seabed (seabed_contact.h): contact width = the cable's diameter; df/dr, df/dr_dot
       const ContactLoad cl = SeabedContactLoad(sea, ctx.diameter, Interpolate(p.n, e),

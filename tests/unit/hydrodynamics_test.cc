@@ -177,24 +177,54 @@ TEST(CableLoads, JacobiansMatchFiniteDifferences) {
   CheckLoadJacobians(env, nullptr);
 }
 
-// in a sea: a sheared current (dU/dz enters dR/de), waves held at the nodes (Morison's fluid
-// inertia turns with the tangent) and a sloping seabed the element lies on (penalty, damping,
-// friction: seabed_contact.h)
-TEST(CableLoads, JacobiansMatchFiniteDifferencesInASea) {
+// in a sea, each effect alone and all together: a sheared current (dU/dz enters dR/de), waves
+// held at the nodes (Morison's fluid inertia turns with the tangent) and a sloping seabed the
+// element lies on (penalty, damping, friction: seabed_contact.h)
+Environment ShearedCurrent() {
   Environment env;
   env.current = CurrentField::Profile(
       {{-1.0, Eigen::Vector3d(0.5, 0.1, 0.0)}, {2.0, Eigen::Vector3d(0.1, -0.3, 0.02)}});
+  return env;
+}
+
+ElementWaves SomeWaves() {
+  ElementWaves w;
+  for (int i = 0; i < 12; ++i) {
+    w.velocity(i) = 0.3 * std::sin(0.9 * i + 0.2);
+    w.acceleration(i) = 0.25 * std::cos(1.7 * i);
+  }
+  return w;
+}
+
+Environment OnASlopingSeabed(Environment env) {
   env.seabed = Seabed::Plane(0.1, 0.05, 0.3);
   SeabedContact c;
   c.stiffness = 2.0e4;
   c.damping = 300.0;
   c.friction = 0.6;
   env.seabed.set_contact(c);
-  ElementWaves w;
-  for (int i = 0; i < 12; ++i) {
-    w.velocity(i) = 0.3 * std::sin(0.9 * i + 0.2);
-    w.acceleration(i) = 0.25 * std::cos(1.7 * i);
-  }
+  return env;
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesInAShearedCurrent) {
+  CheckLoadJacobians(ShearedCurrent(), nullptr);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesInWaves) {
+  Environment env;
+  env.waves = WaveField::Regular(1.0, 5.0, 0.0, 0.0, 50.0, env.gravity, env.water_density);
+  const ElementWaves w = SomeWaves();
+  CheckLoadJacobians(env, &w);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesOnTheSeabed) {
+  CheckLoadJacobians(OnASlopingSeabed(Environment()), nullptr);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesInASea) {
+  Environment env = OnASlopingSeabed(ShearedCurrent());
+  env.waves = WaveField::Regular(1.0, 5.0, 0.0, 0.0, 50.0, env.gravity, env.water_density);
+  const ElementWaves w = SomeWaves();
   CheckLoadJacobians(env, &w);
 }
 
