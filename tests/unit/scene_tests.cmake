@@ -2,3 +2,6 @@
 towsim_add_test(scene_loader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/scene_loader_test.cc
   LIBS towsim::scene)
+towsim_add_test(environment_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/environment_reader_test.cc
+  LIBS towsim::scene)
