@@ -37,7 +37,11 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
       f.velocity = sea.uniform_current();
       return f;
     }
-    FlowSample f = sea.Current(Interpolate(p.n, e), t, shear);
+    FlowSample f;
+    if (sea.steady_uniform_current())
+      f.velocity = sea.uniform_current();  // waves only: no look-up per point
+    else
+      f = sea.Current(Interpolate(p.n, e), t, shear);
     if (waves) {
       f.velocity += Interpolate(p.n, waves->velocity);
       f.acceleration += Interpolate(p.n, waves->acceleration);

@@ -22,8 +22,9 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   const WaveField& w = env_.waves;
   has_waves_ = !w.empty();
   has_seabed_ = env_.seabed.present();
-  uniform_ = !has_waves_ && c.IsUniform() && c.IsSteady();
-  if (uniform_) uniform_current_ = c.Velocity(0.0, 0.0);
+  steady_uniform_current_ = c.IsUniform() && c.IsSteady();
+  uniform_ = !has_waves_ && steady_uniform_current_;
+  if (steady_uniform_current_) uniform_current_ = c.Velocity(0.0, 0.0);
   if (!has_waves_) return;
   wave_depth_ = w.depth();
   ramp_ = w.ramp();
@@ -61,7 +62,7 @@ double EnvironmentField::Ramp(double t, double* rate) const {
 
 FlowSample EnvironmentField::Current(const Vec3& p_W, double t, Vec3* shear) const {
   FlowSample f;
-  if (uniform_) {
+  if (steady_uniform_current_) {
     f.velocity = uniform_current_;
     if (shear) shear->setZero();
     return f;

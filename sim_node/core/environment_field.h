@@ -47,8 +47,10 @@ class EnvironmentField {
   const Environment& environment() const { return env_; }
   // the same flow at every point and time (a steady uniform current, no waves)
   bool uniform() const { return uniform_; }
-  // the current's velocity where uniform()
+  // the current's velocity where uniform() or steady_uniform_current()
   const Vec3& uniform_current() const { return uniform_current_; }
+  // the current alone is the same everywhere and always (waves may still be there)
+  bool steady_uniform_current() const { return steady_uniform_current_; }
   bool has_waves() const { return has_waves_; }
   bool has_seabed() const { return has_seabed_; }
 
@@ -80,6 +82,7 @@ class EnvironmentField {
 
   Environment env_;
   bool uniform_ = true;
+  bool steady_uniform_current_ = true;
   bool has_waves_ = false;
   bool has_seabed_ = false;
   Vec3 uniform_current_ = Vec3::Zero();

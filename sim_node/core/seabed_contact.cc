@@ -19,17 +19,25 @@ ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const V
   if (!(delta > 0.0)) return out;
   out.active = true;
   const SeabedContact& c = sea.seabed_contact();
-  // f_n = w (k delta - c v.n) n
+  // onset over kContactOnset: stiffness term k e(delta), e = delta^2 / (2 d0) below d0 and
+  // delta - d0 / 2 beyond, damping scaled by s = min(delta / d0, 1)
+  const double d0 = kContactOnset;
+  const bool ramp = delta < d0;
+  const double e = ramp ? 0.5 * delta * delta / d0 : delta - 0.5 * d0;
+  const double de = ramp ? delta / d0 : 1.0;  // de/ddelta (= s)
+  const double s = de, ds = ramp ? 1.0 / d0 : 0.0;
+  // f_n = w (k e(delta) - c s(delta) v.n) n
   const double vn = v.dot(n);
-  const double fn = width * (c.stiffness * delta - c.damping * vn);
+  const double fn = width * (c.stiffness * e - c.damping * s * vn);
   out.f = fn * n;
   out.normal = std::abs(fn);
   // d delta / dr = |n_z| (e_z - grad d), grad d = (d_x, d_y, 0) = -(n_x, n_y) / n_z
   Vec3 ddelta(0.0, 0.0, nz);
   if (nz > 0.0) ddelta += Vec3(n.x(), n.y(), 0.0) * (nz / n.z());
+  const double dfn_ddelta = width * (c.stiffness * de - c.damping * ds * vn);
   if (jacobians) {
-    out.df_dr = (width * c.stiffness) * n * ddelta.transpose();
-    out.df_dv = -(width * c.damping) * n * n.transpose();
+    out.df_dr = dfn_ddelta * n * ddelta.transpose();
+    out.df_dv = -(width * c.damping * s) * n * n.transpose();
   }
   const double mu = c.friction;
   if (mu <= 0.0) return out;
@@ -80,8 +88,8 @@ ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const V
   if (jacobians) {
     // d(|f_n| f_t)/dv = f_t d|f_n|/dv + |f_n| df_t/dv_t P; d|f_n|/dv = -sgn w c n^T,
     // d|f_n|/dr = sgn w k ddelta^T (the bed's normal and the tangent's direction held)
-    out.df_dv += -(sgn * width * c.damping) * ft * n.transpose() + out.normal * dft_dvt * p;
-    out.df_dr += (sgn * width * c.stiffness) * ft * ddelta.transpose();
+    out.df_dv += -(sgn * width * c.damping * s) * ft * n.transpose() + out.normal * dft_dvt * p;
+    out.df_dr += (sgn * dfn_ddelta) * ft * ddelta.transpose();
   }
   return out;
 }
