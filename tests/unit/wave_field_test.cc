@@ -80,8 +80,8 @@ struct Potential {
       const double th = c.k * (p.x() * std::cos(c.direction) + p.y() * std::sin(c.direction)) -
                         c.omega * t + c.phase;
       const double h = waves.depth();
-      const double f = std::isinf(h) ? std::exp(c.k * zeta)
-                                     : std::cosh(c.k * (zeta + h)) / std::cosh(c.k * h);
+      const double f =
+          std::isinf(h) ? std::exp(c.k * zeta) : std::cosh(c.k * (zeta + h)) / std::cosh(c.k * h);
       phi += c.amplitude * kG / c.omega * f * std::sin(th);
     }
     return phi;
@@ -104,7 +104,7 @@ std::vector<WaveField> TestSeas() {
 // velocity = grad phi (NED: w = d phi / dz_NED), acceleration = du/dt, p_d = -rho dphi/dt,
 // by central differences of the independent potential and of the field itself
 TEST(WaveField, AiryKinematicsAreDerivativesOfThePotential) {
-  constexpr double kD = 1e-4;  // [m], [s]: (k kD)^2 ~ 1e-9, round-off eps phi / kD ~ 1e-11
+  constexpr double kD = 1e-4;         // [m], [s]: (k kD)^2 ~ 1e-9, round-off eps phi / kD ~ 1e-11
   constexpr double kVelTol = 1e-7;    // [m/s], velocities ~ 0.5 m/s
   constexpr double kAccelTol = 1e-7;  // [m/s^2]
   constexpr double kPressTol = 1e-3;  // [Pa], pressures ~ 4e3 Pa
@@ -146,8 +146,8 @@ TEST(WaveField, IncompressibleAndSatisfiesTheSurfaceConditions) {
       for (int i = 0; i < 3; ++i) {
         Vec3 e = Vec3::Zero();
         e(i) = kD;
-        div += (w.Kinematics(p + e, t).velocity(i) - w.Kinematics(p - e, t).velocity(i)) /
-               (2.0 * kD);
+        div +=
+            (w.Kinematics(p + e, t).velocity(i) - w.Kinematics(p - e, t).velocity(i)) / (2.0 * kD);
       }
       EXPECT_LT(std::abs(div), kDivTol);
     }
@@ -159,8 +159,7 @@ TEST(WaveField, IncompressibleAndSatisfiesTheSurfaceConditions) {
       ASSERT_TRUE(k.wet);
       const double deta_dt = (w.Elevation(x, y, t + kD) - w.Elevation(x, y, t - kD)) / (2.0 * kD);
       EXPECT_NEAR(-k.velocity.z(), deta_dt, kSurfaceTol) << t;
-      EXPECT_NEAR(k.dynamic_pressure, 1025.0 * kG * k.elevation,
-                  kPressureTol * 1025.0 * kG * 0.75)
+      EXPECT_NEAR(k.dynamic_pressure, 1025.0 * kG * k.elevation, kPressureTol * 1025.0 * kG * 0.75)
           << t;
     }
   }
@@ -235,7 +234,8 @@ namespace {
 //   S(w) = 5/16 Hs^2 w_p^4 w^-5 exp(-5/4 (w_p / w)^4), int S = Hs^2 / 16
 double PiersonMoskowitz(double hs, double tp, double w) {
   const double wp = 2.0 * kPi / tp;
-  return 5.0 / 16.0 * hs * hs * std::pow(wp, 4) * std::pow(w, -5) * std::exp(-1.25 * std::pow(wp / w, 4));
+  return 5.0 / 16.0 * hs * hs * std::pow(wp, 4) * std::pow(w, -5) *
+         std::exp(-1.25 * std::pow(wp / w, 4));
 }
 
 TEST(WaveSpectrum, PiersonMoskowitzIsNormalisedInClosedForm) {
@@ -284,8 +284,8 @@ TEST(IrregularSea, RecordReproducesHsTpAndTheSpectrum) {
   constexpr double kDt = 0.5;      // [s]; Nyquist 2 pi rad/s is above the band's top (~6 w_p)
   constexpr int kSamples = 21600;  // 3 h, the usual length of a sea state
   constexpr int kSegment = 512;    // Welch: 256 s segments, dw = 0.0245 rad/s, 83 averaged
-  for (const SeaCase& c : {SeaCase{2.0, 8.0, 3.3, 1}, SeaCase{4.0, 12.0, 1.0, 2},
-                           SeaCase{1.0, 6.0, 5.0, 3}}) {
+  for (const SeaCase& c :
+       {SeaCase{2.0, 8.0, 3.3, 1}, SeaCase{4.0, 12.0, 1.0, 2}, SeaCase{1.0, 6.0, 5.0, 3}}) {
     WaveSpectrum s;
     s.kind = c.gamma == 1.0 ? WaveSpectrumKind::kPiersonMoskowitz : WaveSpectrumKind::kJonswap;
     s.hs = c.hs;
@@ -330,10 +330,11 @@ TEST(IrregularSea, RecordReproducesHsTpAndTheSpectrum) {
       worst = std::max(worst, std::abs(f_est - f_target) / m0);
     }
     EXPECT_LT(worst, kShapeTol) << "seed " << c.seed;
-    std::printf("Hs %.2f Tp %.1f gamma %.1f seed %d: record Hs %.4f m (%+.2f %%), Tp %.3f s "
-                "(%+.2f %%), worst cumulative-spectrum difference %.2f %% of m0\n",
-                c.hs, c.tp, c.gamma, static_cast<int>(c.seed), hs, 100.0 * (hs / c.hs - 1.0),
-                2.0 * kPi / w_peak, 100.0 * (2.0 * kPi / w_peak / c.tp - 1.0), 100.0 * worst);
+    std::printf(
+        "Hs %.2f Tp %.1f gamma %.1f seed %d: record Hs %.4f m (%+.2f %%), Tp %.3f s "
+        "(%+.2f %%), worst cumulative-spectrum difference %.2f %% of m0\n",
+        c.hs, c.tp, c.gamma, static_cast<int>(c.seed), hs, 100.0 * (hs / c.hs - 1.0),
+        2.0 * kPi / w_peak, 100.0 * (2.0 * kPi / w_peak / c.tp - 1.0), 100.0 * worst);
   }
 }
 
@@ -359,7 +360,8 @@ TEST(IrregularSea, RecordDoesNotRepeat) {
   }
   const double repeat = 2.0 * kPi / dw;  // [s]
   ASSERT_LT(repeat, kSamples * kDt / 2.0);
-  const std::vector<double> rho_sea = reference::Autocorrelation(Record(sea, kDt, kSamples), kSamples / 2);
+  const std::vector<double> rho_sea =
+      reference::Autocorrelation(Record(sea, kDt, kSamples), kSamples / 2);
   const std::vector<double> rho_grid =
       reference::Autocorrelation(Record(grid, kDt, kSamples), kSamples / 2);
   // beyond 10 Tp: the largest |rho|; the finite record biases rho by (N - k) / N, undone here
@@ -377,9 +379,10 @@ TEST(IrregularSea, RecordDoesNotRepeat) {
   constexpr double kDecorrelated = 0.5;
   const double worst = worst_beyond(rho_sea, 10.0 * s.tp);
   EXPECT_LT(worst, kDecorrelated);
-  std::printf("autocorrelation beyond 10 Tp over 1 h: random-frequency sea max %.3f; "
-              "equally spaced (dw = %.4f rad/s) at its repeat period %.1f s: %.3f\n",
-              worst, dw, repeat, rho_grid_repeat);
+  std::printf(
+      "autocorrelation beyond 10 Tp over 1 h: random-frequency sea max %.3f; "
+      "equally spaced (dw = %.4f rad/s) at its repeat period %.1f s: %.3f\n",
+      worst, dw, repeat, rho_grid_repeat);
 }
 
 }  // namespace
