@@ -317,5 +317,23 @@ TEST_F(EnvironmentReaderTest, SetIntoWavesIsValidated) {
             "environment.waves.jonswap.hs = -2 (--set): must be > 0");
 }
 
+// the shipped waves scene: Case 1's system in a JONSWAP sea (Hs 2 m, Tp 8 s) over 60 m of water
+TEST(ShippedScene, Case3WavesLoads) {
+  const core::Model m =
+      LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case3_waves.yaml");
+  const core::WaveField& w = m.environment.waves;
+  ASSERT_EQ(w.components().size(), 100u);
+  double m0 = 0.0;
+  for (const core::WaveComponent& c : w.components()) m0 += 0.5 * c.amplitude * c.amplitude;
+  EXPECT_NEAR(4.0 * std::sqrt(m0), 2.0, 1e-12);  // Hs
+  EXPECT_EQ(w.depth(), 60.0);
+  EXPECT_EQ(w.ramp(), 20.0);
+  EXPECT_DOUBLE_EQ(w.components()[0].direction, kPi);  // head sea: toward -x
+  EXPECT_EQ(m.environment.seabed.kind(), core::Seabed::Kind::kFlat);
+  EXPECT_EQ(m.environment.seabed.Depth(0.0, 0.0), 60.0);
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
+}
+
 }  // namespace
 }  // namespace towsim::scene
