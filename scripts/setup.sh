@@ -16,9 +16,10 @@ cd "$towsim_root"
 
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
                  cyclonedds-tools libgtest-dev libbenchmark-dev "$@")
-# who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
+# who asks for python3 (run.sh) gets matplotlib and numpy too, for scripts/plot_paper.py and
+# scripts/plot_waves.py
 for towsim_pkg in "$@"; do
-  if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib); fi
+  if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib python3-numpy); fi
 done
 
 if [[ "${TOWSIM_WITH_NODE:-0}" == 1 ]]; then

@@ -125,8 +125,7 @@ CurrentField::Vec3 CurrentField::SteadyShear(double z) const {
       // d/dz U_s (1 - z/D)^(1/p) = -U_s / (p D) (1 - z/D)^(1/p - 1); unbounded at z -> D for
       // p > 1, so the derivative is returned on [0, D) and zero outside
       if (z < 0.0 || z >= depth_) return Vec3::Zero();
-      return (-std::pow(1.0 - z / depth_, 1.0 / exponent_ - 1.0) / (exponent_ * depth_)) *
-             surface_;
+      return (-std::pow(1.0 - z / depth_, 1.0 / exponent_ - 1.0) / (exponent_ * depth_)) * surface_;
     }
   }
   return Vec3::Zero();

@@ -33,8 +33,8 @@ class CurrentField {
   enum class Kind { kUniform, kProfile, kPowerLaw };
 
   struct ProfileRow {
-    double depth = 0.0;              // z [m], NED, positive down
-    Vec3 velocity = Vec3::Zero();    // U_W [m/s]
+    double depth = 0.0;            // z [m], NED, positive down
+    Vec3 velocity = Vec3::Zero();  // U_W [m/s]
   };
   struct ScaleRow {
     double time = 0.0;   // t [s]

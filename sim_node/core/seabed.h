@@ -71,8 +71,8 @@ class Seabed {
   void set_contact(const SeabedContact& contact) { contact_ = contact; }
 
   // the data it was built from
-  double depth() const { return depth_; }              // d_0 (flat, plane)
-  double slope() const { return slope_; }              // [rad]
+  double depth() const { return depth_; }                      // d_0 (flat, plane)
+  double slope() const { return slope_; }                      // [rad]
   double slope_direction() const { return slope_direction_; }  // [rad]
   const std::vector<double>& grid_x() const { return x_; }
   const std::vector<double>& grid_y() const { return y_; }

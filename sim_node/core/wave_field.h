@@ -83,12 +83,12 @@ enum class WaveSpectrumKind { kJonswap, kPiersonMoskowitz };
 // An irregular long-crested sea.
 struct WaveSpectrum {
   WaveSpectrumKind kind = WaveSpectrumKind::kJonswap;
-  double hs = 0.0;           // significant wave height H_s = 4 sqrt(m0) [m], > 0
-  double tp = 0.0;           // peak period T_p = 2 pi / w_p [s], > 0
-  double gamma = 3.3;        // JONSWAP peak enhancement, >= 1 (1: Pierson-Moskowitz shape)
-  double direction = 0.0;    // [rad], toward which it travels
-  int components = 100;      // N >= 1
-  std::uint64_t seed = 1;    // of the frequencies and phases
+  double hs = 0.0;         // significant wave height H_s = 4 sqrt(m0) [m], > 0
+  double tp = 0.0;         // peak period T_p = 2 pi / w_p [s], > 0
+  double gamma = 3.3;      // JONSWAP peak enhancement, >= 1 (1: Pierson-Moskowitz shape)
+  double direction = 0.0;  // [rad], toward which it travels
+  int components = 100;    // N >= 1
+  std::uint64_t seed = 1;  // of the frequencies and phases
 };
 
 // S(w) [m^2 s/rad] of the spectrum, normalised so that its integral over (0, inf) is Hs^2/16:
@@ -139,17 +139,17 @@ class WaveField {
  private:
   // precomputed per component
   struct Term {
-    double kx, ky;       // k cos b, k sin b [1/m]
-    double k;            // [1/m]
-    double omega;        // [rad/s]
-    double phase;        // [rad]
-    double a;            // a [m]
-    double a_omega;      // a w [m/s]
-    double a_omega2;     // a w^2 [m/s^2]
-    double rho_g_a;      // rho g a [Pa]
-    double q;            // exp(-2 k h) (0: deep)
-    double inv_1mq;      // 1 / (1 - q)
-    double inv_1pq;      // 1 / (1 + q)
+    double kx, ky;    // k cos b, k sin b [1/m]
+    double k;         // [1/m]
+    double omega;     // [rad/s]
+    double phase;     // [rad]
+    double a;         // a [m]
+    double a_omega;   // a w [m/s]
+    double a_omega2;  // a w^2 [m/s^2]
+    double rho_g_a;   // rho g a [Pa]
+    double q;         // exp(-2 k h) (0: deep)
+    double inv_1mq;   // 1 / (1 - q)
+    double inv_1pq;   // 1 / (1 + q)
     double cos_b, sin_b;
   };
   // r(t) and dr/dt

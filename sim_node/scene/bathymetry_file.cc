@@ -60,8 +60,9 @@ bool ParseBathymetry(const std::string& text, const std::string& name, Bathymetr
   };
   const std::vector<Line> lines = Lines(text);
   if (lines.size() < 3) {
-    return fail(0, "must hold a line 'nx ny', the x coordinates and the y coordinates, then "
-                   "one line 'x y depth' per grid node");
+    return fail(0,
+                "must hold a line 'nx ny', the x coordinates and the y coordinates, then "
+                "one line 'x y depth' per grid node");
   }
   // nx ny
   int nx = 0, ny = 0;
@@ -79,8 +80,8 @@ bool ParseBathymetry(const std::string& text, const std::string& name, Bathymetr
     out->resize(n);
     for (int i = 0; i < n; ++i) {
       if (!ParseNumber(line.words[i], &(*out)[i])) {
-        return fail(line.number, std::string(axis) + " coordinate " + line.words[i] +
-                                     " is not a finite number");
+        return fail(line.number,
+                    std::string(axis) + " coordinate " + line.words[i] + " is not a finite number");
       }
       if (i > 0 && (*out)[i] <= (*out)[i - 1]) {
         return fail(line.number, std::string(axis) + " coordinates must increase strictly (" +
@@ -114,12 +115,12 @@ bool ParseBathymetry(const std::string& text, const std::string& name, Bathymetr
       return fail(line.number, "depth " + line.words[2] +
                                    " must be > 0 (positive down, below the mean surface)");
     }
-    const size_t k = static_cast<size_t>(iy - grid->y.begin()) * nx +
-                     static_cast<size_t>(ix - grid->x.begin());
+    const size_t k =
+        static_cast<size_t>(iy - grid->y.begin()) * nx + static_cast<size_t>(ix - grid->x.begin());
     if (given_at[k] != 0) {
       return fail(line.number, "node (" + line.words[0] + ", " + line.words[1] +
-                                   ") given twice (first at line " +
-                                   std::to_string(given_at[k]) + ")");
+                                   ") given twice (first at line " + std::to_string(given_at[k]) +
+                                   ")");
     }
     given_at[k] = line.number;
     grid->depth[k] = v[2];

@@ -44,8 +44,10 @@ void ReadTable(const Field& field, const char* first_name, const Range& first_ra
     const std::vector<Field> pair = item.Items();
     const double x = pair[0].Number(first_range);
     if (!rows->empty() && x <= rows->back().first) {
-      pair[0].Fail(std::string(first_name) + "s must increase strictly down the table (the row "
-                   "before has " + FormatNumber(rows->back().first) + ")");
+      pair[0].Fail(std::string(first_name) +
+                   "s must increase strictly down the table (the row "
+                   "before has " +
+                   FormatNumber(rows->back().first) + ")");
     }
     read_second(pair[1]);
     rows->emplace_back(x, pair[1]);
@@ -57,16 +59,18 @@ core::CurrentField ReadCurrent(const Field& field) {
   // [u, v, w]: uniform
   if (field.node().IsSequence()) return core::CurrentField::Uniform(field.Vector());
   if (!field.node().IsMap()) {
-    field.Fail("must be [u, v, w], {profile: [[depth, [u, v, w]], ...]} or "
-               "{power_law: {surface: [u, v, w], depth: D, exponent: 7}}");
+    field.Fail(
+        "must be [u, v, w], {profile: [[depth, [u, v, w]], ...]} or "
+        "{power_law: {surface: [u, v, w], depth: D, exponent: 7}}");
   }
   const MapReader current(field, MapKind::kCurrent);
   core::CurrentField c;
   if (OneOf(current, {"profile", "power_law"}) == 0) {
     // profile: [[depth >= 0, [u, v, w]], ...], depths increasing
     std::vector<std::pair<double, Field>> rows;
-    ReadTable(current.Get("profile"), "depth", Range::AtLeast(0.0),
-              [](const Field& v) { v.Vector(); }, &rows);
+    ReadTable(
+        current.Get("profile"), "depth", Range::AtLeast(0.0), [](const Field& v) { v.Vector(); },
+        &rows);
     std::vector<core::CurrentField::ProfileRow> profile;
     for (const auto& [depth, value] : rows) profile.push_back({depth, value.Vector()});
     c = core::CurrentField::Profile(std::move(profile));
@@ -81,8 +85,8 @@ core::CurrentField ReadCurrent(const Field& field) {
   if (current.Has("time_scale")) {
     // time_scale: [[t, s], ...], times increasing, s finite
     std::vector<std::pair<double, Field>> rows;
-    ReadTable(current.Get("time_scale"), "time", Range::Any(),
-              [](const Field& v) { v.Number(); }, &rows);
+    ReadTable(
+        current.Get("time_scale"), "time", Range::Any(), [](const Field& v) { v.Number(); }, &rows);
     std::vector<core::CurrentField::ScaleRow> scale;
     for (const auto& [t, value] : rows) scale.push_back({t, value.Number()});
     c.SetTimeScale(std::move(scale));
@@ -98,8 +102,9 @@ core::Seabed ReadSeabed(const Field& field, const std::string& base_dir) {
     // grid: a bathymetry file (bathymetry_file.h), relative to the scene's folder
     for (const char* key : {"depth", "slope_deg", "slope_direction_deg"}) {
       if (seabed.Has(key)) {
-        seabed.Get(key).Fail("the grid file gives the depths; leave out depth, slope_deg and "
-                             "slope_direction_deg");
+        seabed.Get(key).Fail(
+            "the grid file gives the depths; leave out depth, slope_deg and "
+            "slope_direction_deg");
       }
     }
     const Field grid = seabed.Get("grid");
@@ -158,18 +163,20 @@ core::WaveField ReadWaves(const Field& field, const core::Environment& env,
                                  env.gravity, env.water_density);
     // Miche's limit: a wave breaks above H = 0.142 L tanh(k h), L = 2 pi / k
     const double k = w.components().front().k;
-    const double limit = 0.142 * (2.0 * kPi / k) * (std::isfinite(depth) ? std::tanh(k * depth) : 1.0);
+    const double limit =
+        0.142 * (2.0 * kPi / k) * (std::isfinite(depth) ? std::tanh(k * depth) : 1.0);
     if (height > limit) {
-      regular.Get("height").Fail("must be <= the breaking height 0.142 L tanh(k h) = " +
-                                 FormatNumber(limit) + " m (wavelength L = " +
-                                 FormatNumber(2.0 * kPi / k) + " m): linear theory needs an "
-                                 "unbroken wave");
+      regular.Get("height").Fail(
+          "must be <= the breaking height 0.142 L tanh(k h) = " + FormatNumber(limit) +
+          " m (wavelength L = " + FormatNumber(2.0 * kPi / k) +
+          " m): linear theory needs an "
+          "unbroken wave");
     }
   } else {
     // jonswap / pierson_moskowitz: hs > 0, tp > 0, gamma >= 1, components in [1, 10000]
     const bool jonswap = kind == 1;
     const MapReader sea(waves.Get(jonswap ? "jonswap" : "pierson_moskowitz"),
-                        jonswap ? MapKind::kJonswap : MapKind::kPiersonMoskowitz);
+                        jonswap ? MapKind::kJonswap : MapKind::kPmSpectrum);
     core::WaveSpectrum s;
     s.kind = jonswap ? core::WaveSpectrumKind::kJonswap : core::WaveSpectrumKind::kPiersonMoskowitz;
     s.hs = sea.Number("hs", Range::Above(0.0));
@@ -186,8 +193,8 @@ core::WaveField ReadWaves(const Field& field, const core::Environment& env,
       shortest = std::min(shortest, 2.0 * kPi / c.omega);
     }
     if (shortest < min_period) {
-      sea.Get("tp").Fail("gives components as short as " + FormatNumber(shortest) +
-                         " s; each " + PeriodRule(time) + " (raise tp or lower time.step)");
+      sea.Get("tp").Fail("gives components as short as " + FormatNumber(shortest) + " s; each " +
+                         PeriodRule(time) + " (raise tp or lower time.step)");
     }
   }
   // ramp >= 0 [s]: cosine ramp of the amplitudes from t = 0
@@ -220,8 +227,8 @@ void CheckBodiesAboveSeabed(const Field& bodies, const core::Model& model) {
     if (p.z() > d) {
       MapReader(map.Get(name), MapKind::kBody)
           .Get("position")
-          .Fail("is below the seabed (depth " + FormatNumber(d) + " m at x = " +
-                FormatNumber(p.x()) + ", y = " + FormatNumber(p.y()) + ")");
+          .Fail("is below the seabed (depth " + FormatNumber(d) +
+                " m at x = " + FormatNumber(p.x()) + ", y = " + FormatNumber(p.y()) + ")");
     }
   };
   for (const core::SphereBody& b : model.bodies) check(b.name, b.position);

@@ -57,7 +57,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kWaves, {"regular", "jonswap", "pierson_moskowitz", "ramp"}},
       {MapKind::kRegularWave, {"height", "period", "direction_deg", "phase_deg"}},
       {MapKind::kJonswap, {"hs", "tp", "gamma", "direction_deg", "components", "seed"}},
-      {MapKind::kPiersonMoskowitz, {"hs", "tp", "direction_deg", "components", "seed"}},
+      {MapKind::kPmSpectrum, {"hs", "tp", "direction_deg", "components", "seed"}},
       {MapKind::kSeabed,
        {"depth", "slope_deg", "slope_direction_deg", "grid", "stiffness", "damping", "friction"}},
       {MapKind::kCable,
@@ -112,7 +112,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
     case MapKind::kWaves:
       if (key == "regular") return MapKind::kRegularWave;
       if (key == "jonswap") return MapKind::kJonswap;
-      if (key == "pierson_moskowitz") return MapKind::kPiersonMoskowitz;
+      if (key == "pierson_moskowitz") return MapKind::kPmSpectrum;
       return std::nullopt;
     case MapKind::kCurrent:
       if (key == "power_law") return MapKind::kPowerLaw;

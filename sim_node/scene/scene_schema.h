@@ -18,7 +18,7 @@ enum class MapKind {
   kWaves,        // environment.waves
   kRegularWave,  // environment.waves.regular
   kJonswap,      // environment.waves.jonswap
-  kPiersonMoskowitz,  // environment.waves.pierson_moskowitz
+  kPmSpectrum,   // environment.waves.pierson_moskowitz
   kSeabed,       // environment.seabed
   kCable,        // cable
   kEnd,          // cable.start, cable.end

@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 
+#include "damped_newton.h"
+
 namespace towsim::reference {
 namespace {
 
@@ -49,29 +51,16 @@ GroundedCatenarySolution SolveGroundedCatenary(const GroundedCatenaryProblem& p)
   const double lambda0 = ratio > 0.0 ? std::sqrt(3.0 * ratio) : 0.2;
   double h = std::abs(w * p.span / (2.0 * lambda0));
   double v = std::min(0.5 * w * (p.height / std::tanh(lambda0) + p.length), 0.99 * w * p.length);
-  Eigen::Vector2d r = Residual(p, h, v);
+  // damped Newton: stay in H > 0, 0 < V_F <= w L
   const double scale = std::hypot(p.span, p.height);
-  int it = 0;
-  for (; it < 200 && r.norm() > 1e-13 * scale; ++it) {
-    Eigen::Matrix2d jac;
-    const double dh = 1e-6 * h, dv = 1e-6 * v;
-    jac.col(0) = (Residual(p, h + dh, v) - Residual(p, h - dh, v)) / (2.0 * dh);
-    jac.col(1) = (Residual(p, h, v + dv) - Residual(p, h, v - dv)) / (2.0 * dv);
-    const Eigen::Vector2d step = -jac.partialPivLu().solve(r);
-    // damped: stay in H > 0, 0 < V_F <= w L
-    double lambda = 1.0;
-    for (int k = 0; k < 40; ++k, lambda *= 0.5) {
-      const double h_new = h + lambda * step(0), v_new = v + lambda * step(1);
-      if (h_new <= 0.0 || v_new <= 0.0 || v_new > w * p.length) continue;
-      const Eigen::Vector2d r_new = Residual(p, h_new, v_new);
-      if (r_new.norm() < r.norm() || k == 39) {
-        h = h_new;
-        v = v_new;
-        r = r_new;
-        break;
-      }
-    }
-  }
+  Eigen::Vector2d x(h, v), r;
+  DampedNewton2(
+      [&](const Eigen::Vector2d& y) { return Residual(p, y(0), y(1)); },
+      [](const Eigen::Vector2d& y) { return Eigen::Vector2d(1e-6 * y(0), 1e-6 * y(1)); },
+      [&](const Eigen::Vector2d& y) { return y(0) > 0.0 && y(1) > 0.0 && y(1) <= w * p.length; },
+      1e-13 * scale, 200, 40, &x, &r);
+  h = x(0);
+  v = x(1);
   if (!(r.norm() <= 1e-10 * scale)) {
     throw std::runtime_error("grounded catenary: Newton did not converge, residual " +
                              std::to_string(r.norm()) + " m");

@@ -72,9 +72,10 @@ TEST(GroundedCatenary, SuspendedPartIsIrvinesCatenaryFromTheTouchdown) {
   const GroundedCatenaryPoint above = GroundedCatenaryShape(p, s, s.grounded_length + 1e-9);
   EXPECT_NEAR(below.x, above.x, 1e-8);
   EXPECT_NEAR(above.y, 0.0, 1e-8);
-  std::printf("grounded catenary L = 400 m, span 370 m, height 55 m, w = 1000 N/m, EA = 5e7 N: "
-              "H = %.4f N, V_F = %.4f N, grounded %.4f m, touchdown %.4f m\n",
-              s.horizontal_tension, s.vertical_force, s.grounded_length, s.touchdown);
+  std::printf(
+      "grounded catenary L = 400 m, span 370 m, height 55 m, w = 1000 N/m, EA = 5e7 N: "
+      "H = %.4f N, V_F = %.4f N, grounded %.4f m, touchdown %.4f m\n",
+      s.horizontal_tension, s.vertical_force, s.grounded_length, s.touchdown);
 }
 
 // no grounded length: where the free catenary from the anchor leaves it horizontally

@@ -14,9 +14,9 @@ using Y = Eigen::Matrix<double, 6, 1>;
 
 struct Rhs {
   const TowedCableProblem& p;
-  double w;  // weight in water per unstretched length [N/m]
+  double w;                   // weight in water per unstretched length [N/m]
   Eigen::Vector3d v_uniform;  // uniform current: U_tow - U
-  double sphere_z = 0.0;  // with a profile: z of the sphere (NED)
+  double sphere_z = 0.0;      // with a profile: z of the sphere (NED)
 
   Y operator()(const Y& y) const {
     // V = U_tow - U(z_sphere + r_z) with a profile
@@ -72,8 +72,7 @@ double CableStretch(const TowedCableProblem& p, double tension) {
 namespace {
 
 // one RK4 integration from the sphere (at depth sphere_z with a profile) to the tow point
-TowedCableSolution Integrate(const TowedCableProblem& p, double sphere_z, int steps,
-                             int samples) {
+TowedCableSolution Integrate(const TowedCableProblem& p, double sphere_z, int steps, int samples) {
   const double area = 0.25 * kPi * p.diameter * p.diameter;
   const Rhs rhs{p, (p.density - p.fluid.density) * area * p.gravity, p.tow_velocity - p.current,
                 sphere_z};

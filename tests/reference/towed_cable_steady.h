@@ -55,7 +55,7 @@ struct TowedCableProblem {
   // point is at depth tow_depth
   std::function<Eigen::Vector3d(double z)> current_profile;
   double tow_depth = 0.0;  // z of the tow point (NED) [m], with current_profile
-  Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};        // U_tow [m/s]
+  Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};  // U_tow [m/s]
   // switches (for self-checks)
   bool cable_drag = true;
   bool cable_weight = true;
@@ -76,7 +76,7 @@ struct TowedCableSolution {
   double bottom_tension = 0.0;  // T(0) [N]
   Eigen::Vector3d top_force = Eigen::Vector3d::Zero();  // force of the cable on the tow point
   std::vector<TowedCablePoint> shape;                   // samples, s from 0 to L
-  double sphere_z = 0.0;   // z of the sphere (NED): tow_depth + depth [m], with current_profile
+  double sphere_z = 0.0;  // z of the sphere (NED): tow_depth + depth [m], with current_profile
   int shooting_iterations = 0;  // secant iterations on z_sphere (0 for a uniform current)
 };
 

@@ -202,7 +202,7 @@ TEST(TowedCableSteadyProfile, ShearedCurrentConvergesAndLiesBetweenItsExtremes) 
   EXPECT_NEAR(a.depth, b.depth, kConvergedRel * b.depth);
   EXPECT_NEAR(a.layback, b.layback, kConvergedRel * b.layback);
   TowedCableProblem slow, fast;
-  slow.current = profile(b.sphere_z);  // the weakest current along the cable (at the sphere)
+  slow.current = profile(b.sphere_z);   // the weakest current along the cable (at the sphere)
   fast.current = profile(p.tow_depth);  // the strongest (at the tow point)
   const TowedCableSolution s_slow = SolveTowedCableSteady(slow, 5000, 20);
   const TowedCableSolution s_fast = SolveTowedCableSteady(fast, 5000, 20);
@@ -213,12 +213,12 @@ TEST(TowedCableSteadyProfile, ShearedCurrentConvergesAndLiesBetweenItsExtremes) 
   EXPECT_GT(b.depth, s_fast.depth);
   EXPECT_GT(b.top_tension, s_slow.top_tension);
   EXPECT_LT(b.top_tension, s_fast.top_tension);
-  std::printf("power-law current 1 m/s against a 6 m/s tow: layback %.4f m, depth %.4f m, "
-              "top tension %.2f N (uniform at the sphere's %.3f m/s: %.4f / %.4f / %.2f; at the "
-              "tow point's 1 m/s: %.4f / %.4f / %.2f), %d secant iterations\n",
-              b.layback, b.depth, b.top_tension, -slow.current.x(), s_slow.layback, s_slow.depth,
-              s_slow.top_tension, s_fast.layback, s_fast.depth, s_fast.top_tension,
-              b.shooting_iterations);
+  std::printf(
+      "power-law current 1 m/s against a 6 m/s tow: layback %.4f m, depth %.4f m, "
+      "top tension %.2f N (uniform at the sphere's %.3f m/s: %.4f / %.4f / %.2f; at the "
+      "tow point's 1 m/s: %.4f / %.4f / %.2f), %d secant iterations\n",
+      b.layback, b.depth, b.top_tension, -slow.current.x(), s_slow.layback, s_slow.depth,
+      s_slow.top_tension, s_fast.layback, s_fast.depth, s_fast.top_tension, b.shooting_iterations);
 }
 
 }  // namespace

@@ -132,7 +132,8 @@ TEST_F(EnvironmentReaderTest, JonswapAndPiersonMoskowitzSeas) {
   EXPECT_EQ(again.environment.waves.components()[13].phase, w.components()[13].phase);
   const core::Model other = Load(R"(environment:
   waves: {jonswap: {hs: 2, tp: 8, components: 50, seed: 7}}
-)", {"environment.waves.jonswap.seed=8"});
+)",
+                                 {"environment.waves.jonswap.seed=8"});
   EXPECT_NE(other.environment.waves.components()[13].phase, w.components()[13].phase);
   const core::Model pm = Load(R"(environment:
   waves: {pierson_moskowitz: {hs: 3, tp: 10}}
@@ -156,8 +157,8 @@ TEST_F(EnvironmentReaderTest, FlatPlaneAndGridSeabeds) {
   EXPECT_EQ(plane.environment.seabed.kind(), core::Seabed::Kind::kPlane);
   EXPECT_NEAR(plane.environment.seabed.Depth(-10.0, 3.0), 70.0, 1e-12);
   // --set reaches into the seabed map
-  const core::Model set = Load("environment: {seabed: {depth: 60}}\n",
-                               {"environment.seabed.depth=80"});
+  const core::Model set =
+      Load("environment: {seabed: {depth: 60}}\n", {"environment.seabed.depth=80"});
   EXPECT_EQ(set.environment.seabed.Depth(0.0, 0.0), 80.0);
   Write("bed.txt", R"(# a 3 x 2 grid
 3 2
@@ -209,8 +210,7 @@ INSTANTIATE_TEST_SUITE_P(
                 "0, 0]]]}\n",
                 "environment.current.profile[2][0] = 30 (t.yaml:4): depths must increase "
                 "strictly down the table (the row before has 40)"},
-        BadCase{"negative_profile_depth",
-                "environment:\n  current: {profile: [[-5, [1, 0, 0]]]}\n",
+        BadCase{"negative_profile_depth", "environment:\n  current: {profile: [[-5, [1, 0, 0]]]}\n",
                 "environment.current.profile[0][0] = -5 (t.yaml:4): must be >= 0"},
         BadCase{"profile_row_shape", "environment:\n  current: {profile: [[0, 1, 0]]}\n",
                 "environment.current.profile[0] = [0, 1, 0] (t.yaml:4): must be a row [depth, "
@@ -220,8 +220,9 @@ INSTANTIATE_TEST_SUITE_P(
                 "{surface: [1, 0, 0], depth: 9}\n",
                 "environment.current.power_law = {surface: [1, 0, 0], depth: 9} (t.yaml:6): give "
                 "one of profile and power_law, not both"},
-        BadCase{"power_law_depth", "environment:\n  current: {power_law: {surface: [1, 0, 0], "
-                                   "depth: 0}}\n",
+        BadCase{"power_law_depth",
+                "environment:\n  current: {power_law: {surface: [1, 0, 0], "
+                "depth: 0}}\n",
                 "environment.current.power_law.depth = 0 (t.yaml:4): must be > 0"},
         BadCase{"time_scale_unsorted",
                 "environment:\n  current: {profile: [[0, [1, 0, 0]]], time_scale: [[5, 1], [5, "
@@ -233,11 +234,13 @@ INSTANTIATE_TEST_SUITE_P(
                 "environment.waves.jonswap.hs = -1 (t.yaml:4): must be > 0"},
         BadCase{"gamma_below_one", "environment:\n  waves: {jonswap: {hs: 2, tp: 8, gamma: 0.5}}\n",
                 "environment.waves.jonswap.gamma = 0.5 (t.yaml:4): must be >= 1"},
-        BadCase{"no_components", "environment:\n  waves: {jonswap: {hs: 2, tp: 8, components: 0}}\n",
+        BadCase{"no_components",
+                "environment:\n  waves: {jonswap: {hs: 2, tp: 8, components: 0}}\n",
                 "environment.waves.jonswap.components = 0 (t.yaml:4): must be >= 1"},
         BadCase{"gamma_in_pierson_moskowitz",
                 "environment:\n  waves: {pierson_moskowitz: {hs: 2, tp: 8, gamma: 2}}\n",
-                "environment.waves.pierson_moskowitz.gamma = 2 (t.yaml:4): unknown key (allowed: hs, tp, direction_deg, components, seed)"},
+                "environment.waves.pierson_moskowitz.gamma = 2 (t.yaml:4): unknown key (allowed: "
+                "hs, tp, direction_deg, components, seed)"},
         BadCase{"regular_period_too_short",
                 "environment:\n  waves: {regular: {height: 0.01, period: 0.1}}\n",
                 "environment.waves.regular.period = 0.1 (t.yaml:4): must be >= 20 time steps "
@@ -298,8 +301,10 @@ INSTANTIATE_TEST_SUITE_P(
 // the file that is not there: named with its path
 TEST_F(EnvironmentReaderTest, MissingGridFileNamesThePath) {
   const std::string what = Error("environment:\n  seabed: {grid: nowhere.txt}\n");
-  EXPECT_EQ(what, "environment.seabed.grid = nowhere.txt (t.yaml:4): cannot read the bathymetry "
-                  "file " + (dir_.path() / "nowhere.txt").string() + ": no such file");
+  EXPECT_EQ(what,
+            "environment.seabed.grid = nowhere.txt (t.yaml:4): cannot read the bathymetry "
+            "file " +
+                (dir_.path() / "nowhere.txt").string() + ": no such file");
 }
 
 // --set paths into the wave maps are checked against the schema
@@ -310,6 +315,24 @@ TEST_F(EnvironmentReaderTest, SetIntoWavesIsValidated) {
   EXPECT_EQ(Error("environment: {waves: {jonswap: {hs: 2, tp: 8}}}\n",
                   {"environment.waves.jonswap.hs=-2"}),
             "environment.waves.jonswap.hs = -2 (--set): must be > 0");
+}
+
+// the shipped waves scene: Case 1's system in a JONSWAP sea (Hs 2 m, Tp 8 s) over 60 m of water
+TEST(ShippedScene, Case3WavesLoads) {
+  const core::Model m =
+      LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case3_waves.yaml");
+  const core::WaveField& w = m.environment.waves;
+  ASSERT_EQ(w.components().size(), 100u);
+  double m0 = 0.0;
+  for (const core::WaveComponent& c : w.components()) m0 += 0.5 * c.amplitude * c.amplitude;
+  EXPECT_NEAR(4.0 * std::sqrt(m0), 2.0, 1e-12);  // Hs
+  EXPECT_EQ(w.depth(), 60.0);
+  EXPECT_EQ(w.ramp(), 20.0);
+  EXPECT_DOUBLE_EQ(w.components()[0].direction, kPi);  // head sea: toward -x
+  EXPECT_EQ(m.environment.seabed.kind(), core::Seabed::Kind::kFlat);
+  EXPECT_EQ(m.environment.seabed.Depth(0.0, 0.0), 60.0);
+  ASSERT_EQ(m.vehicles.size(), 2u);
+  EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
 }
 
 }  // namespace

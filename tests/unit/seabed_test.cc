@@ -87,7 +87,7 @@ TEST(Seabed, GridNormalMatchesDifferencesOfTheDepth) {
   for (double py : y)
     for (double px : x) d.push_back(50.0 + 5.0 * std::sin(0.05 * px) * std::cos(0.07 * py));
   const Seabed s = Seabed::Grid(x, y, d);
-  constexpr double kH = 1e-5;         // inside a cell: the patch is smooth there
+  constexpr double kH = 1e-5;          // inside a cell: the patch is smooth there
   constexpr double kNormalTol = 1e-8;  // central differences of a bilinear patch: exact in x
                                        // and y separately, round-off eps d / kH ~ 1e-9
   std::mt19937_64 rng(11);
