@@ -12,10 +12,14 @@ Vec12 UniformLoad(const Vec3& f, double l) {
   return q;
 }
 
-Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
-                          const EnvironmentField& sea, double t, const ElementWaves* waves,
-                          const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
-                          ElementLoadJacobians* jac) {
+namespace {
+
+// kSea = false: still water or a steady uniform current, no seabed (the sea's code compiled
+// out, so that a scene without it costs what it did before the sea existed)
+template <bool kSea>
+Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const EnvironmentField& sea,
+               double t, const ElementWaves* waves, const Vec12& e, const Vec12& e_dot,
+               const Vec12& e_ddot, double scale, ElementLoadJacobians* jac) {
   const double l = element.props().length;
   Vec12 r = -scale * UniformLoad(ctx.weight_per_length, l);
   if (jac) {
@@ -25,9 +29,9 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
   }
   const bool added = ctx.added_mass_per_length > 0.0;
   // water that moves differently from point to point or in time: sampled per Gauss point
-  const bool local_flow = !sea.uniform();
+  const bool local_flow = kSea && !sea.uniform();
   const bool fluid_inertia = local_flow && ctx.fluid_inertia_per_length > 0.0;
-  const bool contact = sea.has_seabed();
+  const bool contact = kSea && sea.has_seabed();
   if (!ctx.drag && !added && !fluid_inertia && !contact) return r;
 
   // the water at Gauss point p: the current at r(x), t and the waves interpolated from the nodes
@@ -94,7 +98,7 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
       f += scale * d.f;
       f_a += scale * d.df_da;
       f_v += scale * d.df_dv;
-      f_r = local_flow && !shear.isZero();
+      if constexpr (kSea) f_r = local_flow && !shear.isZero();
     }
     if (added) {
       // f_am = -m_a (I - t t^T) r_ddot  (Eq. 22-23)
@@ -109,23 +113,27 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
       f += c * (NormalProjector(a) * flow.acceleration);
       f_a -= AddedMassTangentDerivative(c, a, flow.acceleration);
     }
-    Mat3 f_pos = f_r ? Mat3(-f_v * shear * Vec3::UnitZ().transpose()) : Mat3(Mat3::Zero());
-    if (fluid_inertia && !shear.isZero()) {
-      // the current's material acceleration U_z dU/dz varies with z: d/dz = (dU_z/dz) dU/dz
-      // (a piecewise-linear profile has no U'')
-      f_pos += ctx.fluid_inertia_per_length * NormalProjector(a) * (shear.z() * shear) *
-               Vec3::UnitZ().transpose();
-      f_r = true;
-    }
-    if (contact) {
-      // the seabed (seabed_contact.h): contact width = the cable's diameter; df/dr, df/dr_dot
-      const ContactLoad cl = SeabedContactLoad(sea, ctx.diameter, Interpolate(p.n, e),
-                                               Interpolate(p.n, e_dot), a, true);
-      if (cl.active) {
-        f += cl.f;
-        f_pos += cl.df_dr;
-        f_v += cl.df_dv;
+    Mat3 f_pos;  // df/dr where f_r
+    if constexpr (kSea) {
+      if (f_r) f_pos = -f_v * shear * Vec3::UnitZ().transpose();
+      if (fluid_inertia && !shear.isZero()) {
+        // the current's material acceleration U_z dU/dz varies with z: d/dz = (dU_z/dz) dU/dz
+        // (a piecewise-linear profile has no U'')
+        const Mat3 d = ctx.fluid_inertia_per_length * NormalProjector(a) * (shear.z() * shear) *
+                       Vec3::UnitZ().transpose();
+        f_pos = f_r ? Mat3(f_pos + d) : d;
         f_r = true;
+      }
+      if (contact) {
+        // the seabed (seabed_contact.h): contact width = the cable's diameter; df/dr, df/dr_dot
+        const ContactLoad cl = SeabedContactLoad(sea, ctx.diameter, Interpolate(p.n, e),
+                                                 Interpolate(p.n, e_dot), a, true);
+        if (cl.active) {
+          f += cl.f;
+          f_pos = f_r ? Mat3(f_pos + cl.df_dr) : cl.df_dr;
+          f_v += cl.df_dv;
+          f_r = true;
+        }
       }
     }
     const double w = p.weight_dx;
@@ -134,13 +142,24 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
       for (int j = 0; j < 4; ++j) {
         // R = -int S^T f dx: dR/de = -int S_k f_a S'_j, dR/de_dot = -int S_k f_v S_j
         jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.dn[j]) * f_a;
-        if (f_r) jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_pos;
+        if (kSea && f_r) jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_pos;
         jac->d_dedot.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_v;
         if (added) jac->added_mass.block<3, 3>(3 * k, 3 * j) += (w * p.n[k] * p.n[j]) * m_pt;
       }
     }
   }
   return r;
+}
+
+}  // namespace
+
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
+                          const EnvironmentField& sea, double t, const ElementWaves* waves,
+                          const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
+                          ElementLoadJacobians* jac) {
+  if (sea.uniform() && !sea.has_seabed())
+    return Residual<false>(element, ctx, sea, t, waves, e, e_dot, e_ddot, scale, jac);
+  return Residual<true>(element, ctx, sea, t, waves, e, e_dot, e_ddot, scale, jac);
 }
 
 }  // namespace towsim::core

@@ -311,9 +311,14 @@ void AdvanceVehicle(const VehicleParams& p, const Environment& env, const Vehicl
   const VehicleState s0 = *s;
   const Mat6 m_rb = RigidBodyMassMatrix(p);
   const Eigen::PartialPivLU<Mat6> mass_lu(m_rb + p.added_mass);
+  // the same water all through the step (still water, a steady uniform current): no blending
+  const bool steady_flow = !flow0.accelerating && !flow1.accelerating && !flow0.waves &&
+                           !flow1.waves && flow0.origin.velocity == flow1.origin.velocity;
   auto rates = [&](const VehicleState& x, double c) {
     const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
     const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
+    if (steady_flow)
+      return Rates(p, env, x, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu, sea);
     return Rates(p, env, x, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb,
                  mass_lu, sea);
   };
