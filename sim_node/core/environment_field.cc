@@ -1,6 +1,8 @@
 #include "core/environment_field.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -14,6 +16,55 @@ constexpr double kPi = 3.14159265358979323846;
 // sorted by k, so every later one is smaller still (their sum stays below N times this of
 // the surface kinematics)
 constexpr double kDecayCutoff = 1e-9;
+
+// round to the nearest integer (|x| < 2^51) by the 1.5 * 2^52 shift, without a library call
+inline double RoundToInt(double x) {
+  constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52
+  return (x + kShift) - kShift;  // IEEE addition, not re-associated (no -ffast-math here)
+}
+
+// sin and cos of x (|x| < 1e9: wave phases) to about 1e-15 absolute, without the library's
+// range reduction and special cases: x is reduced to r in [-pi, pi], the Taylor series of sin
+// and cos to degree 17 and 18 give them at h = r / 2 (truncation (pi/2)^19 / 19! = 4e-15),
+// and the double-angle formulas return to r
+inline void SinCos(double x, double* s, double* c) {
+  constexpr double kInv2Pi = 0.15915494309189535;
+  constexpr double k2PiHi = 6.283185307179586, k2PiLo = 2.4492935982947064e-16;
+  const double n = RoundToInt(x * kInv2Pi);
+  const double r = (x - n * k2PiHi) - n * k2PiLo;
+  const double h = 0.5 * r, h2 = h * h;
+  // Horner in h^2 with the Taylor coefficients 1 / (2j (2j + 1)) and 1 / ((2j - 1) 2j)
+  double ps = 1.0, pc = 1.0;
+  constexpr double kS[8] = {1.0 / 272, 1.0 / 210, 1.0 / 156, 1.0 / 110,
+                            1.0 / 72,  1.0 / 42,  1.0 / 20,  1.0 / 6};
+  constexpr double kC[9] = {1.0 / 306, 1.0 / 240, 1.0 / 182, 1.0 / 132, 1.0 / 90,
+                            1.0 / 56,  1.0 / 30,  1.0 / 12,  1.0 / 2};
+  for (double k : kS) ps = 1.0 - h2 * k * ps;
+  for (double k : kC) pc = 1.0 - h2 * k * pc;
+  const double sh = h * ps, ch = pc;
+  *s = 2.0 * sh * ch;
+  *c = (ch - sh) * (ch + sh);
+}
+
+// e^y for y <= 0 (depth factors) to about 1e-15 relative: y = n ln 2 + r, |r| <= ln 2 / 2,
+// Taylor to degree 12 (truncation 0.347^13 / 13! = 2e-16), 2^n from its exponent bits;
+// below -700 (1e-304) it returns 0
+inline double ExpNonPositive(double y) {
+  if (y < -700.0) return 0.0;
+  constexpr double kInvLn2 = 1.4426950408889634;
+  constexpr double kLn2Hi = 0.6931471803691238, kLn2Lo = 1.9082149292705877e-10;
+  const double n = RoundToInt(y * kInvLn2);
+  const double r = (y - n * kLn2Hi) - n * kLn2Lo;
+  constexpr double kInv[12] = {1.0 / 12, 1.0 / 11, 1.0 / 10, 1.0 / 9, 1.0 / 8, 1.0 / 7,
+                               1.0 / 6,  1.0 / 5,  1.0 / 4,  1.0 / 3, 1.0 / 2, 1.0};
+  double p = 1.0;
+  for (double k : kInv) p = 1.0 + r * k * p;
+  // 2^n: the biased exponent n + 1023 in bits 52-62
+  const std::uint64_t bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(n) + 1023) << 52;
+  double two_n;
+  std::memcpy(&two_n, &bits, sizeof two_n);
+  return p * two_n;
+}
 
 }  // namespace
 
@@ -114,14 +165,15 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   for (size_t i = 0; i < n; ++i) {
     const double k = s.k[i];
     // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: e^{k zeta})
-    const double e = std::exp(k * ze);
+    const double e = ExpNonPositive(k * ze);
     const double q = s.q[i];
     const double inv = s.inv_1mq[i];
     if (always_wet && e * inv < kDecayCutoff) break;
     const double f = q / e;
     const double cc = (e + f) * inv, ss = (e - f) * inv;
     const double th = s.kx[i] * x + s.ky[i] * y - s.omega[i] * t + s.phase[i];
-    const double c = std::cos(th), sn = std::sin(th);
+    double c, sn;
+    SinCos(th, &sn, &c);
     eta += s.a[i] * c;
     // direction of travel (cos b, sin b) = (kx, ky) / k
     const double cb = s.cos_b[i], sb = s.sin_b[i];
