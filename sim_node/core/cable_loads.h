@@ -29,8 +29,8 @@ namespace towsim::core {
 
 struct CableLoadContext {
   FluidProperties fluid;
-  double diameter = 0.0;                 // d [m]
-  double added_mass_per_length = 0.0;    // m_a = C_a rho_w A [kg/m] (0: off)
+  double diameter = 0.0;                  // d [m]
+  double added_mass_per_length = 0.0;     // m_a = C_a rho_w A [kg/m] (0: off)
   double fluid_inertia_per_length = 0.0;  // rho_w A (buoyancy on) + m_a [kg/m]
   bool drag = false;
   Eigen::Vector3d weight_per_length = Eigen::Vector3d::Zero();  // (rho_c - rho_w) A g e_z [N/m]

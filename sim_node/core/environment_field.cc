@@ -1,9 +1,9 @@
 #include "core/environment_field.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -159,7 +159,7 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   // may stop at the first decayed component
   const bool always_wet = zeta < -r * amplitude_sum_;
   double eta = 0.0;
-  double ux = 0.0, uy = 0.0, uu = 0.0, ax = 0.0, ay = 0.0, au = 0.0;     // u_h, u_up, ...
+  double ux = 0.0, uy = 0.0, uu = 0.0, ax = 0.0, ay = 0.0, au = 0.0;  // u_h, u_up, ...
   double dux = 0.0, duy = 0.0, duu = 0.0, dax = 0.0, day = 0.0, dau = 0.0;
   const size_t n = s.k.size();
   for (size_t i = 0; i < n; ++i) {

@@ -87,8 +87,8 @@ class EnvironmentField {
   bool has_seabed_ = false;
   Vec3 uniform_current_ = Vec3::Zero();
   Components waves_;
-  double wave_depth_ = 0.0;  // h [m], infinity for deep water
-  double ramp_ = 0.0;        // [s]
+  double wave_depth_ = 0.0;     // h [m], infinity for deep water
+  double ramp_ = 0.0;           // [s]
   double amplitude_sum_ = 0.0;  // sum a_i: no crest rises higher [m]
 };
 

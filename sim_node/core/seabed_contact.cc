@@ -46,7 +46,7 @@ ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const V
   const Vec3 vt = p * v;
   Vec3 ta = p * a;
   const double ta_norm = ta.norm();
-  const double mu_a = mu, mu_l = mu;  // one coefficient in the scene: axial = lateral
+  const double mu_a = mu, mu_l = mu;          // one coefficient in the scene: axial = lateral
   const double sgn = fn >= 0.0 ? 1.0 : -1.0;  // d|f_n| = sgn d f_n
   // isotropic when the two coefficients agree (or no tangent): f_t = -|f_n| mu g(|v_t|) v_t,
   // g(s) = tanh(s / v_s) / s (-> 1 / v_s at s = 0)

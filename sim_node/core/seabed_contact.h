@@ -37,18 +37,17 @@ constexpr double kContactOnset = 1e-3;
 constexpr double kFrictionSlipSpeed = 0.01;
 
 struct ContactLoad {
-  bool active = false;                                  // in contact
-  Eigen::Vector3d f = Eigen::Vector3d::Zero();          // force (per unit length, or a force)
-  Eigen::Matrix3d df_dr = Eigen::Matrix3d::Zero();      // d f / d r
-  Eigen::Matrix3d df_dv = Eigen::Matrix3d::Zero();      // d f / d v
-  double normal = 0.0;                                  // |f_n|
+  bool active = false;                              // in contact
+  Eigen::Vector3d f = Eigen::Vector3d::Zero();      // force (per unit length, or a force)
+  Eigen::Matrix3d df_dr = Eigen::Matrix3d::Zero();  // d f / d r
+  Eigen::Matrix3d df_dv = Eigen::Matrix3d::Zero();  // d f / d v
+  double normal = 0.0;                              // |f_n|
 };
 
 // the contact load at r (velocity v, cable tangent a: only its direction is used; zero: the
 // friction is isotropic) for a contact width w [m] (a point of contact area A: pass w = A, the
 // load is then a force); the Jacobians when asked
 ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const Eigen::Vector3d& r,
-                              const Eigen::Vector3d& v, const Eigen::Vector3d& a,
-                              bool jacobians);
+                              const Eigen::Vector3d& v, const Eigen::Vector3d& a, bool jacobians);
 
 }  // namespace towsim::core

@@ -216,8 +216,8 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
       j = cf.c_a * mass + cf.c_q * k;
       if (cf.c_v != 0.0) j += cf.c_v * c;
     } else {
-      const Vec12 rl = ElementLoadResidual(element_, loads_, sea_, t, waves ? &ew : nullptr, ee,
-                                           ed, ea, load_scale, jac ? &lj : nullptr);
+      const Vec12 rl = ElementLoadResidual(element_, loads_, sea_, t, waves ? &ew : nullptr, ee, ed,
+                                           ea, load_scale, jac ? &lj : nullptr);
       residual->segment<12>(o) += element_.MassTimes(ea) + force + rl;
       if (!jac) continue;
       // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
@@ -268,8 +268,8 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     if (contact.active) jb -= cf.c_q * contact.df_dr + cf.c_v * contact.df_dv;
     if (speed > 0.0) {
       // d(k |V| V)/dV; V depends on v (c_v) and, in a sheared current, on z (c_q)
-      const Mat3 dd = load_scale * body_drag_k_[b] *
-                      (speed * Mat3::Identity() + vr * vr.transpose() / speed);
+      const Mat3 dd =
+          load_scale * body_drag_k_[b] * (speed * Mat3::Identity() + vr * vr.transpose() / speed);
       if (cf.c_v != 0.0) jb += cf.c_v * dd;
       if (!shear.isZero()) jb -= cf.c_q * dd * shear * Vec3::UnitZ().transpose();
     }

@@ -132,8 +132,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       for (int e = 0; e < 2; ++e)
         if (vehicle_end_[e] == v)
           load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
-      AdvanceVehicle(model.vehicles[v].params, model.environment, flow0_[v], flow1_[v],
-                     commands[v], load, h, &vehicles[v], &sea);
+      AdvanceVehicle(model.vehicles[v].params, model.environment, flow0_[v], flow1_[v], commands[v],
+                     load, h, &vehicles[v], &sea);
     }
     // the cable with the attachment points as driven supports
     double moved = 0.0;

@@ -319,8 +319,8 @@ void AdvanceVehicle(const VehicleParams& p, const Environment& env, const Vehicl
     const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
     if (steady_flow)
       return Rates(p, env, x, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu, sea);
-    return Rates(p, env, x, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb,
-                 mass_lu, sea);
+    return Rates(p, env, x, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu,
+                 sea);
   };
   // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
   // components are integrated like the other states and renormalized at the end)

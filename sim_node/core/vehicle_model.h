@@ -140,8 +140,8 @@ struct VehicleDerivative {
   double thrust_dot = 0.0, rudder_dot = 0.0, elevator_dot = 0.0;
 };
 
-struct Environment;       // model.h
-class EnvironmentField;   // environment_field.h
+struct Environment;      // model.h
+class EnvironmentField;  // environment_field.h
 
 // The water at a vehicle at one instant and pose: at the hull's Gauss stations (the middle one
 // is the origin O, where the relative velocity is taken) and, for a surface-piercing vehicle,
@@ -149,10 +149,10 @@ class EnvironmentField;   // environment_field.h
 struct VehicleFlow {
   static constexpr int kHullStations = 3;       // Gauss points along x_B in [-L/2, L/2]
   static constexpr int kWaterlineStations = 4;  // Gauss points along the waterline
-  FlowSample origin;                             // at O
+  FlowSample origin;                            // at O
   bool accelerating = false;  // hull_acceleration_W set (the water accelerates somewhere)
   std::array<Vec3, kHullStations> hull_acceleration_W{};
-  bool waves = false;  // elevation set
+  bool waves = false;                                  // elevation set
   std::array<double, kWaterlineStations> elevation{};  // eta [m], positive up
   // (1 - c) *this + c other
   VehicleFlow Lerp(const VehicleFlow& other, double c) const;
@@ -175,7 +175,8 @@ VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
 // (L/2, 0, 0), the tail (-L/2, 0, 0) and every lifting surface's centre of pressure (fins,
 // wings), each on a contact area of one hull section V / L: the wrench in B about O (zero
 // without a seabed).
-Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea, const VehicleState& s);
+Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
+                         const VehicleState& s);
 
 // one explicit RK4 step of length h with the point load interpolated linearly in time and the
 // water interpolated linearly from flow0 (at the start) to flow1 (at the end); with `sea`, the

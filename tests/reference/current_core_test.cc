@@ -48,7 +48,8 @@ TEST(CurrentCore, HeldInACurrentIsTowedThroughStillWater) {
     if (step % 20) continue;
     const Vec3 top_a = towed.cable.start.position + a.time() * u;
     for (int i = 0; i < a.num_nodes(); ++i) {
-      const Vec3 ra = a.node_position(i) - top_a, rb = b.node_position(i) - held.cable.start.position;
+      const Vec3 ra = a.node_position(i) - top_a,
+                 rb = b.node_position(i) - held.cable.start.position;
       worst_shape = std::max(worst_shape, (ra - rb).norm());
       worst_tension = std::max(worst_tension, std::abs(a.node_tension(i) - b.node_tension(i)));
       scale_tension = std::max(scale_tension, a.node_tension(i));
@@ -78,10 +79,10 @@ TEST(CurrentCore, SteadyTowInADepthVaryingCurrent) {
   // uniform current in steady_tow_core_test), and the profile's kinks inside elements, which
   // 5-point Gauss quadrature integrates to O(l^2) of the slope jump: 1e-3
   constexpr double kShearedRelTol = 1e-3;
-  std::printf("sheared steady tow: layback %.4f (ref %.4f) m, depth %.4f (ref %.4f) m, tension "
-              "%.2f (ref %.2f) N, sideways %.4f m\n",
-              s0.layback, ref.layback, s0.depth, ref.depth, s0.tension, ref.top_tension,
-              side.y());
+  std::printf(
+      "sheared steady tow: layback %.4f (ref %.4f) m, depth %.4f (ref %.4f) m, tension "
+      "%.2f (ref %.2f) N, sideways %.4f m\n",
+      s0.layback, ref.layback, s0.depth, ref.depth, s0.tension, ref.top_tension, side.y());
   EXPECT_NEAR(s0.layback, ref.layback, kShearedRelTol * ref.layback);
   EXPECT_NEAR(s0.depth, ref.depth, kShearedRelTol * ref.depth);
   EXPECT_NEAR(s0.tension, ref.top_tension, kShearedRelTol * ref.top_tension);

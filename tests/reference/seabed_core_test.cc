@@ -56,8 +56,8 @@ TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
   const int samples = 4000;
   for (int i = 0; i <= samples; ++i) {
     const double s = m.cable.length * i / samples;
-    const int e = std::min(static_cast<int>(s / (m.cable.length / m.cable.elements)),
-                           m.cable.elements - 1);
+    const int e =
+        std::min(static_cast<int>(s / (m.cable.length / m.cable.elements)), m.cable.elements - 1);
     const double xi = s / (m.cable.length / m.cable.elements) - e;
     // cubic Hermite between nodes e and e + 1 (the element's own interpolation)
     const double l = m.cable.length / m.cable.elements;
@@ -73,13 +73,14 @@ TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
     }
   }
   const double tension = sim.end_force(1).norm();
-  std::printf("grounded catenary: fairlead tension %.3f N (ref %.3f), touchdown x %.3f m (ref "
-              "%.3f), grounded length ref %.3f m\n",
-              tension, ref.fairlead_tension, touchdown, ref.touchdown, ref.grounded_length);
+  std::printf(
+      "grounded catenary: fairlead tension %.3f N (ref %.3f), touchdown x %.3f m (ref "
+      "%.3f), grounded length ref %.3f m\n",
+      tension, ref.fairlead_tension, touchdown, ref.touchdown, ref.grounded_length);
   // 40 elements of 5 m: the curvature jumps from 0 to w/H at touchdown, which a cubic element
   // smears over itself: the touchdown within half an element; the fairlead tension depends
   // on the grounded length only through w x the suspended length: 1e-3
-  constexpr double kTouchdownTol = 2.5;       // [m], half an element
+  constexpr double kTouchdownTol = 2.5;  // [m], half an element
   constexpr double kFairleadRelTol = 1e-3;
   EXPECT_NEAR(touchdown, ref.touchdown, kTouchdownTol);
   EXPECT_NEAR(tension, ref.fairlead_tension, kFairleadRelTol * ref.fairlead_tension);
@@ -114,9 +115,10 @@ TEST(SeabedCore, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight) {
   // penetration below it)
   const double grounded = WeightInWater(m) * m.cable.length - sim.end_force(0).z();
   const double expected = kMu * grounded;
-  std::printf("dragged cable: pull %.4f N, mu x grounded weight %.4f N (weight %.4f N, held by "
-              "the support %.4f N)\n",
-              pull, expected, WeightInWater(m) * m.cable.length, sim.end_force(0).z());
+  std::printf(
+      "dragged cable: pull %.4f N, mu x grounded weight %.4f N (weight %.4f N, held by "
+      "the support %.4f N)\n",
+      pull, expected, WeightInWater(m) * m.cable.length, sim.end_force(0).z());
   // steady sliding: tanh(10) = 1 - 4e-9; the normal force is the grounded weight exactly
   constexpr double kFrictionRelTol = 1e-3;
   EXPECT_NEAR(pull, expected, kFrictionRelTol * expected);

@@ -61,8 +61,9 @@ TEST(WaveResponseCore, NeutralSphereMovesOnTheLinearOrbit) {
   Model m;
   m.time.step = 0.02;
   Environment& env = m.environment;
-  env.waves = WaveField::Regular(kHeight, kPeriod, 0.0, 0.0, std::numeric_limits<double>::infinity(),
-                                 env.gravity, env.water_density);
+  env.waves =
+      WaveField::Regular(kHeight, kPeriod, 0.0, 0.0, std::numeric_limits<double>::infinity(),
+                         env.gravity, env.water_density);
   env.waves.set_ramp(2.0 * kPeriod);
   // a short cable hanging far away and deep (e^{-k z} = 1e-14 there): the sphere is free
   m.cable.length = 2.0;
@@ -129,8 +130,8 @@ double HeaveRao(const Model& scene, double period) {
 }
 
 TEST(WaveResponseCore, TowVehicleHeavesWithLongWavesAndNotWithShortOnes) {
-  const Model scene = scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) +
-                                       "/config/scenes/case1_forward.yaml");
+  const Model scene =
+      scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml");
   ASSERT_GT(scene.vehicles.at(0).params.waterplane_area, 0.0);
   // 30 s: wavelength 1405 m = 170 hull lengths; the single-degree-of-freedom balance of the
   // waterline stiffness rho g A_wp against the hull's inertia at the hull's depth factor
@@ -147,8 +148,8 @@ TEST(WaveResponseCore, TowVehicleHeavesWithLongWavesAndNotWithShortOnes) {
 }
 
 TEST(WaveResponseCore, WavesHeldOverAStepAgreeWithWavesResampledEveryIteration) {
-  const Model held = scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) +
-                                      "/config/scenes/case3_waves.yaml");
+  const Model held =
+      scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case3_waves.yaml");
   Model resampled = held;
   resampled.integrator.waves_per_iteration = true;
   Simulation a(held), b(resampled);
@@ -163,14 +164,15 @@ TEST(WaveResponseCore, WavesHeldOverAStepAgreeWithWavesResampledEveryIteration) 
     heave_fish = std::max(heave_fish, std::abs(a.body_position(1).z() - z_fish0));
     heave_tow = std::max(heave_tow, std::abs(a.body_position(0).z() - z_tow0));
   }
-  std::printf("waves held over a step vs resampled every iteration, Case 3, 60 s: towfish z "
-              "%.2e m (it moved %.3f m), tow vehicle z %.2e m (it moved %.3f m), top tension %.2e "
-              "relative\n",
-              dz_fish, heave_fish, dz_tow, heave_tow, dt_rel);
+  std::printf(
+      "waves held over a step vs resampled every iteration, Case 3, 60 s: towfish z "
+      "%.2e m (it moved %.3f m), tow vehicle z %.2e m (it moved %.3f m), top tension %.2e "
+      "relative\n",
+      dz_fish, heave_fish, dz_tow, heave_tow, dt_rel);
   // the predicted positions differ from the converged ones by O(h^2) of the acceleration
   // change over a step, a few mm for h = 0.05 s, where the waves vary over metres: the held
   // samples move the motion by well under a millimetre and the tension by well under 1e-3
-  constexpr double kHeldMotionTol = 1e-3;    // [m]
+  constexpr double kHeldMotionTol = 1e-3;  // [m]
   constexpr double kHeldTensionRelTol = 1e-3;
   EXPECT_LT(dz_fish, kHeldMotionTol);
   EXPECT_LT(dz_tow, kHeldMotionTol);

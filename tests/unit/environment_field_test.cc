@@ -51,8 +51,8 @@ TEST(EnvironmentField, WavesAreTheWaveFieldsKinematics) {
     ASSERT_TRUE(sea.has_waves());
     ASSERT_FALSE(sea.uniform());
     for (const double t : {3.0, 40.0, 333.3}) {
-      for (const Vec3& p : {Vec3(0, 0, 0.5), Vec3(12, -3, 4), Vec3(-50, 20, 14.0),
-                            Vec3(5, 5, -0.2), Vec3(100, 0, 80.0)}) {
+      for (const Vec3& p : {Vec3(0, 0, 0.5), Vec3(12, -3, 4), Vec3(-50, 20, 14.0), Vec3(5, 5, -0.2),
+                            Vec3(100, 0, 80.0)}) {
         const WaveKinematics ref = env.waves.Kinematics(p, t);
         const WaveSample w = sea.Waves(p, Vec3::Zero(), t);
         EXPECT_LT((w.velocity - ref.velocity).norm(), kSameTheoryAbsTol)
@@ -69,7 +69,7 @@ TEST(EnvironmentField, WavesAreTheWaveFieldsKinematics) {
 TEST(EnvironmentField, WaveDerivativeAlongADirectionIsTheFiniteDifference) {
   // central differences with step s: truncation (k s)^2 / 6 of the largest k's term, round-off
   // 1e-16 / s: s = 1e-4 m gives about 1e-8 relative to the kinematics' scale (~1 m/s)
-  constexpr double kStep = 1e-4;          // [m]
+  constexpr double kStep = 1e-4;              // [m]
   constexpr double kDerivativeAbsTol = 1e-6;  // [1/s], [1/s^2]
   for (const double depth : {kInf, 40.0}) {
     const EnvironmentField sea(JonswapSea(depth));
@@ -139,9 +139,10 @@ TEST(EnvironmentField, HermiteWavesBetweenNodesMatchTheExactKinematics) {
       std::printf("element %d (top at %.1f m): bound %.2e m/s, %.2e m/s^2\n", e, r0.z(), bound_v,
                   bound_a);
   }
-  std::printf("Hermite waves on 10 m elements: worst velocity error %.2e of %.3f m/s, "
-              "acceleration %.2e of %.3f m/s^2 (docs/environment.md)\n",
-              worst_v / scale_v, scale_v, worst_a / scale_a, scale_a);
+  std::printf(
+      "Hermite waves on 10 m elements: worst velocity error %.2e of %.3f m/s, "
+      "acceleration %.2e of %.3f m/s^2 (docs/environment.md)\n",
+      worst_v / scale_v, scale_v, worst_a / scale_a, scale_a);
 }
 
 TEST(EnvironmentField, CurrentIsTheCurrentFieldWithItsShear) {

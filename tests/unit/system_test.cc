@@ -112,9 +112,8 @@ TEST(System, NewtonMatrixMatchesFiniteDifferences) { CheckNewtonMatrix(FullModel
 // on (penalty normal force with damping and smoothed Coulomb friction, seabed_contact.h)
 TEST(System, NewtonMatrixMatchesFiniteDifferencesInASea) {
   Model m = FullModel();
-  m.environment.current =
-      CurrentField::Profile({{0.0, Vec3(0.6, 0.2, 0.0)}, {10.0, Vec3(0.3, 0.1, 0.0)},
-                             {40.0, Vec3(0.1, -0.05, 0.0)}});
+  m.environment.current = CurrentField::Profile(
+      {{0.0, Vec3(0.6, 0.2, 0.0)}, {10.0, Vec3(0.3, 0.1, 0.0)}, {40.0, Vec3(0.1, -0.05, 0.0)}});
   m.environment.waves = WaveField::Regular(1.5, 6.0, 0.4, 0.3, 25.0, m.environment.gravity,
                                            m.environment.water_density);
   m.environment.seabed = Seabed::Flat(25.0);
