@@ -179,5 +179,32 @@ TEST(WaveResponseCore, WavesHeldOverAStepAgreeWithWavesResampledEveryIteration) 
   EXPECT_LT(dt_rel, kHeldTensionRelTol);
 }
 
+// what a towfish's altimeter and pressure sensor would see, against the fields themselves
+// (WaveField, Seabed: written separately from the loads' sums)
+TEST(WaveResponseCore, SensorsReadTheSeaAtTheBody) {
+  const Model m =
+      scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case3_waves.yaml");
+  Simulation sim(m);
+  for (int i = 0; i < 600; ++i) ASSERT_TRUE(sim.Step().ok());  // 30 s: past the ramp
+  constexpr double kSameFieldTol = 1e-9;                       // [m], [m/s]
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    const Vec3 p = sim.body_position(b);
+    const double eta = m.environment.waves.Elevation(p.x(), p.y(), sim.time());
+    EXPECT_NEAR(sim.surface_elevation_at(b), eta, kSameFieldTol) << sim.body_name(b);
+    EXPECT_NEAR(sim.body_depth(b), p.z() + eta, kSameFieldTol) << sim.body_name(b);
+    EXPECT_NEAR(sim.body_altitude(b), m.environment.seabed.Depth(p.x(), p.y()) - p.z(),
+                kSameFieldTol)
+        << sim.body_name(b);
+    const Vec3 u = m.environment.waves.Kinematics(p, sim.time()).velocity +
+                   m.environment.current.Velocity(p.z(), sim.time());
+    EXPECT_LT((sim.water_velocity_at(b) - u).norm(), kSameFieldTol) << sim.body_name(b);
+  }
+  EXPECT_NE(sim.surface_elevation_at(0), 0.0);  // the sea is up
+  // bottomless: no altitude
+  const Model deep =
+      scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml");
+  EXPECT_TRUE(std::isnan(Simulation(deep).body_altitude(1)));
+}
+
 }  // namespace
 }  // namespace towsim::core
