@@ -21,7 +21,8 @@ towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-
                  openssl "$@")
 # who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
 for towsim_pkg in "$@"; do
-  if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib); fi
+  # and numpy, for scripts/plot_waves.py
+  if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib python3-numpy); fi
 done
 
 # test.sh: a one-machine Slurm cluster for tests/integration/sweep_slurm_test.sh (slurmctld,

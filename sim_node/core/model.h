@@ -7,7 +7,10 @@
 
 #include <Eigen/Core>
 
+#include "core/current_field.h"
+#include "core/seabed.h"
 #include "core/vehicle_model.h"
+#include "core/wave_field.h"
 
 namespace towsim::core {
 
@@ -28,7 +31,9 @@ struct Environment {
   double water_density = 1025.0;      // rho_w [kg/m^3]
   double dynamic_viscosity = 1.0e-3;  // mu [Pa s]
   double gravity = 9.81;              // g [m/s^2], acts along +z (NED)
-  Vec3 current = Vec3::Zero();        // uniform current U_W [m/s]
+  CurrentField current;               // U_W(z, t) [m/s] (current_field.h); default: none
+  WaveField waves;                    // Airy waves (wave_field.h); default: calm
+  Seabed seabed;                      // the bottom (seabed.h); default: none (bottomless)
 };
 
 // Each cable load can be switched off per scene (paper Eq. 15-23, Eq. 8 bending term).
@@ -121,6 +126,9 @@ struct IntegratorSettings {
   int max_iterations = 20;    // Newton iterations per (sub)step
   int max_substep_level = 6;  // halve the step at most this many times (2^6 substeps)
   int max_coupling_iterations = 30;  // kStrong: joint-force iterations per step
+  // resample the waves at every Newton iteration instead of once per step (integrator.h; for
+  // accuracy checks)
+  bool waves_per_iteration = false;
 };
 
 // A 6-DOF vehicle of the scene (its model from config/vehicles/*.yaml).

@@ -1,5 +1,8 @@
 #include "core/simulation.h"
 
+#include <limits>
+
+#include "core/environment_field.h"
 #include "core/initial_shape.h"
 #include "core/integrator.h"
 #include "core/state.h"
@@ -188,5 +191,26 @@ double Simulation::PotentialEnergy() const {
 }
 
 double Simulation::StrainEnergy() const { return impl_->system.StrainEnergy(impl_->state.q); }
+
+double Simulation::body_altitude(int b) const {
+  const EnvironmentField& sea = impl_->system.sea();
+  if (!sea.has_seabed()) return std::numeric_limits<double>::quiet_NaN();
+  const Vec3 p = body_position(b);
+  return sea.SeabedDepth(p.x(), p.y()) - p.z();
+}
+
+double Simulation::body_depth(int b) const {
+  const Vec3 p = body_position(b);
+  return p.z() + surface_elevation_at(b);
+}
+
+double Simulation::surface_elevation_at(int b) const {
+  const Vec3 p = body_position(b);
+  return impl_->system.sea().Elevation(p.x(), p.y(), time());
+}
+
+Vec3 Simulation::water_velocity_at(int b) const {
+  return impl_->system.sea().Flow(body_position(b), time()).velocity;
+}
 
 }  // namespace towsim::core

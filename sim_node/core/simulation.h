@@ -110,6 +110,16 @@ class Simulation {
   double PotentialEnergy() const;
   double StrainEnergy() const;
 
+  // --- the sea at a body (docs/environment.md), at its origin and the current time ---
+  // what a towfish's altimeter and pressure sensor would report: the altitude above the seabed
+  // straight below (NaN without a seabed) and the depth below the instantaneous surface,
+  // z + eta [m]; the surface elevation eta (positive up) and the water's velocity (current +
+  // waves, world frame) there [m, m/s]
+  double body_altitude(int b) const;
+  double body_depth(int b) const;
+  double surface_elevation_at(int b) const;
+  Vec3 water_velocity_at(int b) const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

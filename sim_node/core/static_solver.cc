@@ -10,12 +10,17 @@ using Eigen::VectorXd;
 
 namespace {
 
-// force scale for the convergence test: weight of cable and bodies plus a drag scale
-double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity) {
+// force scale for the convergence test: weight of cable and bodies plus a drag scale on the
+// largest speed relative to the water at the initial node positions
+double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, const State& s) {
   const Model& m = sys.model();
   const CableParams& c = m.cable;
   const Environment& env = m.environment;
-  const double rel = (frame_velocity - env.current).norm();
+  double rel = 0.0;
+  for (int i = 0; i < sys.num_nodes(); ++i) {
+    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.cable_dof(i)), s.t);
+    rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
+  }
   double f = std::abs(c.density - env.water_density) * c.area() * env.gravity * c.length;
   f += 0.5 * env.water_density * c.diameter * 1.2 * rel * rel * c.length;
   for (const SphereBody& b : m.bodies)
@@ -32,7 +37,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
   const double tol = sys.model().integrator.tolerance;
-  const double f_tol = tol * ForceScale(sys, frame_velocity);
+  const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
   const double q_scale = std::max(1.0, sys.model().cable.length);
   s->v.setZero(n);
   for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.cable_dof(i)) = frame_velocity;

@@ -8,6 +8,7 @@
 
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
+#include "scene/environment_reader.h"
 #include "scene/overrides.h"
 #include "scene/script_reader.h"
 #include "scene/vehicle_reader.h"
@@ -39,16 +40,6 @@ core::TimeSettings ReadTime(const Field& field) {
                           "): at most 1e12 steps");
   }
   return t;
-}
-
-core::Environment ReadEnvironment(const Field& field) {
-  const MapReader env(field, MapKind::kEnvironment);
-  core::Environment e;
-  e.water_density = env.Number("water_density", Range::Above(0.0), e.water_density);
-  e.dynamic_viscosity = env.Number("dynamic_viscosity", Range::Above(0.0), e.dynamic_viscosity);
-  e.gravity = env.Number("gravity", Range::AtLeast(0.0), e.gravity);
-  e.current = env.Vector("current", e.current);
-  return e;
 }
 
 core::IntegratorSettings ReadIntegrator(const Field& field) {
@@ -94,12 +85,13 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   model.name = name.String();
   if (model.name.empty()) name.Fail("must not be empty");
   model.time = ReadTime(scene.Require("time"));
-  model.environment = ReadEnvironment(scene.Get("environment"));
+  model.environment = internal::ReadEnvironment(scene.Get("environment"), model.time, base_dir);
 
   // bodies first: cable ends and script entries refer to them
   const internal::BodiesInput bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
   for (const internal::SphereInput& sphere : bodies.spheres) model.bodies.push_back(sphere.body);
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
+  internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
   model.cable = internal::ReadCable(scene.Require("cable"), model);
   // bodies that give no velocity start with the cable (vehicles: in their body frame)
   const core::Vec3& v_W = model.cable.initial_velocity;

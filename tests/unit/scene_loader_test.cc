@@ -1168,7 +1168,7 @@ TEST_F(SceneLoaderTest, Overrides) {
   EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
   EXPECT_EQ(m.bodies[0].mass, 500.0);
   EXPECT_EQ(m.bodies[0].volume, 0.2);  // still from the model file
-  EXPECT_EQ(m.environment.current, core::Vec3(0.5, 0, 0));
+  EXPECT_EQ(m.environment.current.Velocity(0.0, 0.0), core::Vec3(0.5, 0, 0));
   EXPECT_EQ(m.cable.length, 200.0);  // untouched
 }
 

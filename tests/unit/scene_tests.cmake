@@ -10,3 +10,6 @@ towsim_add_test(sweep_file_test LABEL unit
 towsim_add_test(sweep_values_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_values_test.cc
   LIBS towsim::scene)
+towsim_add_test(environment_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/environment_reader_test.cc
+  LIBS towsim::scene)
