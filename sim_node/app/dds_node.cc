@@ -276,6 +276,7 @@ int DdsNode::Setup() {
   strides_.clock = Stride(opt_.rates.clock, h_);
   strides_.odom = Stride(opt_.rates.odom, h_);
   strides_.cable_force = Stride(opt_.rates.cable_force, h_);
+  strides_.sensors = Stride(opt_.rates.sensors, h_);
   strides_.status = lockstep() ? 1 : Stride(opt_.rates.status, h_);  // lockstep: every step
   strides_.cable_state =
       Stride(opt_.rates.cable_state < 0.0 ? model_.time.output_rate : opt_.rates.cable_state, h_);

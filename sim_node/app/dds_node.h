@@ -45,6 +45,7 @@ struct PublishRates {
   double cable_force = 0.0;
   double status = 0.0;
   double cable_state = -1.0;  // < 0: the scene's time.output_rate
+  double sensors = 0.0;       // altitude and pressure (docs/sensors.md)
 };
 
 struct DdsNodeOptions {

@@ -14,6 +14,16 @@ int64_t Nanoseconds(double s) { return static_cast<int64_t>(std::llround(s * 1e9
 
 }  // namespace
 
+NodeEndpoints::SensorEndpoints::SensorEndpoints(const dds::Participant& participant,
+                                                const dds::TopicNames& names,
+                                                const std::string& body)
+    : altitude_topic(participant, &sensor_msgs_msg_dds__Range__desc, names.altitude(body)),
+      pressure_topic(participant, &sensor_msgs_msg_dds__FluidPressure__desc, names.pressure(body)),
+      altitude(participant, altitude_topic, dds::StateQos()),
+      pressure(participant, pressure_topic, dds::StateQos()),
+      altitude_msg(body),
+      pressure_msg(body) {}
+
 NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
                              const core::Simulation& sim, const std::vector<int>& command_vehicles)
     : clock_topic_(participant, &rosgraph_msgs_msg_dds__Clock__desc, names.clock()),
@@ -39,6 +49,9 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
         std::move(odom_topic), std::move(force_topic), std::move(odom), std::move(force),
         std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, name),
         std::make_unique<dds::WrenchStampedMessage>(name), Recorded{}, Recorded{}}));
+  }
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    sensors_.push_back(std::make_unique<SensorEndpoints>(participant, names, sim.body_name(b)));
   }
   const int num_spheres = sim.num_spheres();
   for (int v : command_vehicles) {
@@ -102,6 +115,12 @@ void NodeEndpoints::StartRecording(const dds::Participant& participant, McapReco
     b->force_rec = AddRecorded(participant, b->force.topic_name(),
                                &geometry_msgs_msg_dds__WrenchStamped__desc, false);
   }
+  for (auto& s : sensors_) {
+    s->altitude_rec = AddRecorded(participant, s->altitude.topic_name(),
+                                  &sensor_msgs_msg_dds__Range__desc, false);
+    s->pressure_rec = AddRecorded(participant, s->pressure.topic_name(),
+                                  &sensor_msgs_msg_dds__FluidPressure__desc, false);
+  }
 }
 
 void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
@@ -115,6 +134,18 @@ void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
     if (Due(step, strides.cable_force, all) && Wanted(e.force)) {
       dds::ToCableForce(sim, static_cast<int>(b), &e.force_msg->msg);
       Emit(e.force, e.force_rec, e.force_msg->msg);
+    }
+  }
+  for (size_t b = 0; b < sensors_.size(); ++b) {
+    SensorEndpoints& s = *sensors_[b];
+    if (!Due(step, strides.sensors, all)) break;
+    if (Wanted(s.altitude)) {
+      dds::ToAltitude(sim, static_cast<int>(b), &s.altitude_msg.msg);
+      Emit(s.altitude, s.altitude_rec, s.altitude_msg.msg);
+    }
+    if (Wanted(s.pressure)) {
+      dds::ToPressure(sim, static_cast<int>(b), &s.pressure_msg.msg);
+      Emit(s.pressure, s.pressure_rec, s.pressure_msg.msg);
     }
   }
   if (Due(step, strides.cable_state, all) && Wanted(cable_)) {

@@ -13,6 +13,7 @@
 #include "dds/entities.h"
 #include "dds/messages.h"
 #include "dds/raw_cdr.h"
+#include "dds/sensor_translators.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
 
@@ -25,6 +26,7 @@ struct PublishStrides {
   long cable_force = 1;
   long cable_state = 1;
   long status = 1;
+  long sensors = 1;
 };
 
 class NodeEndpoints {
@@ -80,6 +82,17 @@ class NodeEndpoints {
     std::unique_ptr<dds::WrenchStampedMessage> force_msg;
     Recorded odom_rec, force_rec;
   };
+  // a body's altimeter and pressure sensor (dds/sensor_translators.h)
+  struct SensorEndpoints {
+    SensorEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
+                    const std::string& body);
+    dds::Topic altitude_topic, pressure_topic;
+    dds::Writer<dds::RangeMsg> altitude;
+    dds::Writer<dds::FluidPressureMsg> pressure;
+    dds::RangeMessage altitude_msg;
+    dds::FluidPressureMessage pressure_msg;
+    Recorded altitude_rec, pressure_rec;
+  };
 
   dds::Topic clock_topic_, cable_topic_, status_topic_, scene_topic_, control_topic_;
   dds::Writer<dds::ClockMsg> clock_;
@@ -87,6 +100,7 @@ class NodeEndpoints {
   dds::Writer<dds::SimStatusMsg> status_;
   dds::Writer<dds::SceneInfoMsg> scene_;
   std::vector<std::unique_ptr<BodyEndpoints>> bodies_;
+  std::vector<std::unique_ptr<SensorEndpoints>> sensors_;  // one per body, same order
   std::vector<dds::Topic> command_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
   dds::Reader<dds::SimControlMsg> control_reader_;

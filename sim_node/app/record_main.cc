@@ -250,6 +250,8 @@ std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> Recorder::Top
     all.push_back({names_.odom(b), &nav_msgs_msg_dds__Odometry__desc});
     all.push_back({names_.cable_force(b), &geometry_msgs_msg_dds__WrenchStamped__desc});
     all.push_back({names_.command(b), &towsim_msgs_msg_dds__ActuatorCommand__desc});
+    all.push_back({names_.altitude(b), &sensor_msgs_msg_dds__Range__desc});
+    all.push_back({names_.pressure(b), &sensor_msgs_msg_dds__FluidPressure__desc});
   }
   return all;
 }

@@ -5,6 +5,7 @@
 #include "geometry_msgs.h"
 #include "nav_msgs.h"
 #include "rosgraph_msgs.h"
+#include "sensor_msgs.h"
 #include "std_msgs.h"
 #include "towsim_msgs.h"
 
@@ -20,5 +21,7 @@ using ActuatorCommandMsg = towsim_msgs_msg_dds__ActuatorCommand_;
 using SimStatusMsg = towsim_msgs_msg_dds__SimStatus_;
 using SimControlMsg = towsim_msgs_msg_dds__SimControl_;
 using SceneInfoMsg = towsim_msgs_msg_dds__SceneInfo_;
+using RangeMsg = sensor_msgs_msg_dds__Range_;
+using FluidPressureMsg = sensor_msgs_msg_dds__FluidPressure_;
 
 }  // namespace towsim::dds

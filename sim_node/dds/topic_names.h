@@ -29,6 +29,8 @@ class TopicNames {
   std::string odom(const std::string& body) const { return prefix_ + body + "/odom"; }
   std::string cable_force(const std::string& body) const { return prefix_ + body + "/cable_force"; }
   std::string command(const std::string& body) const { return prefix_ + body + "/command"; }
+  std::string altitude(const std::string& body) const { return prefix_ + body + "/altitude"; }
+  std::string pressure(const std::string& body) const { return prefix_ + body + "/pressure"; }
   std::string cable_state() const { return prefix_ + "cable/state"; }
   std::string status() const { return prefix_ + "status"; }
   std::string sim_control() const { return prefix_ + "sim_control"; }

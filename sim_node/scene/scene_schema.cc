@@ -49,7 +49,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
        {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish",
         "security"}},
       {MapKind::kPublish,
-       {"clock", "odom", "cable_state", "cable_force", "status", "command_timeout"}},
+       {"clock", "odom", "cable_state", "cable_force", "status", "command_timeout", "sensors"}},
       {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
       {MapKind::kEnvironment,
