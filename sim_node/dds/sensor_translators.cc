@@ -15,6 +15,7 @@ RangeMessage::RangeMessage(std::string frame_id) : msg{}, frame_id_(std::move(fr
   msg.field_of_view = kAltimeterFieldOfView;
   msg.min_range = 0.0f;
   msg.max_range = kAltimeterMaxRange;
+  msg.variance = 0.0f;  // unknown
 }
 
 FluidPressureMessage::FluidPressureMessage(std::string frame_id)

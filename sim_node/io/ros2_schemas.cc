@@ -38,10 +38,11 @@ const std::map<std::string, std::string>& StandardTexts() {
        "std_msgs/Header header\nstring child_frame_id\ngeometry_msgs/PoseWithCovariance pose\n"
        "geometry_msgs/TwistWithCovariance twist\n"},
       {"rosgraph_msgs/Clock", "builtin_interfaces/Time clock\n"},
-      // ROS 2 Humble's layout (Range without the variance later distributions added)
+      // ROS 2 Jazzy's layout (Range with the variance field Humble's lacks)
       {"sensor_msgs/Range",
        "uint8 ULTRASOUND=0\nuint8 INFRARED=1\nstd_msgs/Header header\nuint8 radiation_type\n"
-       "float32 field_of_view\nfloat32 min_range\nfloat32 max_range\nfloat32 range\n"},
+       "float32 field_of_view\nfloat32 min_range\nfloat32 max_range\nfloat32 range\n"
+       "float32 variance\n"},
       {"sensor_msgs/FluidPressure",
        "std_msgs/Header header\nfloat64 fluid_pressure\nfloat64 variance\n"},
   };

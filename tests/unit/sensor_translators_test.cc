@@ -76,6 +76,7 @@ TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
   EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * (20.0 + eta),
               kPressureTol * 3e5);
   EXPECT_EQ(pressure.msg.variance, 0.0);
+  EXPECT_EQ(range.msg.variance, 0.0f);
   EXPECT_STREQ(pressure.msg.header.frame_id, "ball");
 
   // stamps are simulation time
