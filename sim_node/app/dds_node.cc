@@ -20,6 +20,7 @@
 #include "core/script.h"
 #include "dds/command_arbiter.h"
 #include "dds/entities.h"
+#include "dds/ros_graph.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
 
@@ -43,6 +44,7 @@ constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [
 constexpr const char* kLingerConfig =
     "<Internal><WriterLingerDuration>10ms</WriterLingerDuration></Internal>";
 constexpr int kMaxCommandNotes = 5;  // rejected / clamped commands told on stderr
+constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (dds/ros_graph.h)
 
 constexpr uint8_t kRunning = towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING;
 constexpr uint8_t kPaused = towsim_msgs_msg_dds__SimStatus_Constants_STATE_PAUSED;
@@ -118,6 +120,7 @@ class DdsNode {
   std::unique_ptr<dds::Participant> participant_;
   std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
+  std::unique_ptr<dds::RosGraphNode> graph_;  // the ROS 2 node /<ns>/sim_node
   PublishStrides strides_;
   long output_stride_ = 1;
   bool has_lockstep_vehicles_ = false;
@@ -211,7 +214,9 @@ int DdsNode::Setup() {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
-  } catch (const dds::DdsError& e) {
+    graph_ = std::make_unique<dds::RosGraphNode>(participant_->get(), opt_.ns, kNodeName,
+                                                 endpoints_->readers(), endpoints_->writers());
+  } catch (const std::runtime_error& e) {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;
   }
@@ -230,6 +235,8 @@ int DdsNode::Setup() {
   strides_.status = lockstep() ? 1 : Stride(opt_.rates.status, h_);  // lockstep: every step
   strides_.cable_state =
       Stride(opt_.rates.cable_state < 0.0 ? model_.time.output_rate : opt_.rates.cable_state, h_);
+  strides_.markers =
+      Stride(opt_.rates.markers < 0.0 ? model_.time.output_rate : opt_.rates.markers, h_);
   output_stride_ = Stride(model_.time.output_rate, h_);
   if (std::isfinite(opt_.duration)) steps_to_run_ = std::max(0L, std::lround(opt_.duration / h_));
   paused_ = opt_.start_paused;

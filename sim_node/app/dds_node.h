@@ -44,6 +44,7 @@ struct PublishRates {
   double cable_force = 0.0;
   double status = 0.0;
   double cable_state = -1.0;  // < 0: the scene's time.output_rate
+  double markers = -1.0;      // < 0: the scene's time.output_rate
 };
 
 struct DdsNodeOptions {

@@ -21,13 +21,22 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
       status_topic_(participant, &towsim_msgs_msg_dds__SimStatus__desc, names.status()),
       scene_topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc, names.scene_info()),
       control_topic_(participant, &towsim_msgs_msg_dds__SimControl__desc, names.sim_control()),
+      tf_topic_(participant, &tf2_msgs_msg_dds__TFMessage__desc, names.tf()),
+      tf_static_topic_(participant, &tf2_msgs_msg_dds__TFMessage__desc, names.tf_static()),
+      markers_topic_(participant, &visualization_msgs_msg_dds__MarkerArray__desc, names.markers()),
       clock_(participant, clock_topic_, dds::StateQos()),
       cable_(participant, cable_topic_, dds::StateQos()),
       status_(participant, status_topic_, dds::StateQos()),
       scene_(participant, scene_topic_, dds::SceneInfoQos()),
+      tf_(participant, tf_topic_, dds::StateQos()),
+      tf_static_(participant, tf_static_topic_, dds::SceneInfoQos()),
+      markers_(participant, markers_topic_, dds::StateQos()),
       control_reader_(participant, control_topic_, dds::ControlQos()),
       waitset_(participant),
-      cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes())) {
+      cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes())),
+      tf_msg_(dds::BodyTransforms(sim)),
+      tf_static_msg_(dds::StaticTransforms(sim)),
+      markers_msg_(std::make_unique<dds::SceneMarkers>(sim)) {
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const std::string& name = sim.body_name(b);
     dds::Topic odom_topic(participant, &nav_msgs_msg_dds__Odometry__desc, names.odom(name));
@@ -37,8 +46,9 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
     dds::Writer<dds::WrenchStampedMsg> force(participant, force_topic, dds::StateQos());
     bodies_.push_back(std::make_unique<BodyEndpoints>(BodyEndpoints{
         std::move(odom_topic), std::move(force_topic), std::move(odom), std::move(force),
-        std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, name),
-        std::make_unique<dds::WrenchStampedMessage>(name), Recorded{}, Recorded{}}));
+        std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, dds::FrdFrame(name)),
+        std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(name)), Recorded{},
+        Recorded{}}));
   }
   const int num_spheres = sim.num_spheres();
   for (int v : command_vehicles) {
@@ -65,6 +75,21 @@ void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const
     if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
   }
   sample.CopyTo(&buffer_);
+  recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                    buffer_.data(), buffer_.size());
+}
+
+template <class T>
+void NodeEndpoints::EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const T& msg) {
+  if (recording_ == nullptr) {
+    writer.Write(msg);
+    return;
+  }
+  const dds::CdrSample s = dds::CdrSample::FromSample(*recorded.type, &msg);
+  const dds_time_t now = dds_time();
+  const dds_return_t rc = s.Write(writer.get(), now);
+  if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
+  s.CopyTo(&buffer_);
   recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
                     buffer_.data(), buffer_.size());
 }
@@ -96,6 +121,11 @@ void NodeEndpoints::StartRecording(const dds::Participant& participant, McapReco
       AddRecorded(participant, status_.topic_name(), &towsim_msgs_msg_dds__SimStatus__desc, false);
   cable_rec_ =
       AddRecorded(participant, cable_.topic_name(), &towsim_msgs_msg_dds__CableState__desc, false);
+  tf_static_rec_ = AddRecorded(participant, tf_static_.topic_name(),
+                               &tf2_msgs_msg_dds__TFMessage__desc, /*transient_local=*/true);
+  tf_rec_ = AddRecorded(participant, tf_.topic_name(), &tf2_msgs_msg_dds__TFMessage__desc, false);
+  markers_rec_ = AddRecorded(participant, markers_.topic_name(),
+                             &visualization_msgs_msg_dds__MarkerArray__desc, false);
   for (auto& b : bodies_) {
     b->odom_rec =
         AddRecorded(participant, b->odom.topic_name(), &nav_msgs_msg_dds__Odometry__desc, false);
@@ -117,6 +147,14 @@ void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
       Emit(e.force, e.force_rec, e.force_msg->msg);
     }
   }
+  if (Due(step, strides.odom, all) && Wanted(tf_)) {
+    dds::ToBodyTransforms(sim, tf_msg_.get());
+    Emit(tf_, tf_rec_, tf_msg_->msg);
+  }
+  if (Due(step, strides.markers, all) && Wanted(markers_)) {
+    markers_msg_->Update(sim);
+    Emit(markers_, markers_rec_, markers_msg_->msg);
+  }
   if (Due(step, strides.cable_state, all) && Wanted(cable_)) {
     dds::ToCableState(sim, step, cable_msg_.get());
     Emit(cable_, cable_rec_, cable_msg_->msg);
@@ -136,17 +174,29 @@ void NodeEndpoints::PublishStatus(const dds::StatusSample& sample) {
 void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
   // transient local: written even without a reader, for late joiners
   dds::ToSceneInfo(sample, &scene_msg_);
-  if (recording_ == nullptr) {
-    scene_.Write(scene_msg_.msg);
-    return;
+  EmitAlways(scene_, scene_rec_, scene_msg_.msg);
+  // the static frames with it (also after a reset: the stamp of the new run)
+  for (int i = 0; i < tf_static_msg_->size(); ++i) {
+    tf_static_msg_->transform(i).header.stamp = scene_msg_.msg.header.stamp;
   }
-  const dds::CdrSample s = dds::CdrSample::FromSample(*scene_rec_.type, &scene_msg_.msg);
-  const dds_time_t now = dds_time();
-  const dds_return_t rc = s.Write(scene_.get(), now);
-  if (rc < 0) throw dds::DdsError("writing to " + scene_.topic_name(), rc);
-  s.CopyTo(&buffer_);
-  recording_->Write(scene_rec_.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
-                    buffer_.data(), buffer_.size());
+  EmitAlways(tf_static_, tf_static_rec_, tf_static_msg_->msg);
+}
+
+std::vector<dds_entity_t> NodeEndpoints::readers() const {
+  std::vector<dds_entity_t> out;
+  for (const auto& r : command_readers_) out.push_back(r->get());
+  out.push_back(control_reader_.get());
+  return out;
+}
+
+std::vector<dds_entity_t> NodeEndpoints::writers() const {
+  std::vector<dds_entity_t> out = {clock_.get(), cable_.get(),     status_.get(), scene_.get(),
+                                   tf_.get(),    tf_static_.get(), markers_.get()};
+  for (const auto& b : bodies_) {
+    out.push_back(b->odom.get());
+    out.push_back(b->force.get());
+  }
+  return out;
 }
 
 void NodeEndpoints::Flush(double timeout) {

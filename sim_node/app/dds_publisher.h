@@ -1,7 +1,9 @@
 #pragma once
 // The DDS endpoints of the node (DESIGN §3): writers of odometry, cable force, cable state,
-// /clock, status and scene info; readers of the vehicles' commands and of sim_control. A
-// message is built and serialized only when its writer has a matched reader.
+// /clock, status, scene info, /tf, /tf_static and the markers (docs/frames.md); readers of the
+// vehicles' commands and of sim_control. A message is built and serialized only when its
+// writer has a matched reader (or a recording takes it); scene info and /tf_static (transient
+// local) are always written.
 
 #include <cstdint>
 #include <memory>
@@ -11,6 +13,8 @@
 #include "app/mcap_recording.h"
 #include "core/simulation.h"
 #include "dds/entities.h"
+#include "dds/frames.h"
+#include "dds/markers.h"
 #include "dds/messages.h"
 #include "dds/raw_cdr.h"
 #include "dds/topic_names.h"
@@ -25,6 +29,7 @@ struct PublishStrides {
   long cable_force = 1;
   long cable_state = 1;
   long status = 1;
+  long markers = 1;  // /tf goes with odom (the same state as the odometry)
 };
 
 class NodeEndpoints {
@@ -54,6 +59,10 @@ class NodeEndpoints {
   // blocks until a command or a control request is available, or `timeout` [s]
   void WaitForInput(double timeout);
 
+  // every reader and writer of the node's topics (its ROS 2 graph entry, dds/ros_graph.h)
+  std::vector<dds_entity_t> readers() const;
+  std::vector<dds_entity_t> writers() const;
+
  private:
   // the recording side of one writer
   struct Recorded {
@@ -67,6 +76,9 @@ class NodeEndpoints {
   // publishes `msg` on `writer` (if matched) and records it (if recording)
   template <class T>
   void Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg);
+  // writes `msg` whether matched or not (transient local topics) and records it
+  template <class T>
+  void EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const T& msg);
   Recorded AddRecorded(const dds::Participant& participant, const std::string& topic,
                        const dds_topic_descriptor_t* descriptor, bool transient_local);
 
@@ -79,11 +91,14 @@ class NodeEndpoints {
     Recorded odom_rec, force_rec;
   };
 
-  dds::Topic clock_topic_, cable_topic_, status_topic_, scene_topic_, control_topic_;
+  dds::Topic clock_topic_, cable_topic_, status_topic_, scene_topic_, control_topic_, tf_topic_,
+      tf_static_topic_, markers_topic_;
   dds::Writer<dds::ClockMsg> clock_;
   dds::Writer<dds::CableStateMsg> cable_;
   dds::Writer<dds::SimStatusMsg> status_;
   dds::Writer<dds::SceneInfoMsg> scene_;
+  dds::Writer<dds::TfMsg> tf_, tf_static_;
+  dds::Writer<dds::MarkerArrayMsg> markers_;
   std::vector<std::unique_ptr<BodyEndpoints>> bodies_;
   std::vector<dds::Topic> command_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
@@ -94,10 +109,12 @@ class NodeEndpoints {
   std::unique_ptr<dds::CableStateMessage> cable_msg_;
   dds::SimStatusMessage status_msg_;
   dds::SceneInfoMessage scene_msg_;
+  std::unique_ptr<dds::TransformsMessage> tf_msg_, tf_static_msg_;
+  std::unique_ptr<dds::SceneMarkers> markers_msg_;
 
   McapRecording* recording_ = nullptr;
   std::vector<std::unique_ptr<dds::RawType>> raw_types_;  // one per type recorded
-  Recorded clock_rec_, cable_rec_, status_rec_, scene_rec_;
+  Recorded clock_rec_, cable_rec_, status_rec_, scene_rec_, tf_rec_, tf_static_rec_, markers_rec_;
   std::vector<std::uint8_t> buffer_;  // the bytes of the message being recorded
 };
 

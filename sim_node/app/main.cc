@@ -63,7 +63,7 @@ int Run(const towsim::app::Options& options) {
     dds.domain = options.domain.value_or(0);
     dds.ns = options.ns;
     const towsim::core::Publishing& pub = model.publishing;
-    dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
+    dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state, pub.markers};
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
     dds.start_paused = options.paused;

@@ -5,7 +5,8 @@
 //
 // It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
 // first), then subscribes to every towsim topic of the namespace (DESIGN §3: per body odom,
-// cable_force and command; cable/state, status, scene_info, sim_control) and /clock, or to the
+// cable_force and command; cable/state, status, scene_info, sim_control, markers), /clock, /tf
+// and /tf_static, or to the
 // --topics given (ROS names, "/towsim/towfish/odom"). The payloads are stored as received
 // (dds_takecdr: the CDR bytes, never deserialized and serialized again), log time = the wall
 // clock when taken from the reader (receive time), publish time = the writer's source
@@ -231,6 +232,9 @@ std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> Recorder::Top
       {names_.status(), &towsim_msgs_msg_dds__SimStatus__desc},
       {names_.cable_state(), &towsim_msgs_msg_dds__CableState__desc},
       {names_.sim_control(), &towsim_msgs_msg_dds__SimControl__desc},
+      {names_.tf(), &tf2_msgs_msg_dds__TFMessage__desc},
+      {names_.tf_static(), &tf2_msgs_msg_dds__TFMessage__desc},
+      {names_.markers(), &visualization_msgs_msg_dds__MarkerArray__desc},
   };
   for (const std::string& b : bodies) {
     all.push_back({names_.odom(b), &nav_msgs_msg_dds__Odometry__desc});
@@ -344,7 +348,8 @@ int Recorder::Run() {
         if (known.count(ros)) continue;
         known.insert(ros);
         if (explicit_topics && !wanted.count(ros)) continue;
-        Subscribe(topic, descriptor, false);
+        // /tf_static is transient local, like scene_info
+        Subscribe(topic, descriptor, /*transient_local=*/topic == names_.tf_static());
       }
       if (explicit_topics) {
         if (scene != nullptr) known.insert(towsim::app::RosTopicName(names_.scene_info()));

@@ -277,7 +277,9 @@ int Replay(const Options& opt) {
           dds_create_topic(participant->get(), d, out->dds_topic.c_str(), nullptr, nullptr);
       if (t < 0) throw dds::DdsError("creating topic " + out->dds_topic, t);
       out->topic = dds::Entity(t);
-      dds::Qos qos = out->scene_info                               ? dds::SceneInfoQos()
+      // scene_info and /tf_static are transient local (late joiners get them)
+      const bool latched = out->scene_info || out->ros_topic == "/tf_static";
+      dds::Qos qos = latched                                       ? dds::SceneInfoQos()
                      : d == &towsim_msgs_msg_dds__SimControl__desc ? dds::ControlQos()
                                                                    : dds::StateQos(1);
       const dds_entity_t w = dds_create_writer(participant->get(), t, qos.get(), nullptr);

@@ -12,7 +12,8 @@ const std::vector<const dds_topic_descriptor_t*>& ContractTypes() {
       &rosgraph_msgs_msg_dds__Clock__desc,         &nav_msgs_msg_dds__Odometry__desc,
       &geometry_msgs_msg_dds__WrenchStamped__desc, &towsim_msgs_msg_dds__CableState__desc,
       &towsim_msgs_msg_dds__SimStatus__desc,       &towsim_msgs_msg_dds__SceneInfo__desc,
-      &towsim_msgs_msg_dds__ActuatorCommand__desc, &towsim_msgs_msg_dds__SimControl__desc};
+      &towsim_msgs_msg_dds__ActuatorCommand__desc, &towsim_msgs_msg_dds__SimControl__desc,
+      &tf2_msgs_msg_dds__TFMessage__desc,          &visualization_msgs_msg_dds__MarkerArray__desc};
   return types;
 }
 

@@ -1,5 +1,7 @@
 #include "dds/entities.h"
 
+#include "dds/ros_graph.h"
+
 namespace towsim::dds {
 
 DdsError::DdsError(const std::string& action, dds_return_t code)
@@ -17,7 +19,10 @@ Participant::Participant(uint32_t domain_id, const std::string& config) : domain
     if (d < 0) throw DdsError("creating " + where + " from " + config, d);
     domain_ = Entity(d);
   }
-  const dds_entity_t p = dds_create_participant(domain_id, nullptr, nullptr);
+  // USER_DATA "enclave=/;", as every ROS 2 participant has (dds/ros_graph.h)
+  dds_qos_t* qos = NewParticipantQos();
+  const dds_entity_t p = dds_create_participant(domain_id, qos, nullptr);
+  dds_delete_qos(qos);
   if (p < 0) throw DdsError("creating a participant in " + where, p);
   participant_ = Entity(p);
 }

@@ -57,7 +57,7 @@ class Entity {
 
 // A domain participant. With a non-empty `config` (what CYCLONEDDS_URI would hold: a
 // file:// URI or XML), the domain is created from it explicitly; otherwise Cyclone reads
-// $CYCLONEDDS_URI. Throws DdsError (e.g. a domain id whose ports are out of range, an
+// $CYCLONEDDS_URI. Its USER_DATA is "enclave=/;" (a ROS 2 participant, dds/ros_graph.h). Throws DdsError (e.g. a domain id whose ports are out of range, an
 // unreadable config file).
 class Participant {
  public:

@@ -31,7 +31,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   static const std::vector<std::string> kSphereKeys = {"mass", "volume", "drag_coefficient",
                                                        "added_mass_coefficient", "source"};
   static const std::vector<std::string> kVehicleKeys = {
-      "source",     "length",      "mass",    "inertia",  "r_g",    "r_b",      "volume",
+      "source",     "length",      "diameter", "mass",    "inertia",  "r_g",    "r_b",      "volume",
       "added_mass", "munk_moment", "damping", "surfaces", "rudder", "elevator", "propeller",
       "waterplane"};
   // type first, then the keys of `groups`, each once, in order
@@ -48,7 +48,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kScene,
        {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish"}},
       {MapKind::kPublish,
-       {"clock", "odom", "cable_state", "cable_force", "status", "command_timeout"}},
+       {"clock", "odom", "cable_state", "cable_force", "status", "markers", "command_timeout"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
       {MapKind::kEnvironment, {"water_density", "dynamic_viscosity", "gravity", "current"}},
       {MapKind::kCable,

@@ -28,7 +28,7 @@ if(NODE_EXECUTABLE)
       $<TARGET_FILE:sim_node> --scene ${PROJECT_SOURCE_DIR}/config/scenes/case1_forward.yaml
       --mode fast --domain 93 --duration 40 --csv ${_js_run}/csv --record ${_js_run}/run.mcap
       --set publish.odom=10 --set publish.cable_force=10 --set publish.cable_state=10
-      --set publish.status=10)
+      --set publish.status=10 --set publish.markers=10)
   set_tests_properties(mcap_js_record_run PROPERTIES
     FIXTURES_SETUP mcap_js_run LABELS integration ENVIRONMENT "CYCLONEDDS_URI=${_dds_uri}")
   add_test(NAME mcap_js_decode_recording
