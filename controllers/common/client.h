@@ -7,6 +7,8 @@
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step.
+// It is a ROS 2 node `<ns>/<name>` (name: ClientOptions::name; dds/ros_graph.h), so
+// `ros2 node list` shows it next to /towsim/sim_node.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. Works in every DDS mode (realtime and fast answer each status
 // they see; lockstep waits for the answer).
@@ -23,7 +25,7 @@ struct ClientOptions {
   std::string ns = "/towsim";
   std::string body;        // the commanded body
   double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
-  std::string name = "controller";  // for messages
+  std::string name = "controller";  // for messages, and the ROS 2 node name
 };
 
 // the state of the body at one step, from its odometry
