@@ -14,8 +14,10 @@
 towsim_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$towsim_root"
 
+# libwebsocketpp-dev, libasio-dev and nlohmann-json3-dev: the Foxglove server (towsim_foxglove)
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
-                 cyclonedds-tools libgtest-dev libbenchmark-dev "$@")
+                 cyclonedds-tools libgtest-dev libbenchmark-dev
+                 libwebsocketpp-dev libasio-dev nlohmann-json3-dev "$@")
 # who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
 for towsim_pkg in "$@"; do
   if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib); fi

@@ -36,6 +36,7 @@
 #include "app/dds_uri.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
+#include "app/topic_types.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
 #include "dds/qos.h"
@@ -182,9 +183,6 @@ class Recorder {
  private:
   Subscription& Subscribe(const std::string& topic, const dds_topic_descriptor_t* descriptor,
                           bool transient_local);
-  // the topics to record once the bodies are known
-  std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> Topics(
-      const std::vector<std::string>& bodies) const;
   // takes everything available; returns true if the node's run ended
   bool TakeAll();
   void Progress(bool final);
@@ -223,25 +221,6 @@ Subscription& Recorder::Subscribe(const std::string& topic,
   s->channel = recording_->AddTopic(topic, descriptor->m_typename, transient_local, 1);
   subs_.push_back(std::move(s));
   return *subs_.back();
-}
-
-std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> Recorder::Topics(
-    const std::vector<std::string>& bodies) const {
-  std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> all = {
-      {names_.clock(), &rosgraph_msgs_msg_dds__Clock__desc},
-      {names_.status(), &towsim_msgs_msg_dds__SimStatus__desc},
-      {names_.cable_state(), &towsim_msgs_msg_dds__CableState__desc},
-      {names_.sim_control(), &towsim_msgs_msg_dds__SimControl__desc},
-      {names_.tf(), &tf2_msgs_msg_dds__TFMessage__desc},
-      {names_.tf_static(), &tf2_msgs_msg_dds__TFMessage__desc},
-      {names_.markers(), &visualization_msgs_msg_dds__MarkerArray__desc},
-  };
-  for (const std::string& b : bodies) {
-    all.push_back({names_.odom(b), &nav_msgs_msg_dds__Odometry__desc});
-    all.push_back({names_.cable_force(b), &geometry_msgs_msg_dds__WrenchStamped__desc});
-    all.push_back({names_.command(b), &towsim_msgs_msg_dds__ActuatorCommand__desc});
-  }
-  return all;
 }
 
 bool Recorder::TakeAll() {
@@ -343,13 +322,12 @@ int Recorder::Run() {
         }
       }
       std::set<std::string> known;
-      for (const auto& [topic, descriptor] : Topics(bodies)) {
-        const std::string ros = towsim::app::RosTopicName(topic);
+      for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies)) {
+        const std::string ros = towsim::app::RosTopicName(t.dds_name);
         if (known.count(ros)) continue;
         known.insert(ros);
         if (explicit_topics && !wanted.count(ros)) continue;
-        // /tf_static is transient local, like scene_info
-        Subscribe(topic, descriptor, /*transient_local=*/topic == names_.tf_static());
+        Subscribe(t.dds_name, t.descriptor, t.transient_local);
       }
       if (explicit_topics) {
         if (scene != nullptr) known.insert(towsim::app::RosTopicName(names_.scene_info()));
