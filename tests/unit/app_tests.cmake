@@ -17,3 +17,8 @@ towsim_add_test(sim_node_cli_test LABEL unit
 foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
+
+# the Foxglove WebSocket protocol messages (app/foxglove_protocol), no sockets
+towsim_add_test(foxglove_protocol_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc
+  LIBS towsim::foxglove)
