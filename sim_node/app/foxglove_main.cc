@@ -18,6 +18,10 @@
 // written on DDS as it is; the node validates it exactly like any DDS command (NaN rejected,
 // out of range clamped, counted in its status). A malformed message is rejected here: an error
 // status to the client, and counted. Other topics or encodings are refused at advertise.
+// Foxglove's Teleop panel publishes geometry_msgs/msg/Twist: on a command topic it becomes an
+// ActuatorCommand (TwistToCommand: thrust = linear.x [N], rudder = -angular.z [rad] (the
+// panel's "left" is positive angular.z, a positive rudder turns to starboard), elevator =
+// linear.z [rad]) answering the step of the newest status seen, then goes the same way.
 //
 // Binds 127.0.0.1 unless --address says otherwise. Prints on stdout, once listening:
 //   towsim_foxglove: serving ws://127.0.0.1:8765 (domain 0, namespace /towsim)
@@ -25,6 +29,7 @@
 //   towsim_foxglove: 1234 messages sent (dropped 0), client messages 10 (rejected 1)
 // Exit codes: 0 done, 1 unexpected error, 2 bad input, DDS setup failure or the port in use.
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -160,18 +165,31 @@ uint64_t StampNs(bool sequence_first, const uint8_t* p, size_t size, uint64_t fa
   return static_cast<uint64_t>(sec) * 1000000000ull + nanosec;
 }
 
+// Foxglove's Teleop panel: a Twist as an actuator command answering `step` (see the top)
+towsim::dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t,
+                                               uint64_t step) {
+  towsim::dds::ActuatorCommandMsg cmd{};
+  cmd.step = step;
+  cmd.thrust = t.linear.x;
+  cmd.rudder = -t.angular.z;
+  cmd.elevator = t.linear.z;
+  return cmd;
+}
+
 // one towsim topic served as a channel; its reader exists while a client subscribes
 struct Served {
   towsim::app::NodeTopic topic;
   uint32_t channel = 0;
   bool sequence_first = false;
   bool is_clock = false;
+  bool is_status = false;
   dds::Entity topic_entity, reader, condition;
 };
 
 // a topic clients may publish on
 struct Inbound {
   std::string schema_name;  // "towsim_msgs/msg/ActuatorCommand"
+  bool teleop = false;      // a command topic: also takes geometry_msgs/msg/Twist
   const dds_topic_descriptor_t* descriptor = nullptr;
   dds::RawType* type = nullptr;
   dds::Entity topic, writer;
@@ -209,6 +227,9 @@ class Bridge {
   dds::RawType command_type_, control_type_, scene_type_;
   std::vector<std::unique_ptr<Served>> served_;
   uint64_t clock_ns_ = 0;
+  std::atomic<uint64_t> status_step_{0};  // of the newest status (Teleop commands answer it)
+  dds::RawType status_type_{participant_, &towsim_msgs_msg_dds__SimStatus__desc};
+  dds::RawType twist_type_{participant_, &geometry_msgs_msg_dds__Twist__desc};
   // written only on the server's thread (Advertise, Publish), after Serve()
   std::map<std::string, Inbound> inbound_;  // ROS topic -> writer
   std::mutex inbound_mutex_;
@@ -225,6 +246,7 @@ void Bridge::Serve(const std::vector<std::string>& bodies) {
     s->sequence_first = t.descriptor == &tf2_msgs_msg_dds__TFMessage__desc ||
                         t.descriptor == &visualization_msgs_msg_dds__MarkerArray__desc;
     s->is_clock = t.descriptor == &rosgraph_msgs_msg_dds__Clock__desc;
+    s->is_status = t.descriptor == &towsim_msgs_msg_dds__SimStatus__desc;
     const dds_entity_t e =
         dds_create_topic(participant_.get(), t.descriptor, t.dds_name.c_str(), nullptr, nullptr);
     if (e < 0) throw dds::DdsError("creating topic " + t.dds_name, e);
@@ -237,6 +259,7 @@ void Bridge::Serve(const std::vector<std::string>& bodies) {
     in.schema_name = "towsim_msgs/msg/ActuatorCommand";
     in.descriptor = &towsim_msgs_msg_dds__ActuatorCommand__desc;
     in.type = &command_type_;
+    in.teleop = true;
   }
   Inbound& control = inbound_[towsim::app::RosTopicName(names_.sim_control())];
   control.schema_name = "towsim_msgs/msg/SimControl";
@@ -248,7 +271,9 @@ void Bridge::Serve(const std::vector<std::string>& bodies) {
 void Bridge::UpdateReaders() {
   const bool connected = server_.clients() > 0;
   for (auto& s : served_) {
-    const bool want = server_.HasSubscribers(s->channel) || (s->is_clock && connected);
+    // /clock for the time messages and the status for Teleop's step while a client is there
+    const bool want =
+        server_.HasSubscribers(s->channel) || ((s->is_clock || s->is_status) && connected);
     if (want == s->reader.valid()) continue;
     if (!want) {
       s->condition = dds::Entity();
@@ -280,6 +305,11 @@ void Bridge::TakeAll() {
             clock_ns_ = t;
             server_.BroadcastTime(t);
           }
+          if (s->is_status) {
+            dds::SimStatusMsg m{};
+            if (status_type_.Deserialize(p, size, &m)) status_step_ = m.step;
+            dds_sample_free(&m, &towsim_msgs_msg_dds__SimStatus__desc, DDS_FREE_CONTENTS);
+          }
           server_.Publish(s->channel, t, p, size);
         });
     if (n < 0) throw dds::DdsError("taking from " + s->topic.dds_name, n);
@@ -298,8 +328,11 @@ std::string Bridge::Advertise(const towsim::app::foxglove::ClientChannel& c) {
   if (c.encoding != "cdr") return "encoding " + c.encoding + ": only cdr";
   const std::string short_name =
       in.schema_name.substr(0, in.schema_name.find('/')) + in.schema_name.substr(in.schema_name.rfind('/'));
-  if (c.schema_name != in.schema_name && c.schema_name != short_name) {
-    return "schema " + c.schema_name + ": must be " + in.schema_name;
+  const bool twist = in.teleop && (c.schema_name == "geometry_msgs/msg/Twist" ||
+                                   c.schema_name == "geometry_msgs/Twist");
+  if (c.schema_name != in.schema_name && c.schema_name != short_name && !twist) {
+    return "schema " + c.schema_name + ": must be " + in.schema_name +
+           (in.teleop ? " or geometry_msgs/msg/Twist" : "");
   }
   if (!in.writer.valid()) {
     const std::string dds_name = towsim::app::DdsTopicName(c.topic);
@@ -321,6 +354,20 @@ std::string Bridge::Publish(const towsim::app::foxglove::ClientChannel& c, const
   const auto it = inbound_.find(c.topic);
   if (it == inbound_.end() || !it->second.writer.valid()) return "not advertised: " + c.topic;
   Inbound& in = it->second;
+  const bool twist = in.teleop && c.schema_name.rfind("geometry_msgs/", 0) == 0;
+  if (twist) {
+    geometry_msgs_msg_dds__Twist_ t{};
+    if (!twist_type_.Deserialize(data, size, &t)) {
+      ++malformed_;
+      return "rejected: malformed geometry_msgs/msg/Twist on " + c.topic + " (" +
+             std::to_string(size) + " bytes)";
+    }
+    dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load());
+    cmd.header.frame_id = const_cast<char*>("");
+    const dds_return_t rc = dds_write(in.writer.get(), &cmd);
+    if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
+    return "";
+  }
   dds::CdrSample sample;
   try {
     sample = dds::CdrSample::FromBytes(*in.type, data, size);

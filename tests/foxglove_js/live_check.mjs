@@ -10,7 +10,9 @@
 //      both vehicles through clientPublish (ActuatorCommand answering each status step): zero
 //      thrust up to kThrustStep, then 4165 N. At kBadStep it first sends a malformed command
 //      (truncated CDR: the bridge rejects and counts it, an error status comes back) and a
-//      NaN thrust (the node rejects and counts it: SimStatus.commands_rejected).
+//      NaN thrust (the node rejects and counts it: SimStatus.commands_rejected). At
+//      kTeleopStep the tow vehicle's answer is a geometry_msgs/Twist, as Foxglove's Teleop panel
+//      sends (the bridge turns it into the command answering the newest status).
 // Then: the odometry decoded from the WebSocket equals the node's bodies.csv row for row
 // (every CSV row at t > 0 has its message; 9 significant digits, as decode_recording.mjs);
 // the tow vehicle at rest until the thrust comes and moving after it; time messages are
@@ -39,6 +41,7 @@ const [simNode, bridgeExe, sourceDir, outDir, domainText] = process.argv.slice(2
 const kDuration = 10; // [s] simulated
 const kThrustStep = 20; // the first step answered with thrust
 const kBadStep = 60; // the step whose answer is preceded by a malformed and a NaN command
+const kTeleopStep = 80; // the step the tow vehicle is answered with a Twist (Teleop panel)
 const kThrust = 4165; // [N] Case 1
 const kBadAnswerDelay = 200; // [ms] between the NaN command and the good one
 const kTimeout = 60e3; // [ms] the whole check; a run that takes longer has hung
@@ -112,6 +115,11 @@ const statuses = [];
 let decodeFailures = 0;
 const commandChannels = new Map(); // body -> client channel id
 let commandWriter;
+let teleopChannel;
+// geometry_msgs/Twist as Foxglove's Teleop panel sends it, with the official definitions
+const twistWriter = new MessageWriter(parseMessageDefinition(
+  "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n================================================================================\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n",
+  { ros2: true }));
 const answered = new Set();
 
 function command(step, thrust) {
@@ -139,6 +147,9 @@ const finished = new Promise((resolve) => {
         check(c.schemaName === "towsim_msgs/msg/ActuatorCommand", `${c.topic} schema ${c.schemaName}`);
         commandWriter = new MessageWriter(definitions);
         commandChannels.set(m[1], client.advertise({ topic: c.topic, encoding: "cdr", schemaName: c.schemaName }));
+        if (m[1] === "tow_vehicle") {
+          teleopChannel = client.advertise({ topic: c.topic, encoding: "cdr", schemaName: "geometry_msgs/msg/Twist" });
+        }
       }
     }
   });
@@ -163,7 +174,13 @@ const finished = new Promise((resolve) => {
     answered.add(step);
     const thrust = step >= kThrustStep ? kThrust : 0;
     const answer = () => {
-      client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, thrust)));
+      if (step === kTeleopStep) {
+        // the bridge makes it the command answering the newest status: this step
+        client.sendMessage(teleopChannel, twistWriter.writeMessage({
+          linear: { x: thrust, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } }));
+      } else {
+        client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, thrust)));
+      }
       client.sendMessage(commandChannels.get("towfish"), commandWriter.writeMessage(command(step, 0)));
     };
     if (step !== kBadStep) {
@@ -246,6 +263,9 @@ check(u(kDuration) > kMoving, `moving after the thrust: u = ${u(kDuration)}`);
 // the NaN command: rejected and counted by the node; the malformed one: by the bridge
 const last = (byTopic.get("/towsim/status") ?? []).at(-1)?.value;
 check(last !== undefined && Number(last.commands_rejected) === 1, `node: commands_rejected ${last?.commands_rejected}`);
+// the Teleop Twist answered its step: no lockstep timeout, no failsafe
+check(last !== undefined && Number(last.lockstep_timeouts) === 0 && Number(last.failsafe_count) === 0,
+  `lockstep timeouts ${last?.lockstep_timeouts}, failsafes ${last?.failsafe_count}`);
 check(statuses.some((s) => s.level === 2 && /malformed/.test(s.message)), `an error status for the malformed command (${JSON.stringify(statuses)})`);
 check(/malformed 1\)/.test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
 
