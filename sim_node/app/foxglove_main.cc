@@ -19,9 +19,11 @@
 // out of range clamped, counted in its status). A malformed message is rejected here: an error
 // status to the client, and counted. Other topics or encodings are refused at advertise.
 // Foxglove's Teleop panel publishes geometry_msgs/msg/Twist: on a command topic it becomes an
-// ActuatorCommand (TwistToCommand: thrust = linear.x [N], rudder = -angular.z [rad] (the
-// panel's "left" is positive angular.z, a positive rudder turns to starboard), elevator =
-// linear.z [rad]) answering the step of the newest status seen, then goes the same way.
+// ActuatorCommand answering the step of the newest status seen, then goes the same way
+// (TwistToCommand): thrust = linear.x [N] when non-zero, else the thrust the panel set last
+// (so the rudder buttons keep the speed); rudder = -angular.z [rad] (the panel's "left" is a
+// positive angular.z, a positive rudder turns to starboard); elevator = linear.z [rad]; an
+// all-zero Twist stops (thrust 0, fins centred).
 //
 // Binds 127.0.0.1 unless --address says otherwise. Prints on stdout, once listening:
 //   towsim_foxglove: serving ws://127.0.0.1:8765 (domain 0, namespace /towsim)
@@ -165,12 +167,16 @@ uint64_t StampNs(bool sequence_first, const uint8_t* p, size_t size, uint64_t fa
   return static_cast<uint64_t>(sec) * 1000000000ull + nanosec;
 }
 
-// Foxglove's Teleop panel: a Twist as an actuator command answering `step` (see the top)
+// Foxglove's Teleop panel: a Twist as an actuator command answering `step` (see the top);
+// *thrust: the thrust the panel set last, updated
 towsim::dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t,
-                                               uint64_t step) {
+                                               uint64_t step, double* thrust) {
+  const bool stop = t.linear.x == 0.0 && t.linear.y == 0.0 && t.linear.z == 0.0 &&
+                    t.angular.x == 0.0 && t.angular.y == 0.0 && t.angular.z == 0.0;
+  if (t.linear.x != 0.0 || stop) *thrust = t.linear.x;
   towsim::dds::ActuatorCommandMsg cmd{};
   cmd.step = step;
-  cmd.thrust = t.linear.x;
+  cmd.thrust = *thrust;
   cmd.rudder = -t.angular.z;
   cmd.elevator = t.linear.z;
   return cmd;
@@ -190,6 +196,7 @@ struct Served {
 struct Inbound {
   std::string schema_name;  // "towsim_msgs/msg/ActuatorCommand"
   bool teleop = false;      // a command topic: also takes geometry_msgs/msg/Twist
+  double teleop_thrust = 0.0;  // the thrust the Teleop panel set last [N]
   const dds_topic_descriptor_t* descriptor = nullptr;
   dds::RawType* type = nullptr;
   dds::Entity topic, writer;
@@ -362,7 +369,7 @@ std::string Bridge::Publish(const towsim::app::foxglove::ClientChannel& c, const
       return "rejected: malformed geometry_msgs/msg/Twist on " + c.topic + " (" +
              std::to_string(size) + " bytes)";
     }
-    dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load());
+    dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load(), &in.teleop_thrust);
     cmd.header.frame_id = const_cast<char*>("");
     const dds_return_t rc = dds_write(in.writer.get(), &cmd);
     if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
