@@ -11,9 +11,12 @@
 #      towsim_export, the paper's figures are drawn into out/case2_uturn/figures/, and a
 #      summary table is printed: steady speed, turning radii, towfish depth range, tensions, and
 #      the towfish depth excursion with and without the depth controller.
+# While the first U-turn runs, towsim_foxglove serves it live to Foxglove at
+# ws://localhost:TOWSIM_FOXGLOVE_PORT (docs/foxglove.md; layout config/foxglove/towsim.json).
 # It ends by itself (about 10 s after the build) and leaves no process behind: every process
 # it starts is stopped on exit, also on Ctrl-C. Environment: TOWSIM_DOMAIN (DDS domain of the
-# first run, the second uses +1; default 20), TOWSIM_RATE (default 50).
+# first run, the second uses +1; default 20), TOWSIM_RATE (default 50; 1 to watch in real
+# time), TOWSIM_FOXGLOVE_PORT (default 8765).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh" python3
 
@@ -22,16 +25,19 @@ sim_node="$bin"/sim_node/app/sim_node
 exporter="$bin"/sim_node/app/towsim_export
 runner="$bin"/controllers/maneuver_runner
 depth_ctl="$bin"/controllers/towfish_depth
+foxglove="$bin"/sim_node/app/towsim_foxglove
+foxglove_port="${TOWSIM_FOXGLOVE_PORT:-8765}"
 domain="${TOWSIM_DOMAIN:-20}"
 rate="${TOWSIM_RATE:-50}"
 scene=config/scenes/case2_uturn.yaml
 
 # every process started here is stopped when the script ends, however it ends
 pids=()
+bridge_pid=""
 cleanup() {
   local pid
-  for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
-  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}" $bridge_pid; do kill -TERM "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}" $bridge_pid; do wait "$pid" 2>/dev/null || true; done
 }
 trap cleanup EXIT
 trap 'exit 130' INT
@@ -100,11 +106,21 @@ finish_uturn() {
 echo
 echo "== 2. Case 2 U-turn over DDS: sim_node + maneuver_runner + towfish_depth, twice" \
      "(realtime x$rate, domains $domain and $((domain + 1)))"
+# the live view of the first run (a port in use only costs the live view: see its log)
+mkdir -p out
+"$foxglove" --domain "$domain" --port "$foxglove_port" --quiet \
+  >out/towsim_foxglove.out 2>out/towsim_foxglove.err &
+bridge_pid=$!
+echo "Foxglove: open ws://localhost:$foxglove_port while the first run lasts" \
+     "(layout: config/foxglove/towsim.json; docs/foxglove.md)"
 run_uturn case2_uturn "$domain" --hold
 run_uturn case2_uturn_depth_control "$((domain + 1))" --depth 25
 finish_uturn case2_uturn "${pids[0]}" "${pids[1]}" "${pids[2]}"
 finish_uturn case2_uturn_depth_control "${pids[3]}" "${pids[4]}" "${pids[5]}"
 pids=()
+kill -TERM "$bridge_pid" 2>/dev/null || true
+wait "$bridge_pid" 2>/dev/null || true
+bridge_pid=""
 
 echo
 echo "== 3. recordings -> CSV -> figures and summary"

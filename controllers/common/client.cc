@@ -112,9 +112,9 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   const std::string prefix = TopicPrefix(options.ns);
   // a ROS 2 participant: USER_DATA enclave=/; (dds/ros_graph.h)
   dds_qos_t* participant_qos = dds::NewParticipantQos();
-  m.participant = Check(dds_create_participant(options.domain, participant_qos, nullptr),
-                        "creating the DDS participant (domain " +
-                            std::to_string(options.domain) + ")");
+  m.participant =
+      Check(dds_create_participant(options.domain, participant_qos, nullptr),
+            "creating the DDS participant (domain " + std::to_string(options.domain) + ")");
   dds_delete_qos(participant_qos);
   dds_qos_t* state_qos = ReliableQos(16, false);
   dds_qos_t* command_qos = ReliableQos(1, false);
@@ -146,7 +146,8 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
                              "command writer");
     // the controller as a ROS 2 node <ns>/<name> with these endpoints (ros2 node list)
     m.graph = std::make_unique<dds::RosGraphNode>(
-        m.participant, options.ns, options.name, std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader},
+        m.participant, options.ns, options.name,
+        std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader},
         std::vector<dds_entity_t>{m.command_writer});
 
     // the node's scene: the body must take commands

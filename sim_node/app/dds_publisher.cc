@@ -47,8 +47,7 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
     bodies_.push_back(std::make_unique<BodyEndpoints>(BodyEndpoints{
         std::move(odom_topic), std::move(force_topic), std::move(odom), std::move(force),
         std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, dds::FrdFrame(name)),
-        std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(name)), Recorded{},
-        Recorded{}}));
+        std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(name)), Recorded{}, Recorded{}}));
   }
   const int num_spheres = sim.num_spheres();
   for (int v : command_vehicles) {

@@ -194,8 +194,8 @@ struct Served {
 
 // a topic clients may publish on
 struct Inbound {
-  std::string schema_name;  // "towsim_msgs/msg/ActuatorCommand"
-  bool teleop = false;      // a command topic: also takes geometry_msgs/msg/Twist
+  std::string schema_name;     // "towsim_msgs/msg/ActuatorCommand"
+  bool teleop = false;         // a command topic: also takes geometry_msgs/msg/Twist
   double teleop_thrust = 0.0;  // the thrust the Teleop panel set last [N]
   const dds_topic_descriptor_t* descriptor = nullptr;
   dds::RawType* type = nullptr;
@@ -291,8 +291,8 @@ void Bridge::UpdateReaders() {
     if (s->topic.transient_local) {
       dds_qset_durability(qos.get(), DDS_DURABILITY_TRANSIENT_LOCAL);
     }
-    const dds_entity_t r = dds_create_reader(participant_.get(), s->topic_entity.get(), qos.get(),
-                                             nullptr);
+    const dds_entity_t r =
+        dds_create_reader(participant_.get(), s->topic_entity.get(), qos.get(), nullptr);
     if (r < 0) throw dds::DdsError("creating a reader for " + s->topic.dds_name, r);
     s->reader = dds::Entity(r);
     const dds_entity_t c = dds_create_readcondition(r, DDS_ANY_STATE);
@@ -305,8 +305,8 @@ void Bridge::UpdateReaders() {
 void Bridge::TakeAll() {
   for (auto& s : served_) {
     if (!s->reader.valid()) continue;
-    const int n = dds::TakeRaw(
-        s->reader.get(), [&](const uint8_t* p, size_t size, const dds_sample_info_t&) {
+    const int n =
+        dds::TakeRaw(s->reader.get(), [&](const uint8_t* p, size_t size, const dds_sample_info_t&) {
           const uint64_t t = StampNs(s->sequence_first, p, size, clock_ns_);
           if (s->is_clock) {
             clock_ns_ = t;
@@ -333,8 +333,8 @@ std::string Bridge::Advertise(const towsim::app::foxglove::ClientChannel& c) {
   }
   Inbound& in = it->second;
   if (c.encoding != "cdr") return "encoding " + c.encoding + ": only cdr";
-  const std::string short_name =
-      in.schema_name.substr(0, in.schema_name.find('/')) + in.schema_name.substr(in.schema_name.rfind('/'));
+  const std::string short_name = in.schema_name.substr(0, in.schema_name.find('/')) +
+                                 in.schema_name.substr(in.schema_name.rfind('/'));
   const bool twist = in.teleop && (c.schema_name == "geometry_msgs/msg/Twist" ||
                                    c.schema_name == "geometry_msgs/Twist");
   if (c.schema_name != in.schema_name && c.schema_name != short_name && !twist) {

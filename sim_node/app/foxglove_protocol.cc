@@ -1,7 +1,6 @@
 #include "app/foxglove_protocol.h"
 
 #include <cstring>
-
 #include <nlohmann/json.hpp>
 
 namespace towsim::app::foxglove {
@@ -87,7 +86,8 @@ ClientRequest ParseClientText(const std::string& text) {
     }
     r.op = j["op"].get<std::string>();
     if (r.op == "subscribe") {
-      for (const Json& s : j.at("subscriptions")) r.subscribe.emplace_back(Id(s, "id"), Id(s, "channelId"));
+      for (const Json& s : j.at("subscriptions"))
+        r.subscribe.emplace_back(Id(s, "id"), Id(s, "channelId"));
       r.kind = ClientRequest::kSubscribe;
     } else if (r.op == "unsubscribe") {
       for (const Json& id : j.at("subscriptionIds")) {
@@ -117,8 +117,7 @@ ClientRequest ParseClientText(const std::string& text) {
   return r;
 }
 
-bool ParseClientBinary(const uint8_t* data, std::size_t size, ClientData* out,
-                       std::string* error) {
+bool ParseClientBinary(const uint8_t* data, std::size_t size, ClientData* out, std::string* error) {
   if (size < 5 || data[0] != kClientMessageData) {
     *error = size < 5 ? "binary message shorter than 5 bytes"
                       : "unsupported binary opcode " + std::to_string(data[0]);

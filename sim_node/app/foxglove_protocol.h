@@ -54,11 +54,11 @@ struct ClientChannel {
 struct ClientRequest {
   enum Kind { kSubscribe, kUnsubscribe, kAdvertise, kUnadvertise, kOther, kInvalid };
   Kind kind = kInvalid;
-  std::string op;                                          // as sent
-  std::vector<std::pair<uint32_t, uint32_t>> subscribe;    // (subscription id, channel id)
-  std::vector<uint32_t> ids;                               // unsubscribe / unadvertise
-  std::vector<ClientChannel> channels;                     // advertise
-  std::string error;                                       // kInvalid: why
+  std::string op;                                        // as sent
+  std::vector<std::pair<uint32_t, uint32_t>> subscribe;  // (subscription id, channel id)
+  std::vector<uint32_t> ids;                             // unsubscribe / unadvertise
+  std::vector<ClientChannel> channels;                   // advertise
+  std::string error;                                     // kInvalid: why
 };
 
 ClientRequest ParseClientText(const std::string& text);
@@ -69,7 +69,6 @@ struct ClientData {
   const uint8_t* data = nullptr;
   std::size_t size = 0;
 };
-bool ParseClientBinary(const uint8_t* data, std::size_t size, ClientData* out,
-                       std::string* error);
+bool ParseClientBinary(const uint8_t* data, std::size_t size, ClientData* out, std::string* error);
 
 }  // namespace towsim::app::foxglove

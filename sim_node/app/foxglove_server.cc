@@ -2,7 +2,6 @@
 
 #include <chrono>
 #include <stdexcept>
-
 #include <websocketpp/config/asio_no_tls.hpp>
 #include <websocketpp/server.hpp>
 
@@ -13,8 +12,8 @@ using WsServer = websocketpp::server<websocketpp::config::asio>;
 using Handle = websocketpp::connection_hdl;
 
 struct Client {
-  std::map<uint32_t, uint32_t> subscription_of;  // channel -> subscription id
-  std::map<uint32_t, uint32_t> channel_of;       // subscription id -> channel
+  std::map<uint32_t, uint32_t> subscription_of;            // channel -> subscription id
+  std::map<uint32_t, uint32_t> channel_of;                 // subscription id -> channel
   std::map<uint32_t, foxglove::ClientChannel> advertised;  // client channel id -> channel
 };
 
@@ -37,11 +36,11 @@ struct FoxgloveServer::Impl {
   }
 };
 
-FoxgloveServer::FoxgloveServer(Options options) : impl_(std::make_unique<Impl>()), opt_(std::move(options)) {
-  impl_->session_id = std::to_string(
-      std::chrono::duration_cast<std::chrono::milliseconds>(
-          std::chrono::system_clock::now().time_since_epoch())
-          .count());
+FoxgloveServer::FoxgloveServer(Options options)
+    : impl_(std::make_unique<Impl>()), opt_(std::move(options)) {
+  impl_->session_id = std::to_string(std::chrono::duration_cast<std::chrono::milliseconds>(
+                                         std::chrono::system_clock::now().time_since_epoch())
+                                         .count());
 }
 
 FoxgloveServer::~FoxgloveServer() { Stop(); }
@@ -105,8 +104,8 @@ void FoxgloveServer::Start() {
       std::string error;
       foxglove::ClientChannel channel;
       bool known = false;
-      if (foxglove::ParseClientBinary(reinterpret_cast<const uint8_t*>(p.data()), p.size(),
-                                      &data, &error)) {
+      if (foxglove::ParseClientBinary(reinterpret_cast<const uint8_t*>(p.data()), p.size(), &data,
+                                      &error)) {
         std::lock_guard<std::mutex> lock(m.mutex);
         const auto c = m.clients.find(h);
         if (c != m.clients.end()) {
@@ -137,8 +136,8 @@ void FoxgloveServer::Start() {
             if (channel == 0 || channel > m.channels.size()) {
               errors.push_back("subscribe: no channel " + std::to_string(channel));
             } else if (client.channel_of.count(sub) || client.subscription_of.count(channel)) {
-              errors.push_back("subscribe: subscription " + std::to_string(sub) +
-                               " or channel " + std::to_string(channel) + " already in use");
+              errors.push_back("subscribe: subscription " + std::to_string(sub) + " or channel " +
+                               std::to_string(channel) + " already in use");
             } else {
               client.channel_of[sub] = channel;
               client.subscription_of[channel] = sub;

@@ -57,8 +57,8 @@ class Entity {
 
 // A domain participant. With a non-empty `config` (what CYCLONEDDS_URI would hold: a
 // file:// URI or XML), the domain is created from it explicitly; otherwise Cyclone reads
-// $CYCLONEDDS_URI. Its USER_DATA is "enclave=/;" (a ROS 2 participant, dds/ros_graph.h). Throws DdsError (e.g. a domain id whose ports are out of range, an
-// unreadable config file).
+// $CYCLONEDDS_URI. Its USER_DATA is "enclave=/;" (a ROS 2 participant, dds/ros_graph.h). Throws
+// DdsError (e.g. a domain id whose ports are out of range, an unreadable config file).
 class Participant {
  public:
   Participant(uint32_t domain_id, const std::string& config);

@@ -47,8 +47,7 @@ Eigen::Quaterniond FrdFromFlu() { return Eigen::Quaterniond(0.0, 1.0, 0.0, 0.0);
 
 core::Vec3 NedToEnu(const core::Vec3& p_W) { return core::Vec3(p_W.y(), p_W.x(), -p_W.z()); }
 
-TransformsMessage::TransformsMessage(
-    const std::vector<std::pair<std::string, std::string>>& edges)
+TransformsMessage::TransformsMessage(const std::vector<std::pair<std::string, std::string>>& edges)
     : msg{}, transforms_(edges.size()) {
   names_.reserve(2 * edges.size());
   for (const auto& [parent, child] : edges) {

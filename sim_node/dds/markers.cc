@@ -95,8 +95,8 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   cable_points_.resize(static_cast<size_t>(sim.num_nodes()));
   cable_colors_.resize(cable_points_.size());
   {
-    MarkerMsg& m = Add("cable", 0, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP,
-                       kEnuWorldFrame);
+    MarkerMsg& m =
+        Add("cable", 0, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP, kEnuWorldFrame);
     m.scale.x = kCableLineWidth;
     const uint32_t n = static_cast<uint32_t>(cable_points_.size());
     m.points = {n, n, cable_points_.data(), false};
@@ -139,8 +139,8 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
       R.col(0) = x;
       R.col(1) = n.cross(x);
       R.col(2) = n;
-      MarkerMsg& fin = Add("fins", fin_id++, visualization_msgs_msg_dds__Marker_Constants_CUBE,
-                           name);
+      MarkerMsg& fin =
+          Add("fins", fin_id++, visualization_msgs_msg_dds__Marker_Constants_CUBE, name);
       SetPose(FrdToFlu(s.position_B), Eigen::Quaterniond(R), &fin.pose);
       fin.scale.x = chord;
       fin.scale.y = span;
@@ -155,8 +155,8 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   arrow_points_.resize(4);
   for (int e = 0; e < 2; ++e) {
     if (!Held(*ends[e])) continue;
-    MarkerMsg& m = Add("cable_force", e, visualization_msgs_msg_dds__Marker_Constants_ARROW,
-                       kEnuWorldFrame);
+    MarkerMsg& m =
+        Add("cable_force", e, visualization_msgs_msg_dds__Marker_Constants_ARROW, kEnuWorldFrame);
     m.scale.x = 0.15;  // shaft diameter [m]
     m.scale.y = 0.4;   // head diameter [m]
     m.scale.z = 0.6;   // head length [m]
@@ -182,7 +182,8 @@ void SceneMarkers::Update(const core::Simulation& sim) {
     const core::Vec3 p = sim.node_position(a.node);
     const core::Vec3 f = sim.end_force(a.end);
     SetPoint(NedToEnu(p), &arrow_points_[static_cast<size_t>(2 * a.end)]);
-    SetPoint(NedToEnu(p + kForceArrowScale * f), &arrow_points_[static_cast<size_t>(2 * a.end + 1)]);
+    SetPoint(NedToEnu(p + kForceArrowScale * f),
+             &arrow_points_[static_cast<size_t>(2 * a.end + 1)]);
   }
 }
 

@@ -2,7 +2,7 @@
 // The 3D scene as a visualization_msgs/MarkerArray (ROS 2 Jazzy layout; docs/frames.md):
 //
 //   ns "cable"        id 0   LINE_STRIP in `world` (ENU): the cable nodes, each point coloured
-//                            by its tension on the legend TensionColor (0 N blue ... 
+//                            by its tension on the legend TensionColor (0 N blue ...
 //                            kTensionLegendMax red); line width kCableLineWidth
 //   ns "hull"         id b   per body, in frame <b> (FLU): a vehicle as a cylinder of its
 //                            length and diameter along x about the body origin; a sphere body

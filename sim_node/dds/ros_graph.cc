@@ -31,12 +31,13 @@ Gid EntityGid(dds_entity_t entity) {
   return gid;
 }
 
-RosGraphNode::RosGraphNode(dds_entity_t participant, const std::string& ns,
-                           const std::string& name, const std::vector<dds_entity_t>& readers,
+RosGraphNode::RosGraphNode(dds_entity_t participant, const std::string& ns, const std::string& name,
+                           const std::vector<dds_entity_t>& readers,
                            const std::vector<dds_entity_t>& writers) {
-  topic_ = Check(dds_create_topic(participant, &rmw_dds_common_msg_dds__ParticipantEntitiesInfo__desc,
-                                  kDiscoveryTopic, nullptr, nullptr),
-                 std::string("creating topic ") + kDiscoveryTopic);
+  topic_ =
+      Check(dds_create_topic(participant, &rmw_dds_common_msg_dds__ParticipantEntitiesInfo__desc,
+                             kDiscoveryTopic, nullptr, nullptr),
+            std::string("creating topic ") + kDiscoveryTopic);
   // reliable, transient local, keep last 1 (rmw_cyclonedds' QoS of this topic), XCDR1
   dds_qos_t* qos = dds_create_qos();
   dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_INFINITY);
@@ -78,8 +79,7 @@ RosGraphNode::RosGraphNode(dds_entity_t participant, const std::string& ns,
   info.node_entities_info_seq = {1, 1, &node, false};
   const dds_return_t rc = dds_write(writer_, &info);
   if (rc < 0) {
-    throw std::runtime_error(std::string("writing ") + kDiscoveryTopic + ": " +
-                             dds_strretcode(rc));
+    throw std::runtime_error(std::string("writing ") + kDiscoveryTopic + ": " + dds_strretcode(rc));
   }
 }
 

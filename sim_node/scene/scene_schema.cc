@@ -31,9 +31,9 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   static const std::vector<std::string> kSphereKeys = {"mass", "volume", "drag_coefficient",
                                                        "added_mass_coefficient", "source"};
   static const std::vector<std::string> kVehicleKeys = {
-      "source",     "length",      "diameter", "mass",    "inertia",  "r_g",    "r_b",      "volume",
-      "added_mass", "munk_moment", "damping", "surfaces", "rudder", "elevator", "propeller",
-      "waterplane"};
+      "source", "length",   "diameter",   "mass",        "inertia", "r_g",
+      "r_b",    "volume",   "added_mass", "munk_moment", "damping", "surfaces",
+      "rudder", "elevator", "propeller",  "waterplane"};
   // type first, then the keys of `groups`, each once, in order
   const auto join = [](std::vector<std::string> keys,
                        std::initializer_list<const std::vector<std::string>*> groups) {

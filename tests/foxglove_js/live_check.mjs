@@ -274,6 +274,33 @@ const clocks = new Set((byTopic.get("/clock") ?? []).map(({ value }) => stampNs(
 check(times.length > 0 && times.every((t) => clocks.has(t)), `${times.length} time messages, all /clock stamps`);
 for (let i = 1; i < times.length; i++) if (!check(times[i] >= times[i - 1], `time ${i} not decreasing`)) break;
 
+// the layout (config/foxglove/towsim.json): every plotted path resolves to a number in the
+// messages decoded here, the 3D panel follows a frame of /tf, Teleop drives a command topic
+const layout = JSON.parse(readFileSync(join(sourceDir, "config/foxglove/towsim.json"), "utf8"));
+for (const [id, panel] of Object.entries(layout.configById)) {
+  if (id.startsWith("Plot!")) {
+    for (const { value } of panel.paths) {
+      const dot = value.indexOf(".");
+      const topic = value.slice(0, dot);
+      const message = (byTopic.get(topic) ?? []).at(-1)?.value;
+      let v = message;
+      for (const part of value.slice(dot + 1).split(".")) {
+        const m = part.match(/^(\w+)(?:\[(\d+)\])?$/);
+        v = v?.[m[1]];
+        if (m[2] !== undefined) v = v?.[Number(m[2])];
+      }
+      check(typeof v === "number" && Number.isFinite(v), `layout ${id}: ${value} = ${v}`);
+    }
+  }
+  if (id.startsWith("3D!")) {
+    const frames = new Set((byTopic.get("/tf") ?? []).flatMap(({ value }) => value.transforms.map((t) => t.child_frame_id)));
+    (byTopic.get("/tf_static") ?? []).forEach(({ value }) => value.transforms.forEach((t) => frames.add(t.child_frame_id)));
+    check(frames.has(panel.followTf), `layout ${id}: follows ${panel.followTf}`);
+    check(panel.layers.grid.frameId === "world", `layout ${id}: grid in world`);
+  }
+  if (id.startsWith("Teleop!")) check(commandChannels.has(panel.topic.split("/")[2]), `layout ${id}: ${panel.topic}`);
+}
+
 if (failures > 0) {
   console.error(`${failures} failures`);
   process.exit(1);

@@ -71,12 +71,12 @@ class GraphObserver {
     info_reader_ = dds_create_reader(participant_, topic, qos, nullptr);
     dds_delete_qos(qos);
     EXPECT_GT(info_reader_, 0);
-    participants_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr,
-                                      nullptr);
-    publications_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr,
-                                      nullptr);
-    subscriptions_ = dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION,
-                                       nullptr, nullptr);
+    participants_ =
+        dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPARTICIPANT, nullptr, nullptr);
+    publications_ =
+        dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
+    subscriptions_ =
+        dds_create_reader(participant_, DDS_BUILTIN_TOPIC_DCPSSUBSCRIPTION, nullptr, nullptr);
   }
   ~GraphObserver() { dds_delete(participant_); }
 
@@ -89,8 +89,8 @@ class GraphObserver {
       if (n <= 0) break;
       for (int i = 0; i < n; ++i) {
         if (!infos[i].valid_data) continue;
-        const auto* m = static_cast<const rmw_dds_common_msg_dds__ParticipantEntitiesInfo_*>(
-            samples[i]);
+        const auto* m =
+            static_cast<const rmw_dds_common_msg_dds__ParticipantEntitiesInfo_*>(samples[i]);
         for (uint32_t k = 0; k < m->node_entities_info_seq._length; ++k) {
           const auto& e = m->node_entities_info_seq._buffer[k];
           NodeEntry entry{FromMsg(m->gid), e.node_namespace, e.node_name, {}, {}};
@@ -122,7 +122,8 @@ class GraphObserver {
       dds_return_loan(participants_, samples, n);
       if (n < 16) break;
     }
-    for (auto [reader, out] : {std::pair{publications_, &publications}, {subscriptions_, &subscriptions}}) {
+    for (auto [reader, out] :
+         {std::pair{publications_, &publications}, {subscriptions_, &subscriptions}}) {
       for (;;) {
         std::memset(samples, 0, sizeof samples);
         const dds_return_t n = dds_take(reader, samples, infos, 16, 16);
@@ -137,8 +138,8 @@ class GraphObserver {
     }
   }
 
-  std::map<std::string, NodeEntry> nodes_;      // "<ns>/<name>"
-  std::map<Gid, std::string> user_data_;        // participant GUID -> USER_DATA
+  std::map<std::string, NodeEntry> nodes_;  // "<ns>/<name>"
+  std::map<Gid, std::string> user_data_;    // participant GUID -> USER_DATA
   std::map<Gid, Endpoint> publications, subscriptions;
 
  private:
@@ -182,8 +183,8 @@ bool Complete(const GraphObserver& o, const std::string& key) {
 TEST(RosGraph, NodeAndControllerListTheirDiscoveredEndpoints) {
   setenv("CYCLONEDDS_URI", TOWSIM_DDS_URI, 1);
   constexpr int kDomain = 180;
-  Process node({TOWSIM_SIM_NODE, "--scene", kSource + "/config/scenes/case1_forward.yaml",
-                "--mode", "lockstep", "--domain", std::to_string(kDomain)},
+  Process node({TOWSIM_SIM_NODE, "--scene", kSource + "/config/scenes/case1_forward.yaml", "--mode",
+                "lockstep", "--domain", std::to_string(kDomain)},
                LogPrefix("sim_node"));
   Process runner({TOWSIM_MANEUVER_RUNNER, "--body", "tow_vehicle", "--thrust", "4165",
                   "--rudder-deg", "0", "--domain", std::to_string(kDomain)},
@@ -202,26 +203,24 @@ TEST(RosGraph, NodeAndControllerListTheirDiscoveredEndpoints) {
   EXPECT_EQ(sim.ns, "/towsim");
   EXPECT_EQ(sim.name, "sim_node");
   EXPECT_EQ(o.user_data_.at(sim.participant), "enclave=/;");
-  const std::set<std::string> written = CheckEndpoints(sim.writers, sim.participant,
-                                                       o.publications, "sim_node writers");
-  const std::set<std::string> expected_written = {
-      "rt/clock",
-      "rt/tf",
-      "rt/tf_static",
-      "rt/towsim/status",
-      "rt/towsim/scene_info",
-      "rt/towsim/cable/state",
-      "rt/towsim/markers",
-      "rt/towsim/tow_vehicle/odom",
-      "rt/towsim/tow_vehicle/cable_force",
-      "rt/towsim/towfish/odom",
-      "rt/towsim/towfish/cable_force"};
+  const std::set<std::string> written =
+      CheckEndpoints(sim.writers, sim.participant, o.publications, "sim_node writers");
+  const std::set<std::string> expected_written = {"rt/clock",
+                                                  "rt/tf",
+                                                  "rt/tf_static",
+                                                  "rt/towsim/status",
+                                                  "rt/towsim/scene_info",
+                                                  "rt/towsim/cable/state",
+                                                  "rt/towsim/markers",
+                                                  "rt/towsim/tow_vehicle/odom",
+                                                  "rt/towsim/tow_vehicle/cable_force",
+                                                  "rt/towsim/towfish/odom",
+                                                  "rt/towsim/towfish/cable_force"};
   EXPECT_EQ(written, expected_written);
-  const std::set<std::string> read = CheckEndpoints(sim.readers, sim.participant,
-                                                    o.subscriptions, "sim_node readers");
-  const std::set<std::string> expected_read = {"rt/towsim/sim_control",
-                                               "rt/towsim/tow_vehicle/command",
-                                               "rt/towsim/towfish/command"};
+  const std::set<std::string> read =
+      CheckEndpoints(sim.readers, sim.participant, o.subscriptions, "sim_node readers");
+  const std::set<std::string> expected_read = {
+      "rt/towsim/sim_control", "rt/towsim/tow_vehicle/command", "rt/towsim/towfish/command"};
   EXPECT_EQ(read, expected_read);
   // the types as ROS 2 names them on DDS
   for (const Gid& g : sim.writers) {

@@ -53,8 +53,8 @@ core::Vec3 Translation(const TransformStampedMsg& t) {
 
 // R_WB of ZYX Euler angles (roll phi, pitch theta, yaw psi), written out (Fossen 2011, Eq. 2.18)
 Eigen::Matrix3d EulerZyx(double phi, double theta, double psi) {
-  const double cf = std::cos(phi), sf = std::sin(phi), ct = std::cos(theta),
-               st = std::sin(theta), cp = std::cos(psi), sp = std::sin(psi);
+  const double cf = std::cos(phi), sf = std::sin(phi), ct = std::cos(theta), st = std::sin(theta),
+               cp = std::cos(psi), sp = std::sin(psi);
   Eigen::Matrix3d R;
   R << cp * ct, -sp * cf + cp * st * sf, sp * sf + cp * cf * st,  //
       sp * ct, cp * cf + sf * st * sp, -cp * sf + st * sp * cf,   //
@@ -122,9 +122,8 @@ TEST_F(SceneFrames, EveryFrameResolvesToWorldWithTheHandWrittenRotation) {
   Eigen::Matrix3d enu_ned;
   enu_ned << 0, 1, 0, 1, 0, 0, 0, 0, -1;
   const Eigen::Matrix3d frd_flu = Eigen::Vector3d(1, -1, -1).asDiagonal();
-  for (const std::string frame :
-       {"world_ned", "tow_vehicle_frd", "tow_vehicle", "fish_frd", "fish", "cable_start",
-        "cable_end"}) {
+  for (const std::string frame : {"world_ned", "tow_vehicle_frd", "tow_vehicle", "fish_frd", "fish",
+                                  "cable_start", "cable_end"}) {
     Eigen::Matrix3d R;
     core::Vec3 p;
     EXPECT_TRUE(in_world(frame, &R, &p)) << frame;
@@ -135,11 +134,11 @@ TEST_F(SceneFrames, EveryFrameResolvesToWorldWithTheHandWrittenRotation) {
   const core::VehicleState& s = sim_->vehicle_state(0);
   // roll, pitch, yaw of the state's quaternion, by the ZYX formulas
   const Eigen::Quaterniond& q = s.q_WB;
-  const double phi = std::atan2(2 * (q.w() * q.x() + q.y() * q.z()),
-                                1 - 2 * (q.x() * q.x() + q.y() * q.y()));
+  const double phi =
+      std::atan2(2 * (q.w() * q.x() + q.y() * q.z()), 1 - 2 * (q.x() * q.x() + q.y() * q.y()));
   const double theta = std::asin(2 * (q.w() * q.y() - q.z() * q.x()));
-  const double psi = std::atan2(2 * (q.w() * q.z() + q.x() * q.y()),
-                                1 - 2 * (q.y() * q.y() + q.z() * q.z()));
+  const double psi =
+      std::atan2(2 * (q.w() * q.z() + q.x() * q.y()), 1 - 2 * (q.y() * q.y() + q.z() * q.z()));
   EXPECT_GT(std::abs(phi), 1e-3);  // a general attitude, not an axis permutation
   Eigen::Matrix3d R;
   core::Vec3 p;

@@ -17,9 +17,9 @@
 namespace towsim::dds {
 namespace {
 
-constexpr double kExact = 0.0;       // copied or permuted numbers
+constexpr double kExact = 0.0;        // copied or permuted numbers
 constexpr double kScaledTol = 1e-12;  // a force times a scale [m]: rounding only
-constexpr float kColorTol = 1e-6f;   // float32 channels
+constexpr float kColorTol = 1e-6f;    // float32 channels
 
 constexpr const char* kScene = R"(
 name: dds_markers

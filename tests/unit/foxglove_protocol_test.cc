@@ -4,10 +4,10 @@
 #include "app/foxglove_protocol.h"
 
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 namespace towsim::app::foxglove {
 namespace {
@@ -65,9 +65,8 @@ TEST(FoxgloveProtocolTest, ParsesTheClientRequests) {
   r = ParseClientText(R"({"op":"unsubscribe","subscriptionIds":[0,1]})");
   ASSERT_EQ(r.kind, ClientRequest::kUnsubscribe);
   EXPECT_EQ(r.ids, (std::vector<uint32_t>{0, 1}));
-  r = ParseClientText(
-      R"({"op":"advertise","channels":[{"id":2,"topic":"/towsim/towfish/command",)"
-      R"("encoding":"cdr","schemaName":"towsim_msgs/msg/ActuatorCommand"}]})");
+  r = ParseClientText(R"({"op":"advertise","channels":[{"id":2,"topic":"/towsim/towfish/command",)"
+                      R"("encoding":"cdr","schemaName":"towsim_msgs/msg/ActuatorCommand"}]})");
   ASSERT_EQ(r.kind, ClientRequest::kAdvertise);
   ASSERT_EQ(r.channels.size(), 1u);
   EXPECT_EQ(r.channels[0].id, 2u);
