@@ -47,6 +47,7 @@
 #include "app/foxglove_server.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
+#include "app/tool_flags.h"
 #include "app/topic_types.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
@@ -92,50 +93,33 @@ int Bad(const std::string& message) {
 
 // "" on success, else the error
 std::string Parse(int argc, char** argv, Options* o, bool* help) {
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i], value;
-    bool has_value = false;
-    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      has_value = true;
-    }
-    auto next = [&](std::string* v) {
-      if (has_value) {
-        *v = value;
-        return true;
-      }
-      if (i + 1 >= argc) return false;
-      *v = argv[++i];
-      return true;
-    };
-    auto integer = [](const std::string& v, long lo, long hi, long* out) {
-      char* end = nullptr;
-      *out = std::strtol(v.c_str(), &end, 10);
-      return !v.empty() && *end == '\0' && *out >= lo && *out <= hi;
-    };
+  towsim::app::ToolFlags flags(argc, argv);
+  while (flags.Next()) {
+    const std::string& arg = flags.arg();
     std::string v;
-    long n = 0;
     if (arg == "--help" || arg == "-h") {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
     } else if (arg == "--domain") {
-      if (!next(&v)) return "--domain needs a value";
-      if (!integer(v, 0, 232, &n)) return "--domain " + v + ": must be an integer from 0 to 232";
-      o->domain = static_cast<uint32_t>(n);
+      if (!flags.Value(&v)) return "--domain needs a value";
+      if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
       o->has_domain = true;
     } else if (arg == "--namespace") {
-      if (!next(&o->ns)) return "--namespace needs a value";
+      if (!flags.Value(&o->ns)) return "--namespace needs a value";
       if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
         return "--namespace " + o->ns + ": " + e;
       }
     } else if (arg == "--port") {
-      if (!next(&v)) return "--port needs a value";
-      if (!integer(v, 0, 65535, &n)) return "--port " + v + ": must be an integer from 0 to 65535";
-      o->port = static_cast<int>(n);
+      if (!flags.Value(&v)) return "--port needs a value";
+      char* end = nullptr;
+      const long port = std::strtol(v.c_str(), &end, 10);
+      if (v.empty() || *end != '\0' || port < 0 || port > 65535) {
+        return "--port " + v + ": must be an integer from 0 to 65535";
+      }
+      o->port = static_cast<int>(port);
     } else if (arg == "--address") {
-      if (!next(&o->address) || o->address.empty()) return "--address needs a value";
+      if (!flags.Value(&o->address) || o->address.empty()) return "--address needs a value";
     } else {
       return "unknown option '" + arg + "'";
     }

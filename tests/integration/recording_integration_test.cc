@@ -166,7 +166,10 @@ TEST(RecordingTest, NodeRecordHoldsEveryMessageItPublishedByteForByte) {
       {"/towsim/scene_info", "towsim_msgs/msg/SceneInfo"},
       {"/towsim/cable/state", "towsim_msgs/msg/CableState"},
       {"/towsim/towfish/odom", "nav_msgs/msg/Odometry"},
-      {"/towsim/towfish/cable_force", "geometry_msgs/msg/WrenchStamped"}};
+      {"/towsim/towfish/cable_force", "geometry_msgs/msg/WrenchStamped"},
+      {"/tf", "tf2_msgs/msg/TFMessage"},
+      {"/tf_static", "tf2_msgs/msg/TFMessage"},
+      {"/towsim/markers", "visualization_msgs/msg/MarkerArray"}};
   EXPECT_EQ(types, expected_types);
   bool rosbag2 = false;
   for (const auto& m : r.metadata()) rosbag2 = rosbag2 || m.name == "rosbag2";

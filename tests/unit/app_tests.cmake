@@ -22,3 +22,8 @@ endforeach()
 towsim_add_test(foxglove_protocol_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc
   LIBS towsim::foxglove)
+
+# the command lines of the DDS tools (app/tool_flags)
+towsim_add_test(tool_flags_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/tool_flags_test.cc
+  LIBS towsim::recording)
