@@ -413,6 +413,12 @@ int Bridge::Run() {
               opt_.ns.c_str());
   std::fflush(stdout);
 
+  // the waitset wakes on data; it holds this guard condition so that a wait without readers
+  // (no client subscribed) still blocks for its slice instead of returning at once
+  const dds_entity_t idle = dds_create_guardcondition(participant_.get());
+  if (idle < 0) throw dds::DdsError("creating a guard condition", idle);
+  const dds::Entity idle_entity(idle);
+  waitset_.Attach(idle);
   while (!towsim::app::StopRequested()) {
     UpdateReaders();
     waitset_.Wait(static_cast<int64_t>(kWaitSlice * 1e9));
