@@ -69,10 +69,10 @@ o=$(printf '%s\n' "${off[@]}" | median)
 a=$(printf '%s\n' "${alone[@]}" | median)
 b=$(printf '%s\n' "${idle[@]}" | median)
 w=$(printf '%s\n' "${with[@]}" | median)
-echo "| case | mean step wall time [us] | ratio to offline |"
+echo "| case | mean step wall time [us] | ratio to fast, nobody subscribed |"
 echo "|---|---|---|"
 awk -v o="$o" -v a="$a" -v b="$b" -v w="$w" -v m="$messages" 'BEGIN {
-  printf "| offline (no DDS) | %.1f | 1.000 |\n", o
-  printf "| fast, nobody subscribed (markers every step) | %.1f | %.3f |\n", a, a / o
-  printf "| fast, towsim_foxglove, no client | %.1f | %.3f |\n", b, b / o
-  printf "| fast, towsim_foxglove, 1 client on every channel (%d messages) | %.1f | %.3f |\n", m, w, w / o }'
+  printf "| offline (no DDS; Step only) | %.1f | |\n", o
+  printf "| fast, nobody subscribed (markers every step) | %.1f | 1.000 |\n", a
+  printf "| fast, towsim_foxglove, no client | %.1f | %.3f |\n", b, b / a
+  printf "| fast, towsim_foxglove, 1 client on every channel (%d messages) | %.1f | %.3f |\n", m, w, w / a }'
