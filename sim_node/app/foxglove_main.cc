@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "app/dds_uri.h"
+#include "app/foxglove_commands.h"
 #include "app/foxglove_server.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
@@ -151,21 +152,6 @@ uint64_t StampNs(bool sequence_first, const uint8_t* p, size_t size, uint64_t fa
   return static_cast<uint64_t>(sec) * 1000000000ull + nanosec;
 }
 
-// Foxglove's Teleop panel: a Twist as an actuator command answering `step` (see the top);
-// *thrust: the thrust the panel set last, updated
-towsim::dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t,
-                                               uint64_t step, double* thrust) {
-  const bool stop = t.linear.x == 0.0 && t.linear.y == 0.0 && t.linear.z == 0.0 &&
-                    t.angular.x == 0.0 && t.angular.y == 0.0 && t.angular.z == 0.0;
-  if (t.linear.x != 0.0 || stop) *thrust = t.linear.x;
-  towsim::dds::ActuatorCommandMsg cmd{};
-  cmd.step = step;
-  cmd.thrust = *thrust;
-  cmd.rudder = -t.angular.z;
-  cmd.elevator = t.linear.z;
-  return cmd;
-}
-
 // one towsim topic served as a channel; its reader exists while a client subscribes
 struct Served {
   towsim::app::NodeTopic topic;
@@ -176,17 +162,6 @@ struct Served {
   dds::Entity topic_entity, reader, condition;
 };
 
-// a topic clients may publish on
-struct Inbound {
-  std::string schema_name;     // "towsim_msgs/msg/ActuatorCommand"
-  bool teleop = false;         // a command topic: also takes geometry_msgs/msg/Twist
-  double teleop_thrust = 0.0;  // the thrust the Teleop panel set last [N]
-  const dds_topic_descriptor_t* descriptor = nullptr;
-  dds::RawType* type = nullptr;
-  dds::Entity topic, writer;
-  bool control = false;  // sim_control (ControlQos)
-};
-
 class Bridge {
  public:
   Bridge(const Options& o, const std::string& config)
@@ -194,10 +169,7 @@ class Bridge {
         names_(o.ns),
         participant_(o.domain, config),
         waitset_(participant_),
-        server_({o.address, static_cast<uint16_t>(o.port), "towsim_foxglove " + o.ns}),
-        command_type_(participant_, &towsim_msgs_msg_dds__ActuatorCommand__desc),
-        control_type_(participant_, &towsim_msgs_msg_dds__SimControl__desc),
-        scene_type_(participant_, &towsim_msgs_msg_dds__SceneInfo__desc) {}
+        server_({o.address, static_cast<uint16_t>(o.port), "towsim_foxglove " + o.ns}) {}
 
   int Run();
 
@@ -206,25 +178,16 @@ class Bridge {
   // readers for the channels with subscribers (and /clock while a client is connected)
   void UpdateReaders();
   void TakeAll();
-  std::string Advertise(const towsim::app::foxglove::ClientChannel& c);
-  std::string Publish(const towsim::app::foxglove::ClientChannel& c, const uint8_t* data,
-                      size_t size);
 
   Options opt_;
   dds::TopicNames names_;
   dds::Participant participant_;
   dds::WaitSet waitset_;
   FoxgloveServer server_;
-  dds::RawType command_type_, control_type_, scene_type_;
   std::vector<std::unique_ptr<Served>> served_;
   uint64_t clock_ns_ = 0;
-  std::atomic<uint64_t> status_step_{0};  // of the newest status (Teleop commands answer it)
   dds::RawType status_type_{participant_, &towsim_msgs_msg_dds__SimStatus__desc};
-  dds::RawType twist_type_{participant_, &geometry_msgs_msg_dds__Twist__desc};
-  // written only on the server's thread (Advertise, Publish), after Serve()
-  std::map<std::string, Inbound> inbound_;  // ROS topic -> writer
-  std::mutex inbound_mutex_;
-  uint64_t malformed_ = 0;
+  std::unique_ptr<towsim::app::FoxgloveCommands> commands_;  // clientPublish, after Serve()
 };
 
 void Bridge::Serve(const std::vector<std::string>& bodies) {
@@ -244,19 +207,9 @@ void Bridge::Serve(const std::vector<std::string>& bodies) {
     s->topic_entity = dds::Entity(e);
     served_.push_back(std::move(s));
   }
-  std::lock_guard<std::mutex> lock(inbound_mutex_);
-  for (const std::string& b : bodies) {
-    Inbound& in = inbound_[towsim::app::RosTopicName(names_.command(b))];
-    in.schema_name = "towsim_msgs/msg/ActuatorCommand";
-    in.descriptor = &towsim_msgs_msg_dds__ActuatorCommand__desc;
-    in.type = &command_type_;
-    in.teleop = true;
-  }
-  Inbound& control = inbound_[towsim::app::RosTopicName(names_.sim_control())];
-  control.schema_name = "towsim_msgs/msg/SimControl";
-  control.descriptor = &towsim_msgs_msg_dds__SimControl__desc;
-  control.type = &control_type_;
-  control.control = true;
+  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies,
+                                                               "towsim_foxglove", opt_.quiet);
+  commands_->Attach(&server_);
 }
 
 void Bridge::UpdateReaders() {
@@ -298,7 +251,7 @@ void Bridge::TakeAll() {
           }
           if (s->is_status) {
             dds::SimStatusMsg m{};
-            if (status_type_.Deserialize(p, size, &m)) status_step_ = m.step;
+            if (status_type_.Deserialize(p, size, &m)) commands_->SetStatusStep(m.step);
             dds_sample_free(&m, &towsim_msgs_msg_dds__SimStatus__desc, DDS_FREE_CONTENTS);
           }
           server_.Publish(s->channel, t, p, size);
@@ -307,79 +260,7 @@ void Bridge::TakeAll() {
   }
 }
 
-std::string Bridge::Advertise(const towsim::app::foxglove::ClientChannel& c) {
-  std::lock_guard<std::mutex> lock(inbound_mutex_);
-  const auto it = inbound_.find(c.topic);
-  if (it == inbound_.end()) {
-    std::string list;
-    for (const auto& [topic, in] : inbound_) list += (list.empty() ? "" : ", ") + topic;
-    return "not a topic clients may publish on (" + list + ")";
-  }
-  Inbound& in = it->second;
-  if (c.encoding != "cdr") return "encoding " + c.encoding + ": only cdr";
-  const std::string short_name = in.schema_name.substr(0, in.schema_name.find('/')) +
-                                 in.schema_name.substr(in.schema_name.rfind('/'));
-  const bool twist = in.teleop && (c.schema_name == "geometry_msgs/msg/Twist" ||
-                                   c.schema_name == "geometry_msgs/Twist");
-  if (c.schema_name != in.schema_name && c.schema_name != short_name && !twist) {
-    return "schema " + c.schema_name + ": must be " + in.schema_name +
-           (in.teleop ? " or geometry_msgs/msg/Twist" : "");
-  }
-  if (!in.writer.valid()) {
-    const std::string dds_name = towsim::app::DdsTopicName(c.topic);
-    const dds_entity_t t =
-        dds_create_topic(participant_.get(), in.descriptor, dds_name.c_str(), nullptr, nullptr);
-    if (t < 0) return "creating topic " + dds_name + ": " + dds_strretcode(t);
-    in.topic = dds::Entity(t);
-    dds::Qos qos = in.control ? dds::ControlQos() : dds::CommandQos();
-    const dds_entity_t w = dds_create_writer(participant_.get(), t, qos.get(), nullptr);
-    if (w < 0) return "creating a writer for " + dds_name + ": " + dds_strretcode(w);
-    in.writer = dds::Entity(w);
-  }
-  return "";
-}
-
-std::string Bridge::Publish(const towsim::app::foxglove::ClientChannel& c, const uint8_t* data,
-                            size_t size) {
-  std::lock_guard<std::mutex> lock(inbound_mutex_);
-  const auto it = inbound_.find(c.topic);
-  if (it == inbound_.end() || !it->second.writer.valid()) return "not advertised: " + c.topic;
-  Inbound& in = it->second;
-  const bool twist = in.teleop && c.schema_name.rfind("geometry_msgs/", 0) == 0;
-  if (twist) {
-    geometry_msgs_msg_dds__Twist_ t{};
-    if (!twist_type_.Deserialize(data, size, &t)) {
-      ++malformed_;
-      return "rejected: malformed geometry_msgs/msg/Twist on " + c.topic + " (" +
-             std::to_string(size) + " bytes)";
-    }
-    dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load(), &in.teleop_thrust);
-    cmd.header.frame_id = const_cast<char*>("");
-    const dds_return_t rc = dds_write(in.writer.get(), &cmd);
-    if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
-    return "";
-  }
-  dds::CdrSample sample;
-  try {
-    sample = dds::CdrSample::FromBytes(*in.type, data, size);
-  } catch (const std::invalid_argument& e) {
-    ++malformed_;
-    if (!opt_.quiet) {
-      std::fprintf(stderr, "towsim_foxglove: rejected a malformed %s on %s (%zu bytes)\n",
-                   in.schema_name.c_str(), c.topic.c_str(), size);
-    }
-    return "rejected: malformed " + in.schema_name + " on " + c.topic + " (" +
-           std::to_string(size) + " bytes): " + e.what();
-  }
-  const dds_return_t rc = sample.Write(in.writer.get(), dds_time());
-  if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
-  return "";
-}
-
 int Bridge::Run() {
-  server_.OnClientAdvertise([this](const auto& c) { return Advertise(c); });
-  server_.OnClientPublish(
-      [this](const auto& c, const uint8_t* d, size_t n) { return Publish(c, d, n); });
 
   // the bodies first (scene_info is transient local: also when the node started first)
   dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc, names_.scene_info());
@@ -432,7 +313,7 @@ int Bridge::Run() {
       static_cast<unsigned long long>(server_.messages_dropped()),
       static_cast<unsigned long long>(server_.client_messages()),
       static_cast<unsigned long long>(server_.client_rejected()),
-      static_cast<unsigned long long>(malformed_));
+      static_cast<unsigned long long>(commands_->malformed()));
   std::fflush(stdout);
   return kExitOk;
 }
