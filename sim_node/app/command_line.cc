@@ -63,6 +63,8 @@ std::string Usage() {
          "  --csv DIR             write bodies.csv, cable.csv, forces.csv, status.csv to DIR\n"
          "                        at the scene's time.output_rate\n"
          "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2)\n"
+         "  --foxglove PORT       DDS modes: serve every topic to Foxglove on\n"
+         "                        ws://127.0.0.1:PORT (0: a free port, printed)\n"
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
          "  --wait-for-controllers\n"
          "                        DDS modes: the first step waits until every vehicle that\n"
@@ -103,7 +105,7 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     static const char* const kWithValue[] = {"--scene", "--mode",   "--duration", "--rate",
                                              "--set",   "--csv",    "--record",   "--domain",
-                                             "--namespace"};
+                                             "--namespace", "--foxglove"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -163,9 +165,20 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     } else if (name == "--namespace") {
       if (v.empty() || v[0] != '/') return fail("--namespace " + v + ": must start with '/'");
       o.ns = v;
+    } else if (name == "--foxglove") {
+      double port = 0.0;
+      if (!ParseNumber(v, &port) || port < 0.0 || port > 65535.0 ||
+          port != static_cast<double>(static_cast<long>(port))) {
+        return fail("--foxglove " + v + ": must be a port number from 0 to 65535");
+      }
+      o.foxglove_port = static_cast<int>(port);
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
+  if (o.mode == Mode::kOffline && o.foxglove_port) {
+    return fail("--foxglove: needs a DDS mode (realtime, fast or lockstep); offline publishes "
+                "nothing");
+  }
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +
                 ": needs a DDS mode (realtime, fast or lockstep); offline takes no commands");

@@ -27,6 +27,7 @@ struct Options {
   std::string csv_dir;                 // --csv DIR; empty: no CSV
   std::string record_file;             // --record FILE.mcap; empty: no recording
   std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)
+  std::optional<int> foxglove_port;    // --foxglove PORT: a Foxglove server (docs/foxglove.md)
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)
   bool wait_for_controllers = false;   // --wait-for-controllers: first step once all commanded

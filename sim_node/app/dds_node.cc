@@ -15,6 +15,7 @@
 #include "app/dds_pacer.h"
 #include "app/dds_publisher.h"
 #include "app/dds_uri.h"
+#include "app/foxglove_server.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
 #include "core/script.h"
@@ -121,6 +122,7 @@ class DdsNode {
   std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
   std::unique_ptr<dds::RosGraphNode> graph_;  // the ROS 2 node /<ns>/sim_node
+  std::unique_ptr<FoxgloveServer> foxglove_;   // after endpoints_: stops before them
   PublishStrides strides_;
   long output_stride_ = 1;
   bool has_lockstep_vehicles_ = false;
@@ -227,6 +229,21 @@ int DdsNode::Setup() {
     } catch (const std::exception& e) {
       return bad("--record " + opt_.record_file + ": " + e.what());
     }
+  }
+
+  // after the recording: its channels are the recording's too
+  if (opt_.foxglove_port >= 0) {
+    try {
+      foxglove_ = std::make_unique<FoxgloveServer>(FoxgloveServer::Options{
+          "127.0.0.1", static_cast<uint16_t>(opt_.foxglove_port), "sim_node " + opt_.ns});
+      endpoints_->StartFoxglove(*participant_, foxglove_.get());
+      foxglove_->Start();
+    } catch (const std::exception& e) {
+      return bad("--foxglove " + std::to_string(opt_.foxglove_port) + ": " + e.what());
+    }
+    std::printf("sim_node: Foxglove at ws://127.0.0.1:%u\n",
+                static_cast<unsigned>(foxglove_->port()));
+    std::fflush(stdout);
   }
 
   strides_.clock = Stride(opt_.rates.clock, h_);

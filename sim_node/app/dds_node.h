@@ -66,6 +66,9 @@ struct DdsNodeOptions {
   // Each message is serialized once and the same bytes are published and recorded (see
   // app/dds_publisher.h); the file is completed at the end of the run and on SIGINT / SIGTERM.
   std::string record_file;
+  // a Foxglove WebSocket server on 127.0.0.1:foxglove_port serving every topic the node
+  // publishes (docs/foxglove.md; 0: a free port); < 0: none
+  int foxglove_port = -1;
   // wait before the first step until every vehicle that takes commands has received one (so
   // controllers started beside the node miss no step, in every mode; the status says waiting)
   bool wait_for_controllers = false;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "io/ros2_schemas.h"
+
 namespace towsim::app {
 namespace {
 
@@ -11,6 +13,9 @@ bool Due(uint64_t step, long stride, bool all) {
 }
 
 int64_t Nanoseconds(double s) { return static_cast<int64_t>(std::llround(s * 1e9)); }
+
+// simulation time as a Foxglove log time [ns] (negative times as 0)
+uint64_t SimNs(double t) { return t > 0.0 ? static_cast<uint64_t>(std::llround(t * 1e9)) : 0; }
 
 }  // namespace
 
@@ -36,7 +41,9 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
       cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes())),
       tf_msg_(dds::BodyTransforms(sim)),
       tf_static_msg_(dds::StaticTransforms(sim)),
-      markers_msg_(std::make_unique<dds::SceneMarkers>(sim)) {
+      markers_msg_(std::make_unique<dds::SceneMarkers>(sim)),
+      names_(names) {
+  for (int b = 0; b < sim.num_bodies(); ++b) body_names_.push_back(sim.body_name(b));
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const std::string& name = sim.body_name(b);
     dds::Topic odom_topic(participant, &nav_msgs_msg_dds__Odometry__desc, names.odom(name));
@@ -62,11 +69,12 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
 
 template <class T>
 void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg) {
-  if (recording_ == nullptr) {
+  const bool served = Served(recorded);
+  if (recording_ == nullptr && !served) {
     writer.Write(msg);
     return;
   }
-  // serialized once: these bytes go to DDS and into the recording
+  // serialized once: these bytes go to DDS, into the recording and to Foxglove
   const dds::CdrSample sample = dds::CdrSample::FromSample(*recorded.type, &msg);
   const dds_time_t now = dds_time();
   if (writer.matched()) {
@@ -74,13 +82,16 @@ void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const
     if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
   }
   sample.CopyTo(&buffer_);
-  recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
-                    buffer_.data(), buffer_.size());
+  if (recording_ != nullptr) {
+    recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                      buffer_.data(), buffer_.size());
+  }
+  if (served) fox_->Publish(recorded.fox, sim_ns_, buffer_.data(), buffer_.size());
 }
 
 template <class T>
 void NodeEndpoints::EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const T& msg) {
-  if (recording_ == nullptr) {
+  if (recording_ == nullptr && fox_ == nullptr) {
     writer.Write(msg);
     return;
   }
@@ -89,8 +100,58 @@ void NodeEndpoints::EmitAlways(dds::Writer<T>& writer, const Recorded& recorded,
   const dds_return_t rc = s.Write(writer.get(), now);
   if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
   s.CopyTo(&buffer_);
-  recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
-                    buffer_.data(), buffer_.size());
+  if (recording_ != nullptr) {
+    recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                      buffer_.data(), buffer_.size());
+  }
+  // latched: kept for the clients that subscribe later
+  if (fox_ != nullptr) fox_->Publish(recorded.fox, sim_ns_, buffer_.data(), buffer_.size());
+}
+
+const dds::RawType* NodeEndpoints::TypeOf(const dds::Participant& participant,
+                                          const dds_topic_descriptor_t* descriptor) {
+  for (const auto& t : raw_types_) {
+    if (t->descriptor() == descriptor) return t.get();
+  }
+  raw_types_.push_back(std::make_unique<dds::RawType>(participant, descriptor));
+  return raw_types_.back().get();
+}
+
+void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveServer* server) {
+  fox_ = server;
+  auto add = [&](const std::string& dds_topic, const dds_topic_descriptor_t* descriptor,
+                 Recorded* r, bool latched) {
+    r->type = TypeOf(participant, descriptor);  // the recording's, if it has one
+    const std::string type = io::Ros2TypeName(descriptor->m_typename);
+    r->fox = server->AddChannel(RosTopicName(dds_topic), type, io::Ros2MsgSchema(type), latched);
+  };
+  add(scene_.topic_name(), &towsim_msgs_msg_dds__SceneInfo__desc, &scene_rec_, true);
+  add(clock_.topic_name(), &rosgraph_msgs_msg_dds__Clock__desc, &clock_rec_, false);
+  add(status_.topic_name(), &towsim_msgs_msg_dds__SimStatus__desc, &status_rec_, false);
+  add(cable_.topic_name(), &towsim_msgs_msg_dds__CableState__desc, &cable_rec_, false);
+  add(tf_static_.topic_name(), &tf2_msgs_msg_dds__TFMessage__desc, &tf_static_rec_, true);
+  add(tf_.topic_name(), &tf2_msgs_msg_dds__TFMessage__desc, &tf_rec_, false);
+  add(markers_.topic_name(), &visualization_msgs_msg_dds__MarkerArray__desc, &markers_rec_, false);
+  for (auto& b : bodies_) {
+    add(b->odom.topic_name(), &nav_msgs_msg_dds__Odometry__desc, &b->odom_rec, false);
+    add(b->force.topic_name(), &geometry_msgs_msg_dds__WrenchStamped__desc, &b->force_rec, false);
+  }
+  // the inbound topics as channels too, so that Foxglove's Publish panel knows their schemas
+  // (no messages: what the node takes is not echoed)
+  for (const char* type : {"towsim_msgs/msg/ActuatorCommand", "towsim_msgs/msg/SimControl"}) {
+    const bool control = std::string(type).find("SimControl") != std::string::npos;
+    if (control) {
+      server->AddChannel(RosTopicName(control_topic_.name()), type, io::Ros2MsgSchema(type));
+      continue;
+    }
+    for (const dds::Topic& t : command_topics_) {
+      server->AddChannel(RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
+    }
+  }
+  // clients publish through writers of the node's participant: its own readers take them
+  fox_commands_ =
+      std::make_unique<FoxgloveCommands>(participant, names_, body_names_, "sim_node", false);
+  fox_commands_->Attach(server);
 }
 
 NodeEndpoints::Recorded NodeEndpoints::AddRecorded(const dds::Participant& participant,
@@ -98,13 +159,7 @@ NodeEndpoints::Recorded NodeEndpoints::AddRecorded(const dds::Participant& parti
                                                    const dds_topic_descriptor_t* descriptor,
                                                    bool transient_local) {
   Recorded r;
-  for (const auto& t : raw_types_) {
-    if (t->descriptor() == descriptor) r.type = t.get();
-  }
-  if (r.type == nullptr) {
-    raw_types_.push_back(std::make_unique<dds::RawType>(participant, descriptor));
-    r.type = raw_types_.back().get();
-  }
+  r.type = TypeOf(participant, descriptor);
   r.channel = recording_->AddTopic(topic, descriptor->m_typename, transient_local);
   return r;
 }
@@ -135,37 +190,43 @@ void NodeEndpoints::StartRecording(const dds::Participant& participant, McapReco
 
 void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
                                  const PublishStrides& strides, bool all) {
+  sim_ns_ = SimNs(sim.time());
   for (size_t b = 0; b < bodies_.size(); ++b) {
     BodyEndpoints& e = *bodies_[b];
-    if (Due(step, strides.odom, all) && Wanted(e.odom)) {
+    if (Due(step, strides.odom, all) && Wanted(e.odom, e.odom_rec)) {
       dds::ToOdometry(sim, static_cast<int>(b), &e.odom_msg->msg);
       Emit(e.odom, e.odom_rec, e.odom_msg->msg);
     }
-    if (Due(step, strides.cable_force, all) && Wanted(e.force)) {
+    if (Due(step, strides.cable_force, all) && Wanted(e.force, e.force_rec)) {
       dds::ToCableForce(sim, static_cast<int>(b), &e.force_msg->msg);
       Emit(e.force, e.force_rec, e.force_msg->msg);
     }
   }
-  if (Due(step, strides.odom, all) && Wanted(tf_)) {
+  if (Due(step, strides.odom, all) && Wanted(tf_, tf_rec_)) {
     dds::ToBodyTransforms(sim, tf_msg_.get());
     Emit(tf_, tf_rec_, tf_msg_->msg);
   }
-  if (Due(step, strides.markers, all) && Wanted(markers_)) {
+  if (Due(step, strides.markers, all) && Wanted(markers_, markers_rec_)) {
     markers_msg_->Update(sim);
     Emit(markers_, markers_rec_, markers_msg_->msg);
   }
-  if (Due(step, strides.cable_state, all) && Wanted(cable_)) {
+  if (Due(step, strides.cable_state, all) && Wanted(cable_, cable_rec_)) {
     dds::ToCableState(sim, step, cable_msg_.get());
     Emit(cable_, cable_rec_, cable_msg_->msg);
   }
-  if (Due(step, strides.clock, all) && Wanted(clock_)) {
+  if (Due(step, strides.clock, all) && Wanted(clock_, clock_rec_)) {
     dds::ToClock(sim.time(), &clock_msg_);
     Emit(clock_, clock_rec_, clock_msg_);
+  }
+  if (fox_ != nullptr && fox_->clients() > 0 && Due(step, strides.clock, all)) {
+    fox_->BroadcastTime(sim_ns_);  // the `time` capability
   }
 }
 
 void NodeEndpoints::PublishStatus(const dds::StatusSample& sample) {
-  if (!Wanted(status_)) return;
+  sim_ns_ = SimNs(sample.sim_time);
+  if (fox_commands_) fox_commands_->SetStatusStep(sample.step);  // what Teleop answers
+  if (!Wanted(status_, status_rec_)) return;
   dds::ToSimStatus(sample, &status_msg_);
   Emit(status_, status_rec_, status_msg_.msg);
 }
@@ -173,6 +234,7 @@ void NodeEndpoints::PublishStatus(const dds::StatusSample& sample) {
 void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
   // transient local: written even without a reader, for late joiners
   dds::ToSceneInfo(sample, &scene_msg_);
+  sim_ns_ = SimNs(sample.time);
   EmitAlways(scene_, scene_rec_, scene_msg_.msg);
   // the static frames with it (also after a reset: the stamp of the new run)
   for (int i = 0; i < tf_static_msg_->size(); ++i) {

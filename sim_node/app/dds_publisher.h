@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "app/foxglove_commands.h"
+#include "app/foxglove_server.h"
 #include "app/mcap_recording.h"
 #include "core/simulation.h"
 #include "dds/entities.h"
@@ -49,6 +51,11 @@ class NodeEndpoints {
   // writer); throws dds::DdsError (serializer probe) or std::invalid_argument (a type without
   // ROS 2 definition)
   void StartRecording(const dds::Participant& participant, McapRecording* recording);
+  // from now on, every message is also served to the Foxglove clients of `server` subscribed
+  // to its channel (one channel per writer, docs/foxglove.md; scene info and /tf_static
+  // latched), log time = the simulation time; clients may publish commands and sim_control
+  // (app/foxglove_commands.h) through writers of `participant`. Call before server->Start().
+  void StartFoxglove(const dds::Participant& participant, FoxgloveServer* server);
   // waits up to `timeout` [s] until the readers acknowledged status and scene info (exit)
   void Flush(double timeout);
 
@@ -68,11 +75,17 @@ class NodeEndpoints {
   struct Recorded {
     const dds::RawType* type = nullptr;
     std::uint16_t channel = 0;
+    std::uint32_t fox = 0;  // Foxglove channel; 0: none
   };
-  template <class T>
-  bool Wanted(const dds::Writer<T>& writer) const {
-    return recording_ != nullptr || writer.matched();
+  bool Served(const Recorded& recorded) const {
+    return fox_ != nullptr && recorded.fox != 0 && fox_->HasSubscribers(recorded.fox);
   }
+  template <class T>
+  bool Wanted(const dds::Writer<T>& writer, const Recorded& recorded) const {
+    return recording_ != nullptr || writer.matched() || Served(recorded);
+  }
+  const dds::RawType* TypeOf(const dds::Participant& participant,
+                             const dds_topic_descriptor_t* descriptor);
   // publishes `msg` on `writer` (if matched) and records it (if recording)
   template <class T>
   void Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg);
@@ -116,6 +129,11 @@ class NodeEndpoints {
   std::vector<std::unique_ptr<dds::RawType>> raw_types_;  // one per type recorded
   Recorded clock_rec_, cable_rec_, status_rec_, scene_rec_, tf_rec_, tf_static_rec_, markers_rec_;
   std::vector<std::uint8_t> buffer_;  // the bytes of the message being recorded
+  FoxgloveServer* fox_ = nullptr;
+  std::unique_ptr<FoxgloveCommands> fox_commands_;
+  dds::TopicNames names_;
+  std::vector<std::string> body_names_;
+  std::uint64_t sim_ns_ = 0;  // simulation time of the messages being published [ns]
 };
 
 }  // namespace towsim::app

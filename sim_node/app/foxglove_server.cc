@@ -25,6 +25,7 @@ struct FoxgloveServer::Impl {
   mutable std::mutex mutex;  // channels, clients, subscriber counts
   std::vector<foxglove::Channel> channels;
   std::map<uint32_t, int> subscribers;  // channel -> subscriptions of every client
+  std::map<uint32_t, std::pair<uint64_t, std::string>> latched;  // channel -> (time, payload)
   std::map<Handle, Client, std::owner_less<Handle>> clients;
   std::string session_id;
   bool running = false;
@@ -46,13 +47,14 @@ FoxgloveServer::FoxgloveServer(Options options)
 FoxgloveServer::~FoxgloveServer() { Stop(); }
 
 uint32_t FoxgloveServer::AddChannel(const std::string& topic, const std::string& schema_name,
-                                    const std::string& schema) {
+                                    const std::string& schema, bool latched) {
   std::vector<Handle> to;
   foxglove::Channel c;
   {
     std::lock_guard<std::mutex> lock(impl_->mutex);
     c = {static_cast<uint32_t>(impl_->channels.size() + 1), topic, schema_name, schema};
     impl_->channels.push_back(c);
+    if (latched) impl_->latched[c.id] = {0, std::string()};
     for (const auto& [h, client] : impl_->clients) to.push_back(h);
   }
   const std::string advertise = foxglove::AdvertiseJson({c});
@@ -125,6 +127,7 @@ void FoxgloveServer::Start() {
     }
     const foxglove::ClientRequest r = foxglove::ParseClientText(msg->get_payload());
     std::vector<std::string> errors;
+    std::vector<std::string> frames;  // latched messages for the new subscriptions
     {
       std::lock_guard<std::mutex> lock(m.mutex);
       const auto c = m.clients.find(h);
@@ -142,6 +145,14 @@ void FoxgloveServer::Start() {
               client.channel_of[sub] = channel;
               client.subscription_of[channel] = sub;
               ++m.subscribers[channel];
+              const auto l = m.latched.find(channel);
+              if (l != m.latched.end() && !l->second.second.empty()) {
+                std::string frame;
+                foxglove::MessageDataFrame(
+                    sub, l->second.first, reinterpret_cast<const uint8_t*>(l->second.second.data()),
+                    l->second.second.size(), &frame);
+                frames.push_back(std::move(frame));
+              }
             }
           }
           break;
@@ -175,6 +186,7 @@ void FoxgloveServer::Start() {
           break;
       }
     }
+    for (const std::string& f : frames) m.Send(h, f, websocketpp::frame::opcode::binary);
     for (const std::string& e : errors) {
       m.Send(h, foxglove::StatusJson(foxglove::StatusLevel::kError, e), text);
     }
@@ -227,6 +239,9 @@ void FoxgloveServer::Publish(uint32_t channel, uint64_t log_time_ns, const uint8
                              std::size_t size) {
   Impl& m = *impl_;
   std::lock_guard<std::mutex> lock(m.mutex);
+  if (const auto l = m.latched.find(channel); l != m.latched.end()) {
+    l->second = {log_time_ns, std::string(reinterpret_cast<const char*>(data), size)};
+  }
   for (const auto& [h, client] : m.clients) {
     const auto s = client.subscription_of.find(channel);
     if (s == client.subscription_of.end()) continue;

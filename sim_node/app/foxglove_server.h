@@ -50,9 +50,11 @@ class FoxgloveServer {
   FoxgloveServer(const FoxgloveServer&) = delete;
   FoxgloveServer& operator=(const FoxgloveServer&) = delete;
 
-  // a channel advertised to every client (also those connected later); returns its id
+  // a channel advertised to every client (also those connected later); returns its id. A
+  // latched channel keeps its last message and sends it to each new subscriber (transient
+  // local topics: scene_info, /tf_static).
   uint32_t AddChannel(const std::string& topic, const std::string& schema_name,
-                      const std::string& schema);
+                      const std::string& schema, bool latched = false);
   void OnClientAdvertise(ClientAdvertise f) { on_advertise_ = std::move(f); }
   void OnClientPublish(ClientPublish f) { on_publish_ = std::move(f); }
 
@@ -64,7 +66,7 @@ class FoxgloveServer {
 
   bool HasSubscribers(uint32_t channel) const;
   int clients() const { return clients_.load(); }
-  // to every client subscribed to `channel`
+  // to every client subscribed to `channel` (and kept, if latched)
   void Publish(uint32_t channel, uint64_t log_time_ns, const uint8_t* data, std::size_t size);
   // to every client (the `time` capability)
   void BroadcastTime(uint64_t time_ns);

@@ -66,6 +66,7 @@ int Run(const towsim::app::Options& options) {
     dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state, pub.markers};
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
+    dds.foxglove_port = options.foxglove_port.value_or(-1);
     dds.start_paused = options.paused;
     dds.wait_for_controllers = options.wait_for_controllers;
     if (csv) {

@@ -1,10 +1,11 @@
 // An independent Foxglove client of a live towsim node (docs/foxglove.md), built on
 // @foxglove/ws-protocol (FoxgloveClient) over the `ws` WebSocket, decoding with
 // @foxglove/rosmsg + @foxglove/rosmsg2-serialization from the schemas the server advertises:
-//   node live_check.mjs SIM_NODE TOWSIM_FOXGLOVE SOURCE_DIR OUT_DIR DOMAIN
+//   node live_check.mjs SIM_NODE TOWSIM_FOXGLOVE SOURCE_DIR OUT_DIR DOMAIN [in-node]
 // It starts and stops the processes itself (also when it fails):
 //   1. sim_node: Case 1 in lockstep for 10 s without its script, --csv OUT_DIR/csv;
-//   2. towsim_foxglove --domain DOMAIN --port 0 (a free port, read from its first line);
+//   2. towsim_foxglove --domain DOMAIN --port 0 (a free port, read from its first line); or,
+//      with `in-node`, no bridge: sim_node --foxglove 0 serves the same itself;
 //   3. this client: serverInfo (clientPublish, time, cdr), every channel cdr / ros2msg,
 //      subscribes to all of them and decodes every message; it is the lockstep controller of
 //      both vehicles through clientPublish (ActuatorCommand answering each status step): zero
@@ -37,7 +38,8 @@ const { FoxgloveClient } = wsProtocol.FoxgloveClient ? wsProtocol : wsProtocol.d
 const { parse: parseMessageDefinition } = rosmsg;
 const { MessageReader, MessageWriter } = serialization;
 
-const [simNode, bridgeExe, sourceDir, outDir, domainText] = process.argv.slice(2);
+const [simNode, bridgeExe, sourceDir, outDir, domainText, where] = process.argv.slice(2);
+const inNode = where === "in-node";
 const kDuration = 10; // [s] simulated
 const kThrustStep = 20; // the first step answered with thrust
 const kBadStep = 60; // the step whose answer is preceded by a malformed and a NaN command
@@ -79,6 +81,8 @@ function stopAll() {
 process.on("exit", stopAll);
 const deadline = setTimeout(() => {
   console.error("FAIL: timed out");
+  console.error(`received: ${[...byTopic.entries()].map(([t, v]) => `${t} ${v.length}`).join(", ")}; ` +
+    `statuses ${JSON.stringify(statuses)}; steps answered ${answered.size}`);
   for (const c of children) console.error(`${c.name} stderr:\n${c.err}`);
   stopAll();
   process.exit(1);
@@ -87,13 +91,13 @@ const deadline = setTimeout(() => {
 const node = start(
   [simNode, "--scene", join(sourceDir, "config/scenes/case1_forward.yaml"), "--mode", "lockstep",
     "--duration", String(kDuration), "--domain", domainText, "--csv", join(outDir, "csv"),
-    "--set", "script=[]"],
+    "--set", "script=[]", ...(inNode ? ["--foxglove", "0"] : [])],
   "sim_node",
 );
-const bridge = start([bridgeExe, "--domain", domainText, "--port", "0"], "towsim_foxglove");
+const bridge = inNode ? node : start([bridgeExe, "--domain", domainText, "--port", "0"], "towsim_foxglove");
 const url = await new Promise((resolve, reject) => {
   const poll = setInterval(() => {
-    const m = bridge.out.match(/serving (ws:\/\/[^ ]+) /);
+    const m = bridge.out.match(inNode ? /Foxglove at (ws:\/\/\S+)/ : /serving (ws:\/\/[^ ]+) /);
     if (m) {
       clearInterval(poll);
       resolve(m[1]);
@@ -105,6 +109,7 @@ const url = await new Promise((resolve, reject) => {
 });
 
 // --- the client ---
+console.error(`connecting to ${url} (${inNode ? "sim_node --foxglove" : "towsim_foxglove"})`);
 const client = new FoxgloveClient({ ws: new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]) });
 let serverInfo;
 const channels = new Map(); // channel id -> {topic, reader}
@@ -198,7 +203,7 @@ await finished;
 // the last messages in flight
 await new Promise((r) => setTimeout(r, 300));
 client.close();
-bridge.kill("SIGTERM");
+if (!inNode) bridge.kill("SIGTERM");
 const [nodeCode, bridgeCode] = await Promise.all([node.exited, bridge.exited]);
 clearTimeout(deadline);
 check(nodeCode === 0, `sim_node exit ${nodeCode}: ${node.err}`);
@@ -216,8 +221,10 @@ for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/stat
   "/towsim/towfish/odom", "/towsim/towfish/cable_force"]) {
   check(topics.has(t), `channel ${t} advertised`);
 }
+// the bridge's command channel carries the commands on DDS (this client's among them); the
+// node's own server advertises it for its schema only
 for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/cable/state", "/towsim/tow_vehicle/odom",
-  "/towsim/tow_vehicle/command"]) {
+  ...(inNode ? [] : ["/towsim/tow_vehicle/command"])]) {
   check((byTopic.get(t) ?? []).length > 0, `messages on ${t}`);
 }
 check(decodeFailures === 0, `${decodeFailures} messages failed to decode`);
@@ -267,7 +274,11 @@ check(last !== undefined && Number(last.commands_rejected) === 1, `node: command
 check(last !== undefined && Number(last.lockstep_timeouts) === 0 && Number(last.failsafe_count) === 0,
   `lockstep timeouts ${last?.lockstep_timeouts}, failsafes ${last?.failsafe_count}`);
 check(statuses.some((s) => s.level === 2 && /malformed/.test(s.message)), `an error status for the malformed command (${JSON.stringify(statuses)})`);
-check(/malformed 1\)/.test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+if (inNode) {
+  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === 1, `sim_node's note of the malformed command: ${node.err}`);
+} else {
+  check(/malformed 1\)/.test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+}
 
 // time messages: the simulation time of /clock
 const clocks = new Set((byTopic.get("/clock") ?? []).map(({ value }) => stampNs(value.clock)));
