@@ -103,8 +103,8 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.wait_for_controllers = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene", "--mode",   "--duration", "--rate",
-                                             "--set",   "--csv",    "--record",   "--domain",
+    static const char* const kWithValue[] = {"--scene",     "--mode",    "--duration", "--rate",
+                                             "--set",       "--csv",     "--record",   "--domain",
                                              "--namespace", "--foxglove"};
     // split --name=value
     std::string name = arg;
@@ -176,8 +176,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
   if (o.mode == Mode::kOffline && o.foxglove_port) {
-    return fail("--foxglove: needs a DDS mode (realtime, fast or lockstep); offline publishes "
-                "nothing");
+    return fail(
+        "--foxglove: needs a DDS mode (realtime, fast or lockstep); offline publishes "
+        "nothing");
   }
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +

@@ -122,7 +122,7 @@ class DdsNode {
   std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
   std::unique_ptr<dds::RosGraphNode> graph_;  // the ROS 2 node /<ns>/sim_node
-  std::unique_ptr<FoxgloveServer> foxglove_;   // after endpoints_: stops before them
+  std::unique_ptr<FoxgloveServer> foxglove_;  // after endpoints_: stops before them
   PublishStrides strides_;
   long output_stride_ = 1;
   bool has_lockstep_vehicles_ = false;

@@ -208,7 +208,7 @@ void Bridge::Serve(const std::vector<std::string>& bodies) {
     served_.push_back(std::move(s));
   }
   commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies,
-                                                               "towsim_foxglove", opt_.quiet);
+                                                              "towsim_foxglove", opt_.quiet);
   commands_->Attach(&server_);
 }
 
@@ -261,7 +261,6 @@ void Bridge::TakeAll() {
 }
 
 int Bridge::Run() {
-
   // the bodies first (scene_info is transient local: also when the node started first)
   dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc, names_.scene_info());
   dds::Reader<dds::SceneInfoMsg> scene(participant_, scene_topic, dds::SceneInfoQos());

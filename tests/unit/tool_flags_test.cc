@@ -19,8 +19,8 @@ std::vector<char*> Argv(std::vector<std::string>& args) {
 }
 
 TEST(ToolFlagsTest, ValuesAfterTheNameOrItsEqualsSign) {
-  std::vector<std::string> args = {"tool", "--domain", "7", "--namespace=/a", "file.mcap",
-                                   "--port"};
+  std::vector<std::string> args = {"tool",           "--domain",  "7",
+                                   "--namespace=/a", "file.mcap", "--port"};
   std::vector<char*> argv = Argv(args);
   ToolFlags f(static_cast<int>(argv.size()), argv.data());
   std::string v;
@@ -41,8 +41,8 @@ TEST(ToolFlagsTest, ValuesAfterTheNameOrItsEqualsSign) {
 }
 
 TEST(ToolFlagsTest, ListsRunToTheNextOptionAndSplitAtCommas) {
-  std::vector<std::string> args = {"tool", "--topics", "/clock", "a,b,", "--quiet",
-                                   "--topics=/x,y"};
+  std::vector<std::string> args = {"tool", "--topics", "/clock",
+                                   "a,b,", "--quiet",  "--topics=/x,y"};
   std::vector<char*> argv = Argv(args);
   ToolFlags f(static_cast<int>(argv.size()), argv.data());
   ASSERT_TRUE(f.Next());
