@@ -16,7 +16,11 @@
 # It ends by itself (about 10 s after the build) and leaves no process behind: every process
 # it starts is stopped on exit, also on Ctrl-C. Environment: TOWSIM_DOMAIN (DDS domain of the
 # first run, the second uses +1; default 20), TOWSIM_RATE (default 50; 1 to watch in real
-# time), TOWSIM_FOXGLOVE_PORT (default 8765).
+# time), TOWSIM_FOXGLOVE_PORT (default 8765), TOWSIM_SECURE=1: the DDS
+# runs secured end to end (DDS Security, docs/security.md): scripts/security.sh makes the
+# identities in out/security/ (the node; the manoeuvre runner may command the tow vehicle only,
+# the depth controller the towfish only; the Foxglove bridge) and every process runs with
+# --security.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh" python3
 
@@ -30,6 +34,16 @@ foxglove_port="${TOWSIM_FOXGLOVE_PORT:-8765}"
 domain="${TOWSIM_DOMAIN:-20}"
 rate="${TOWSIM_RATE:-50}"
 scene=config/scenes/case2_uturn.yaml
+node_security=() runner_security=() depth_security=() foxglove_security=()
+if [[ "${TOWSIM_SECURE:-0}" == 1 ]]; then
+  rm -rf out/security
+  scripts/security.sh out/security sim_node maneuver_runner:tow_vehicle towfish_depth:towfish \
+    towsim_foxglove
+  node_security=(--security out/security/sim_node)
+  foxglove_security=(--security out/security/towsim_foxglove)
+  runner_security=(--security out/security/maneuver_runner)
+  depth_security=(--security out/security/towfish_depth)
+fi
 
 # every process started here is stopped when the script ends, however it ends
 pids=()
@@ -71,12 +85,12 @@ run_uturn() {
   mkdir -p "$logs"
   "$sim_node" --scene "$scene" --mode realtime --rate "$rate" --wait-for-controllers \
     --duration 250 --set 'script=[]' --domain "$dom" --record "out/$name.mcap" \
-    >"$logs/sim_node.out" 2>"$logs/sim_node.err" &
+    "${node_security[@]}" >"$logs/sim_node.out" 2>"$logs/sim_node.err" &
   pids+=($!)
   "$runner" --body tow_vehicle --thrust 4165 --rudder-deg 20 --start 55 --until-yaw-deg 170 \
-    --domain "$dom" >"$logs/maneuver_runner.out" 2>"$logs/maneuver_runner.err" &
+    --domain "$dom" "${runner_security[@]}" >"$logs/maneuver_runner.out" 2>"$logs/maneuver_runner.err" &
   pids+=($!)
-  "$depth_ctl" --body towfish "$@" --domain "$dom" \
+  "$depth_ctl" --body towfish "$@" --domain "$dom" "${depth_security[@]}" \
     >"$logs/towfish_depth.out" 2>"$logs/towfish_depth.err" &
   pids+=($!)
 }
@@ -105,10 +119,11 @@ finish_uturn() {
 
 echo
 echo "== 2. Case 2 U-turn over DDS: sim_node + maneuver_runner + towfish_depth, twice" \
-     "(realtime x$rate, domains $domain and $((domain + 1)))"
+     "(realtime x$rate, domains $domain and $((domain + 1))$([[ ${#node_security[@]} -gt 0 ]] &&
+     echo ", DDS Security: identities in out/security/"))"
 # the live view of the first run (a port in use only costs the live view: see its log)
 mkdir -p out
-"$foxglove" --domain "$domain" --port "$foxglove_port" --quiet \
+"$foxglove" --domain "$domain" --port "$foxglove_port" --quiet "${foxglove_security[@]}" \
   >out/towsim_foxglove.out 2>out/towsim_foxglove.err &
 bridge_pid=$!
 echo "Foxglove: open ws://localhost:$foxglove_port while the first run lasts" \

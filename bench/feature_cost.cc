@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,7 +38,16 @@ struct Variant {
   std::string scene;  // config/scenes/<scene>
   std::vector<std::string> overrides;
   std::string what;  // for the table
+  // an edit of the loaded model that --set cannot express (taking the waves out)
+  std::function<void(towsim::core::Model*)> edit = nullptr;
 };
+
+void Calm(towsim::core::Model* m) { m->environment.waves = towsim::core::WaveField(); }
+void CalmBottomless(towsim::core::Model* m) {
+  Calm(m);
+  m->environment.seabed = towsim::core::Seabed();
+}
+void WavesPerIteration(towsim::core::Model* m) { m->integrator.waves_per_iteration = true; }
 
 const std::vector<Variant>& Variants() {
   static const std::vector<Variant> v = {
@@ -72,6 +82,30 @@ const std::vector<Variant>& Variants() {
        {"integrator.coupling=staggered"},
        "Case 1: two 6-DOF vehicles instead of driven point + sphere, staggered"},
       {"two_vehicles_strong", "case1_forward.yaml", {}, "Case 1, strong coupling (shipped)"},
+      {"current_profile",
+       "steady_tow.yaml",
+       {"environment.current={profile: [[0, [0.8, 0, 0]], [60, [0.2, 0.4, 0]], [180, [-0.3, 0, "
+        "0]]]}"},
+       "steady tow in a depth profile of the current (docs/environment.md)"},
+      {"case3_calm_bottomless",
+       "case3_waves.yaml",
+       {},
+       "Case 3's system in calm, bottomless water (the baseline of the sea variants)",
+       CalmBottomless},
+      {"case3_calm",
+       "case3_waves.yaml",
+       {},
+       "Case 3 without its waves (the 60 m seabed kept)",
+       Calm},
+      {"case3_waves",
+       "case3_waves.yaml",
+       {},
+       "Case 3 (shipped): JONSWAP Hs 2 m, Tp 8 s, 100 components"},
+      {"case3_waves_per_iteration",
+       "case3_waves.yaml",
+       {},
+       "Case 3, the waves resampled at every Newton iteration",
+       WavesPerIteration},
   };
   return v;
 }
@@ -83,8 +117,10 @@ const Variant* FindVariant(const std::string& name) {
 }
 
 towsim::core::Model Load(const Variant& v) {
-  return towsim::scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/" + v.scene,
-                                  v.overrides);
+  towsim::core::Model m = towsim::scene::LoadScene(
+      std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/" + v.scene, v.overrides);
+  if (v.edit) v.edit(&m);
+  return m;
 }
 
 constexpr int kSteps = 400;  // 20 s at h = 0.05 s

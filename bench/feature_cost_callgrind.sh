@@ -16,7 +16,8 @@ out="$(mktemp -d)"
 trap 'rm -rf "$out"' EXIT
 
 variants=(all_loads no_gravity no_buoyancy no_drag no_added_mass no_bending no_loads no_body
-          two_vehicles_staggered)
+          two_vehicles_staggered current_profile case3_calm_bottomless case3_calm case3_waves
+          case3_waves_per_iteration)
 for v in "${variants[@]}"; do
   valgrind --tool=callgrind --callgrind-out-file="$out/$v.out" --toggle-collect='*ProfileSteps*' \
     --toggle-collect='*ProfileEvaluate*' \

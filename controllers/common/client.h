@@ -6,19 +6,31 @@
 //     (and sim time) of the state it answers,
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
-//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step.
+//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
+//     after a RESET (a new run id) it drops the old run's odometry still queued.
 // It is a ROS 2 node `<ns>/<name>` (name: ClientOptions::name; dds/ros_graph.h), so
 // `ros2 node list` shows it next to /towsim/sim_node.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
-// throws with a clear message. Works in every DDS mode (realtime and fast answer each status
+// throws with a clear message. With `security` (--security DIR/NAME) the participant runs DDS
+// Security with that identity (docs/security.md; the setup is dds/security.h, shared with
+// sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in every DDS mode (realtime and fast answer each status
 // they see; lockstep waits for the answer).
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
 #include <string>
 
+#include "dds/security.h"
+
 namespace towsim::controllers {
+
+// --security DIR/NAME refused (a missing file, a bad certificate or document): exit 2
+using SecurityError = towsim::dds::SecurityError;
+
+// the flag every controller takes for its DDS Security identity
+inline constexpr const char* kSecurityFlag = "security";
 
 struct ClientOptions {
   uint32_t domain = 0;
@@ -26,6 +38,9 @@ struct ClientOptions {
   std::string body;        // the commanded body
   double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
   std::string name = "controller";  // for messages, and the ROS 2 node name
+  // when set (by another thread), the constructor's waits and Run end as on a stop signal
+  const std::atomic<bool>* stop = nullptr;
+  std::string security;  // --security DIR/NAME: DDS Security identity; "": none
 };
 
 // the state of the body at one step, from its odometry

@@ -3,6 +3,7 @@
 //
 //   sim_node --scene FILE [--mode realtime|fast|lockstep|offline] [--duration S] [--rate R]
 //            [--set key.path=value ...] [--csv DIR] [--record FILE.mcap] [--help] [--version]
+//            [--security DIR/NAME]
 //
 // Every option also accepts the --name=value form. Parsing only checks the syntax and the
 // ranges of the values; the scene is loaded (and --set applied) by the scene layer.
@@ -26,11 +27,14 @@ struct Options {
   std::vector<std::string> overrides;  // --set key.path=value, in command-line order
   std::string csv_dir;                 // --csv DIR; empty: no CSV
   std::string record_file;             // --record FILE.mcap; empty: no recording
+  bool overwrite = false;              // --overwrite: --record may replace an existing file
+  bool allow_another_node = false;     // --allow-another-node: run beside another node
   std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)
   std::optional<int> foxglove_port;    // --foxglove PORT: a Foxglove server (docs/foxglove.md)
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)
   bool wait_for_controllers = false;   // --wait-for-controllers: first step once all commanded
+  std::string security;                // --security DIR/NAME: DDS Security identity (DDS modes)
   bool help = false;                   // --help / -h
   bool version = false;                // --version
 };

@@ -56,6 +56,8 @@ class NodeEndpoints {
   // latched), log time = the simulation time; clients may publish commands and sim_control
   // (app/foxglove_commands.h) through writers of `participant`. Call before server->Start().
   void StartFoxglove(const dds::Participant& participant, FoxgloveServer* server);
+  // no more recording (it failed: the messages still go to DDS)
+  void StopRecording() { recording_ = nullptr; }
   // waits up to `timeout` [s] until the readers acknowledged status and scene info (exit)
   void Flush(double timeout);
 

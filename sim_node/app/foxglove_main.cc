@@ -1,6 +1,7 @@
 // towsim_foxglove: a live Foxglove WebSocket connection to a towsim node (docs/foxglove.md).
 //
 //   towsim_foxglove --domain N [--namespace NS] --port PORT [--address ADDR] [--quiet]
+//                   [--security DIR/NAME]
 //
 // A bridge process: it subscribes over DDS like towsim_record does (so it shows a node and
 // towsim_replay alike), learning the bodies from rt/<ns>/scene_info, and serves every towsim
@@ -25,6 +26,9 @@
 // positive angular.z, a positive rudder turns to starboard); elevator = linear.z [rad]; an
 // all-zero Twist stops (thrust 0, fins centred).
 //
+// With --security DIR/NAME its participant runs DDS Security with that identity (dds/security.h,
+// docs/security.md); clientPublish then needs an identity allowed to command
+// (scripts/security.sh NAME:BODY,...,sim_control).
 // Binds 127.0.0.1 unless --address says otherwise. Prints on stdout, once listening:
 //   towsim_foxglove: serving ws://127.0.0.1:8765 (domain 0, namespace /towsim)
 // Ends on SIGINT / SIGTERM with a summary line:
@@ -71,11 +75,14 @@ using towsim::app::FoxgloveServer;
 
 const char* kUsage =
     "usage: towsim_foxglove --domain N [--namespace NS] --port PORT [--address ADDR] [--quiet]\n"
+    "                       [--security DIR/NAME]\n"
     "  --domain N        DDS domain id of the node (0 to 232)\n"
     "  --namespace NS    ROS 2 namespace of the node's topics (default /towsim)\n"
     "  --port PORT       WebSocket port (Foxglove's default 8765; 0: any free port)\n"
     "  --address ADDR    interface to listen on (default 127.0.0.1; 0.0.0.0: every one)\n"
     "  --quiet           no progress notes on stderr\n"
+    "  --security DIR/NAME DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
+    "                    docs/security.md)\n"
     "Connect Foxglove to ws://ADDR:PORT; ends on SIGINT / SIGTERM.\n";
 
 struct Options {
@@ -85,6 +92,7 @@ struct Options {
   int port = -1;
   std::string address = "127.0.0.1";
   bool quiet = false;
+  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -102,6 +110,8 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
+    } else if (arg == "--security") {
+      if (!flags.Value(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
     } else if (arg == "--domain") {
       if (!flags.Value(&v)) return "--domain needs a value";
       if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
@@ -167,7 +177,7 @@ class Bridge {
   Bridge(const Options& o, const std::string& config)
       : opt_(o),
         names_(o.ns),
-        participant_(o.domain, config),
+        participant_(o.domain, config, o.security),
         waitset_(participant_),
         server_({o.address, static_cast<uint16_t>(o.port), "towsim_foxglove " + o.ns}) {}
 
@@ -332,6 +342,9 @@ int main(int argc, char** argv) {
   std::unique_ptr<Bridge> bridge;
   try {
     bridge = std::make_unique<Bridge>(options, uri);
+  } catch (const dds::SecurityError& e) {
+    std::fprintf(stderr, "towsim_foxglove: error: %s\n", e.what());
+    return kExitBadInput;
   } catch (const dds::DdsError& e) {
     std::fprintf(stderr, "towsim_foxglove: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;

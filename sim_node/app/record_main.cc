@@ -1,7 +1,12 @@
 // towsim_record: records the topics of a towsim node from DDS into MCAP (issue 6).
 //
 //   towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]
-//                 [--duration S] [--quiet]
+//                 [--duration S] [--overwrite] [--quiet]
+//                 [--security DIR/NAME]
+//
+// The file is created exclusively: one that exists is refused (exit 2) unless --overwrite,
+// and it is locked while written, so a second writer (towsim_record or sim_node --record) on
+// the same file is refused too.
 //
 // It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
 // first), then subscribes to every towsim topic of the namespace (DESIGN §3: per body odom,
@@ -59,14 +64,17 @@ namespace dds = towsim::dds;
 
 const char* kUsage =
     "usage: towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]\n"
-    "                     [--duration S] [--quiet]\n"
-    "  --output FILE.mcap  the recording (created or replaced)\n"
+    "                     [--duration S] [--overwrite] [--quiet] [--security DIR/NAME]\n"
+    "  --output FILE.mcap  the recording (created; refused if it exists)\n"
+    "  --overwrite         replace FILE.mcap if it exists (never while another writer holds it)\n"
     "  --domain N          DDS domain id (default 0)\n"
     "  --namespace NS      ROS 2 namespace of the node's topics (default /towsim)\n"
     "  --topics T ...      only these topics (ROS names: /towsim/towfish/odom /clock ...);\n"
     "                      default: every towsim topic of the namespace and /clock\n"
     "  --duration S        stop after S seconds of wall time (> 0)\n"
     "  --quiet             no progress line\n"
+    "  --security DIR/NAME DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
+    "                      docs/security.md)\n"
     "Ends with a complete file on SIGINT / SIGTERM or when the node's run ends.\n";
 
 struct Options {
@@ -76,6 +84,8 @@ struct Options {
   std::vector<std::string> topics;
   double duration = INFINITY;
   bool quiet = false;
+  bool overwrite = false;
+  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -93,6 +103,10 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
+    } else if (arg == "--overwrite") {
+      o->overwrite = true;
+    } else if (arg == "--security") {
+      if (!flags.Value(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
     } else if (arg == "--output") {
       if (!flags.Value(&o->output)) return "--output needs a value";
     } else if (arg == "--namespace") {
@@ -142,7 +156,7 @@ dds::Qos RecorderQos(bool transient_local) {
 class Recorder {
  public:
   Recorder(const Options& o, const std::string& config)
-      : opt_(o), names_(o.ns), participant_(o.domain, config), waitset_(participant_) {}
+      : opt_(o), names_(o.ns), participant_(o.domain, config, o.security), waitset_(participant_) {}
 
   int Run();
 
@@ -244,7 +258,7 @@ void Recorder::Progress(bool final) {
 
 int Recorder::Run() {
   try {
-    recording_ = std::make_unique<McapRecording>(opt_.output);
+    recording_ = std::make_unique<McapRecording>(opt_.output, opt_.overwrite);
   } catch (const std::exception& e) {
     return Bad("--output " + opt_.output + ": " + e.what());
   }
@@ -348,6 +362,8 @@ int main(int argc, char** argv) {
   std::unique_ptr<Recorder> recorder;
   try {
     recorder = std::make_unique<Recorder>(options, uri);
+  } catch (const dds::SecurityError& e) {
+    return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }

@@ -1,5 +1,7 @@
 #include "core/cable_loads.h"
 
+#include "core/seabed_contact.h"
+
 namespace towsim::core {
 
 using Vec3 = Eigen::Vector3d;
@@ -10,9 +12,14 @@ Vec12 UniformLoad(const Vec3& f, double l) {
   return q;
 }
 
-Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx, const Vec12& e,
-                          const Vec12& e_dot, const Vec12& e_ddot, double scale,
-                          ElementLoadJacobians* jac) {
+namespace {
+
+// kSea = false: still water or a steady uniform current, no seabed (the sea's code compiled
+// out, so that a scene without it costs what it did before the sea existed)
+template <bool kSea>
+Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const EnvironmentField& sea,
+               double t, const ElementWaves* waves, const Vec12& e, const Vec12& e_dot,
+               const Vec12& e_ddot, double scale, ElementLoadJacobians* jac) {
   const double l = element.props().length;
   Vec12 r = -scale * UniformLoad(ctx.weight_per_length, l);
   if (jac) {
@@ -21,22 +28,53 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
     jac->d_dedot.setZero();
   }
   const bool added = ctx.added_mass_per_length > 0.0;
-  if (!ctx.drag && !added) return r;
+  // water that moves differently from point to point or in time: sampled per Gauss point
+  const bool local_flow = kSea && !sea.uniform();
+  const bool fluid_inertia = local_flow && ctx.fluid_inertia_per_length > 0.0;
+  const bool contact = kSea && sea.has_seabed();
+  if (!ctx.drag && !added && !fluid_inertia && !contact) return r;
+
+  // the water at Gauss point p: the current at r(x), t and the waves interpolated from the nodes
+  auto flow_at = [&](const ShapeAtPoint& p, Vec3* shear) {
+    if (!local_flow) {
+      FlowSample f;
+      f.velocity = sea.uniform_current();
+      return f;
+    }
+    FlowSample f;
+    if (sea.steady_uniform_current())
+      f.velocity = sea.uniform_current();  // waves only: no look-up per point
+    else
+      f = sea.Current(Interpolate(p.n, e), t, shear);
+    if (waves) {
+      f.velocity += Interpolate(p.n, waves->velocity);
+      f.acceleration += Interpolate(p.n, waves->acceleration);
+    }
+    return f;
+  };
 
   if (!jac) {
     // the residual alone (Newton iterations with a kept matrix): R -= int S^T f dx
     for (const ShapeAtPoint& p : element.points()) {
       const Vec3 a = Interpolate(p.dn, e);
+      const FlowSample flow = flow_at(p, nullptr);
       Vec3 f = Vec3::Zero();
       if (ctx.drag) {
-        const Vec3 v_rel = Interpolate(p.n, e_dot) - ctx.current;
+        const Vec3 v_rel = RelativeVelocity(Interpolate(p.n, e_dot), flow);
         f = scale * CableDrag(ctx.fluid, ctx.diameter, a, v_rel, false).f;
       }
-      if (added) {
-        // f_am = -m_a (I - t t^T) r_ddot  (Eq. 22-23)
-        const Vec3 acc = Interpolate(p.n, e_ddot);
-        const Vec3 t = a.normalized();
-        f -= ctx.added_mass_per_length * (acc - t.dot(acc) * t);
+      if (added || fluid_inertia) {
+        // f_am = -m_a (I - t t^T) r_ddot (Eq. 22-23) + (rho_w A + m_a) (I - t t^T) a_fluid
+        Vec3 acc = ctx.added_mass_per_length * Interpolate(p.n, e_ddot);
+        if (fluid_inertia) acc -= ctx.fluid_inertia_per_length * flow.acceleration;
+        const Vec3 tn = a.normalized();
+        f -= acc - tn.dot(acc) * tn;
+      }
+      if (contact) {
+        // the seabed (seabed_contact.h): contact width = the cable's diameter
+        const ContactLoad cl = SeabedContactLoad(sea, ctx.diameter, Interpolate(p.n, e),
+                                                 Interpolate(p.n, e_dot), a, false);
+        if (cl.active) f += cl.f;
       }
       f *= p.weight_dx;
       for (int k = 0; k < 4; ++k) r.segment<3>(3 * k) -= p.n[k] * f;
@@ -47,16 +85,20 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
   // the residual and its Jacobians
   for (const ShapeAtPoint& p : element.points()) {
     const Vec3 a = Interpolate(p.dn, e);
+    Vec3 shear = Vec3::Zero();
+    const FlowSample flow = flow_at(p, &shear);
     Vec3 f = Vec3::Zero();     // load per unit length, enters R with a minus sign
     Mat3 f_a = Mat3::Zero();   // df/da
     Mat3 f_v = Mat3::Zero();   // df/dr_dot
     Mat3 m_pt = Mat3::Zero();  // added mass per length at this point
+    bool f_r = false;          // df/dr = -f_v dU/dz e_z^T (a sheared current)
     if (ctx.drag) {
-      const Vec3 v_rel = Interpolate(p.n, e_dot) - ctx.current;
+      const Vec3 v_rel = RelativeVelocity(Interpolate(p.n, e_dot), flow);
       const DragResult d = CableDrag(ctx.fluid, ctx.diameter, a, v_rel, true);
       f += scale * d.f;
       f_a += scale * d.df_da;
       f_v += scale * d.df_dv;
+      if constexpr (kSea) f_r = local_flow && !shear.isZero();
     }
     if (added) {
       // f_am = -m_a (I - t t^T) r_ddot  (Eq. 22-23)
@@ -65,18 +107,60 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
       f -= m_pt * acc;
       f_a += AddedMassTangentDerivative(ctx.added_mass_per_length, a, acc);
     }
+    if (fluid_inertia) {
+      // f_fl = (rho_w A + m_a) (I - t t^T) a_fluid: the negative of the added-mass form
+      const double c = ctx.fluid_inertia_per_length;
+      f += c * (NormalProjector(a) * flow.acceleration);
+      f_a -= AddedMassTangentDerivative(c, a, flow.acceleration);
+    }
+    Mat3 f_pos;  // df/dr where f_r
+    if constexpr (kSea) {
+      if (f_r) f_pos = -f_v * shear * Vec3::UnitZ().transpose();
+      if (fluid_inertia && !shear.isZero()) {
+        // the current's material acceleration U_z dU/dz varies with z: d/dz = (dU_z/dz) dU/dz
+        // (a piecewise-linear profile has no U'')
+        const Mat3 d = ctx.fluid_inertia_per_length * NormalProjector(a) * (shear.z() * shear) *
+                       Vec3::UnitZ().transpose();
+        f_pos = f_r ? Mat3(f_pos + d) : d;
+        f_r = true;
+      }
+      if (contact) {
+        // the seabed (seabed_contact.h): contact width = the cable's diameter; df/dr, df/dr_dot
+        const ContactLoad cl = SeabedContactLoad(sea, ctx.diameter, Interpolate(p.n, e),
+                                                 Interpolate(p.n, e_dot), a, true);
+        if (cl.active) {
+          f += cl.f;
+          f_pos = f_r ? Mat3(f_pos + cl.df_dr) : cl.df_dr;
+          f_v += cl.df_dv;
+          f_a += cl.df_da;
+          f_r = true;
+        }
+      }
+    }
     const double w = p.weight_dx;
     for (int k = 0; k < 4; ++k) {
       r.segment<3>(3 * k) -= (w * p.n[k]) * f;
       for (int j = 0; j < 4; ++j) {
         // R = -int S^T f dx: dR/de = -int S_k f_a S'_j, dR/de_dot = -int S_k f_v S_j
         jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.dn[j]) * f_a;
+        if (kSea && f_r) jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_pos;
         jac->d_dedot.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_v;
         if (added) jac->added_mass.block<3, 3>(3 * k, 3 * j) += (w * p.n[k] * p.n[j]) * m_pt;
       }
     }
   }
   return r;
+}
+
+}  // namespace
+
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
+                          const EnvironmentField& sea, double t, const ElementWaves* waves,
+                          const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
+                          ElementLoadJacobians* jac) {
+  if (sea.uniform() && !sea.has_seabed())
+    return Residual<false>(element, ctx, sea, t, waves, e, e_dot, e_ddot, scale, jac);
+  return Residual<true>(element, ctx, sea, t, waves, e, e_dot, e_ddot, scale, jac);
 }
 
 }  // namespace towsim::core

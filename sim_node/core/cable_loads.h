@@ -1,25 +1,47 @@
 #pragma once
 // Distributed external loads of one cable element, as generalized forces (paper Eq. 14):
-// gravity and buoyancy (Eq. 15-16), drag (Eq. 17-21) and normal added mass (Eq. 22-23).
-// They enter the residual as
-//   R_load(e, e_dot, e_ddot) = M_a(e) e_ddot - Q_drag(e, e_dot) - Q_weight
+// gravity and buoyancy (Eq. 15-16), drag (Eq. 17-21) on the velocity relative to the local
+// water, normal added mass (Eq. 22-23) and, in accelerating water (waves, an unsteady
+// current), the fluid-inertia (Froude-Krylov + added mass) force of Morison's equation in the
+// normal direction (docs/environment.md):
+//   f_fluid = (rho_w A + m_a) (I - t t^T) a_fluid,  m_a = C_a rho_w A,
+// so that with the added mass -m_a (I - t t^T) r_ddot the normal inertia load is
+// (1 + C_a) rho_w A a_n,fluid - C_a rho_w A a_n,cable (the rho_w A part goes with buoyancy,
+// the C_a part with added mass: a load left out of the scene drops its part). They enter the
+// residual as
+//   R_load(e, e_dot, e_ddot) = M_a(e) e_ddot - Q_drag(e, e_dot) - Q_fluid(e) - Q_weight
 // where M_a = int m_a S^T (I - t t^T) S dx depends on the tangent t; the implicit solve needs
 // M_a and the Jacobians dR_load/de (at fixed e_ddot) and dR_load/de_dot.
+//
+// The water is read from the EnvironmentField at each Gauss point's position r(x) = S(x) e and
+// the time t: the current exactly there (with its shear dU/dz in dR/de), the waves from their
+// samples at the two nodes interpolated with the element's cubic Hermite shape functions
+// (ElementWaves; environment_field.h says why). Loads are per unit unstretched length x; the
+// element length comes from the element (it may differ between elements).
 
 #include <Eigen/Core>
 
 #include "core/ancf_element.h"
+#include "core/environment_field.h"
 #include "core/hydrodynamics.h"
 
 namespace towsim::core {
 
 struct CableLoadContext {
   FluidProperties fluid;
-  double diameter = 0.0;               // d [m]
-  double added_mass_per_length = 0.0;  // m_a = C_a rho_w A [kg/m] (0: off)
+  double diameter = 0.0;                  // d [m]
+  double added_mass_per_length = 0.0;     // m_a = C_a rho_w A [kg/m] (0: off)
+  double fluid_inertia_per_length = 0.0;  // rho_w A (buoyancy on) + m_a [kg/m]
   bool drag = false;
-  Eigen::Vector3d current = Eigen::Vector3d::Zero();            // U [m/s]
   Eigen::Vector3d weight_per_length = Eigen::Vector3d::Zero();  // (rho_c - rho_w) A g e_z [N/m]
+};
+
+// The waves at an element's two nodes, in the layout of its coordinates e:
+// [w(0), dw/dx(0), w(l), dw/dx(l)] for the velocity and for the acceleration, so that
+// Interpolate(point.n, velocity) is the waves' velocity at a Gauss point.
+struct ElementWaves {
+  Vec12 velocity = Vec12::Zero();
+  Vec12 acceleration = Vec12::Zero();
 };
 
 struct ElementLoadJacobians {
@@ -28,10 +50,12 @@ struct ElementLoadJacobians {
   Mat12 d_dedot;     // dR_load/de_dot
 };
 
-// Generalized load residual of one element; `scale` multiplies weight and drag (static load
-// continuation). Jacobians are filled when jac != nullptr.
-Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx, const Vec12& e,
-                          const Vec12& e_dot, const Vec12& e_ddot, double scale,
+// Generalized load residual of one element at time t in the sea `sea`, with the waves at its
+// nodes (nullptr: none); `scale` multiplies weight and drag (static load continuation).
+// Jacobians are filled when jac != nullptr.
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
+                          const EnvironmentField& sea, double t, const ElementWaves* waves,
+                          const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
                           ElementLoadJacobians* jac);
 
 // Consistent generalized force of a uniform load f per unit unstretched length:

@@ -32,6 +32,9 @@ struct FluidProperties {
 //   f = |a| ( -1/2 mu G(Re_n) V_n - pi mu Nu(Re_t) V_t ),
 //   V_t = (V.t) t, V_n = V - V_t, Re_n = rho |V_n| d / mu, Re_t = rho |V_t| d / mu.
 // (s_c / d = pi for a circular section.) Jacobians df/dV and df/da (3 x 3) when asked.
+// Why per stretched length: drag acts on the wetted surface, and a stretched cable of constant
+// diameter d presents d |a| dx of it per unstretched dx. MoorDyn 2.7.1 (Line.cpp) takes it per
+// unstretched segment length instead; the two differ by the strain (0.01-0.2 % here).
 struct DragResult {
   Eigen::Vector3d f;
   Eigen::Matrix3d df_dv;

@@ -33,6 +33,8 @@ Integrator::Integrator(const System& system)
   dq_.setZero(n);
   dl_.setZero(m);
   backup_.resize(system.model().integrator.max_substep_level + 1);
+  waves_ = system.sea().has_waves();
+  if (waves_) system.ResizeWaveSamples(&wave_samples_);
 }
 
 bool Integrator::InitializeAcceleration(State* s) {
@@ -41,7 +43,10 @@ bool Integrator::InitializeAcceleration(State* s) {
   s->lambda.setZero(m);
   JacobianCoefficients cf{0.0, 0.0, 1.0};
   tangent_valid_ = false;  // jac_ now holds the mass matrix, not a Newton matrix
-  system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_);
+  if (waves_) system_.SampleWaves(s->q, s->t, &wave_samples_);
+  wave_time_ = -1.0;
+  system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_,
+                   waves_ ? &wave_samples_ : nullptr);
   // acceleration-level constraints: Phi_q a = 0 (linear joints, constant driven velocity)
   phi_.setZero();
   system_.ToBlocks(-r_, phi_, &rhs_);
@@ -80,13 +85,21 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   const JacobianCoefficients cf{1.0, p.gamma / (p.beta * h), a_fac / (p.beta * h2)};
   const double tol = settings.tolerance * q_scale_;
   bool refresh = full || !tangent_valid_ || tangent_h_ != h;
+  // the waves at t_{n+1} at the predicted positions, once per step (see the header)
+  const bool waves_each_iteration = waves_ && settings.waves_per_iteration;
+  if (waves_ && (t1 != wave_time_ || full) && !waves_each_iteration) {
+    system_.SampleWaves(st.q, t1, &wave_samples_);
+    wave_time_ = t1;
+  }
+  const WaveSamples* waves = waves_ ? &wave_samples_ : nullptr;
   ++theta_age_;  // one more step since the kept matrix's rate was measured
   double dq_prev = 0.0;
   for (int it = 1; it <= settings.max_iterations; ++it) {
     at.iterations = it;
     // residual always; the Newton matrix only when it is refreshed
+    if (waves_each_iteration) system_.SampleWaves(st.q, t1, &wave_samples_);
     system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_,
-                     refresh ? &jac_ : nullptr);
+                     refresh ? &jac_ : nullptr, waves);
     if (!r_.allFinite() || !phi_.allFinite()) {
       at.non_finite = true;
       return at;

@@ -23,6 +23,11 @@
 // tolerance, and a matrix with theta > kMaxContraction is replaced at the current iterate. A
 // step that fails with a kept matrix is retried with full Newton (a fresh matrix at every
 // iteration) before it is halved.
+//
+// Waves (environment_field.h): their kinematics are sampled once per (sub)step at t_{n+1} at
+// the predictor's node positions and held through the Newton iterations (the Newton matrix is
+// then exact for the residual it solves); IntegratorSettings::waves_per_iteration resamples
+// them at every iteration instead, to measure what holding them costs in accuracy.
 
 #include <string>
 #include <vector>
@@ -83,6 +88,11 @@ class Integrator {
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
   std::vector<State> backup_;                          // one saved state per sub-stepping level
+  // the waves, sampled once per (sub)step at t_{n+1} at the predicted positions (and kept for
+  // the later vehicle-coupling passes over the same step); calm water: never sampled
+  bool waves_ = false;
+  WaveSamples wave_samples_;
+  double wave_time_ = -1.0;  // t of wave_samples_ (< 0: none yet)
   Attempt last_failure_;
   // the factored Newton matrix in jac_: valid, for which step size, its contraction rate
   bool tangent_valid_ = false;

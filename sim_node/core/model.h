@@ -7,11 +7,19 @@
 
 #include <Eigen/Core>
 
+#include "core/current_field.h"
+#include "core/seabed.h"
 #include "core/vehicle_model.h"
+#include "core/wave_field.h"
 
 namespace towsim::core {
 
 using Vec3 = Eigen::Vector3d;
+
+// the most steps a run may have (time.duration / time.step, --duration / time.step): a
+// step count must fit a long and a simulated time must advance (t + h > t); 1e12 steps are
+// 30 years of a 1 us step
+inline constexpr double kMaxSteps = 1e12;
 
 struct TimeSettings {
   double step = 0.01;         // fixed step h [s]
@@ -23,7 +31,9 @@ struct Environment {
   double water_density = 1025.0;      // rho_w [kg/m^3]
   double dynamic_viscosity = 1.0e-3;  // mu [Pa s]
   double gravity = 9.81;              // g [m/s^2], acts along +z (NED)
-  Vec3 current = Vec3::Zero();        // uniform current U_W [m/s]
+  CurrentField current;               // U_W(z, t) [m/s] (current_field.h); default: none
+  WaveField waves;                    // Airy waves (wave_field.h); default: calm
+  Seabed seabed;                      // the bottom (seabed.h); default: none (bottomless)
 };
 
 // Each cable load can be switched off per scene (paper Eq. 15-23, Eq. 8 bending term).
@@ -116,6 +126,9 @@ struct IntegratorSettings {
   int max_iterations = 20;    // Newton iterations per (sub)step
   int max_substep_level = 6;  // halve the step at most this many times (2^6 substeps)
   int max_coupling_iterations = 30;  // kStrong: joint-force iterations per step
+  // resample the waves at every Newton iteration instead of once per step (integrator.h; for
+  // accuracy checks)
+  bool waves_per_iteration = false;
 };
 
 // A 6-DOF vehicle of the scene (its model from config/vehicles/*.yaml).
@@ -163,6 +176,9 @@ struct Publishing {
   double cable_state = -1.0;     // < 0: the scene's time.output_rate
   double markers = -1.0;         // 3D markers; < 0: the scene's time.output_rate
   double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]
+  // security.open_outputs: with DDS Security, participants without a certificate may read the
+  // outputs (never command); docs/security.md
+  bool open_outputs = false;
 };
 
 struct Model {

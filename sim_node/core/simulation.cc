@@ -1,5 +1,8 @@
 #include "core/simulation.h"
 
+#include <limits>
+
+#include "core/environment_field.h"
 #include "core/initial_shape.h"
 #include "core/integrator.h"
 #include "core/state.h"
@@ -20,14 +23,19 @@ struct Simulation::Impl {
   int coupling_iterations = 0;
 };
 
-Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) {
+Simulation::Simulation(const Model& model, const std::function<bool()>& stop_requested)
+    : impl_(std::make_unique<Impl>(model)) {
   System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(s);
   if (model.cable.initial == InitialShape::kStatic) {
-    const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s);
+    const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s, stop_requested);
+    if (r.stopped) {
+      throw StopRequestedError("stopped during the static solve after " +
+                               std::to_string(r.iterations) + " iterations");
+    }
     if (!r.ok) throw SolverError(r.message);
   }
   if (!impl_->integrator.InitializeAcceleration(&s))
@@ -183,5 +191,26 @@ double Simulation::PotentialEnergy() const {
 }
 
 double Simulation::StrainEnergy() const { return impl_->system.StrainEnergy(impl_->state.q); }
+
+double Simulation::body_altitude(int b) const {
+  const EnvironmentField& sea = impl_->system.sea();
+  if (!sea.has_seabed()) return std::numeric_limits<double>::quiet_NaN();
+  const Vec3 p = body_position(b);
+  return sea.SeabedDepth(p.x(), p.y()) - p.z();
+}
+
+double Simulation::body_depth(int b) const {
+  const Vec3 p = body_position(b);
+  return p.z() + surface_elevation_at(b);
+}
+
+double Simulation::surface_elevation_at(int b) const {
+  const Vec3 p = body_position(b);
+  return impl_->system.sea().Elevation(p.x(), p.y(), time());
+}
+
+Vec3 Simulation::water_velocity_at(int b) const {
+  return impl_->system.sea().Flow(body_position(b), time()).velocity;
+}
 
 }  // namespace towsim::core

@@ -7,6 +7,7 @@
 //     if (!s.ok()) { ... s.message ... }
 //   }
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,13 @@ namespace towsim::core {
 
 // Thrown when the initial state cannot be built (e.g. the static solve fails).
 class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Thrown when the caller's stop request ended the building of the initial state (the static
+// solve asks it before every iteration).
+class StopRequestedError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -38,7 +46,8 @@ struct State;  // core/state.h
 
 class Simulation {
  public:
-  explicit Simulation(const Model& model);  // throws SolverError
+  // throws SolverError, or StopRequestedError once `stop_requested` (if set) returns true
+  explicit Simulation(const Model& model, const std::function<bool()>& stop_requested = {});
   ~Simulation();
   Simulation(Simulation&&) noexcept;
   Simulation& operator=(Simulation&&) noexcept;
@@ -100,6 +109,16 @@ class Simulation {
   double KineticEnergy() const;
   double PotentialEnergy() const;
   double StrainEnergy() const;
+
+  // --- the sea at a body (docs/environment.md), at its origin and the current time ---
+  // what a towfish's altimeter and pressure sensor would report: the altitude above the seabed
+  // straight below (NaN without a seabed) and the depth below the instantaneous surface,
+  // z + eta [m]; the surface elevation eta (positive up) and the water's velocity (current +
+  // waves, world frame) there [m, m/s]
+  double body_altitude(int b) const;
+  double body_depth(int b) const;
+  double surface_elevation_at(int b) const;
+  Vec3 water_velocity_at(int b) const;
 
  private:
   struct Impl;

@@ -10,12 +10,17 @@ using Eigen::VectorXd;
 
 namespace {
 
-// force scale for the convergence test: weight of cable and bodies plus a drag scale
-double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity) {
+// force scale for the convergence test: weight of cable and bodies plus a drag scale on the
+// largest speed relative to the water at the initial node positions
+double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, const State& s) {
   const Model& m = sys.model();
   const CableParams& c = m.cable;
   const Environment& env = m.environment;
-  const double rel = (frame_velocity - env.current).norm();
+  double rel = 0.0;
+  for (int i = 0; i < sys.num_nodes(); ++i) {
+    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.cable_dof(i)), s.t);
+    rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
+  }
   double f = std::abs(c.density - env.water_density) * c.area() * env.gravity * c.length;
   f += 0.5 * env.water_density * c.diameter * 1.2 * rel * rel * c.length;
   for (const SphereBody& b : m.bodies)
@@ -27,11 +32,12 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity) {
 
 }  // namespace
 
-StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s) {
+StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
+                         const std::function<bool()>& stop) {
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
   const double tol = sys.model().integrator.tolerance;
-  const double f_tol = tol * ForceScale(sys, frame_velocity);
+  const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
   const double q_scale = std::max(1.0, sys.model().cable.length);
   s->v.setZero(n);
   for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.cable_dof(i)) = frame_velocity;
@@ -45,6 +51,10 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   double delta = 1.0e-2;  // pseudo time step squared [s^2]
   double prev_norm = -1.0;
   for (int it = 1; it <= kMaxIterations; ++it) {
+    if (stop && stop()) {
+      res.stopped = true;
+      return res;
+    }
     res.iterations = it;
     // J = K + M_eff / delta (c_a = 1/delta, a = 0 in R); plain Newton once delta is huge
     const JacobianCoefficients cf{1.0, 0.0, delta > 1e12 ? 0.0 : 1.0 / delta};

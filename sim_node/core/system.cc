@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/seabed_contact.h"
+
 namespace towsim::core {
 namespace {
 
@@ -27,9 +29,12 @@ CableLoadContext MakeLoadContext(const Model& m) {
   ctx.fluid = {env.water_density, env.dynamic_viscosity};
   ctx.diameter = c.diameter;
   ctx.drag = c.loads.drag;
-  ctx.current = env.current;
   ctx.added_mass_per_length =
       c.loads.added_mass ? c.added_mass_coefficient * env.water_density * c.area() : 0.0;
+  // Morison's fluid inertia (cable_loads.h): the Froude-Krylov part goes with buoyancy (both
+  // are the pressure field on the section), the C_a part with added mass
+  ctx.fluid_inertia_per_length =
+      (c.loads.buoyancy ? env.water_density * c.area() : 0.0) + ctx.added_mass_per_length;
   // Eq. 15-16: rho_c A g e_z (gravity) and -rho_w A g e_z (buoyancy), NED z down
   double w = 0.0;
   if (c.loads.gravity) w += c.density * c.area() * env.gravity;
@@ -49,8 +54,13 @@ void Normals(const Vec3& s, Vec3* n1, Vec3* n2) {
 }  // namespace
 
 System::System(const Model& model)
-    : model_(model), element_(MakeElementProperties(model.cable)), loads_(MakeLoadContext(model)) {
-  state_dependent_loads_ = loads_.drag || loads_.added_mass_per_length > 0.0;
+    : model_(model),
+      sea_(model.environment),
+      element_(MakeElementProperties(model.cable)),
+      loads_(MakeLoadContext(model)) {
+  state_dependent_loads_ = loads_.drag || loads_.added_mass_per_length > 0.0 ||
+                           (!sea_.uniform() && loads_.fluid_inertia_per_length > 0.0) ||
+                           sea_.has_seabed();
   weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
   const int nb = num_bodies();
   const int nn = num_nodes();
@@ -69,6 +79,7 @@ System::System(const Model& model)
     const double radius = std::cbrt(3.0 * b.volume / (4.0 * CableParams::kPi));
     body_mass_eff_.push_back(b.mass + b.added_mass_coefficient * rho * b.volume);
     body_drag_k_.push_back(0.5 * rho * b.drag_coefficient * CableParams::kPi * radius * radius);
+    body_radius_.push_back(radius);
   }
 
   // block layout
@@ -155,10 +166,25 @@ void System::SetVehicleSupport(int end, const Vec3& p0, double t0, const Vec3& p
   vehicle_support_[end] = {p0, p1, t0, t1};
 }
 
+void System::ResizeWaveSamples(WaveSamples* out) const {
+  out->nodes.assign(num_nodes(), WaveSample());
+  out->bodies.assign(num_bodies(), WaveSample());
+}
+
+void System::SampleWaves(const VectorXd& q, double t, WaveSamples* out) const {
+  // nodes: the waves at r and their derivative along r' (= d/dx, x the unstretched arc length)
+  for (int n = 0; n < num_nodes(); ++n) {
+    const int o = cable_dof(n);
+    out->nodes[n] = sea_.Waves(q.segment<3>(o), q.segment<3>(o + 3), t);
+  }
+  for (int b = 0; b < num_bodies(); ++b)
+    out->bodies[b] = sea_.Waves(q.segment<3>(body_dof(b)), Vec3::Zero(), t);
+}
+
 void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
                       const VectorXd& lambda, double t, double load_scale,
                       const JacobianCoefficients& cf, VectorXd* residual, VectorXd* phi,
-                      BlockTridiagonal* jac) const {
+                      BlockTridiagonal* jac, const WaveSamples* waves) const {
   residual->setZero(num_q_);
   phi->setZero(num_lambda_);
   if (jac) jac->SetZero();
@@ -168,9 +194,20 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   Vec12 force;
   Mat12 k, c, j;
   ElementLoadJacobians lj;
+  ElementWaves ew;
   for (int e = 0; e < num_elements(); ++e) {
     const int o = cable_dof(e);
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
+    if (waves) {
+      // [w, dw/dx] at the element's two nodes, in the layout of e (cable_loads.h)
+      for (int k = 0; k < 2; ++k) {
+        const WaveSample& ws = waves->nodes[e + k];
+        ew.velocity.segment<3>(6 * k) = ws.velocity;
+        ew.velocity.segment<3>(6 * k + 3) = ws.d_velocity;
+        ew.acceleration.segment<3>(6 * k) = ws.acceleration;
+        ew.acceleration.segment<3>(6 * k + 3) = ws.d_acceleration;
+      }
+    }
     element_.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
@@ -179,8 +216,8 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
       j = cf.c_a * mass + cf.c_q * k;
       if (cf.c_v != 0.0) j += cf.c_v * c;
     } else {
-      const Vec12 rl =
-          ElementLoadResidual(element_, loads_, ee, ed, ea, load_scale, jac ? &lj : nullptr);
+      const Vec12 rl = ElementLoadResidual(element_, loads_, sea_, t, waves ? &ew : nullptr, ee, ed,
+                                           ea, load_scale, jac ? &lj : nullptr);
       residual->segment<12>(o) += element_.MassTimes(ea) + force + rl;
       if (!jac) continue;
       // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
@@ -191,22 +228,51 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
       for (int s = 0; s < 4; ++s) Add3(jac, o + 3 * r, o + 3 * s, j.block<3, 3>(3 * r, 3 * s));
   }
 
-  // bodies: (m + m_a) a - (m - rho V) g e_z * scale + k |V| V * scale, V = v - U
+  // bodies (Morison): (m + m_a) a - (rho V + m_a) a_w - (m - rho V) g e_z * scale
+  //   + k |V| V * scale, V = v - u_w, m_a = C_a rho V, u_w and a_w the water's velocity and
+  //   acceleration at the body (a neutrally buoyant sphere follows the water)
   const Environment& env = model_.environment;
   for (int b = 0; b < num_bodies(); ++b) {
     const SphereBody& body = model_.bodies[b];
     const int o = body_dof(b);
-    const Vec3 vr = v.segment<3>(o) - env.current;
+    Vec3 shear = Vec3::Zero();
+    FlowSample flow;
+    if (sea_.uniform()) {
+      flow.velocity = sea_.uniform_current();
+    } else {
+      flow = sea_.Current(q.segment<3>(o), t, &shear);
+      if (waves) {
+        flow.velocity += waves->bodies[b].velocity;
+        flow.acceleration += waves->bodies[b].acceleration;
+      }
+    }
+    const Vec3 vr = RelativeVelocity(v.segment<3>(o), flow);
     const double speed = vr.norm();
     const double net_weight = (body.mass - env.water_density * body.volume) * env.gravity;
     Vec3 r = body_mass_eff_[b] * a.segment<3>(o) + load_scale * body_drag_k_[b] * speed * vr;
     r.z() -= load_scale * net_weight;
+    if (!sea_.uniform())
+      r -= (body_mass_eff_[b] - body.mass + env.water_density * body.volume) * flow.acceleration;
+    // the seabed under the sphere's lowest point, on its frontal area pi r^2 (seabed_contact.h)
+    ContactLoad contact;
+    if (sea_.has_seabed()) {
+      const Vec3 p_b = q.segment<3>(o);
+      const Vec3 low = p_b - body_radius_[b] * sea_.SeabedNormal(p_b.x(), p_b.y());
+      const double area = CableParams::kPi * body_radius_[b] * body_radius_[b];
+      contact = SeabedContactLoad(sea_, area, low, v.segment<3>(o), Vec3::Zero(), jac != nullptr);
+      if (contact.active) r -= contact.f;
+    }
     residual->segment<3>(o) += r;
     if (!jac) continue;
     Mat3 jb = cf.c_a * body_mass_eff_[b] * Mat3::Identity();
-    if (speed > 0.0 && cf.c_v != 0.0)
-      jb += cf.c_v * load_scale * body_drag_k_[b] *
-            (speed * Mat3::Identity() + vr * vr.transpose() / speed);
+    if (contact.active) jb -= cf.c_q * contact.df_dr + cf.c_v * contact.df_dv;
+    if (speed > 0.0) {
+      // d(k |V| V)/dV; V depends on v (c_v) and, in a sheared current, on z (c_q)
+      const Mat3 dd =
+          load_scale * body_drag_k_[b] * (speed * Mat3::Identity() + vr * vr.transpose() / speed);
+      if (cf.c_v != 0.0) jb += cf.c_v * dd;
+      if (!shear.isZero()) jb -= cf.c_q * dd * shear * Vec3::UnitZ().transpose();
+    }
     Add3(jac, o, o, jb);
   }
 
@@ -261,13 +327,15 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
   ElementLoadJacobians lj;
   CableLoadContext am_only = loads_;
   am_only.drag = false;
+  am_only.fluid_inertia_per_length = 0.0;
   am_only.weight_per_length.setZero();
   for (int e = 0; e < num_elements(); ++e) {
     const int o = cable_dof(e);
     const Vec12 ed = v.segment<12>(o);
     Mat12 m = element_.mass();
     if (loads_.added_mass_per_length > 0.0) {
-      ElementLoadResidual(element_, am_only, q.segment<12>(o), ed, Vec12::Zero(), 1.0, &lj);
+      ElementLoadResidual(element_, am_only, sea_, 0.0, nullptr, q.segment<12>(o), ed,
+                          Vec12::Zero(), 1.0, &lj);
       m += lj.added_mass;
     }
     ke += 0.5 * ed.dot(m * ed);

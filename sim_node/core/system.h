@@ -21,6 +21,7 @@
 #include "core/ancf_element.h"
 #include "core/block_tridiagonal.h"
 #include "core/cable_loads.h"
+#include "core/environment_field.h"
 #include "core/model.h"
 
 namespace towsim::core {
@@ -30,6 +31,13 @@ struct JacobianCoefficients {
   double c_q = 1.0;
   double c_v = 0.0;
   double c_a = 0.0;
+};
+
+// The waves sampled once per step (environment_field.h): at every cable node, with their
+// derivative along the cable (d = r' at the node), and at every sphere body.
+struct WaveSamples {
+  std::vector<WaveSample> nodes;
+  std::vector<WaveSample> bodies;
 };
 
 class System {
@@ -50,11 +58,20 @@ class System {
   const AncfElement& element() const { return element_; }
 
   // Evaluates R and Phi; fills the Newton matrix when jac != nullptr. `load_scale` scales the
-  // external loads (weight, buoyancy, drag) for the static load continuation.
+  // external loads (weight, buoyancy, drag) for the static load continuation. The waves come
+  // from `waves` (SampleWaves; nullptr: calm water); the current is evaluated here.
   void Evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
                 const Eigen::VectorXd& lambda, double t, double load_scale,
                 const JacobianCoefficients& coeffs, Eigen::VectorXd* residual, Eigen::VectorXd* phi,
-                BlockTridiagonal* jac) const;
+                BlockTridiagonal* jac, const WaveSamples* waves = nullptr) const;
+
+  // the sea every load reads (environment_field.h)
+  const EnvironmentField& sea() const { return sea_; }
+  // sizes *out for this system (allocates: call once, outside Step)
+  void ResizeWaveSamples(WaveSamples* out) const;
+  // the waves at the nodes and bodies of q at time t into *out (sized by ResizeWaveSamples);
+  // does not allocate
+  void SampleWaves(const Eigen::VectorXd& q, double t, WaveSamples* out) const;
 
   // an empty Newton matrix with this system's block structure
   BlockTridiagonal MakeMatrix() const;
@@ -90,6 +107,7 @@ class System {
   void AddQL(BlockTridiagonal* jac, int qi, int li, const Eigen::Vector3d& col) const;
 
   Model model_;
+  EnvironmentField sea_;
   AncfElement element_;
   CableLoadContext loads_;
   // without drag and added mass the load on an element is its weight in water alone, the same
@@ -108,6 +126,7 @@ class System {
   std::vector<int> block_sizes_, block_offsets_;
   std::vector<BlockIndex> q_index_, lambda_index_;
   std::vector<double> body_mass_eff_, body_drag_k_;  // m + C_a rho V, 1/2 rho C_D pi r^2
+  std::vector<double> body_radius_;                  // r = (3 V / 4 pi)^(1/3)
 };
 
 }  // namespace towsim::core

@@ -39,6 +39,8 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
   f1_.resize(nv);
   residual_.resize(nv);
   residual_prev_.resize(nv);
+  flow0_.resize(nv);
+  flow1_.resize(nv);
 }
 
 Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
@@ -57,6 +59,7 @@ Vec3 VehicleCoupling::JointForce(const State& state, int v) const {
 
 void VehicleCoupling::HoldSupports(const State& state) {
   have_previous_ = false;
+  flow_time_ = -1.0;
   previous_pass_ = state;  // sizes the work space (Step does not allocate)
   for (int e = 0; e < 2; ++e) {
     if (vehicle_end_[e] < 0) continue;
@@ -95,6 +98,20 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     f0[v] = f1[v] = JointForce(start_, v);
     if (predict) f1[v] += (h / h_previous_) * (f0[v] - f_previous_[v]);
   }
+  // the water at each vehicle over the step (vehicle_coupling.h)
+  const EnvironmentField& sea = system_->sea();
+  for (int v = 0; v < nv; ++v) {
+    const VehicleParams& vp = model.vehicles[v].params;
+    const VehicleState& vs = start_.vehicles[v];
+    if (sea.uniform()) {
+      flow0_[v] = flow1_[v] = UniformFlow(sea.uniform_current());
+      continue;
+    }
+    flow0_[v] = flow_time_ == t0 ? flow1_[v] : SampleVehicleFlow(vp, sea, vs.p_W, vs.q_WB, t0);
+    const Vec3 p1 = vs.p_W + h * (vs.q_WB * Vec3(vs.nu.head<3>()));
+    flow1_[v] = SampleVehicleFlow(vp, sea, p1, vs.q_WB, t0 + h);
+  }
+  flow_time_ = t0 + h;
   // the largest point compliance of a vehicle end: the force tolerance of the residual test
   double compliance = 0.0;
   for (int e = 0; e < 2; ++e) compliance = std::max(compliance, compliance_[e]);
@@ -115,8 +132,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       for (int e = 0; e < 2; ++e)
         if (vehicle_end_[e] == v)
           load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
-      AdvanceVehicle(model.vehicles[v].params, model.environment, commands[v], load, h,
-                     &vehicles[v]);
+      AdvanceVehicle(model.vehicles[v].params, model.environment, flow0_[v], flow1_[v], commands[v],
+                     load, h, &vehicles[v], &sea);
     }
     // the cable with the attachment points as driven supports
     double moved = 0.0;

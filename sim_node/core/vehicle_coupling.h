@@ -73,6 +73,11 @@ class VehicleCoupling {
   int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
   std::vector<Vec3> f0_, f1_, residual_, residual_prev_;
+  // the water at each vehicle at the start and the end of the step (vehicle_model.h): sampled
+  // once per step, the end at the pose predicted from the start (p + h R_WB nu_1); the end of
+  // one step is the start of the next (flow_time_ its time, < 0: none)
+  std::vector<VehicleFlow> flow0_, flow1_;
+  double flow_time_ = -1.0;
 };
 
 }  // namespace towsim::core

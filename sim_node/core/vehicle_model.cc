@@ -5,8 +5,11 @@
 
 #include <Eigen/LU>
 
+#include "core/environment_field.h"
+#include "core/gauss_quadrature.h"
 #include "core/lifting_surface.h"
 #include "core/model.h"
+#include "core/seabed_contact.h"
 
 namespace towsim::core {
 namespace {
@@ -76,13 +79,71 @@ Mat6 RigidBodyMassMatrix(const VehicleParams& p) {
   return m;
 }
 
-Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s) {
+namespace {
+
+// waterline length of a surface-piercing vehicle: the rectangle of area A_wp and second
+// moment I_L = A_wp L_w^2 / 12 (vehicle_model.h); the hull length without I_L
+double WaterlineLength(const VehicleParams& p) {
+  if (p.waterplane_inertia_long > 0.0 && p.waterplane_area > 0.0)
+    return std::sqrt(12.0 * p.waterplane_inertia_long / p.waterplane_area);
+  return p.length;
+}
+
+}  // namespace
+
+VehicleFlow VehicleFlow::Lerp(const VehicleFlow& o, double c) const {
+  if (c == 0.0) return *this;
+  VehicleFlow f = *this;
+  f.origin.velocity += c * (o.origin.velocity - origin.velocity);
+  f.origin.acceleration += c * (o.origin.acceleration - origin.acceleration);
+  for (int i = 0; i < kHullStations; ++i)
+    f.hull_acceleration_W[i] += c * (o.hull_acceleration_W[i] - hull_acceleration_W[i]);
+  for (int i = 0; i < kWaterlineStations; ++i)
+    f.elevation[i] += c * (o.elevation[i] - elevation[i]);
+  return f;
+}
+
+VehicleFlow UniformFlow(const Vec3& current_W) {
+  VehicleFlow f;
+  f.origin.velocity = current_W;
+  return f;
+}
+
+VehicleFlow SampleVehicleFlow(const VehicleParams& p, const EnvironmentField& sea, const Vec3& p_W,
+                              const Eigen::Quaterniond& q_WB, double t) {
+  if (sea.uniform()) return UniformFlow(sea.uniform_current());
+  VehicleFlow f;
+  const Mat3 r_wb = q_WB.normalized().toRotationMatrix();
+  // hull stations x_B = L (xi - 1/2); the middle one (xi = 1/2) is the origin
+  const GaussRule<VehicleFlow::kHullStations> hull = Gauss3();
+  for (int i = 0; i < VehicleFlow::kHullStations; ++i) {
+    const Vec3 x_W = p_W + r_wb * Vec3(p.length * (hull.xi[i] - 0.5), 0.0, 0.0);
+    const FlowSample fs = sea.Flow(x_W, t);
+    f.hull_acceleration_W[i] = fs.acceleration;
+    if (i == VehicleFlow::kHullStations / 2) f.origin = fs;
+  }
+  f.accelerating = true;
+  if (sea.has_waves() && p.waterplane_area > 0.0) {
+    const GaussRule<VehicleFlow::kWaterlineStations> wl = Gauss4();
+    const double lw = WaterlineLength(p);
+    for (int i = 0; i < VehicleFlow::kWaterlineStations; ++i) {
+      const Vec3 x_W = p_W + r_wb * (p.waterplane_point_B + Vec3(lw * (wl.xi[i] - 0.5), 0, 0));
+      f.elevation[i] = sea.Elevation(x_W.x(), x_W.y(), t);
+    }
+    f.waves = true;
+  }
+  return f;
+}
+
+Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s,
+                        const VehicleFlow& flow) {
   const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   const Vec3 omega = s.nu.tail<3>();
-  // nu_r = nu - [R^T U_W; 0]: velocity relative to the (uniform, steady) current
-  const Vec3 v_c = r_wb.transpose() * env.current;
+  // nu_r = nu - [R^T u_W(O); 0]: velocity relative to the water at the origin, and v_c the
+  // water's velocity there in B
   Vec6 nu_r = s.nu;
-  nu_r.head<3>() -= v_c;
+  nu_r.head<3>() = r_wb.transpose() * RelativeVelocity(r_wb * s.nu.head<3>(), flow.origin);
+  const Vec3 v_c = s.nu.head<3>() - nu_r.head<3>();
   const double u = nu_r(0), v = nu_r(1), w = nu_r(2);
   const double pr = nu_r(3), q = nu_r(4), r = nu_r(5);
   Vec6 tau = Vec6::Zero();
@@ -103,6 +164,19 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   Vec6 nu_c_dot = Vec6::Zero();
   nu_c_dot.head<3>() = -omega.cross(v_c);
   tau += p.added_mass * nu_c_dot;
+  if (flow.accelerating) {
+    // accelerating water: Froude-Krylov + added mass by strips along the hull (the header),
+    // dF = w_i (rho V + diag(M_A)) R^T a_W(x_i), dM = x_i x dF
+    const GaussRule<VehicleFlow::kHullStations> hull = Gauss3();
+    const Vec3 inertia = env.water_density * p.volume * Vec3::Ones() +
+                         Vec3(p.added_mass(0, 0), p.added_mass(1, 1), p.added_mass(2, 2));
+    for (int i = 0; i < VehicleFlow::kHullStations; ++i) {
+      const Vec3 f_i =
+          hull.weight[i] * inertia.cwiseProduct(r_wb.transpose() * flow.hull_acceleration_W[i]);
+      tau.head<3>() += f_i;
+      tau.tail<3>() += Vec3(p.length * (hull.xi[i] - 0.5), 0.0, 0.0).cross(f_i);
+    }
+  }
 
   // -D(nu_r) nu_r: dimensional viscous coefficients (Prestero 2001 names; forces carry the sign)
   tau(0) += p.x_uu * u * std::abs(u);
@@ -130,6 +204,16 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
     const double rho_g = env.water_density * env.gravity;
     tau(3) -= rho_g * p.waterplane_inertia_trans * down_B.y();
     tau(4) -= rho_g * p.waterplane_inertia_long * (-down_B.x());
+    if (flow.waves) {
+      // the wave elevation along the waterline: dF = -rho g (A_wp / L_w) eta(x) dx down_B
+      const GaussRule<VehicleFlow::kWaterlineStations> wl = Gauss4();
+      const double lw = WaterlineLength(p);
+      for (int i = 0; i < VehicleFlow::kWaterlineStations; ++i) {
+        const Vec3 f_i = -rho_g * p.waterplane_area * wl.weight[i] * flow.elevation[i] * down_B;
+        tau.head<3>() += f_i;
+        tau.tail<3>() += (p.waterplane_point_B + Vec3(lw * (wl.xi[i] - 0.5), 0.0, 0.0)).cross(f_i);
+      }
+    }
   }
 
   // propeller: thrust along +x_B through O
@@ -151,8 +235,10 @@ namespace {
 // the right-hand side with the factored total mass M_RB + M_A (constant: factored once per RK4
 // step instead of once per stage)
 VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const VehicleState& s,
-                        const VehicleCommand& cmd, const Vec3& force_B, const Vec3& moment_B,
-                        const Mat6& m_rb, const Eigen::PartialPivLU<Mat6>& mass_lu) {
+                        const VehicleFlow& flow, const VehicleCommand& cmd, const Vec3& force_B,
+                        const Vec3& moment_B, const Mat6& m_rb,
+                        const Eigen::PartialPivLU<Mat6>& mass_lu,
+                        const EnvironmentField* sea = nullptr) {
   VehicleDerivative d;
   const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   // p_dot_W = R_WB nu_1, attitude rate omega_B
@@ -160,7 +246,8 @@ VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const Ve
   d.omega_B = s.nu.tail<3>();
 
   // (M_RB + M_A) nu_dot = tau_hyd + tau_ext - C_RB(nu) nu   (paper Eq. 27-28, Fossen form)
-  Vec6 rhs = HydrodynamicForces(p, env, s);
+  Vec6 rhs = HydrodynamicForces(p, env, s, flow);
+  if (sea && sea->has_seabed()) rhs += SeabedContactWrench(p, *sea, s);
   rhs.head<3>() += force_B;
   rhs.tail<3>() += moment_B;
   rhs -= M2C(m_rb, s.nu) * s.nu;
@@ -180,23 +267,60 @@ VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const Ve
 
 VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
                                const VehicleState& s, const VehicleCommand& cmd,
-                               const Vec3& force_B, const Vec3& moment_B) {
+                               const Vec3& force_B, const Vec3& moment_B, const VehicleFlow& flow) {
   const Mat6 m_rb = RigidBodyMassMatrix(p);
   const Eigen::PartialPivLU<Mat6> lu(m_rb + p.added_mass);
-  return Rates(p, env, s, cmd, force_B, moment_B, m_rb, lu);
+  return Rates(p, env, s, flow, cmd, force_B, moment_B, m_rb, lu);
 }
 
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
                     const PointLoad& load, double h, VehicleState* s) {
+  // the scene's current at the vehicle's depth, steady over the step (tests and tools; the
+  // simulation samples the whole sea, SampleVehicleFlow)
+  const VehicleFlow flow = UniformFlow(env.current.Velocity(s->p_W.z(), 0.0));
+  AdvanceVehicle(p, env, flow, flow, cmd, load, h, s);
+}
+
+Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
+                         const VehicleState& s) {
+  Vec6 tau = Vec6::Zero();
+  if (!sea.has_seabed()) return tau;
+  const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
+  const Vec3 v_o = s.nu.head<3>(), omega = s.nu.tail<3>();
+  const double area = p.length > 0.0 ? p.volume / p.length : 0.0;  // one hull section
+  auto contact = [&](const Vec3& r_B) {
+    const Vec3 x_W = s.p_W + r_wb * r_B;
+    const Vec3 v_W = r_wb * (v_o + omega.cross(r_B));
+    const ContactLoad c = SeabedContactLoad(sea, area, x_W, v_W, Vec3::Zero(), false);
+    if (!c.active) return;
+    const Vec3 f_B = r_wb.transpose() * c.f;
+    tau.head<3>() += f_B;
+    tau.tail<3>() += r_B.cross(f_B);
+  };
+  contact(Vec3(0.5 * p.length, 0.0, 0.0));
+  contact(Vec3(-0.5 * p.length, 0.0, 0.0));
+  for (const LiftingSurface& surf : p.surfaces) contact(surf.position_B);
+  return tau;
+}
+
+void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
+                    const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
+                    double h, VehicleState* s, const EnvironmentField* sea) {
   // classical RK4; stage c in {0, 1/2, 1}: f_W(c) = f_W0 + c (f_W1 - f_W0), applied at point_B
   // with the stage attitude: force_B = R^T f_W, moment_B = point_B x force_B (paper Eq. 29-30)
   const VehicleState s0 = *s;
   const Mat6 m_rb = RigidBodyMassMatrix(p);
   const Eigen::PartialPivLU<Mat6> mass_lu(m_rb + p.added_mass);
+  // the same water all through the step (still water, a steady uniform current): no blending
+  const bool steady_flow = !flow0.accelerating && !flow1.accelerating && !flow0.waves &&
+                           !flow1.waves && flow0.origin.velocity == flow1.origin.velocity;
   auto rates = [&](const VehicleState& x, double c) {
     const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
     const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
-    return Rates(p, env, x, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu);
+    if (steady_flow)
+      return Rates(p, env, x, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu, sea);
+    return Rates(p, env, x, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu,
+                 sea);
   };
   // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
   // components are integrated like the other states and renormalized at the end)

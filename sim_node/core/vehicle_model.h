@@ -9,15 +9,31 @@
 //   (M_RB + M_A) nu_dot + C_RB(nu) nu + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta)
 //       = tau_prop + tau_surfaces + tau_cable,
 //   p_dot_W = R_WB nu_lin,  q_dot_WB = 1/2 q_WB (x) [0, omega_B],
-// with nu_r = nu - [R_WB^T U_W; 0] the velocity relative to the current U_W (the added mass
-// moves with the water: M_A nu_r_dot = M_A nu_dot + M_A [omega x R_WB^T U_W; 0]; Fossen ch. 10).
+// with nu_r = nu - [R_WB^T u_W(O); 0] the velocity relative to the local water u_W at the origin
+// (the added mass moves with the water: M_A nu_r_dot = M_A nu_dot + M_A [omega x R_WB^T u_W; 0];
+// Fossen ch. 10).
+// In accelerating water (waves, an unsteady current; docs/environment.md) the hull also feels
+// Morison's fluid-inertia force, by strips along the hull (slender-body sections; the hull as a
+// prism of length L, section V / L and translational added mass diag(M_A)_{11..33} / L):
+//   dF = (rho V / L + diag(M_A) / L) R_WB^T a_W(x) dx at x_B = (x, 0, 0), x in [-L/2, L/2],
+// with its moment about O, and a surface-piercing vehicle the hydrostatic force of the wave
+// elevation eta along its waterline (a rectangle of length L_w = sqrt(12 I_L / A_wp) about
+// waterplane_point_B):
+//   dF = -rho g (A_wp / L_w) eta(x) dx down_B,
+// with its moment, so it heaves and pitches in waves. Radiation and diffraction (memory
+// effects, wave drift) are not modelled. Both are sampled at a few Gauss stations
+// (VehicleFlow) once at the start and once at the end of a step and interpolated linearly in
+// time for the RK4 stages.
 // Dimensional coefficients (SI), as written in config/vehicles/*.yaml.
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include "core/flow_sample.h"
 
 namespace towsim::core {
 
@@ -127,15 +143,51 @@ struct VehicleDerivative {
   double thrust_dot = 0.0, rudder_dot = 0.0, elevator_dot = 0.0;
 };
 
-struct Environment;  // model.h
+struct Environment;      // model.h
+class EnvironmentField;  // environment_field.h
 
-// the right-hand side of the vehicle ODE, with the external wrench (force_B, moment_B about O)
+// The water at a vehicle at one instant and pose: at the hull's Gauss stations (the middle one
+// is the origin O, where the relative velocity is taken) and, for a surface-piercing vehicle,
+// the wave elevation at the waterline's stations.
+struct VehicleFlow {
+  static constexpr int kHullStations = 3;       // Gauss points along x_B in [-L/2, L/2]
+  static constexpr int kWaterlineStations = 4;  // Gauss points along the waterline
+  FlowSample origin;                            // at O
+  bool accelerating = false;  // hull_acceleration_W set (the water accelerates somewhere)
+  std::array<Vec3, kHullStations> hull_acceleration_W{};
+  bool waves = false;                                  // elevation set
+  std::array<double, kWaterlineStations> elevation{};  // eta [m], positive up
+  // (1 - c) *this + c other
+  VehicleFlow Lerp(const VehicleFlow& other, double c) const;
+};
+
+// still water, or a uniform steady current U_W (VehicleFlow::origin.velocity = U_W)
+VehicleFlow UniformFlow(const Vec3& current_W);
+// the water at a vehicle with origin p_W and attitude q_WB at time t
+VehicleFlow SampleVehicleFlow(const VehicleParams& p, const EnvironmentField& sea, const Vec3& p_W,
+                              const Eigen::Quaterniond& q_WB, double t);
+
+// the right-hand side of the vehicle ODE, with the external wrench (force_B, moment_B about O),
+// in the water `flow` (default: still)
 VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
                                const VehicleState& s, const VehicleCommand& cmd,
-                               const Vec3& force_B, const Vec3& moment_B);
+                               const Vec3& force_B, const Vec3& moment_B,
+                               const VehicleFlow& flow = VehicleFlow());
 
-// one explicit RK4 step of length h with the point load interpolated linearly in time;
-// the quaternion is renormalized
+// Contact of the hull with the seabed (seabed_contact.h) at its contact points, the nose
+// (L/2, 0, 0), the tail (-L/2, 0, 0) and every lifting surface's centre of pressure (fins,
+// wings), each on a contact area of one hull section V / L: the wrench in B about O (zero
+// without a seabed).
+Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
+                         const VehicleState& s);
+
+// one explicit RK4 step of length h with the point load interpolated linearly in time and the
+// water interpolated linearly from flow0 (at the start) to flow1 (at the end); with `sea`, the
+// seabed contact at every stage (not lagged); the quaternion is renormalized
+void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
+                    const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
+                    double h, VehicleState* s, const EnvironmentField* sea = nullptr);
+// the same in still water
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
                     const PointLoad& load, double h, VehicleState* s);
 
@@ -144,7 +196,8 @@ Mat6 RigidBodyMassMatrix(const VehicleParams& p);  // M_RB
 // everything on the right of (M_RB + M_A) nu_dot + C_RB(nu) nu = tau_hyd + tau_ext except the
 // external wrench: -C_A(nu_r) nu_r (and the current term above), -D(nu_r) nu_r, -g(eta), the
 // surfaces at the state's fin angles, and the propeller at the state's thrust
-Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s);
+Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s,
+                        const VehicleFlow& flow = VehicleFlow());
 double VehicleKineticEnergy(const VehicleParams& p, const VehicleState& s);  // 1/2 nu^T M nu
 
 // Euler angles (roll, pitch, yaw) [rad] of q_WB, ZYX convention

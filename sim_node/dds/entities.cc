@@ -1,5 +1,7 @@
 #include "dds/entities.h"
 
+#include <memory>
+
 #include "dds/ros_graph.h"
 
 namespace towsim::dds {
@@ -12,7 +14,9 @@ void Entity::Reset() {
   handle_ = 0;
 }
 
-Participant::Participant(uint32_t domain_id, const std::string& config) : domain_id_(domain_id) {
+Participant::Participant(uint32_t domain_id, const std::string& config, const std::string& security,
+                         Admit admit)
+    : domain_id_(domain_id) {
   const std::string where = "DDS domain " + std::to_string(domain_id);
   if (!config.empty()) {
     const dds_entity_t d = dds_create_domain(domain_id, config.c_str());
@@ -20,9 +24,12 @@ Participant::Participant(uint32_t domain_id, const std::string& config) : domain
     domain_ = Entity(d);
   }
   // USER_DATA "enclave=/;", as every ROS 2 participant has (dds/ros_graph.h)
-  dds_qos_t* qos = NewParticipantQos();
-  const dds_entity_t p = dds_create_participant(domain_id, qos, nullptr);
-  dds_delete_qos(qos);
+  std::unique_ptr<dds_qos_t, decltype(&dds_delete_qos)> qos(NewParticipantQos(), &dds_delete_qos);
+  if (!security.empty()) {
+    participant_ = Entity(CreateSecureParticipant(domain_id, security, qos.get(), admit));
+    return;
+  }
+  const dds_entity_t p = dds_create_participant(domain_id, qos.get(), nullptr);
   if (p < 0) throw DdsError("creating a participant in " + where, p);
   participant_ = Entity(p);
 }

@@ -1,12 +1,14 @@
 #include "scene/scene_loader.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <filesystem>
 #include <memory>
+#include <new>
+
+#include <yaml-cpp/yaml.h>
 
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
+#include "scene/environment_reader.h"
 #include "scene/overrides.h"
 #include "scene/script_reader.h"
 #include "scene/vehicle_reader.h"
@@ -31,17 +33,13 @@ core::TimeSettings ReadTime(const Field& field) {
   if (t.step > t.duration) {
     time.Get("step").Fail("must be <= time.duration (" + internal::FormatNumber(t.duration) + ")");
   }
+  // a countable number of steps
+  if (!(t.duration / t.step <= core::kMaxSteps)) {
+    time.Get("step").Fail("must be >= time.duration / 1e12 (" +
+                          internal::FormatNumber(t.duration / core::kMaxSteps) +
+                          "): at most 1e12 steps");
+  }
   return t;
-}
-
-core::Environment ReadEnvironment(const Field& field) {
-  const MapReader env(field, MapKind::kEnvironment);
-  core::Environment e;
-  e.water_density = env.Number("water_density", Range::Above(0.0), e.water_density);
-  e.dynamic_viscosity = env.Number("dynamic_viscosity", Range::Above(0.0), e.dynamic_viscosity);
-  e.gravity = env.Number("gravity", Range::AtLeast(0.0), e.gravity);
-  e.current = env.Vector("current", e.current);
-  return e;
 }
 
 core::IntegratorSettings ReadIntegrator(const Field& field) {
@@ -88,12 +86,13 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   model.name = name.String();
   if (model.name.empty()) name.Fail("must not be empty");
   model.time = ReadTime(scene.Require("time"));
-  model.environment = ReadEnvironment(scene.Get("environment"));
+  model.environment = internal::ReadEnvironment(scene.Get("environment"), model.time, base_dir);
 
   // bodies first: cable ends and script entries refer to them
   const internal::BodiesInput bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
   for (const internal::SphereInput& sphere : bodies.spheres) model.bodies.push_back(sphere.body);
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
+  internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
   model.cable = internal::ReadCable(scene.Require("cable"), model);
   // bodies that give no velocity start with the cable (vehicles: in their body frame)
   const core::Vec3& v_W = model.cable.initial_velocity;
@@ -109,6 +108,11 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
 
   model.integrator = ReadIntegrator(scene.Get("integrator"));
   model.publishing = ReadPublish(scene.Get("publish"));
+  // security: what a node run with --security admits (docs/security.md)
+  const MapReader security(scene.Get("security"), MapKind::kSecurity);
+  if (security.Has("open_outputs")) {
+    model.publishing.open_outputs = security.Get("open_outputs").Boolean();
+  }
   model.script = internal::ReadScript(scene.Get("script"), model);
   return model;
 }
@@ -124,7 +128,12 @@ core::Model LoadScene(const std::string& path, const std::vector<std::string>& o
   // messages name the file by its basename; model paths are relative to its folder
   const std::filesystem::path file(path);
   const std::string base_dir = file.has_parent_path() ? file.parent_path().string() : ".";
-  return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+  try {
+    return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+  } catch (const std::bad_alloc&) {
+    // a tree too large for the memory left: the file is named, not a bare std::bad_alloc
+    throw ConfigError("scene", path, path, "out of memory while reading the scene file");
+  }
 }
 
 core::Model LoadSceneFromString(const std::string& yaml, const std::string& name_for_messages,
@@ -133,22 +142,11 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
   auto source = std::make_shared<internal::Source>();
   source->name = name_for_messages;
 
-  // the text is YAML
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(name_for_messages, "<not YAML>", name_for_messages + line,
-                      "not valid YAML: " + e.msg);
-  }
-  // a scene is a map of keys
-  if (!root.IsMap()) {
-    throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
-                      name_for_messages,
-                      "a scene must be a map of keys (name, time, environment, cable, bodies, "
-                      "integrator, script)");
-  }
+  // the text is YAML, a map of keys
+  YAML::Node root = internal::LoadYamlMap(
+      yaml, name_for_messages,
+      "a scene must be a map of keys (name, time, environment, cable, bodies, integrator, "
+      "script)");
 
   internal::ApplyOverrides(overrides, root, source.get());
   return BuildModel(Field(root, root.Mark(), "", source), base_dir);

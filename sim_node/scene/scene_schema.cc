@@ -46,11 +46,23 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
       {MapKind::kScene,
-       {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish"}},
+       {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish",
+        "security"}},
       {MapKind::kPublish,
        {"clock", "odom", "cable_state", "cable_force", "status", "markers", "command_timeout"}},
+      {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
-      {MapKind::kEnvironment, {"water_density", "dynamic_viscosity", "gravity", "current"}},
+      {MapKind::kEnvironment,
+       {"water_density", "dynamic_viscosity", "gravity", "current", "waves", "seabed"}},
+      {MapKind::kCurrent, {"profile", "power_law", "time_scale"}},
+      {MapKind::kPowerLaw, {"surface", "depth", "exponent"}},
+      {MapKind::kWaves, {"regular", "jonswap", "pierson_moskowitz", "ramp"}},
+      {MapKind::kRegularWave, {"height", "period", "direction_deg", "phase_deg"}},
+      {MapKind::kJonswap, {"hs", "tp", "gamma", "direction_deg", "components", "seed"}},
+      {MapKind::kPmSpectrum, {"hs", "tp", "direction_deg", "components", "seed"}},
+      {MapKind::kSeabed,
+       {"depth", "slope_deg", "slope_direction_deg", "grid", "stiffness", "damping", "friction",
+        "friction_lateral"}},
       {MapKind::kCable,
        {"length", "elements", "diameter", "density", "youngs_modulus", "loads", "axial_damping",
         "added_mass_coefficient", "initial", "initial_velocity", "start", "end"}},
@@ -94,7 +106,21 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "bodies") return MapKind::kBodies;
       if (key == "integrator") return MapKind::kIntegrator;
       if (key == "publish") return MapKind::kPublish;
+      if (key == "security") return MapKind::kSecurity;
       return std::nullopt;  // name; script is a list
+    case MapKind::kEnvironment:
+      // current is a value ([u, v, w] or a map): --set sets it whole
+      if (key == "waves") return MapKind::kWaves;
+      if (key == "seabed") return MapKind::kSeabed;
+      return std::nullopt;
+    case MapKind::kWaves:
+      if (key == "regular") return MapKind::kRegularWave;
+      if (key == "jonswap") return MapKind::kJonswap;
+      if (key == "pierson_moskowitz") return MapKind::kPmSpectrum;
+      return std::nullopt;
+    case MapKind::kCurrent:
+      if (key == "power_law") return MapKind::kPowerLaw;
+      return std::nullopt;
     case MapKind::kCable:
       if (key == "start" || key == "end") return MapKind::kEnd;
       return std::nullopt;

@@ -13,6 +13,13 @@ enum class MapKind {
   kScene,        // top level
   kTime,         // time
   kEnvironment,  // environment
+  kCurrent,      // environment.current, when a map (a profile or a power law)
+  kPowerLaw,     // environment.current.power_law
+  kWaves,        // environment.waves
+  kRegularWave,  // environment.waves.regular
+  kJonswap,      // environment.waves.jonswap
+  kPmSpectrum,   // environment.waves.pierson_moskowitz
+  kSeabed,       // environment.seabed
   kCable,        // cable
   kEnd,          // cable.start, cable.end
   kDriven,       // cable.<end>.driven
@@ -29,6 +36,7 @@ enum class MapKind {
   kCommand,      // bodies.<name>.command
   kIntegrator,   // integrator
   kPublish,      // publish
+  kSecurity,     // security
   kScriptEntry,  // script[i]
 };
 

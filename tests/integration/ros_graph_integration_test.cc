@@ -20,8 +20,8 @@
 #include <gtest/gtest.h>
 
 #include "dds/dds.h"
-#include "process.h"
 #include "rmw_dds_common.h"
+#include "testing/process.h"
 
 namespace towsim::testing {
 namespace {

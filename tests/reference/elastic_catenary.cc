@@ -1,11 +1,14 @@
 #include "elastic_catenary.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
 
 #include <Eigen/Dense>
+
+#include "damped_newton.h"
 
 namespace towsim::reference {
 
@@ -80,30 +83,16 @@ CatenarySolution SolveElasticCatenary(const CatenaryProblem& p) {
 
   // Newton on (H, V) with a central-difference Jacobian and step halving
   CatenarySolution sol;
-  Eigen::Vector2d r = Residual(p, h, v);
   const double scale = chord;
-  int it = 0;
-  for (; it < 100 && r.norm() > 1e-13 * scale; ++it) {
-    Eigen::Matrix2d jac;
-    const double dh = 1e-6 * h;
-    const double dv = 1e-6 * std::max(std::abs(v), h);
-    jac.col(0) = (Residual(p, h + dh, v) - Residual(p, h - dh, v)) / (2.0 * dh);
-    jac.col(1) = (Residual(p, h, v + dv) - Residual(p, h, v - dv)) / (2.0 * dv);
-    const Eigen::Vector2d step = -jac.partialPivLu().solve(r);
-    double lambda = 1.0;
-    for (int k = 0; k < 30; ++k, lambda *= 0.5) {
-      const double h_new = h + lambda * step(0);
-      const double v_new = v + lambda * step(1);
-      if (h_new <= 0.0) continue;
-      const Eigen::Vector2d r_new = Residual(p, h_new, v_new);
-      if (r_new.norm() < r.norm() || k == 29) {
-        h = h_new;
-        v = v_new;
-        r = r_new;
-        break;
-      }
-    }
-  }
+  Eigen::Vector2d x(h, v), r;
+  const int it = DampedNewton2(
+      [&](const Eigen::Vector2d& y) { return Residual(p, y(0), y(1)); },
+      [](const Eigen::Vector2d& y) {
+        return Eigen::Vector2d(1e-6 * y(0), 1e-6 * std::max(std::abs(y(1)), y(0)));
+      },
+      [](const Eigen::Vector2d& y) { return y(0) > 0.0; }, 1e-13 * scale, 100, 30, &x, &r);
+  h = x(0);
+  v = x(1);
   if (!(r.norm() <= 1e-10 * scale)) {
     throw std::runtime_error("catenary: Newton did not converge, residual " +
                              std::to_string(r.norm()) + " m");

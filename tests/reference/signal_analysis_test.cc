@@ -50,3 +50,43 @@ TEST(SignalAnalysis, OrderOfPowerLaw) {
 
 }  // namespace
 }  // namespace towsim::reference
+
+namespace towsim::reference {
+namespace {
+
+// the FFT against the direct sum of its definition
+TEST(SignalAnalysis, FftMatchesTheDirectSum) {
+  constexpr double kPi = 3.14159265358979323846;
+  std::vector<std::complex<double>> x(64);
+  for (size_t n = 0; n < x.size(); ++n) x[n] = {std::sin(0.3 * n * n), std::cos(1.7 * n)};
+  std::vector<std::complex<double>> direct(x.size());
+  for (size_t k = 0; k < x.size(); ++k)
+    for (size_t n = 0; n < x.size(); ++n)
+      direct[k] += x[n] * std::polar(1.0, -2.0 * kPi * k * n / x.size());
+  Fft(&x);
+  for (size_t k = 0; k < x.size(); ++k) EXPECT_LT(std::abs(x[k] - direct[k]), 1e-11) << k;
+}
+
+// Welch's estimate of a sine a cos(w0 t) holds its variance a^2/2 (Parseval) at w0, and the
+// autocorrelation of that sine is cos(w0 tau)
+TEST(SignalAnalysis, WelchAndAutocorrelationOfASine) {
+  const double dt = 0.1, w0 = 2.0 * 3.14159265358979323846 / 6.4;  // on a bin of 256 samples
+  std::vector<double> x(8192);
+  for (size_t n = 0; n < x.size(); ++n) x[n] = 0.7 * std::cos(w0 * n * dt);
+  const Spectrum s = WelchSpectrum(x, dt, 256);
+  double m0 = 0.0;
+  for (size_t k = 0; k < s.density.size(); ++k) m0 += s.density[k] * (s.omega[1] - s.omega[0]);
+  EXPECT_NEAR(m0, 0.5 * 0.7 * 0.7, 1e-3);  // Hann leakage stays within the record's bins
+  EXPECT_EQ(s.segments, 63);
+  const std::vector<double> rho = Autocorrelation(x, 200);
+  EXPECT_DOUBLE_EQ(rho[0], 1.0);
+  // the sample autocorrelation of a finite record is biased by (N - k) / N; the product's
+  // oscillating half, sum cos(w0 (2n + k) dt) / N, is bounded by 1 / (N sin(w0 dt)) = 1.25e-3
+  constexpr double kEndEffectTol = 1.5e-3;
+  for (int k : {16, 32, 64, 100}) {
+    EXPECT_NEAR(rho[k], std::cos(w0 * k * dt) * (x.size() - k) / x.size(), kEndEffectTol) << k;
+  }
+}
+
+}  // namespace
+}  // namespace towsim::reference

@@ -49,7 +49,7 @@ void CheckSteadyTow(const std::vector<std::string>& overrides, double speed, dou
               c.loads.bending);
   ASSERT_TRUE(c.start.velocity.isApprox(Vec3(speed, 0.0, 0.0)));
   ASSERT_TRUE(model.bodies[0].velocity.isApprox(Vec3(speed, 0.0, 0.0)));
-  ASSERT_TRUE(model.environment.current.isZero());
+  ASSERT_TRUE(model.environment.current.IsZero());
 
   const TowedCableSolution ref = SolveTowedCableSteady(SteadyTowProblem(model));
 

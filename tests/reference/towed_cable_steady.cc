@@ -14,10 +14,15 @@ using Y = Eigen::Matrix<double, 6, 1>;
 
 struct Rhs {
   const TowedCableProblem& p;
-  double w;  // weight in water per unstretched length [N/m]
-  Eigen::Vector3d v_rel;
+  double w;                   // weight in water per unstretched length [N/m]
+  Eigen::Vector3d v_uniform;  // uniform current: U_tow - U
+  double sphere_z = 0.0;      // with a profile: z of the sphere (NED)
 
   Y operator()(const Y& y) const {
+    // V = U_tow - U(z_sphere + r_z) with a profile
+    const Eigen::Vector3d v_rel =
+        p.current_profile ? Eigen::Vector3d(p.tow_velocity - p.current_profile(sphere_z + y(5)))
+                          : v_uniform;
     const Eigen::Vector3d f_cable = y.head<3>();
     const double tension = f_cable.norm();
     const Eigen::Vector3d t_hat = f_cable / tension;
@@ -37,7 +42,11 @@ struct Rhs {
 }  // namespace
 
 Eigen::Vector3d SphereExternalForce(const TowedCableProblem& p) {
-  const Eigen::Vector3d v_rel = p.tow_velocity - p.current;
+  return SphereExternalForce(p, p.current);
+}
+
+Eigen::Vector3d SphereExternalForce(const TowedCableProblem& p, const Eigen::Vector3d& current) {
+  const Eigen::Vector3d v_rel = p.tow_velocity - current;
   const double radius = std::cbrt(3.0 * p.sphere_volume / (4.0 * kPi));
   const double area = kPi * radius * radius;
   Eigen::Vector3d f(0.0, 0.0, (p.sphere_mass - p.fluid.density * p.sphere_volume) * p.gravity);
@@ -60,16 +69,18 @@ double CableStretch(const TowedCableProblem& p, double tension) {
   return lambda;
 }
 
-TowedCableSolution SolveTowedCableSteady(const TowedCableProblem& p, int steps, int samples) {
-  if (steps < 1 || samples < 1 || steps % samples != 0) {
-    throw std::runtime_error("towed cable: steps must be a positive multiple of samples");
-  }
+namespace {
+
+// one RK4 integration from the sphere (at depth sphere_z with a profile) to the tow point
+TowedCableSolution Integrate(const TowedCableProblem& p, double sphere_z, int steps, int samples) {
   const double area = 0.25 * kPi * p.diameter * p.diameter;
-  const Rhs rhs{p, (p.density - p.fluid.density) * area * p.gravity, p.tow_velocity - p.current};
+  const Rhs rhs{p, (p.density - p.fluid.density) * area * p.gravity, p.tow_velocity - p.current,
+                sphere_z};
 
   // the sphere is in equilibrium: the cable pulls it with F(0) = -(its external force)
   Y y;
-  y.head<3>() = -SphereExternalForce(p);
+  y.head<3>() = p.current_profile ? -SphereExternalForce(p, p.current_profile(sphere_z))
+                                  : -SphereExternalForce(p);
   y.tail<3>().setZero();
   if (!(y.head<3>().norm() > 0.0)) throw std::runtime_error("towed cable: slack at the sphere");
 
@@ -93,7 +104,39 @@ TowedCableSolution SolveTowedCableSteady(const TowedCableProblem& p, int steps, 
   sol.depth = -y(5);   // z_sphere - z_top
   sol.top_tension = y.head<3>().norm();
   sol.top_force = -y.head<3>();  // the cable pulls the tow point back along -t_hat
+  sol.sphere_z = sphere_z;
   return sol;
+}
+
+}  // namespace
+
+TowedCableSolution SolveTowedCableSteady(const TowedCableProblem& p, int steps, int samples) {
+  if (steps < 1 || samples < 1 || steps % samples != 0) {
+    throw std::runtime_error("towed cable: steps must be a positive multiple of samples");
+  }
+  if (!p.current_profile) return Integrate(p, 0.0, steps, samples);
+  // shooting on z_sphere: g(z) = z - depth(z) - tow_depth = 0, secant from the solution in
+  // the uniform current of the tow point's depth
+  TowedCableProblem uniform = p;
+  uniform.current_profile = nullptr;
+  uniform.current = p.current_profile(p.tow_depth);
+  double z0 = p.tow_depth + Integrate(uniform, 0.0, steps, samples).depth;
+  TowedCableSolution s0 = Integrate(p, z0, steps, samples);
+  double g0 = z0 - s0.depth - p.tow_depth;
+  double z1 = z0 - g0;  // g' ~ 1: the sphere's depth barely changes the shape
+  for (int it = 1; it <= 50; ++it) {
+    TowedCableSolution s1 = Integrate(p, z1, steps, samples);
+    const double g1 = z1 - s1.depth - p.tow_depth;
+    if (std::abs(g1) <= 1e-12 * p.length) {
+      s1.shooting_iterations = it;
+      return s1;
+    }
+    const double z2 = g1 == g0 ? z1 - g1 : z1 - g1 * (z1 - z0) / (g1 - g0);
+    z0 = z1;
+    g0 = g1;
+    z1 = z2;
+  }
+  throw std::runtime_error("towed cable: shooting on the sphere's depth did not converge");
 }
 
 }  // namespace towsim::reference

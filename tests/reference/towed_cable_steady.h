@@ -16,7 +16,14 @@
 //
 // with w = (rho_c - rho_w) A g and the stretch lambda(T) from the chosen constitutive law.
 // Integrated with classical RK4; world NED (z down).
+//
+// A depth-varying current U(z) (current_profile) makes the loads depend on where the cable is:
+// V(s) = U_tow - U(z_sphere + r_z(s)), and the sphere's drag on U(z_sphere). The tow point's
+// depth then fixes the unknown z_sphere: shooting, z_sphere + r_z(L; z_sphere) = tow_depth,
+// solved by the secant method to 1e-12 L (a uniform current needs none: U is the same
+// everywhere and the shape does not depend on z_sphere).
 
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -44,7 +51,11 @@ struct TowedCableProblem {
   Fluid fluid;
   double gravity = 9.81;                              // g [m/s^2], along +z
   Eigen::Vector3d current = Eigen::Vector3d::Zero();  // U_current [m/s]
-  Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};        // U_tow [m/s]
+  // a current that varies with the NED depth z; when set it replaces `current`, and the tow
+  // point is at depth tow_depth
+  std::function<Eigen::Vector3d(double z)> current_profile;
+  double tow_depth = 0.0;  // z of the tow point (NED) [m], with current_profile
+  Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};  // U_tow [m/s]
   // switches (for self-checks)
   bool cable_drag = true;
   bool cable_weight = true;
@@ -65,10 +76,14 @@ struct TowedCableSolution {
   double bottom_tension = 0.0;  // T(0) [N]
   Eigen::Vector3d top_force = Eigen::Vector3d::Zero();  // force of the cable on the tow point
   std::vector<TowedCablePoint> shape;                   // samples, s from 0 to L
+  double sphere_z = 0.0;  // z of the sphere (NED): tow_depth + depth [m], with current_profile
+  int shooting_iterations = 0;  // secant iterations on z_sphere (0 for a uniform current)
 };
 
 // the sphere's net external force (weight - buoyancy + drag) at relative velocity V [N]
 Eigen::Vector3d SphereExternalForce(const TowedCableProblem& p);
+// the same in a current U at the sphere
+Eigen::Vector3d SphereExternalForce(const TowedCableProblem& p, const Eigen::Vector3d& current);
 
 // the stretch lambda = ds_stretched / ds for tension T under the problem's law
 double CableStretch(const TowedCableProblem& p, double tension);

@@ -28,7 +28,14 @@ inline TowedCableProblem SteadyTowProblem(const core::Model& m) {
   p.fluid.density = m.environment.water_density;
   p.fluid.dynamic_viscosity = m.environment.dynamic_viscosity;
   p.gravity = m.environment.gravity;
-  p.current = m.environment.current;
+  p.current = m.environment.current.Velocity(0.0, 0.0);
+  if (!m.environment.current.IsUniform()) {
+    // U(z) of the (steady) profile; the driven tow point fixes the cable's depth
+    p.current_profile = [current = m.environment.current](double z) {
+      return current.Velocity(z, 0.0);
+    };
+    p.tow_depth = c.start.position.z();
+  }
   p.tow_velocity = c.start.velocity;
   p.stretch_law = StretchLaw::kGreenTrueTension;  // the core's law
   return p;

@@ -143,3 +143,83 @@ TEST(TowedCableSteady, RotationInvariant) {
 
 }  // namespace
 }  // namespace towsim::reference
+
+namespace towsim::reference {
+namespace {
+
+// a profile that is the same at every depth is the uniform current: the shooting finds the
+// sphere's depth and the shape is the uniform reference's, to round-off
+TEST(TowedCableSteadyProfile, UniformProfileIsTheUniformReference) {
+  TowedCableProblem uniform;
+  uniform.current = Eigen::Vector3d(-0.8, 0.3, 0.0);
+  const TowedCableSolution a = SolveTowedCableSteady(uniform, 4000, 20);
+  TowedCableProblem profiled = uniform;
+  profiled.current_profile = [](double) { return Eigen::Vector3d(-0.8, 0.3, 0.0); };
+  profiled.tow_depth = 3.5;
+  const TowedCableSolution b = SolveTowedCableSteady(profiled, 4000, 20);
+  constexpr double kRoundOffRel = 1e-12;  // the same RK4 arithmetic, other call path
+  EXPECT_NEAR(b.layback, a.layback, kRoundOffRel * a.layback);
+  EXPECT_NEAR(b.depth, a.depth, kRoundOffRel * a.depth);
+  EXPECT_NEAR(b.top_tension, a.top_tension, kRoundOffRel * a.top_tension);
+  EXPECT_NEAR(b.top_minus_sphere.y(), a.top_minus_sphere.y(), 1e-9);
+  EXPECT_NEAR(b.sphere_z, 3.5 + a.depth, 1e-9);
+  EXPECT_GE(b.shooting_iterations, 1);
+}
+
+// water moving with the tow point at every depth: no relative flow, so the cable hangs
+// straight down from the tow point, T(s) = W_sphere + w s, and (Hooke) its length is
+// L + (W_sphere L + w L^2 / 2) / EA
+TEST(TowedCableSteadyProfile, WaterMovingWithTheTowHangsTheCableStraight) {
+  TowedCableProblem p;
+  p.stretch_law = StretchLaw::kHooke;
+  p.current_profile = [u = p.tow_velocity](double z) {
+    return Eigen::Vector3d(u.x(), u.y(), u.z() + 0.0 * z);
+  };
+  p.tow_depth = 3.5;
+  const TowedCableSolution s = SolveTowedCableSteady(p, 2000, 20);
+  const double area = 0.25 * kPi * p.diameter * p.diameter;
+  const double w = (p.density - p.fluid.density) * area * p.gravity;
+  const double ws = (p.sphere_mass - p.fluid.density * p.sphere_volume) * p.gravity;
+  const double ea = p.youngs_modulus * area;
+  EXPECT_NEAR(s.layback, 0.0, 1e-9);
+  EXPECT_NEAR(s.depth, p.length + (ws * p.length + 0.5 * w * p.length * p.length) / ea, 1e-8);
+  EXPECT_NEAR(s.top_tension, ws + w * p.length, 1e-7);
+}
+
+// a sheared current (a 1/7 power law of 1 m/s against the tow, zero at 30 m): RK4 converges at
+// order 4 and the tow lies between the uniform tows in the profile's extreme values
+TEST(TowedCableSteadyProfile, ShearedCurrentConvergesAndLiesBetweenItsExtremes) {
+  const auto profile = [](double z) {
+    const double f = z <= 0.0 ? 1.0 : (z >= 30.0 ? 0.0 : std::pow(1.0 - z / 30.0, 1.0 / 7.0));
+    return Eigen::Vector3d(-1.0 * f, 0.0, 0.0);
+  };
+  TowedCableProblem p;
+  p.current_profile = profile;
+  p.tow_depth = 3.5;
+  const TowedCableSolution a = SolveTowedCableSteady(p, 5000, 20);
+  const TowedCableSolution b = SolveTowedCableSteady(p, 10000, 20);
+  constexpr double kConvergedRel = 1e-9;
+  EXPECT_NEAR(a.depth, b.depth, kConvergedRel * b.depth);
+  EXPECT_NEAR(a.layback, b.layback, kConvergedRel * b.layback);
+  TowedCableProblem slow, fast;
+  slow.current = profile(b.sphere_z);   // the weakest current along the cable (at the sphere)
+  fast.current = profile(p.tow_depth);  // the strongest (at the tow point)
+  const TowedCableSolution s_slow = SolveTowedCableSteady(slow, 5000, 20);
+  const TowedCableSolution s_fast = SolveTowedCableSteady(fast, 5000, 20);
+  // a stronger opposing current: more drag, more layback, less depth, more tension
+  EXPECT_GT(b.layback, s_slow.layback);
+  EXPECT_LT(b.layback, s_fast.layback);
+  EXPECT_LT(b.depth, s_slow.depth);
+  EXPECT_GT(b.depth, s_fast.depth);
+  EXPECT_GT(b.top_tension, s_slow.top_tension);
+  EXPECT_LT(b.top_tension, s_fast.top_tension);
+  std::printf(
+      "power-law current 1 m/s against a 6 m/s tow: layback %.4f m, depth %.4f m, "
+      "top tension %.2f N (uniform at the sphere's %.3f m/s: %.4f / %.4f / %.2f; at the "
+      "tow point's 1 m/s: %.4f / %.4f / %.2f), %d secant iterations\n",
+      b.layback, b.depth, b.top_tension, -slow.current.x(), s_slow.layback, s_slow.depth,
+      s_slow.top_tension, s_fast.layback, s_fast.depth, s_fast.top_tension, b.shooting_iterations);
+}
+
+}  // namespace
+}  // namespace towsim::reference

@@ -40,3 +40,12 @@ towsim_add_test(dds_frames_test LABEL unit
 towsim_add_test(dds_markers_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_markers_test.cc
   LIBS towsim::dds towsim::scene)
+# the RTPS port mapping: which domain ids have ports with a configuration (issue 15)
+towsim_add_test(dds_port_mapping_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc
+  LIBS towsim::dds)
+# DDS Security setup (sim_node/dds/security): files, properties, key check; no participant
+towsim_add_test(dds_security_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_security_test.cc
+  LIBS towsim::dds_security)
+target_include_directories(dds_security_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/cable_loads.h"
+#include "core/environment_field.h"
 
 namespace towsim::core {
 namespace {
@@ -89,12 +90,14 @@ TEST(CableLoads, NormalTranslationGetsDragAndAddedMassOfTheRightSize) {
   ctx.diameter = d;
   ctx.drag = true;
   ctx.added_mass_per_length = rho * area;  // C_a = 1
+  const EnvironmentField sea{Environment()};  // still water
+  const ElementWaves* waves = nullptr;
   Vec12 e, ed, edd;
   e << 0, 0, 0, 1, 0, 0, l, 0, 0, 1, 0, 0;
   const double u = 2.0;
   ed << 0, 0, u, 0, 0, 0, 0, 0, u, 0, 0, 0;
   edd.setZero();
-  Vec12 r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  Vec12 r = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, nullptr);
   // the resultant force on the element is the sum of the position components of -R
   const Eigen::Vector3d drag = -(r.segment<3>(0) + r.segment<3>(6));
   const double re = rho * u * d / mu;
@@ -107,22 +110,22 @@ TEST(CableLoads, NormalTranslationGetsDragAndAddedMassOfTheRightSize) {
   // added mass: normal acceleration -> -rho A a L; tangential acceleration -> nothing
   ed.setZero();
   edd << 0, 0, 3.0, 0, 0, 0, 0, 0, 3.0, 0, 0, 0;
-  r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  r = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, nullptr);
   const Eigen::Vector3d am = -(r.segment<3>(0) + r.segment<3>(6));
   EXPECT_NEAR(am.z(), -rho * area * 3.0 * l, kLoadRelTol * rho * area * 3.0 * l);
   edd << 3.0, 0, 0, 0, 0, 0, 3.0, 0, 0, 0, 0, 0;
-  r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  r = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, nullptr);
   EXPECT_LT(r.norm(), 1e-12);
 
   // tangential towing: pi mu V_t Nu(Re_t) per unit length
   edd.setZero();
   ed << u, 0, 0, 0, 0, 0, u, 0, 0, 0, 0, 0;
-  r = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, nullptr);
+  r = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, nullptr);
   const double nu = 0.55 * std::sqrt(re) + 0.084 * std::pow(re, 2.0 / 3.0);
   EXPECT_NEAR(-(r(0) + r(6)), -kPi * mu * u * nu * l, 1e-9 * kPi * mu * u * nu * l);
 }
 
-TEST(CableLoads, JacobiansMatchFiniteDifferences) {
+void CheckLoadJacobians(const Environment& env, const ElementWaves* waves) {
   ElementProperties p;
   p.length = 10.0;
   const AncfElement el(p);
@@ -130,34 +133,35 @@ TEST(CableLoads, JacobiansMatchFiniteDifferences) {
   ctx.diameter = 0.041;
   ctx.drag = true;
   ctx.added_mass_per_length = 1.35;
-  ctx.current = Eigen::Vector3d(0.3, -0.2, 0.0);
+  ctx.fluid_inertia_per_length = 1.35 + 1.1;
+  const EnvironmentField sea(env);
   ctx.weight_per_length = Eigen::Vector3d(0, 0, 3.5);
   Vec12 e, ed, edd;
   e << 0.1, -0.2, 0.3, 0.95, 0.2, -0.1, 9.7, 1.1, -0.8, 0.9, 0.05, -0.25;
   ed << 1.0, -0.5, 2.0, 0.1, 0.0, 0.05, 1.5, 0.2, -1.0, 0.0, 0.1, 0.0;
   edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
   ElementLoadJacobians jac;
-  const Vec12 r0 = ElementLoadResidual(el, ctx, e, ed, edd, 1.0, &jac);
+  const Vec12 r0 = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, &jac);
   Mat12 de, dv, da;
   const double h = 1e-6;
   for (int i = 0; i < 12; ++i) {
     Vec12 p1 = e, m1 = e;
     p1(i) += h;
     m1(i) -= h;
-    de.col(i) = (ElementLoadResidual(el, ctx, p1, ed, edd, 1.0, nullptr) -
-                 ElementLoadResidual(el, ctx, m1, ed, edd, 1.0, nullptr)) /
+    de.col(i) = (ElementLoadResidual(el, ctx, sea, 0.3, waves, p1, ed, edd, 1.0, nullptr) -
+                 ElementLoadResidual(el, ctx, sea, 0.3, waves, m1, ed, edd, 1.0, nullptr)) /
                 (2 * h);
     p1 = ed, m1 = ed;
     p1(i) += h;
     m1(i) -= h;
-    dv.col(i) = (ElementLoadResidual(el, ctx, e, p1, edd, 1.0, nullptr) -
-                 ElementLoadResidual(el, ctx, e, m1, edd, 1.0, nullptr)) /
+    dv.col(i) = (ElementLoadResidual(el, ctx, sea, 0.3, waves, e, p1, edd, 1.0, nullptr) -
+                 ElementLoadResidual(el, ctx, sea, 0.3, waves, e, m1, edd, 1.0, nullptr)) /
                 (2 * h);
     p1 = edd, m1 = edd;
     p1(i) += h;
     m1(i) -= h;
-    da.col(i) = (ElementLoadResidual(el, ctx, e, ed, p1, 1.0, nullptr) -
-                 ElementLoadResidual(el, ctx, e, ed, m1, 1.0, nullptr)) /
+    da.col(i) = (ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, p1, 1.0, nullptr) -
+                 ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, m1, 1.0, nullptr)) /
                 (2 * h);
   }
   constexpr double kJacRelTol = 1e-6;
@@ -165,6 +169,72 @@ TEST(CableLoads, JacobiansMatchFiniteDifferences) {
   EXPECT_LT((jac.d_dedot - dv).norm(), kJacRelTol * dv.norm());
   EXPECT_LT((jac.added_mass - da).norm(), kJacRelTol * da.norm());
   EXPECT_TRUE(r0.allFinite());
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferences) {
+  Environment env;
+  env.current = CurrentField::Uniform(Eigen::Vector3d(0.3, -0.2, 0.0));
+  CheckLoadJacobians(env, nullptr);
+}
+
+// in a sea, each effect alone and all together: a sheared current (dU/dz enters dR/de), waves
+// held at the nodes (Morison's fluid inertia turns with the tangent) and a sloping seabed the
+// element lies on (penalty, damping, friction: seabed_contact.h)
+Environment ShearedCurrent() {
+  Environment env;
+  env.current = CurrentField::Profile(
+      {{-1.0, Eigen::Vector3d(0.5, 0.1, 0.0)}, {2.0, Eigen::Vector3d(0.1, -0.3, 0.02)}});
+  return env;
+}
+
+ElementWaves SomeWaves() {
+  ElementWaves w;
+  for (int i = 0; i < 12; ++i) {
+    w.velocity(i) = 0.3 * std::sin(0.9 * i + 0.2);
+    w.acceleration(i) = 0.25 * std::cos(1.7 * i);
+  }
+  return w;
+}
+
+Environment OnASlopingSeabed(Environment env) {
+  env.seabed = Seabed::Plane(0.1, 0.05, 0.3);
+  SeabedContact c;
+  c.stiffness = 2.0e4;
+  c.damping = 300.0;
+  c.friction = 0.6;
+  env.seabed.set_contact(c);
+  return env;
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesInAShearedCurrent) {
+  CheckLoadJacobians(ShearedCurrent(), nullptr);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesInWaves) {
+  Environment env;
+  env.waves = WaveField::Regular(1.0, 5.0, 0.0, 0.0, 50.0, env.gravity, env.water_density);
+  const ElementWaves w = SomeWaves();
+  CheckLoadJacobians(env, &w);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesOnTheSeabed) {
+  CheckLoadJacobians(OnASlopingSeabed(Environment()), nullptr);
+}
+
+// friction across the cable larger than along it: the split turns with the tangent
+TEST(CableLoads, JacobiansMatchFiniteDifferencesOnTheSeabedWithLateralFriction) {
+  Environment env = OnASlopingSeabed(Environment());
+  SeabedContact c = env.seabed.contact();
+  c.friction_lateral = 1.1;
+  env.seabed.set_contact(c);
+  CheckLoadJacobians(env, nullptr);
+}
+
+TEST(CableLoads, JacobiansMatchFiniteDifferencesInASea) {
+  Environment env = OnASlopingSeabed(ShearedCurrent());
+  env.waves = WaveField::Regular(1.0, 5.0, 0.0, 0.0, 50.0, env.gravity, env.water_density);
+  const ElementWaves w = SomeWaves();
+  CheckLoadJacobians(env, &w);
 }
 
 }  // namespace

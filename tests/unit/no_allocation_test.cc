@@ -79,5 +79,27 @@ TEST(NoAllocation, VehicleStaggeredCoupling) {
   ExpectStepsDoNotAllocate(WithVehicle(Coupling::kStaggered));
 }
 
+// the whole sea: an irregular sea, a sheared current and a seabed the sphere rests near, with a
+// vehicle (its hull strips and waterline sampled every step)
+Model InASea(Model m) {
+  Environment& env = m.environment;
+  env.current = CurrentField::Profile({{0.0, Vec3(0.5, 0.2, 0.0)}, {100.0, Vec3(0.1, 0.0, 0.0)}});
+  WaveSpectrum spectrum;
+  spectrum.hs = 2.0;
+  spectrum.tp = 8.0;
+  spectrum.components = 100;
+  env.waves = WaveField::Irregular(spectrum, 250.0, env.gravity, env.water_density);
+  env.seabed = Seabed::Flat(250.0);
+  SeabedContact contact;
+  contact.friction = 0.5;
+  env.seabed.set_contact(contact);
+  return m;
+}
+
+TEST(NoAllocation, CableWithASphereInASea) { ExpectStepsDoNotAllocate(InASea(SteadyTowModel())); }
+TEST(NoAllocation, VehicleInASea) {
+  ExpectStepsDoNotAllocate(InASea(WithVehicle(Coupling::kStrong)));
+}
+
 }  // namespace
 }  // namespace towsim::core

@@ -23,7 +23,7 @@ Model FullModel() {
   m.cable.start.slope = Vec3(-1, 0, 2).normalized();
   m.cable.end.kind = EndKind::kBody;
   m.cable.end.body = 0;
-  m.environment.current = Vec3(0.2, 0.4, 0.0);
+  m.environment.current = CurrentField::Uniform(Vec3(0.2, 0.4, 0.0));
   SphereBody b;
   b.name = "fish";
   b.mass = 50;
@@ -53,9 +53,10 @@ Eigen::MatrixXd Dense(BlockTridiagonal& m) {
 
 // The assembled Newton matrix c_a dR/da + c_q dR/dq + c_v dR/dv (with Phi_q) equals finite
 // differences of the residual and constraints: checks every element, load, body and joint
-// term and the block placement.
-TEST(System, NewtonMatrixMatchesFiniteDifferences) {
-  const System sys(FullModel());
+// term and the block placement. With waves, the samples are held (as the integrator holds them
+// over a step), so the matrix is exact for the residual it solves.
+void CheckNewtonMatrix(const Model& model, bool waves) {
+  const System sys(model);
   State s;
   BuildInitialState(sys, &s);
   const int n = sys.num_q(), m = sys.num_lambda();
@@ -66,17 +67,23 @@ TEST(System, NewtonMatrixMatchesFiniteDifferences) {
     s.a(i) = 0.2 * std::sin(0.4 * i + 1);
   }
   s.lambda = Eigen::VectorXd::LinSpaced(m, -50, 80);
+  WaveSamples samples;
+  if (waves) {
+    sys.ResizeWaveSamples(&samples);
+    sys.SampleWaves(s.q, 0.3, &samples);
+  }
+  const WaveSamples* w = waves ? &samples : nullptr;
   const JacobianCoefficients cf{1.0, 7.0, 300.0};
   BlockTridiagonal jac = sys.MakeMatrix();
   Eigen::VectorXd r, phi;
-  sys.Evaluate(s.q, s.v, s.a, s.lambda, 0.3, 1.0, cf, &r, &phi, &jac);
+  sys.Evaluate(s.q, s.v, s.a, s.lambda, 0.3, 1.0, cf, &r, &phi, &jac, w);
   const Eigen::MatrixXd analytic = Dense(jac);
 
   // finite differences in block order: x = [q; lambda] mapped through ToBlocks
   auto stacked = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
                      const Eigen::VectorXd& l) {
     Eigen::VectorXd rr, pp, x;
-    sys.Evaluate(q, v, a, l, 0.3, 1.0, cf, &rr, &pp, nullptr);
+    sys.Evaluate(q, v, a, l, 0.3, 1.0, cf, &rr, &pp, nullptr, w);
     sys.ToBlocks(rr, pp, &x);
     return x;
   };
@@ -96,6 +103,27 @@ TEST(System, NewtonMatrixMatchesFiniteDifferences) {
   constexpr double kJacRelTol = 1e-6;  // central differences
   EXPECT_LT((analytic - fd).norm(), kJacRelTol * fd.norm())
       << "max entry error " << (analytic - fd).cwiseAbs().maxCoeff();
+}
+
+TEST(System, NewtonMatrixMatchesFiniteDifferences) { CheckNewtonMatrix(FullModel(), false); }
+
+// the same in a sea: a sheared current profile (its dU/dz enters dR/dq), regular waves
+// (Morison's fluid inertia on the cable and the bodies) and a flat seabed the lower cable lies
+// on (penalty normal force with damping and smoothed Coulomb friction, seabed_contact.h)
+TEST(System, NewtonMatrixMatchesFiniteDifferencesInASea) {
+  Model m = FullModel();
+  m.environment.current = CurrentField::Profile(
+      {{0.0, Vec3(0.6, 0.2, 0.0)}, {10.0, Vec3(0.3, 0.1, 0.0)}, {40.0, Vec3(0.1, -0.05, 0.0)}});
+  m.environment.waves = WaveField::Regular(1.5, 6.0, 0.4, 0.3, 25.0, m.environment.gravity,
+                                           m.environment.water_density);
+  m.environment.seabed = Seabed::Flat(25.0);
+  SeabedContact c;
+  c.stiffness = 3.0e4;  // [Pa/m]
+  c.damping = 500.0;    // [Pa s/m]
+  c.friction = 0.4;
+  m.environment.seabed.set_contact(c);
+  m.bodies[1].position = Vec3(5, 5, 8);  // the buoy below the waves
+  CheckNewtonMatrix(m, true);
 }
 
 TEST(System, ConstraintHoldsTheEndAtTheSupport) {

@@ -247,7 +247,8 @@ TEST(VehicleModel, UniformCurrentIsGalileanInvariant) {
   rudder.deflection_sign = -1.0;
   p.surfaces.push_back(rudder);
   Environment still, moving;
-  moving.current = Vec3(0.5, -0.3, 0.1);
+  const Vec3 u_current(0.5, -0.3, 0.1);
+  moving.current = CurrentField::Uniform(u_current);
   VehicleCommand cmd;
   cmd.thrust = 100.0;
   cmd.rudder = 15.0 * kDeg;
@@ -255,7 +256,7 @@ TEST(VehicleModel, UniformCurrentIsGalileanInvariant) {
   a.nu(0) = 1.5;
   a.q_WB = QuaternionFromEulerZYX(Vec3(0.0, 0.1, 0.4));
   b = a;
-  b.nu.head<3>() += a.q_WB.toRotationMatrix().transpose() * moving.current;
+  b.nu.head<3>() += a.q_WB.toRotationMatrix().transpose() * u_current;
   constexpr double kH = 0.01;
   constexpr int kSteps = 3000;
   for (int k = 0; k < kSteps; ++k) {
@@ -264,9 +265,9 @@ TEST(VehicleModel, UniformCurrentIsGalileanInvariant) {
   }
   ASSERT_GT(std::abs(a.nu(5)), 0.1);  // it did turn
   const double t = kSteps * kH;
-  EXPECT_LT((b.p_W - a.p_W - t * moving.current).norm(), kTol * (1.0 + a.p_W.norm()));
+  EXPECT_LT((b.p_W - a.p_W - t * u_current).norm(), kTol * (1.0 + a.p_W.norm()));
   EXPECT_LT(a.q_WB.angularDistance(b.q_WB), kTol);
-  const Vec3 v_c = b.q_WB.toRotationMatrix().transpose() * moving.current;
+  const Vec3 v_c = b.q_WB.toRotationMatrix().transpose() * u_current;
   EXPECT_LT((b.nu.head<3>() - a.nu.head<3>() - v_c).norm(), kTol);
   EXPECT_LT((b.nu.tail<3>() - a.nu.tail<3>()).norm(), kTol);
 }

@@ -1,0 +1,95 @@
+#pragma once
+// The sea as every load sees it (docs/environment.md): at a point p_W (world NED, z down) and a
+// time t, the water's velocity and acceleration (current + linear waves), the free-surface
+// elevation and the seabed's depth and normal. Built once from Model::environment; the cable,
+// the sphere bodies and the vehicles read the water only through it, and take the water's
+// velocity off their own in one place, RelativeVelocity below.
+//
+//   u(p, t) = U_c(z, t) + u_w(p, t)     [m/s]   current (current_field.h) + waves (wave_field.h)
+//   a(p, t) = DU_c/Dt  + du_w/dt        [m/s^2] (the waves' local acceleration: linear theory)
+//
+// Two costs are kept apart because they differ by two orders of magnitude:
+//   - the current is a table look-up: loads evaluate it exactly wherever and whenever they
+//     need it (every Gauss point, every Newton iteration), with its shear dU/dz for the Newton
+//     matrix;
+//   - the waves cost a sine, a cosine and an exponential per component and point: the
+//     integrator samples them once per step (at t_{n+1}, at the predicted positions) at the
+//     cable nodes, with their derivative along the cable, and the loads interpolate them to the
+//     Gauss points with the element's own cubic Hermite shape functions (WaveSample below).
+//     The error this costs is measured in tests/unit/environment_field_test.cc and
+//     docs/environment.md.
+// A steady uniform current without waves is flagged uniform(): loads take the one velocity and
+// never evaluate the field per point, so a scene without waves or a current profile pays
+// nothing for them.
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/flow_sample.h"
+#include "core/model.h"
+
+namespace towsim::core {
+
+// The waves' kinematics at a point and their derivative along a direction d:
+// d/ds u_w(p + s d) at s = 0 (d = r' at a cable node: the derivative along the cable).
+struct WaveSample {
+  Vec3 velocity = Vec3::Zero();      // [m/s]
+  Vec3 acceleration = Vec3::Zero();  // [m/s^2]
+  Vec3 d_velocity = Vec3::Zero();    // d u / ds [1/s] (per unit s of p + s d)
+  Vec3 d_acceleration = Vec3::Zero();
+};
+
+class EnvironmentField {
+ public:
+  explicit EnvironmentField(const Environment& env);
+
+  const Environment& environment() const { return env_; }
+  // the same flow at every point and time (a steady uniform current, no waves)
+  bool uniform() const { return uniform_; }
+  // the current's velocity where uniform() or steady_uniform_current()
+  const Vec3& uniform_current() const { return uniform_current_; }
+  // the current alone is the same everywhere and always (waves may still be there)
+  bool steady_uniform_current() const { return steady_uniform_current_; }
+  bool has_waves() const { return has_waves_; }
+  bool has_seabed() const { return has_seabed_; }
+
+  // the current alone at p_W, t (cheap); dU/dz in *shear [1/s] when asked
+  FlowSample Current(const Vec3& p_W, double t, Vec3* shear = nullptr) const;
+  // the waves alone at p_W, t, with their derivative along d_W (zero above the instantaneous
+  // surface; see wave_field.h for the crest and seabed rules, which this follows)
+  WaveSample Waves(const Vec3& p_W, const Vec3& d_W, double t) const;
+  // current + waves at p_W, t
+  FlowSample Flow(const Vec3& p_W, double t) const;
+  // free-surface elevation eta(x, y, t), positive UP [m] (the surface is at z_W = -eta)
+  double Elevation(double x, double y, double t) const;
+
+  // seabed (has_seabed()): depth of the bottom at (x, y) (its NED z) [m], unit normal into
+  // the water (mostly -z) and the contact parameters (seabed_contact.h gives their meaning)
+  double SeabedDepth(double x, double y) const { return env_.seabed.Depth(x, y); }
+  Vec3 SeabedNormal(double x, double y) const { return env_.seabed.Normal(x, y); }
+  const SeabedContact& seabed_contact() const { return env_.seabed.contact(); }
+
+ private:
+  // the wave components, structure of arrays, sorted by increasing k (so that a point at depth
+  // can stop at the first component that has decayed, see kDecayCutoff)
+  struct Components {
+    std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
+  };
+  template <bool kDerivative>
+  WaveSample SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const;
+  double Ramp(double t, double* rate) const;
+
+  Environment env_;
+  bool uniform_ = true;
+  bool steady_uniform_current_ = true;
+  bool has_waves_ = false;
+  bool has_seabed_ = false;
+  Vec3 uniform_current_ = Vec3::Zero();
+  Components waves_;
+  double wave_depth_ = 0.0;     // h [m], infinity for deep water
+  double ramp_ = 0.0;           // [s]
+  double amplitude_sum_ = 0.0;  // sum a_i: no crest rises higher [m]
+};
+
+}  // namespace towsim::core

@@ -1,0 +1,164 @@
+// The cable on the seabed (core/seabed_contact.h), held to independent references:
+//   - a cable lying partly on a flat, frictionless seabed: fairlead tension and touchdown point
+//     of the static equilibrium against the closed-form elastic catenary with a grounded length
+//     (grounded_catenary.h);
+//   - friction: a cable lying straight on the bed, dragged along its axis at a constant low
+//     speed, pulls with mu times its grounded weight in water (Coulomb);
+//   - energy: a cable dragged across the bed with friction in still water never holds more
+//     energy (kinetic + gravity/buoyancy potential + strain) than the work put in at its
+//     driven end (friction, drag and the contact's damping only take energy out).
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "core/model.h"
+#include "core/simulation.h"
+#include "core/state.h"
+#include "grounded_catenary.h"
+#include "scene/scene_loader.h"
+
+namespace towsim::core {
+namespace {
+
+const std::string kCatenary = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/catenary.yaml";
+
+double WeightInWater(const Model& m) {
+  const CableParams& c = m.cable;
+  return (c.density - m.environment.water_density) * c.area() * m.environment.gravity;
+}
+
+TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
+  // 200 m of the shipped cable from an anchor on a 60 m deep bed to a fairlead 10 m below the
+  // surface, 180 m away: about 110 m of it lies on the bed. No bending (the reference has none).
+  constexpr double kDepth = 60.0, kFairleadDepth = 10.0, kSpan = 180.0;
+  const Model m = scene::LoadScene(
+      kCatenary, {"cable.elements=40", "cable.loads=[gravity, buoyancy]",
+                  "cable.start={fixed: [0, 0, 60]}", "cable.end={fixed: [180, 0, 10]}",
+                  "environment.seabed={depth: 60, stiffness: 3.0e6, friction: 0}"});
+  Simulation sim(m);
+  reference::GroundedCatenaryProblem p;
+  p.length = m.cable.length;
+  p.span = kSpan;
+  p.height = kDepth - kFairleadDepth;
+  p.weight = WeightInWater(m);
+  p.ea = m.cable.youngs_modulus * m.cable.area();
+  const reference::GroundedCatenarySolution ref = reference::SolveGroundedCatenary(p);
+  ASSERT_FALSE(ref.suspended);
+  // touchdown: where the cable's height above the bed first exceeds the penalty's
+  // penetration w / (k d) ~ 3e-5 m by a margin; the suspended part rises as w x^2 / (2 H)
+  // beyond it (1 mm within 0.4 m), so the threshold adds well under a metre
+  constexpr double kLiftOff = 1e-3;  // [m]
+  double touchdown = -1.0;
+  const int samples = 4000;
+  for (int i = 0; i <= samples; ++i) {
+    const double s = m.cable.length * i / samples;
+    const int e =
+        std::min(static_cast<int>(s / (m.cable.length / m.cable.elements)), m.cable.elements - 1);
+    const double xi = s / (m.cable.length / m.cable.elements) - e;
+    // cubic Hermite between nodes e and e + 1 (the element's own interpolation)
+    const double l = m.cable.length / m.cable.elements;
+    const Vec3 r0 = sim.node_position(e), r1 = sim.node_position(e + 1);
+    const auto& q = sim.state().q;
+    const Vec3 d0 = q.segment<3>(sim.cable_dof(e) + 3), d1 = q.segment<3>(sim.cable_dof(e + 1) + 3);
+    const double h00 = 2 * xi * xi * xi - 3 * xi * xi + 1, h10 = xi * xi * xi - 2 * xi * xi + xi;
+    const double h01 = -2 * xi * xi * xi + 3 * xi * xi, h11 = xi * xi * xi - xi * xi;
+    const Vec3 r = h00 * r0 + h10 * l * d0 + h01 * r1 + h11 * l * d1;
+    if (kDepth - r.z() > kLiftOff) {
+      touchdown = r.x();
+      break;
+    }
+  }
+  const double tension = sim.end_force(1).norm();
+  std::printf(
+      "grounded catenary: fairlead tension %.3f N (ref %.3f), touchdown x %.3f m (ref "
+      "%.3f), grounded length ref %.3f m\n",
+      tension, ref.fairlead_tension, touchdown, ref.touchdown, ref.grounded_length);
+  // 40 elements of 5 m: the curvature jumps from 0 to w/H at touchdown, which a cubic element
+  // smears over itself: the touchdown within half an element; the fairlead tension depends
+  // on the grounded length only through w x the suspended length: 1e-3
+  constexpr double kTouchdownTol = 2.5;  // [m], half an element
+  constexpr double kFairleadRelTol = 1e-3;
+  EXPECT_NEAR(touchdown, ref.touchdown, kTouchdownTol);
+  EXPECT_NEAR(tension, ref.fairlead_tension, kFairleadRelTol * ref.fairlead_tension);
+}
+
+TEST(SeabedCore, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight) {
+  constexpr double kMu = 0.5, kSpeed = 0.1;  // 10 x the friction's slip speed: tanh(10) = 1
+  const Model m = scene::LoadScene(
+      kCatenary,
+      {"cable.length=100", "cable.elements=20", "cable.loads=[gravity, buoyancy]",
+       "cable.initial=vertical", "cable.axial_damping=0.01",
+       "cable.start={driven: {position: [0, 0, 60], velocity: [0.1, 0, 0]}}",
+       "cable.end={free: true}", "cable.initial_velocity=[0.1, 0, 0]",
+       "environment.seabed={depth: 60, stiffness: 3.0e6, damping: 3.0e4, friction: 0.5}"});
+  // a free end starts hanging vertically (into the bed): lay the cable along -x on the bed
+  // instead, every node sliding at the tow speed
+  Simulation sim(m);
+  State laid = sim.state();
+  const double l = m.cable.length / m.cable.elements;
+  for (int n = 0; n < sim.num_nodes(); ++n) {
+    laid.q.segment<3>(sim.cable_dof(n)) = Vec3(-n * l, 0.0, 60.0);
+    laid.q.segment<3>(sim.cable_dof(n) + 3) = Vec3(-1.0, 0.0, 0.0);
+    laid.v.segment<3>(sim.cable_dof(n)) = Vec3(kSpeed, 0.0, 0.0);
+    laid.v.segment<3>(sim.cable_dof(n) + 3).setZero();
+  }
+  sim.SetState(laid);
+  for (int i = 0; i < 400; ++i) ASSERT_TRUE(sim.Step().ok());  // 20 s: the start-up's
+  // elastic waves have died out (the pull settles to 1e-5 by then)
+  const double pull = -sim.end_force(0).x();  // the force on the cable from its driven end
+  // the grounded weight: what the bed carries, the whole weight in water less the part the
+  // driven end holds up (the support holds its node at the bed's level, the rest rests a
+  // penetration below it)
+  const double grounded = WeightInWater(m) * m.cable.length - sim.end_force(0).z();
+  const double expected = kMu * grounded;
+  std::printf(
+      "dragged cable: pull %.4f N, mu x grounded weight %.4f N (weight %.4f N, held by "
+      "the support %.4f N)\n",
+      pull, expected, WeightInWater(m) * m.cable.length, sim.end_force(0).z());
+  // steady sliding: tanh(10) = 1 - 4e-9; the normal force is the grounded weight exactly
+  constexpr double kFrictionRelTol = 1e-3;
+  EXPECT_NEAR(pull, expected, kFrictionRelTol * expected);
+}
+
+TEST(SeabedCore, EnergyNeverExceedsTheWorkPutIn) {
+  // the catenary scene's cable in its static equilibrium on a 40 m deep bed (its sag reaches
+  // the bed), its start then dragged sideways at 0.5 m/s so that the grounded part slides;
+  // generalized-alpha as shipped (its numerical dissipation only takes energy out too; the
+  // trapezoidal rule, without it, lets the stiff penalty and friction chatter)
+  const Model m = scene::LoadScene(
+      kCatenary,
+      {"cable.start={driven: {position: [0, 0, 10], velocity: [0, 0.5, 0]}}",
+       "cable.end={fixed: [150, 0, 10]}",
+       "environment.seabed={depth: 40, stiffness: 3.0e6, damping: 3.0e4, friction: 0.6}"});
+  Simulation sim(m);
+  auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
+  const double e0 = energy();
+  const Vec3 v_support = m.cable.start.velocity;
+  double work = 0.0;
+  double power_prev = -sim.end_force(0).dot(v_support);
+  double worst = -1e300, scale = 0.0;
+  bool touched = false;
+  for (int i = 0; i < 1200; ++i) {  // 60 s
+    ASSERT_TRUE(sim.Step().ok()) << "t = " << sim.time();
+    const double power = -sim.end_force(0).dot(v_support);
+    work += 0.5 * m.time.step * (power_prev + power);
+    power_prev = power;
+    const double de = energy() - e0;
+    worst = std::max(worst, de - work);
+    scale = std::max(scale, std::abs(de) + std::abs(work));
+    for (int n = 0; n < sim.num_nodes(); ++n) touched |= sim.node_position(n).z() > 39.99;
+  }
+  ASSERT_TRUE(touched);
+  std::printf("energy on the seabed: max (E - E0 - W) = %.3e J of %.3e J moved\n", worst, scale);
+  // the work sum is a trapezoidal quadrature of the power (second order in h) and the energy
+  // balance holds to the Newton tolerance per step: 1e-4 of the energy moved bounds both
+  constexpr double kEnergyRelTol = 1e-4;
+  EXPECT_LT(worst, kEnergyRelTol * scale);
+}
+
+}  // namespace
+}  // namespace towsim::core

@@ -1,0 +1,176 @@
+// The sea every load reads (core/environment_field.h), held to independent references:
+//   - its wave kinematics against core::WaveField::Kinematics (the same linear theory, written
+//     separately: one exponential per component, no depth cut-off, no derivative),
+//   - its derivative along a direction against central finite differences,
+//   - the cubic Hermite interpolation of the waves between two cable nodes against the exact
+//     kinematics at the Gauss points, for the shipped Case 1 cable in the case3_waves sea
+//     (what holding the waves at the nodes costs in accuracy: docs/environment.md),
+//   - the current with its shear against core::CurrentField.
+
+#include "core/environment_field.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "core/ancf_element.h"
+#include "core/gauss_quadrature.h"
+
+namespace towsim::core {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Environment JonswapSea(double depth) {
+  Environment env;
+  WaveSpectrum s;
+  s.hs = 2.0;
+  s.tp = 8.0;
+  s.gamma = 3.3;
+  s.direction = 0.3;
+  s.components = 100;
+  s.seed = 7;
+  env.waves = WaveField::Irregular(s, depth, env.gravity, env.water_density);
+  env.waves.set_ramp(10.0);
+  if (std::isfinite(depth)) env.seabed = Seabed::Flat(depth);
+  return env;
+}
+
+// the same linear theory, summed by another implementation; the cut-off at depth and the
+// summation order differ, so agreement is to a few ulps of the largest term (and the cut-off
+// kDecayCutoff times the surface amplitude)
+constexpr double kSameTheoryAbsTol = 1e-9;  // [m/s], [m/s^2]
+
+TEST(EnvironmentField, WavesAreTheWaveFieldsKinematics) {
+  for (const double depth : {kInf, 60.0, 15.0}) {
+    const Environment env = JonswapSea(depth);
+    const EnvironmentField sea(env);
+    ASSERT_TRUE(sea.has_waves());
+    ASSERT_FALSE(sea.uniform());
+    for (const double t : {3.0, 40.0, 333.3}) {
+      for (const Vec3& p : {Vec3(0, 0, 0.5), Vec3(12, -3, 4), Vec3(-50, 20, 14.0), Vec3(5, 5, -0.2),
+                            Vec3(100, 0, 80.0)}) {
+        const WaveKinematics ref = env.waves.Kinematics(p, t);
+        const WaveSample w = sea.Waves(p, Vec3::Zero(), t);
+        EXPECT_LT((w.velocity - ref.velocity).norm(), kSameTheoryAbsTol)
+            << "depth " << depth << " t " << t << " p " << p.transpose();
+        EXPECT_LT((w.acceleration - ref.acceleration).norm(), kSameTheoryAbsTol)
+            << "depth " << depth << " t " << t << " p " << p.transpose();
+        EXPECT_NEAR(sea.Elevation(p.x(), p.y(), t), env.waves.Elevation(p.x(), p.y(), t),
+                    kSameTheoryAbsTol);
+      }
+    }
+  }
+}
+
+TEST(EnvironmentField, WaveDerivativeAlongADirectionIsTheFiniteDifference) {
+  // central differences with step s: truncation (k s)^2 / 6 of the largest k's term, round-off
+  // 1e-16 / s: s = 1e-4 m gives about 1e-8 relative to the kinematics' scale (~1 m/s)
+  constexpr double kStep = 1e-4;              // [m]
+  constexpr double kDerivativeAbsTol = 1e-6;  // [1/s], [1/s^2]
+  for (const double depth : {kInf, 40.0}) {
+    const EnvironmentField sea(JonswapSea(depth));
+    const double t = 25.0;
+    for (const Vec3& p : {Vec3(0, 0, 3.7), Vec3(30, -4, 12.0), Vec3(-20, 7, 35.0)}) {
+      const Vec3 d = Vec3(0.8, 0.3, 0.5).normalized() * 1.0002;  // a stretched cable slope
+      const WaveSample w = sea.Waves(p, d, t);
+      const WaveSample wp = sea.Waves(p + kStep * d, Vec3::Zero(), t);
+      const WaveSample wm = sea.Waves(p - kStep * d, Vec3::Zero(), t);
+      EXPECT_LT((w.d_velocity - (wp.velocity - wm.velocity) / (2 * kStep)).norm(),
+                kDerivativeAbsTol)
+          << p.transpose();
+      EXPECT_LT((w.d_acceleration - (wp.acceleration - wm.acceleration) / (2 * kStep)).norm(),
+                kDerivativeAbsTol)
+          << p.transpose();
+    }
+  }
+}
+
+TEST(EnvironmentField, HermiteWavesBetweenNodesMatchTheExactKinematics) {
+  // the Case 1 cable (10 m elements) straight from the tow point at 3.7 m down at 30 deg below
+  // the horizontal, in the case3_waves sea (JONSWAP Hs 2 m, Tp 8 s, 60 m deep): the waves held
+  // at the nodes with their slopes, interpolated to the 5 Gauss points of every element by the
+  // element's cubic Hermite functions. A component varies along the cable as e^{lambda s} with
+  // |lambda| <= k, so cubic Hermite interpolation errs by at most (k l)^4 / 384 of its largest
+  // value on the element (at the element's top, depth factor C(zeta_top)): the bound below
+  // sums that over the components, and the measured error must stay inside it.
+  constexpr double kElement = 10.0;  // [m]
+  const Environment env = JonswapSea(60.0);
+  const EnvironmentField sea(env);
+  ElementProperties props;
+  props.length = kElement;
+  const AncfElement element(props);
+  const Vec3 dir = Vec3(std::cos(kPi / 6), 0.0, std::sin(kPi / 6));
+  double worst_v = 0.0, worst_a = 0.0, scale_v = 0.0, scale_a = 0.0;
+  for (int e = 0; e < 10; ++e) {
+    const Vec3 r0 = Vec3(0, 0, 3.7) + e * kElement * dir, r1 = r0 + kElement * dir;
+    // the a-priori bound of this element: sum a w^m C(zeta_top) min((k l)^4 / 384, 2)
+    double bound_v = 0.0, bound_a = 0.0;
+    for (const WaveComponent& c : env.waves.components()) {
+      const double h = env.waves.depth();
+      const double depth_factor = std::cosh(c.k * (h - r0.z())) / std::sinh(c.k * h);
+      const double hermite = std::min(std::pow(c.k * kElement, 4) / 384.0, 2.0);
+      bound_v += c.amplitude * c.omega * depth_factor * hermite;
+      bound_a += c.amplitude * c.omega * c.omega * depth_factor * hermite;
+    }
+    for (const double t : {20.0, 47.5, 81.0}) {
+      const WaveSample w0 = sea.Waves(r0, dir, t), w1 = sea.Waves(r1, dir, t);
+      Vec12 ev, ea, q;
+      ev << w0.velocity, w0.d_velocity, w1.velocity, w1.d_velocity;
+      ea << w0.acceleration, w0.d_acceleration, w1.acceleration, w1.d_acceleration;
+      q << r0, dir, r1, dir;
+      for (const ShapeAtPoint& p : element.points()) {
+        const WaveSample exact = sea.Waves(Interpolate(p.n, q), Vec3::Zero(), t);
+        const double ev_err = (Interpolate(p.n, ev) - exact.velocity).norm();
+        const double ea_err = (Interpolate(p.n, ea) - exact.acceleration).norm();
+        // each of the 3 components within the bound: the vector within sqrt(3) of it
+        EXPECT_LT(ev_err, std::sqrt(3.0) * bound_v) << "element " << e << " t " << t;
+        EXPECT_LT(ea_err, std::sqrt(3.0) * bound_a) << "element " << e << " t " << t;
+        worst_v = std::max(worst_v, ev_err);
+        worst_a = std::max(worst_a, ea_err);
+        scale_v = std::max(scale_v, exact.velocity.norm());
+        scale_a = std::max(scale_a, exact.acceleration.norm());
+      }
+    }
+    if (e == 0 || e == 2 || e == 9)
+      std::printf("element %d (top at %.1f m): bound %.2e m/s, %.2e m/s^2\n", e, r0.z(), bound_v,
+                  bound_a);
+  }
+  std::printf(
+      "Hermite waves on 10 m elements: worst velocity error %.2e of %.3f m/s, "
+      "acceleration %.2e of %.3f m/s^2 (docs/environment.md)\n",
+      worst_v / scale_v, scale_v, worst_a / scale_a, scale_a);
+}
+
+TEST(EnvironmentField, CurrentIsTheCurrentFieldWithItsShear) {
+  Environment env;
+  env.current = CurrentField::Profile({{0.0, Vec3(1.0, 0.2, 0.0)}, {50.0, Vec3(0.4, 0.0, 0.0)}});
+  const EnvironmentField sea(env);
+  EXPECT_FALSE(sea.uniform());
+  EXPECT_FALSE(sea.has_waves());
+  Vec3 shear;
+  const FlowSample f = sea.Current(Vec3(3, 4, 20.0), 1.0, &shear);
+  EXPECT_TRUE(f.velocity.isApprox(env.current.Velocity(20.0, 1.0)));
+  EXPECT_TRUE(shear.isApprox(env.current.Shear(20.0, 1.0)));
+  EXPECT_TRUE(sea.Flow(Vec3(3, 4, 20.0), 1.0).velocity.isApprox(f.velocity));
+
+  Environment calm;
+  calm.current = CurrentField::Uniform(Vec3(0.3, -0.1, 0.0));
+  const EnvironmentField still(calm);
+  EXPECT_TRUE(still.uniform());
+  EXPECT_EQ(still.uniform_current(), Vec3(0.3, -0.1, 0.0));
+  EXPECT_EQ(still.Flow(Vec3(0, 0, 100), 5.0).velocity, Vec3(0.3, -0.1, 0.0));
+  EXPECT_EQ(still.Flow(Vec3(0, 0, 100), 5.0).acceleration, Vec3::Zero());
+}
+
+TEST(EnvironmentField, RelativeVelocityIsTheOnePlaceTheWaterIsTakenOff) {
+  FlowSample f;
+  f.velocity = Vec3(1.0, -2.0, 0.5);
+  EXPECT_EQ(RelativeVelocity(Vec3(3.0, 1.0, 1.0), f), Vec3(2.0, 3.0, 0.5));
+}
+
+}  // namespace
+}  // namespace towsim::core
