@@ -118,9 +118,9 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   dds_qos_t* participant_qos = towsim::dds::NewParticipantQos();
   try {
     if (options.security.empty()) {
-      m.participant = Check(dds_create_participant(options.domain, participant_qos, nullptr),
-                            "creating the DDS participant (domain " +
-                                std::to_string(options.domain) + ")");
+      m.participant =
+          Check(dds_create_participant(options.domain, participant_qos, nullptr),
+                "creating the DDS participant (domain " + std::to_string(options.domain) + ")");
     } else {
       m.participant =
           towsim::dds::CreateSecureParticipant(options.domain, options.security, participant_qos);
@@ -144,8 +144,8 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
         Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimStatus__desc,
                                (prefix + "status").c_str(), nullptr, nullptr),
               "status topic");
-    m.status_reader = Check(dds_create_reader(m.participant, status_topic, state_qos, nullptr),
-                            "status reader");
+    m.status_reader =
+        Check(dds_create_reader(m.participant, status_topic, state_qos, nullptr), "status reader");
     const dds_entity_t odom_topic =
         Check(dds_create_topic(m.participant, &nav_msgs_msg_dds__Odometry__desc,
                                (prefix + options.body + "/odom").c_str(), nullptr, nullptr),
@@ -183,8 +183,8 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
         if (!known) {
           const std::string scene = s->scene;
           dds_return_loan(scene_reader, samples, n);
-          throw std::runtime_error("body " + options.body + " takes no commands in scene " +
-                                   scene + " (commanded bodies: " + names + ")");
+          throw std::runtime_error("body " + options.body + " takes no commands in scene " + scene +
+                                   " (commanded bodies: " + names + ")");
         }
       }
       if (n > 0) dds_return_loan(scene_reader, samples, n);

@@ -13,8 +13,8 @@
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. With `security` (--security DIR/NAME) the participant runs DDS
 // Security with that identity (docs/security.md; the setup is dds/security.h, shared with
-// sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in every DDS mode (realtime and fast answer each status
-// they see; lockstep waits for the answer).
+// sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in
+// every DDS mode (realtime and fast answer each status they see; lockstep waits for the answer).
 
 #include <atomic>
 #include <cstdint>
@@ -35,8 +35,8 @@ inline constexpr const char* kSecurityFlag = "security";
 struct ClientOptions {
   uint32_t domain = 0;
   std::string ns = "/towsim";
-  std::string body;        // the commanded body
-  double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
+  std::string body;                 // the commanded body
+  double timeout = 30.0;            // [s] of wall time without a new step (or scene_info) -> error
   std::string name = "controller";  // for messages, and the ROS 2 node name
   // when set (by another thread), the constructor's waits and Run end as on a stop signal
   const std::atomic<bool>* stop = nullptr;
@@ -46,11 +46,11 @@ struct ClientOptions {
 // the state of the body at one step, from its odometry
 struct BodyState {
   uint64_t step = 0;
-  double t = 0.0;                       // sim time [s]
-  double x = 0, y = 0, z = 0;           // world NED [m]
-  double roll = 0, pitch = 0, yaw = 0;  // ZYX [rad]
-  double u = 0, v = 0, w = 0;           // body frame [m/s]
-  double p = 0, q = 0, r = 0;           // body frame [rad/s]
+  double t = 0.0;                          // sim time [s]
+  double x = 0, y = 0, z = 0;              // world NED [m]
+  double roll = 0, pitch = 0, yaw = 0;     // ZYX [rad]
+  double u = 0, v = 0, w = 0;              // body frame [m/s]
+  double p = 0, q = 0, r = 0;              // body frame [rad/s]
   double x_dot = 0, y_dot = 0, z_dot = 0;  // world NED velocity [m/s]
   double dt = 0.0;  // sim time since the previous step answered (the scene's step first) [s]
 };

@@ -121,10 +121,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.allow_another_node = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene",  "--mode",   "--duration",
-                                             "--rate",   "--set",    "--csv",
-                                             "--record", "--domain", "--namespace",
-                                             "--security", "--foxglove"};
+    static const char* const kWithValue[] = {"--scene",     "--mode",     "--duration", "--rate",
+                                             "--set",       "--csv",      "--record",   "--domain",
+                                             "--namespace", "--security", "--foxglove"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;

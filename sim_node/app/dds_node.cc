@@ -54,7 +54,7 @@ constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [
 // expired), stopping would take a second per writer. The node's exit waits 10 ms per writer.
 constexpr const char* kLingerConfig =
     "<Internal><WriterLingerDuration>10ms</WriterLingerDuration></Internal>";
-constexpr int kMaxCommandNotes = 5;  // rejected / clamped commands told on stderr
+constexpr int kMaxCommandNotes = 5;            // rejected / clamped commands told on stderr
 constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (dds/ros_graph.h)
 
 constexpr uint8_t kRunning = towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING;
@@ -259,8 +259,12 @@ int DdsNode::Setup() {
       peer_note_ = "warning: another node runs on " + where;
       std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
     }
-    graph_ = std::make_unique<dds::RosGraphNode>(participant_->get(), opt_.ns, kNodeName,
-                                                 endpoints_->readers(), endpoints_->writers());
+    // every reader and writer the node has now (the readers UnknownCommands makes later for
+    // commands on topics of no commandable body are not listed)
+    std::vector<dds_entity_t> readers = endpoints_->readers();
+    readers.push_back(peers_->reader());
+    graph_ = std::make_unique<dds::RosGraphNode>(participant_->get(), opt_.ns, kNodeName, readers,
+                                                 endpoints_->writers());
   } catch (const dds::SecurityError& e) {
     return bad(e.what());
   } catch (const std::runtime_error& e) {  // dds::DdsError, the ROS 2 graph entry

@@ -219,8 +219,10 @@ TEST(RosGraph, NodeAndControllerListTheirDiscoveredEndpoints) {
   EXPECT_EQ(written, expected_written);
   const std::set<std::string> read =
       CheckEndpoints(sim.readers, sim.participant, o.subscriptions, "sim_node readers");
-  const std::set<std::string> expected_read = {
-      "rt/towsim/sim_control", "rt/towsim/tow_vehicle/command", "rt/towsim/towfish/command"};
+  // scene_info: the node watches for another node in its namespace (README "DDS node")
+  const std::set<std::string> expected_read = {"rt/towsim/scene_info", "rt/towsim/sim_control",
+                                               "rt/towsim/tow_vehicle/command",
+                                               "rt/towsim/towfish/command"};
   EXPECT_EQ(read, expected_read);
   // the types as ROS 2 names them on DDS
   for (const Gid& g : sim.writers) {
