@@ -8,11 +8,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
+#include "dds/ros_graph.h"
 #include "nav_msgs.h"
 #include "sensor_msgs.h"
 #include "towsim_msgs.h"
@@ -73,6 +75,7 @@ struct LockstepClient::Impl {
   dds_entity_t status_reader = 0, odom_reader = 0, command_writer = 0;
   dds_entity_t waitset = 0;
   dds_entity_t altitude_reader = 0;  // 0: not subscribed
+  std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
   double step_size = 0.05;
   // the latest odometry taken
   nav_msgs_msg_dds__Odometry_ odom{};
@@ -133,13 +136,22 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   RequireDdsUri();
   if (options.body.empty()) throw std::runtime_error("no body to command (--body)");
   const std::string prefix = TopicPrefix(options.ns);
-  if (options.security.empty()) {
-    m.participant =
-        Check(dds_create_participant(options.domain, nullptr, nullptr),
-              "creating the DDS participant (domain " + std::to_string(options.domain) + ")");
-  } else {
-    m.participant = towsim::dds::CreateSecureParticipant(options.domain, options.security);
+  // a ROS 2 participant: USER_DATA enclave=/; (dds/ros_graph.h)
+  dds_qos_t* participant_qos = towsim::dds::NewParticipantQos();
+  try {
+    if (options.security.empty()) {
+      m.participant =
+          Check(dds_create_participant(options.domain, participant_qos, nullptr),
+                "creating the DDS participant (domain " + std::to_string(options.domain) + ")");
+    } else {
+      m.participant =
+          towsim::dds::CreateSecureParticipant(options.domain, options.security, participant_qos);
+    }
+  } catch (...) {
+    dds_delete_qos(participant_qos);
+    throw;
   }
+  dds_delete_qos(participant_qos);
   dds_qos_t* state_qos = ReliableQos(16, false);
   dds_qos_t* command_qos = ReliableQos(1, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);
@@ -176,6 +188,14 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
       m.altitude_reader = Check(
           dds_create_reader(m.participant, altitude_topic, state_qos, nullptr), "altitude reader");
     }
+    // the controller as a ROS 2 node <ns>/<name> with these endpoints (ros2 node list)
+    m.graph = std::make_unique<dds::RosGraphNode>(
+        m.participant, options.ns, options.name,
+        m.altitude_reader != 0
+            ? std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader,
+                                        m.altitude_reader}
+            : std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader},
+        std::vector<dds_entity_t>{m.command_writer});
 
     // the node's scene: the body must take commands
     const Clock::time_point begin = Clock::now();

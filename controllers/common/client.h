@@ -9,6 +9,8 @@
 //     step, call the control law, publish; it ends when the node reports the end of its run
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
 //     after a RESET (a new run id) it drops the old run's odometry still queued.
+// It is a ROS 2 node `<ns>/<name>` (name: ClientOptions::name; dds/ros_graph.h), so
+// `ros2 node list` shows it next to /towsim/sim_node.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. With `security` (--security DIR/NAME) the participant runs DDS
 // Security with that identity (docs/security.md; the setup is dds/security.h, shared with
@@ -37,7 +39,7 @@ struct ClientOptions {
   std::string ns = "/towsim";
   std::string body;                 // the commanded body
   double timeout = 30.0;            // [s] of wall time without a new step (or scene_info) -> error
-  std::string name = "controller";  // for messages
+  std::string name = "controller";  // for messages, and the ROS 2 node name
   // when set (by another thread), the constructor's waits and Run end as on a stop signal
   const std::atomic<bool>* stop = nullptr;
   std::string security;  // --security DIR/NAME: DDS Security identity; "": none

@@ -35,6 +35,10 @@ class TopicNames {
   std::string status() const { return prefix_ + "status"; }
   std::string sim_control() const { return prefix_ + "sim_control"; }
   std::string scene_info() const { return prefix_ + "scene_info"; }
+  // tf at the root, where tf2 listeners and viewers look (docs/frames.md)
+  std::string tf() const { return "rt/tf"; }
+  std::string tf_static() const { return "rt/tf_static"; }
+  std::string markers() const { return prefix_ + "markers"; }
 
  private:
   std::string ns_;

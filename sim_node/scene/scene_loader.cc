@@ -74,6 +74,7 @@ core::Publishing ReadPublish(const Field& field) {
   p.sensors = publish.Number("sensors", Range::AtLeast(0.0), p.sensors);
   if (publish.Has("cable_state"))
     p.cable_state = publish.Get("cable_state").Number(Range::AtLeast(0.0));
+  if (publish.Has("markers")) p.markers = publish.Get("markers").Number(Range::AtLeast(0.0));
   p.command_timeout = publish.Number("command_timeout", Range::Above(0.0), p.command_timeout);
   return p;
 }

@@ -170,7 +170,10 @@ TEST(RecordingTest, NodeRecordHoldsEveryMessageItPublishedByteForByte) {
       {"/towsim/towfish/odom", "nav_msgs/msg/Odometry"},
       {"/towsim/towfish/cable_force", "geometry_msgs/msg/WrenchStamped"},
       {"/towsim/towfish/altitude", "sensor_msgs/msg/Range"},
-      {"/towsim/towfish/pressure", "sensor_msgs/msg/FluidPressure"}};
+      {"/towsim/towfish/pressure", "sensor_msgs/msg/FluidPressure"},
+      {"/tf", "tf2_msgs/msg/TFMessage"},
+      {"/tf_static", "tf2_msgs/msg/TFMessage"},
+      {"/towsim/markers", "visualization_msgs/msg/MarkerArray"}};
   EXPECT_EQ(types, expected_types);
   bool rosbag2 = false;
   for (const auto& m : r.metadata()) rosbag2 = rosbag2 || m.name == "rosbag2";
