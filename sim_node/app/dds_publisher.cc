@@ -288,6 +288,10 @@ std::vector<dds_entity_t> NodeEndpoints::writers() const {
     out.push_back(b->odom.get());
     out.push_back(b->force.get());
   }
+  for (const auto& s : sensors_) {
+    out.push_back(s->altitude.get());
+    out.push_back(s->pressure.get());
+  }
   return out;
 }
 

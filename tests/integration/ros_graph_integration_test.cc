@@ -215,7 +215,11 @@ TEST(RosGraph, NodeAndControllerListTheirDiscoveredEndpoints) {
                                                   "rt/towsim/tow_vehicle/odom",
                                                   "rt/towsim/tow_vehicle/cable_force",
                                                   "rt/towsim/towfish/odom",
-                                                  "rt/towsim/towfish/cable_force"};
+                                                  "rt/towsim/towfish/cable_force",
+                                                  "rt/towsim/tow_vehicle/altitude",
+                                                  "rt/towsim/tow_vehicle/pressure",
+                                                  "rt/towsim/towfish/altitude",
+                                                  "rt/towsim/towfish/pressure"};
   EXPECT_EQ(written, expected_written);
   const std::set<std::string> read =
       CheckEndpoints(sim.readers, sim.participant, o.subscriptions, "sim_node readers");
