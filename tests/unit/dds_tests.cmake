@@ -44,7 +44,7 @@ towsim_add_test(dds_frames_test LABEL unit
 towsim_add_test(dds_markers_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_markers_test.cc
   LIBS towsim::dds towsim::scene)
-# the RTPS port mapping: which domain ids have ports with a configuration (issue 15)
+# the RTPS port mapping: which domain ids have ports with a configuration (docs/faults.md)
 towsim_add_test(dds_port_mapping_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc
   LIBS towsim::dds)
