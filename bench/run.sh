@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the benchmarks (after ./test.sh or ./run.sh has built them into build/).
 #   bench/run.sh [ARGS]     Google Benchmark of the shipped cable scenes (cable_bench ARGS)
-#   bench/run.sh sweep      accuracy against run time (~2-4 min): writes
+#   bench/run.sh sweep      accuracy against run time (~3-6 min): writes
 #                           bench/results/work_precision.csv, draws
 #                           docs/figures/work_precision_*.png and prints the Pareto fronts
 #   bench/run.sh targets    the shipped scenes at their own settings: real-time factor and the

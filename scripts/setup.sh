@@ -16,9 +16,9 @@ cd "$towsim_root"
 
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
                  cyclonedds-tools libgtest-dev libbenchmark-dev "$@")
-# who asks for python3 (run.sh) gets matplotlib and numpy too, for scripts/plot_paper.py and
-# scripts/plot_waves.py
+# who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
 for towsim_pkg in "$@"; do
+  # and numpy, for scripts/plot_waves.py
   if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib python3-numpy); fi
 done
 

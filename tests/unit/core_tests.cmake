@@ -12,3 +12,5 @@ towsim_add_test(environment_field_test LABEL unit SOURCES environment_field_test
 # the irregular-sea statistics use the reference library's spectral estimates
 towsim_add_test(wave_field_test LABEL unit SOURCES wave_field_test.cc
                 LIBS towsim::core towsim_reference)
+towsim_add_test(environment_allocation_test LABEL unit SOURCES environment_allocation_test.cc
+                LIBS towsim_core_nomalloc)
