@@ -6,6 +6,7 @@ towsim_add_test(integrator_test LABEL unit SOURCES integrator_test.cc LIBS towsi
 towsim_add_test(vehicle_coupling_test LABEL unit SOURCES vehicle_coupling_test.cc LIBS towsim::core)
 towsim_add_test(no_allocation_test LABEL unit SOURCES no_allocation_test.cc LIBS towsim_core_nomalloc)
 towsim_add_test(simulation_test LABEL unit SOURCES simulation_test.cc LIBS towsim::core)
+towsim_add_test(actuator_test LABEL unit SOURCES actuator_test.cc LIBS towsim::core)
 towsim_add_test(current_field_test LABEL unit SOURCES current_field_test.cc LIBS towsim::core)
 towsim_add_test(seabed_test LABEL unit SOURCES seabed_test.cc LIBS towsim::core)
 towsim_add_test(environment_field_test LABEL unit SOURCES environment_field_test.cc LIBS towsim::core)
