@@ -132,6 +132,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
           f += cl.f;
           f_pos = f_r ? Mat3(f_pos + cl.df_dr) : cl.df_dr;
           f_v += cl.df_dv;
+          f_a += cl.df_da;
           f_r = true;
         }
       }

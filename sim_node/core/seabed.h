@@ -38,7 +38,9 @@ namespace towsim::core {
 struct SeabedContact {
   double stiffness = 3.0e6;  // normal penalty stiffness k [Pa/m]
   double damping = 3.0e4;    // normal penalty damping c [Pa s/m]
-  double friction = 0.0;     // Coulomb friction coefficient mu [-] (0: frictionless)
+  double friction = 0.0;     // Coulomb friction coefficient mu [-] (0: frictionless), axial
+  double friction_lateral = -1.0;  // across the cable [-]; < 0: the same as `friction`
+  double lateral_friction() const { return friction_lateral < 0.0 ? friction : friction_lateral; }
 };
 
 class Seabed {

@@ -39,14 +39,14 @@ ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const V
     out.df_dr = dfn_ddelta * n * ddelta.transpose();
     out.df_dv = -(width * c.damping * s) * n * n.transpose();
   }
-  const double mu = c.friction;
-  if (mu <= 0.0) return out;
+  const double mu = c.friction, mu_lateral = c.lateral_friction();
+  if (mu <= 0.0 && mu_lateral <= 0.0) return out;
   // sliding velocity in the bed's plane, split along the cable's projected tangent
   const Mat3 p = Mat3::Identity() - n * n.transpose();
   const Vec3 vt = p * v;
   Vec3 ta = p * a;
   const double ta_norm = ta.norm();
-  const double mu_a = mu, mu_l = mu;          // one coefficient in the scene: axial = lateral
+  const double mu_a = mu, mu_l = mu_lateral;
   const double sgn = fn >= 0.0 ? 1.0 : -1.0;  // d|f_n| = sgn d f_n
   // isotropic when the two coefficients agree (or no tangent): f_t = -|f_n| mu g(|v_t|) v_t,
   // g(s) = tanh(s / v_s) / s (-> 1 / v_s at s = 0)
@@ -81,8 +81,18 @@ ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const V
     const double g = g_and_dg(sl, &dg_s);
     ft = -(mu_a * th) * ta - (mu_l * g) * vl;
     const Mat3 pl = Mat3::Identity() - ta * ta.transpose();
-    dft_dvt = -(mu_a * (1.0 - th * th) / kFrictionSlipSpeed) * ta * ta.transpose() -
-              mu_l * (g * pl + dg_s * vl * vl.transpose()) * pl;
+    const Mat3 dgvl = g * Mat3::Identity() + dg_s * vl * vl.transpose();  // d(g v_l)/dv_l
+    dft_dvt =
+        -(mu_a * (1.0 - th * th) / kFrictionSlipSpeed) * ta * ta.transpose() - mu_l * dgvl * pl;
+    if (jacobians) {
+      // the split turns with the tangent: t_a = P a / |P a|, v_a = v_t.t_a, v_l = v_t - v_a t_a
+      //   df_t/dt_a = -mu_a (tanh I + sech^2 / v_s t_a v_t^T) + mu_l dgvl (v_a I + t_a v_t^T)
+      //   dt_a/da = (I - t_a t_a^T) P / |P a|
+      const Mat3 dft_dta = -mu_a * (th * Mat3::Identity() +
+                                    ((1.0 - th * th) / kFrictionSlipSpeed) * ta * vt.transpose()) +
+                           mu_l * dgvl * (va * Mat3::Identity() + ta * vt.transpose());
+      out.df_da = out.normal * dft_dta * pl * p / ta_norm;
+    }
   }
   out.f += out.normal * ft;
   if (jacobians) {

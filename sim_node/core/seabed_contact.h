@@ -8,7 +8,9 @@
 //                               width w (the cable's diameter) per unit length;
 //   damping   c [Pa s/m]:       normal pressure per m/s of penetration rate, on the same area;
 //   friction  mu [-]:           Coulomb coefficient, axial (along the cable's tangent projected
-//                               on the bed) and lateral (across it); 0 is frictionless.
+//                               on the bed); 0 is frictionless;
+//   friction_lateral mu_l [-]:  across it (default: mu). A point without a tangent (a body's
+//                               contact point) takes mu in every direction.
 // At a point r with velocity v, the bed at depth d(x, y) with unit normal n into the water:
 //   penetration  delta = (z - d(x, y)) |n_z|        (> 0: in contact; exact for a plane)
 //   normal       f_n   = w (k e(delta) - c s(delta) v.n) n   per unit unstretched length,
@@ -41,6 +43,7 @@ struct ContactLoad {
   Eigen::Vector3d f = Eigen::Vector3d::Zero();      // force (per unit length, or a force)
   Eigen::Matrix3d df_dr = Eigen::Matrix3d::Zero();  // d f / d r
   Eigen::Matrix3d df_dv = Eigen::Matrix3d::Zero();  // d f / d v
+  Eigen::Matrix3d df_da = Eigen::Matrix3d::Zero();  // d f / d a (anisotropic friction)
   double normal = 0.0;                              // |f_n|
 };
 

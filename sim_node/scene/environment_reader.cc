@@ -131,6 +131,9 @@ core::Seabed ReadSeabed(const Field& field, const std::string& base_dir) {
   contact.stiffness = seabed.Number("stiffness", Range::AtLeast(0.0), contact.stiffness);
   contact.damping = seabed.Number("damping", Range::AtLeast(0.0), contact.damping);
   contact.friction = seabed.Number("friction", Range::AtLeast(0.0), contact.friction);
+  // across the cable (seabed_contact.h); the axial coefficient when not given
+  contact.friction_lateral =
+      seabed.Number("friction_lateral", Range::AtLeast(0.0), contact.friction);
   s.set_contact(contact);
   return s;
 }

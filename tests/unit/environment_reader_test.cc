@@ -151,6 +151,11 @@ TEST_F(EnvironmentReaderTest, FlatPlaneAndGridSeabeds) {
   EXPECT_EQ(s.contact().stiffness, 1.0e5);
   EXPECT_EQ(s.contact().damping, 100.0);
   EXPECT_EQ(s.contact().friction, 0.3);
+  EXPECT_EQ(s.contact().lateral_friction(), 0.3);  // not given: the axial coefficient
+  const core::Model lateral = Load(R"(environment:
+  seabed: {depth: 60, friction: 0.3, friction_lateral: 0.8}
+)");
+  EXPECT_EQ(lateral.environment.seabed.contact().lateral_friction(), 0.8);
   const core::Model plane = Load(R"(environment:
   seabed: {depth: 60, slope_deg: 45, slope_direction_deg: 180}
 )");
@@ -295,7 +300,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadCase{"unknown_seabed_key", "environment:\n  seabed: {depht: 60}\n",
                 "environment.seabed.depht = 60 (t.yaml:4): unknown key; did you mean depth? "
                 "(allowed: depth, slope_deg, slope_direction_deg, grid, stiffness, damping, "
-                "friction)"}),
+                "friction, friction_lateral)"}),
     [](const ::testing::TestParamInfo<BadCase>& info) { return std::string(info.param.name); });
 
 // the file that is not there: named with its path

@@ -221,6 +221,15 @@ TEST(CableLoads, JacobiansMatchFiniteDifferencesOnTheSeabed) {
   CheckLoadJacobians(OnASlopingSeabed(Environment()), nullptr);
 }
 
+// friction across the cable larger than along it: the split turns with the tangent
+TEST(CableLoads, JacobiansMatchFiniteDifferencesOnTheSeabedWithLateralFriction) {
+  Environment env = OnASlopingSeabed(Environment());
+  SeabedContact c = env.seabed.contact();
+  c.friction_lateral = 1.1;
+  env.seabed.set_contact(c);
+  CheckLoadJacobians(env, nullptr);
+}
+
 TEST(CableLoads, JacobiansMatchFiniteDifferencesInASea) {
   Environment env = OnASlopingSeabed(ShearedCurrent());
   env.waves = WaveField::Regular(1.0, 5.0, 0.0, 0.0, 50.0, env.gravity, env.water_density);
