@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# test.sh — installs what is missing (Debian packages, Node.js and npm included), builds build/
+# test.sh — installs what is missing (Debian packages, Node.js, npm, Slurm and munge included), builds build/
 # (Release), installs the Node.js test dependencies of tests/ from their lockfiles (npm ci) and
-# runs every test (unit, reference, integration) with ctest. Exits non-zero on any failure.
+# runs every test (unit, reference, integration, and package: the installed package and the
+# Debian package, tests/package/) with ctest. Exits non-zero on any failure.
 set -euo pipefail
 TOWSIM_WITH_NODE=1
+TOWSIM_WITH_SLURM=1
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh"
 
 # the independent readers of the recordings (@mcap/core, @foxglove/rosmsg,

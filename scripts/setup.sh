@@ -7,6 +7,7 @@
 #
 # Afterwards the shell is in the repository root and TOWSIM_BUILD_DIR names the build tree.
 # Environment: TOWSIM_BUILD_DIR (default build), TOWSIM_JOBS (default $(nproc)),
+# TOWSIM_WITH_SLURM=1 (test.sh): also slurm-wlm and munge, for the Slurm sweep test;
 # TOWSIM_WITH_NODE=1 (test.sh): also Node.js and npm, for the independent MCAP readers of
 # tests/mcap_js; Debian's `nodejs` and `npm`, each only when its command is missing (a
 # Node.js already on the PATH, e.g. one that bundles npm, is used as it is).
@@ -14,13 +15,20 @@
 towsim_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$towsim_root"
 
+# dpkg-dev: dpkg-shlibdeps, with which cpack -G DEB declares the package's dependencies
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
-                 cyclonedds-tools libgtest-dev libbenchmark-dev "$@")
+                 cyclonedds-tools libgtest-dev libbenchmark-dev dpkg-dev "$@")
 # who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
 for towsim_pkg in "$@"; do
   # and numpy, for scripts/plot_waves.py
   if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib python3-numpy); fi
 done
+
+# test.sh: a one-machine Slurm cluster for tests/integration/sweep_slurm_test.sh (slurmctld,
+# slurmd, the client commands) and munge, its authentication
+if [[ "${TOWSIM_WITH_SLURM:-0}" == 1 ]]; then
+  towsim_packages+=(slurm-wlm munge)
+fi
 
 if [[ "${TOWSIM_WITH_NODE:-0}" == 1 ]]; then
   command -v node >/dev/null || towsim_packages+=(nodejs)

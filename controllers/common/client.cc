@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+#include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
 #include "nav_msgs.h"
@@ -30,17 +31,6 @@ dds_entity_t Check(dds_entity_t e, const std::string& what) {
   return e;
 }
 
-dds_qos_t* ReliableQos(int depth, bool transient_local) {
-  dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  dds_qset_durability(q,
-                      transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
-  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
-  dds_qset_data_representation(q, 1, &xcdr1);
-  return q;
-}
-
 double StampSeconds(int32_t sec, uint32_t nanosec) { return sec + 1e-9 * nanosec; }
 
 }  // namespace
@@ -55,7 +45,8 @@ std::string RequireDdsUri() {
   if (uri == nullptr || *uri == '\0') {
     throw std::runtime_error(
         "CYCLONEDDS_URI is not set: export "
-        "CYCLONEDDS_URI=file://<towsim>/config/cyclonedds.xml (loopback DDS configuration)");
+        "CYCLONEDDS_URI=file://<towsim>/config/cyclonedds.xml, or for an installed towsim "
+        "file://<prefix>/share/towsim/cyclonedds.xml (loopback DDS configuration)");
   }
   return uri;
 }
@@ -70,6 +61,11 @@ void InstallStopHandlers() {
 
 bool StopRequested() { return g_stop.load(); }
 
+namespace {
+// a stop signal, or the caller's own stop flag
+bool Stopping(const ClientOptions& o) { return StopRequested() || (o.stop && o.stop->load()); }
+}  // namespace
+
 struct LockstepClient::Impl {
   ClientOptions opt;
   dds_entity_t participant = 0;
@@ -80,6 +76,10 @@ struct LockstepClient::Impl {
   nav_msgs_msg_dds__Odometry_ odom{};
   bool have_odom = false;
   double odom_time = -1.0;
+  // after a RESET (a new run id): the time of the new run's first status; odometry stamped
+  // later is the old run's, still queued (the node publishes a step's odometry before its
+  // status), and is dropped until a sample of the new run comes; < 0 otherwise
+  double reset_time = -1.0;
 
   void TakeOdom() {
     void* os[16] = {};
@@ -89,6 +89,10 @@ struct LockstepClient::Impl {
       if (!oi[j].valid_data) continue;
       const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(os[j]);
       const double t = StampSeconds(o->header.stamp.sec, o->header.stamp.nanosec);
+      if (reset_time >= 0.0) {
+        if (t > reset_time + 1e-9) continue;  // the old run's
+        reset_time = -1.0;
+      }
       if (t >= odom_time || !have_odom) {  // a RESET goes back in time: see below
         odom = *o;
         odom.header.frame_id = nullptr;
@@ -143,7 +147,7 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     const Clock::time_point begin = Clock::now();
     bool known = false;
     while (!known) {
-      if (StopRequested()) break;
+      if (Stopping(options)) break;
       void* samples[1] = {nullptr};
       dds_sample_info_t info;
       const dds_return_t n = dds_take(scene_reader, samples, &info, 1, 1);
@@ -173,7 +177,7 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     }
     // the node must hear the first command: wait until the writer and the odom reader matched
     for (;;) {
-      if (StopRequested()) break;
+      if (Stopping(options)) break;
       dds_publication_matched_status_t pm;
       dds_subscription_matched_status_t sm;
       dds_get_publication_matched_status(m.command_writer, &pm);
@@ -213,7 +217,7 @@ int LockstepClient::Run(const Law& law) {
   uint64_t last_step = ~0ULL;
   double last_time = 0.0;
   Clock::time_point last_progress = Clock::now();
-  while (!StopRequested()) {
+  while (!Stopping(m.opt)) {
     dds_waitset_wait(m.waitset, nullptr, 0, DDS_MSECS(100));
     void* samples[16] = {};
     dds_sample_info_t infos[16];
@@ -237,15 +241,19 @@ int LockstepClient::Run(const Law& law) {
       if (terminal) {
         done = true;
       } else if (fresh) {
-        if (new_run) m.odom_time = -1.0, m.have_odom = false;
         const double t = s->sim_time;
+        if (new_run) {
+          m.odom_time = -1.0;
+          m.have_odom = false;
+          if (!run_id.empty()) m.reset_time = t;  // a RESET, not the first run seen
+        }
         // the odometry of this step (published before the status); the latest one after a
         // short wait otherwise
         const Clock::time_point wait_begin = Clock::now();
         for (;;) {
           m.TakeOdom();
           if (m.have_odom && m.odom_time >= t - 1e-9) break;
-          if (Seconds(Clock::now() - wait_begin) > 0.5 || StopRequested()) break;
+          if (Seconds(Clock::now() - wait_begin) > 0.5 || Stopping(m.opt)) break;
           dds_sleepfor(DDS_USECS(50));
         }
         if (m.have_odom) {

@@ -6,11 +6,13 @@
 //     (and sim time) of the state it answers,
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
-//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step.
+//     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
+//     after a RESET (a new run id) it drops the old run's odometry still queued.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. Works in every DDS mode (realtime and fast answer each status
 // they see; lockstep waits for the answer).
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <stdexcept>
@@ -24,6 +26,8 @@ struct ClientOptions {
   std::string body;        // the commanded body
   double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
   std::string name = "controller";  // for messages
+  // when set (by another thread), the constructor's waits and Run end as on a stop signal
+  const std::atomic<bool>* stop = nullptr;
 };
 
 // the state of the body at one step, from its odometry

@@ -1,7 +1,11 @@
 #pragma once
 // Minimal flag parsing for the controllers: --name value or --name=value.
 
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -42,6 +46,7 @@ class Flags {
     const auto it = values_.find(name);
     return it == values_.end() ? fallback : it->second;
   }
+  // a finite number (nan and inf are refused: a controller would send them on)
   double Number(const std::string& name, double fallback) const {
     const auto it = values_.find(name);
     if (it == values_.end()) return fallback;
@@ -50,10 +55,35 @@ class Flags {
     if (end == it->second.c_str() || *end != '\0') {
       throw std::runtime_error("--" + name + " " + it->second + ": not a number");
     }
+    if (!std::isfinite(v)) {
+      throw std::runtime_error("--" + name + " " + it->second + ": must be a finite number");
+    }
     return v;
+  }
+  // a finite number with lo <= x <= hi (lo_open: lo < x); the rule is in the message
+  double Number(const std::string& name, double fallback, double lo, double hi,
+                bool lo_open = false) const {
+    const double v = Number(name, fallback);
+    if (!Has(name) || ((lo_open ? v > lo : v >= lo) && v <= hi)) return v;
+    std::string rule = std::string("must be ") + (lo_open ? "> " : ">= ") + Format(lo);
+    if (hi < std::numeric_limits<double>::max()) rule += " and <= " + Format(hi);
+    throw std::runtime_error("--" + name + " " + String(name, "") + ": " + rule);
+  }
+  // a DDS domain id: an integer 0 to 232 (Cyclone's range; sim_node --domain checks the ports)
+  uint32_t Domain(const std::string& name = "domain") const {
+    const double v = Number(name, 0.0, 0.0, 232.0);
+    if (v != static_cast<double>(static_cast<uint32_t>(v))) {
+      throw std::runtime_error("--" + name + " " + String(name, "") + ": must be an integer");
+    }
+    return static_cast<uint32_t>(v);
   }
 
  private:
+  static std::string Format(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", x);
+    return text;
+  }
   static bool Contains(const std::vector<std::string>& v, const std::string& s) {
     for (const auto& x : v) {
       if (x == s) return true;

@@ -14,10 +14,27 @@ static dds_entity_t topic(dds_entity_t pp, const dds_topic_descriptor_t* type, c
   return dds_create_topic(pp, type, name, NULL, NULL);
 }
 
+/* argv[i] as a finite number in [lo, hi] (else exit 2 naming it and the rule) */
+static double arg(int argc, char** argv, int i, const char* name, double fallback, double lo,
+                  double hi) {
+  char* end = NULL;
+  const double x = argc > i ? strtod(argv[i], &end) : fallback;
+  if (argc > i && (end == argv[i] || *end != '\0' || !isfinite(x) || x < lo || x > hi)) {
+    fprintf(stderr, "hello_controller: error: %s = %s: must be a number from %g to %g\n", name,
+            argv[i], lo, hi);
+    exit(2);
+  }
+  return x;
+}
+
 int main(int argc, char** argv) {
-  const double thrust = argc > 2 ? atof(argv[2]) : 4165.0;
-  const double heading = (argc > 3 ? atof(argv[3]) : 0.0) * M_PI / 180.0, gain = 1.0;
-  const dds_entity_t pp = dds_create_participant(argc > 1 ? atoi(argv[1]) : 0, NULL, NULL);
+  const double domain = arg(argc, argv, 1, "domain", 0.0, 0.0, 232.0);
+  if (domain != floor(domain)) return fprintf(stderr, "hello_controller: error: domain = %s: "
+                                                      "must be an integer\n", argv[1]), 2;
+  const double thrust = arg(argc, argv, 2, "thrust_N", 4165.0, -1e6, 1e6);
+  const double heading = arg(argc, argv, 3, "heading_deg", 0.0, -360, 360) * M_PI / 180.0;
+  const double gain = 1.0;
+  const dds_entity_t pp = dds_create_participant((dds_domainid_t)domain, NULL, NULL);
   if (pp < 0) return fprintf(stderr, "hello_controller: %s\n", dds_strretcode(pp)), 1;
   dds_qos_t* qos = dds_create_qos(); /* the node's QoS: reliable, keep last 1, XCDR1 */
   dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     const Flags f(argc, argv, ManeuverFlagNames(), ManeuverSwitchNames());
     c = ResolveManeuver(f);
     opt.body = c.body;
-    opt.domain = static_cast<uint32_t>(f.Number("domain", 0));
+    opt.domain = f.Domain();
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0);
   } catch (const std::exception& e) {

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -77,17 +78,19 @@ int main(int argc, char** argv) {
       throw std::runtime_error("--seabed-depth / --seabed-profile need --altitude A");
     }
     opt.body = f.String("body", "towfish");
-    opt.domain = static_cast<uint32_t>(f.Number("domain", 0));
+    constexpr double kNoLimit = std::numeric_limits<double>::max();
+    opt.domain = f.Domain();
     opt.ns = f.String("namespace", "/towsim");
-    opt.timeout = f.Number("timeout", 30.0);
-    p.depth = f.Number("depth", 0.0);
-    p.kp = f.Number("kp", p.kp);
-    p.ki = f.Number("ki", p.ki);
-    p.kd = f.Number("kd", p.kd);
-    p.max_elevator = Rad(f.Number("max-elevator-deg", Deg(p.max_elevator)));
-    p.rate_limit = Rad(f.Number("rate-deg", Deg(p.rate_limit)));
+    opt.timeout = f.Number("timeout", 30.0, 0.0, kNoLimit, /*lo_open=*/true);
+    p.depth = f.Number("depth", 0.0, 0.0, kNoLimit);  // [m] below the surface (NED z)
+    p.kp = f.Number("kp", p.kp, 0.0, kNoLimit);
+    p.ki = f.Number("ki", p.ki, 0.0, kNoLimit);
+    p.kd = f.Number("kd", p.kd, 0.0, kNoLimit);
+    p.max_elevator =
+        Rad(f.Number("max-elevator-deg", Deg(p.max_elevator), 0.0, 90.0, /*lo_open=*/true));
+    p.rate_limit = Rad(f.Number("rate-deg", Deg(p.rate_limit), 0.0, kNoLimit, /*lo_open=*/true));
     p.sign = f.Number("elevator-sign", -1.0) >= 0.0 ? 1.0 : -1.0;
-    p.max_pitch = Rad(f.Number("max-pitch-deg", Deg(p.max_pitch)));
+    p.max_pitch = Rad(f.Number("max-pitch-deg", Deg(p.max_pitch), 0.0, 90.0, /*lo_open=*/true));
     p.hold = f.Has("hold");
     log_path = f.String("log", "");
   } catch (const std::exception& e) {

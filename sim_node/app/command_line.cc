@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "dds/translators.h"
+
 namespace towsim::app {
 namespace {
 
@@ -50,7 +52,9 @@ std::string Usage() {
          "Simulates the towed system of a scene file.\n"
          "\n"
          "options:\n"
-         "  --scene FILE          scene YAML file (required)\n"
+         "  --scene FILE          scene YAML file (required); a bare name (case1_forward)\n"
+         "                        also finds the scenes of an installed towsim\n"
+         "                        (<prefix>/share/towsim/scenes)\n"
          "  --mode MODE           realtime (default), fast, lockstep (DDS, paced / free /\n"
          "                        in step with the controllers) or offline (no DDS)\n"
          "  --domain N            DDS domain id (default 0)\n"
@@ -62,7 +66,11 @@ std::string Usage() {
          "                        (repeatable)\n"
          "  --csv DIR             write bodies.csv, cable.csv, forces.csv, status.csv to DIR\n"
          "                        at the scene's time.output_rate\n"
-         "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2)\n"
+         "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2);\n"
+         "                        an existing file is refused unless --overwrite\n"
+         "  --overwrite           --record may replace an existing file\n"
+         "  --allow-another-node  DDS modes: run although another node publishes in the\n"
+         "                        same domain and namespace (else exit 2; status warns)\n"
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
          "  --wait-for-controllers\n"
          "                        DDS modes: the first step waits until every vehicle that\n"
@@ -101,9 +109,17 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.wait_for_controllers = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene", "--mode",   "--duration", "--rate",
-                                             "--set",   "--csv",    "--record",   "--domain",
-                                             "--namespace"};
+    if (arg == "--overwrite") {
+      o.overwrite = true;
+      continue;
+    }
+    if (arg == "--allow-another-node") {
+      o.allow_another_node = true;
+      continue;
+    }
+    static const char* const kWithValue[] = {"--scene",  "--mode",   "--duration",
+                                             "--rate",   "--set",    "--csv",
+                                             "--record", "--domain", "--namespace"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -138,7 +154,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.duration = s;
     } else if (name == "--rate") {
       double r = 0.0;
-      if (!ParseNumber(v, &r) || r <= 0.0) return fail("--rate " + v + ": must be a number > 0");
+      if (!ParseNumber(v, &r)) return fail("--rate " + v + ": must be a number");
+      if (const std::string e = dds::CheckRate(r); !e.empty())
+        return fail("--rate " + v + ": " + e);
       o.rate = r;
     } else if (name == "--set") {
       const auto eq = v.find('=');

@@ -26,6 +26,8 @@ struct Options {
   std::vector<std::string> overrides;  // --set key.path=value, in command-line order
   std::string csv_dir;                 // --csv DIR; empty: no CSV
   std::string record_file;             // --record FILE.mcap; empty: no recording
+  bool overwrite = false;              // --overwrite: --record may replace an existing file
+  bool allow_another_node = false;     // --allow-another-node: run beside another node
   std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)

@@ -16,12 +16,17 @@
 #include "app/dds_publisher.h"
 #include "app/dds_uri.h"
 #include "app/mcap_recording.h"
+#include "app/peer_nodes.h"
 #include "app/stop_signal.h"
+#include "app/strain_watch.h"
+#include "app/unknown_commands.h"
 #include "core/script.h"
 #include "dds/command_arbiter.h"
 #include "dds/entities.h"
+#include "dds/port_mapping.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
+#include "io/output_error.h"
 
 namespace towsim::app {
 namespace {
@@ -29,12 +34,17 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr int kExitOk = 0;
+constexpr int kExitError = 1;  // an output (CSV, recording) could not be written: disk full
 constexpr int kExitBadInput = 2;
 constexpr int kExitSolver = 3;
+constexpr int kExitStoppedInSetup = -1;  // Setup(): a signal stopped it (Run() exits 0)
 
 constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
 constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
 constexpr double kLockstepHintAfter = 5.0;  // say what lockstep waits for after [s]
+// lockstep: a vehicle never heard from is waited for this long, then failsafe (README "DDS
+// node"; --wait-for-controllers waits without limit before the first step) [s]
+constexpr double kLockstepStartTimeout = 30.0;
 constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
 constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
 // On exit, Cyclone keeps each writer with unacknowledged samples alive for WriterLingerDuration
@@ -80,6 +90,9 @@ class DdsNode {
 
  private:
   int Setup();
+  // steps until the end, a signal or a failure; returns the exit code, sets the final state.
+  // Throws io::OutputError when an output cannot be written.
+  int Loop(uint8_t* end_state);
   bool lockstep() const { return opt_.mode == Mode::kLockstep; }
   bool realtime() const { return opt_.mode == Mode::kRealtime; }
   bool finished() const { return steps_to_run_ >= 0 && static_cast<long>(step_) >= steps_to_run_; }
@@ -118,6 +131,10 @@ class DdsNode {
   std::unique_ptr<dds::Participant> participant_;
   std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
+  std::unique_ptr<PeerNodes> peers_;          // other nodes in the namespace
+  std::unique_ptr<UnknownCommands> unknown_;  // commands on topics of no commandable body
+  std::string peer_note_;                     // the warning about them, for the status
+  StrainWatch strain_;                        // the largest cable strain, at the output times
   PublishStrides strides_;
   long output_stride_ = 1;
   bool has_lockstep_vehicles_ = false;
@@ -147,7 +164,8 @@ class DdsNode {
            prior_timeouts_ = 0;
   int command_notes_ = 0;
   std::string failure_;
-  dds::StatusSample status_;  // reused: no allocation per step
+  bool output_failed_ = false;  // opt_.output threw io::OutputError
+  dds::StatusSample status_;    // reused: no allocation per step
 };
 
 int DdsNode::Setup() {
@@ -195,7 +213,10 @@ int DdsNode::Setup() {
 
   // the initial state (may solve statics)
   try {
-    sim_.emplace(model_);
+    sim_.emplace(model_, [] { return StopRequested() != 0; });  // Ctrl-C in the static solve
+  } catch (const core::StopRequestedError& e) {
+    std::fprintf(stderr, "sim_node: %s (no DDS participant yet)\n", e.what());
+    return kExitStoppedInSetup;
   } catch (const core::SolverError& e) {
     std::fprintf(stderr, "sim_node: solver failure while building the initial state: %s\n",
                  e.what());
@@ -207,18 +228,42 @@ int DdsNode::Setup() {
   std::string config = opt_.dds_config;
   if (config.empty()) config = DdsUriFromEnvironment("sim_node");
   config += config.empty() ? kLingerConfig : std::string(",") + kLingerConfig;
+  if (const std::string e = dds::CheckDomainPorts(opt_.domain, config); !e.empty()) {
+    return bad("DDS setup failed: " + e);
+  }
   try {
     participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
+    std::vector<std::string> commanded;
+    for (int i = 0; i < arbiter_->size(); ++i) commanded.push_back(arbiter_->vehicle(i).name);
+    unknown_ = std::make_unique<UnknownCommands>(*participant_, opt_.ns, commanded);
+    // another node in this domain and namespace: refused (README "DDS node"); nothing of
+    // this node is published yet
+    peers_ = std::make_unique<PeerNodes>(*participant_, dds::TopicNames(opt_.ns));
+    if (peers_->WaitForAny(PeerNodes::kStartWindow, [] { return StopRequested() != 0; })) {
+      const std::string where = "DDS domain " + std::to_string(opt_.domain) + ", namespace " +
+                                opt_.ns + " (" + peers_->Names() + ")";
+      if (!opt_.allow_another_node) {
+        return bad("another sim_node runs on " + where +
+                   ": controllers would drive both; stop it, pick another --domain or "
+                   "--namespace, or pass --allow-another-node");
+      }
+      peer_note_ = "warning: another node runs on " + where;
+      std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
+    }
   } catch (const dds::DdsError& e) {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;
   }
   if (!opt_.record_file.empty()) {
     try {
-      recording_ = std::make_unique<McapRecording>(opt_.record_file);
+      recording_ = std::make_unique<McapRecording>(opt_.record_file, opt_.overwrite);
       endpoints_->StartRecording(*participant_, recording_.get());
+    } catch (const io::OutputError& e) {  // created, not written: disk full
+      std::fprintf(stderr, "sim_node: error: --record %s: %s\n", opt_.record_file.c_str(),
+                   e.what());
+      return kExitError;
     } catch (const std::exception& e) {
       return bad("--record " + opt_.record_file + ": " + e.what());
     }
@@ -240,26 +285,61 @@ int DdsNode::Setup() {
 
 int DdsNode::Run() {
   InstallStopHandlers();
-  if (const int rc = Setup(); rc != kExitOk) return rc;
-
-  start_wall_ = rtf_wall_ = last_status_wall_ = Clock::now();
-  PublishInitial();
-  if (realtime()) pacer_.Start(period());
+  if (const int rc = Setup(); rc != kExitOk) return rc == kExitStoppedInSetup ? kExitOk : rc;
 
   int exit_code = kExitOk;
   uint8_t end_state = kFinished;
+  start_wall_ = rtf_wall_ = last_status_wall_ = Clock::now();
+  try {
+    PublishInitial();
+    if (realtime()) pacer_.Start(period());
+    exit_code = Loop(&end_state);
+  } catch (const io::OutputError& e) {
+    // an output failed (README "Exit codes"): the run ends, FAILED with the reason, and what
+    // still works (DDS, the other output) ends cleanly
+    exit_code = kExitError;
+    end_state = kFailed;
+    failure_ = std::string("output failed: ") + e.what();
+    std::fprintf(stderr, "sim_node: %s\n", failure_.c_str());
+    if (recording_ && recording_->failed()) endpoints_->StopRecording();
+    if (output_failed_) opt_.output = nullptr;
+  }
+
+  PublishStatus(end_state);
+  endpoints_->Flush(kExitFlushTimeout);
+  if (last_output_ != static_cast<long>(step_) && end_state != kFailed) {
+    Output(last_status_, std::lround(step_wall_ * 1e6));
+  }
+  Summary(Seconds(Clock::now() - start_wall_));
+  if (recording_) {
+    try {
+      recording_->Close();
+      std::fprintf(stderr, "sim_node: recorded %llu messages on %zu topics to %s\n",
+                   static_cast<unsigned long long>(recording_->message_count()),
+                   recording_->topic_count(), recording_->path().c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr,
+                   "sim_node: error: the recording %s is incomplete (%s); towsim_export "
+                   "--recover reads what it holds\n",
+                   recording_->path().c_str(), e.what());
+      exit_code = kExitError;
+    }
+  }
+  return exit_code;
+}
+
+int DdsNode::Loop(uint8_t* end_state) {
   for (;;) {
     if (StopRequested()) {
-      end_state = kStopped;
-      break;
+      *end_state = kStopped;
+      return kExitOk;
     }
     HandleControl();
     if (!failure_.empty()) {
-      exit_code = kExitSolver;
-      end_state = kFailed;
-      break;
+      *end_state = kFailed;
+      return kExitSolver;
     }
-    if (finished()) break;
+    if (finished()) return kExitOk;
     if (paused_ && step_budget_ == 0) {
       Idle();
       continue;
@@ -281,25 +361,10 @@ int DdsNode::Run() {
       TakeCommands();  // the freshest
     }
     if (!DoStep()) {
-      exit_code = kExitSolver;
-      end_state = kFailed;
-      break;
+      *end_state = kFailed;
+      return kExitSolver;
     }
   }
-
-  PublishStatus(end_state);
-  endpoints_->Flush(kExitFlushTimeout);
-  if (last_output_ != static_cast<long>(step_) && end_state != kFailed) {
-    Output(last_status_, std::lround(step_wall_ * 1e6));
-  }
-  Summary(Seconds(Clock::now() - start_wall_));
-  if (recording_) {
-    recording_->Close();
-    std::fprintf(stderr, "sim_node: recorded %llu messages on %zu topics to %s\n",
-                 static_cast<unsigned long long>(recording_->message_count()),
-                 recording_->topic_count(), recording_->path().c_str());
-  }
-  return exit_code;
 }
 
 void DdsNode::PublishInitial() {
@@ -354,10 +419,16 @@ void DdsNode::PublishStatus(uint8_t state) {
   for (int i = 0; i < arbiter_->size(); ++i) {
     if (arbiter_->failsafe(i)) s.failsafe_bodies.push_back(arbiter_->vehicle(i).name);
   }
-  s.commands_received = arbiter_->received();
-  s.commands_rejected = arbiter_->rejected();
+  s.commands_received = arbiter_->received() + unknown_->count();
+  s.commands_rejected = arbiter_->rejected() + unknown_->count();
   s.commands_clamped = arbiter_->clamped();
   s.lockstep_timeouts = arbiter_->lockstep_timeouts();
+  if (peers_ && peers_->Poll()) {
+    // one that appeared while this node runs: both go on, warned (README "DDS node")
+    peer_note_ = "warning: another node runs on DDS domain " + std::to_string(opt_.domain) +
+                 ", namespace " + opt_.ns + " (" + peers_->Names() + ")";
+    std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
+  }
   if (state == kFailed) {
     s.health = kHealthError;
     s.message = failure_;
@@ -366,8 +437,14 @@ void DdsNode::PublishStatus(uint8_t state) {
     s.message = arbiter_->last_event();
   } else {
     s.health = kHealthOk;
-    if (!control_note_.empty()) {
+    if (!peer_note_.empty()) {
+      s.message = peer_note_;
+    } else if (strain_.extreme()) {
+      s.message = strain_.Warning();
+    } else if (!control_note_.empty()) {
       s.message = control_note_;
+    } else if (!unknown_->last_event().empty() && arbiter_->last_event().empty()) {
+      s.message = unknown_->last_event();
     } else if (s.message != arbiter_->last_event()) {
       s.message = arbiter_->last_event();
     }
@@ -434,6 +511,10 @@ void DdsNode::NoteCommand(const dds::CheckedCommand& c, int i) {
 }
 
 void DdsNode::TakeCommands() {
+  if (unknown_->Poll() > 0 && command_notes_ < kMaxCommandNotes) {
+    ++command_notes_;
+    std::fprintf(stderr, "sim_node: %s\n", unknown_->last_event().c_str());
+  }
   const double t = sim_->time();
   for (int i = 0; i < endpoints_->num_command_readers(); ++i) {
     endpoints_->command_reader(i).TakeEach(
@@ -446,7 +527,7 @@ void DdsNode::TakeCommands() {
 bool DdsNode::WaitLockstep() {
   if (arbiter_->ReadyFor(step_)) return true;
   const Clock::time_point begin = Clock::now();
-  bool timed_out = false, hinted = false;
+  bool timed_out = false, start_timed_out = false, hinted = false;
   for (;;) {
     if (StopRequested()) return false;
     if (HandleControl()) return false;
@@ -454,9 +535,13 @@ bool DdsNode::WaitLockstep() {
     if (arbiter_->ReadyFor(step_)) return true;
     const Clock::time_point now = Clock::now();
     const double waited = Seconds(now - begin);
-    if (!timed_out && waited >= opt_.lockstep_timeout) {
+    // a vehicle heard from (even a rejected command) after lockstep_timeout, one never heard
+    // from after kLockstepStartTimeout: failsafe, no longer waited for
+    const bool start_over = waited >= kLockstepStartTimeout;
+    if ((!timed_out && waited >= opt_.lockstep_timeout) || (start_over && !start_timed_out)) {
       timed_out = true;
-      if (arbiter_->TimeOut(step_) > 0) {
+      start_timed_out = start_over;
+      if (arbiter_->TimeOut(step_, start_over) > 0) {
         std::fprintf(stderr, "sim_node: %s\n", arbiter_->last_event().c_str());
         PublishStatus(RunningState());
         if (arbiter_->ReadyFor(step_)) return true;
@@ -544,6 +629,7 @@ bool DdsNode::DoStep() {
     PublishStatus(RunningState());
   }
   if (static_cast<long>(step_) % output_stride_ == 0) {
+    if (strain_.Observe(sim)) std::fprintf(stderr, "sim_node: %s\n", strain_.Warning().c_str());
     Output(status, std::lround(step_wall_ * 1e6));
   }
   if (realtime()) pacer_.EndStep();
@@ -551,20 +637,23 @@ bool DdsNode::DoStep() {
 }
 
 bool DdsNode::DoReset() {
+  std::optional<core::Simulation> fresh;  // the old run stays as it is if this throws
+  try {
+    fresh.emplace(model_, [] { return StopRequested() != 0; });
+  } catch (const core::StopRequestedError&) {
+    return true;  // the run loop ends on the stop request, with the old run's state
+  } catch (const core::SolverError& e) {
+    failure_ = std::string("reset: the initial state could not be built: ") + e.what();
+    std::fprintf(stderr, "sim_node: solver failure: %s\n", failure_.c_str());
+    return false;
+  }
   total_sim_time_ += sim_->time();
   prior_received_ += arbiter_->received();
   prior_rejected_ += arbiter_->rejected();
   prior_clamped_ += arbiter_->clamped();
   prior_failsafes_ += arbiter_->failsafe_count();
   prior_timeouts_ += arbiter_->lockstep_timeouts();
-  try {
-    core::Simulation fresh(model_);  // the old state stays valid if this throws
-    *sim_ = std::move(fresh);
-  } catch (const core::SolverError& e) {
-    failure_ = std::string("reset: the initial state could not be built: ") + e.what();
-    std::fprintf(stderr, "sim_node: solver failure: %s\n", failure_.c_str());
-    return false;
-  }
+  *sim_ = std::move(*fresh);
   script_.emplace(model_);
   arbiter_->Reset();
   step_ = 0;
@@ -583,7 +672,12 @@ bool DdsNode::DoReset() {
 
 void DdsNode::Output(const core::StepStatus& status, long wall_us) {
   if (!opt_.output) return;
-  opt_.output(*sim_, status, wall_us);
+  try {
+    opt_.output(*sim_, status, wall_us);
+  } catch (const io::OutputError&) {
+    output_failed_ = true;
+    throw;
+  }
   last_output_ = static_cast<long>(step_);
 }
 
@@ -599,10 +693,17 @@ void DdsNode::Summary(double wall) const {
       model_.name.c_str(), ModeName(opt_.mode), total_steps_, sim_time, wall, rtf < 10.0 ? 2 : 0,
       rtf, static_cast<unsigned long long>(pacer_.overruns()),
       static_cast<unsigned long long>(prior_failsafes_ + arbiter_->failsafe_count()),
-      static_cast<unsigned long long>(prior_received_ + arbiter_->received()),
-      static_cast<unsigned long long>(prior_rejected_ + arbiter_->rejected()),
+      static_cast<unsigned long long>(prior_received_ + arbiter_->received() + unknown_->count()),
+      static_cast<unsigned long long>(prior_rejected_ + arbiter_->rejected() + unknown_->count()),
       static_cast<unsigned long long>(prior_clamped_ + arbiter_->clamped()),
       static_cast<unsigned long long>(prior_timeouts_ + arbiter_->lockstep_timeouts()), resets_);
+  if (strain_.extreme() && n > 0 && n < static_cast<int>(sizeof line)) {
+    n += std::snprintf(line + n, sizeof line - n, "%s", strain_.SummaryPart().c_str());
+  }
+  if (peers_ && !peers_->run_ids().empty() && n > 0 && n < static_cast<int>(sizeof line)) {
+    n += std::snprintf(line + n, sizeof line - n, ", other nodes in the namespace: %s",
+                       peers_->Names().c_str());
+  }
   if (realtime() && pacer_.stats().count() > 0 && n > 0 && n < static_cast<int>(sizeof line)) {
     const LatenessStats& l = pacer_.stats();
     std::snprintf(line + n, sizeof line - n, ", lateness p50 %.0f us p99 %.0f us max %.0f us",

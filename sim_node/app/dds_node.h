@@ -8,10 +8,11 @@
 //             last resume / reset / rate change); lateness measured, overruns counted
 //   fast      as fast as it goes, still publishing and taking commands
 //   lockstep  step k (state k -> k + 1) waits until every commanded vehicle holds a command
-//             answering step k; after `lockstep_timeout` of wall time a vehicle that has been
-//             commanded before goes to failsafe and is no longer waited for until its
-//             commands resume. A vehicle never commanded is waited for without limit (the
-//             controller may start after the node). Same commands, bit-identical states.
+//             answering step k; after `lockstep_timeout` of wall time a vehicle that has sent
+//             a command before (valid or rejected) goes to failsafe and is no longer waited
+//             for until valid commands resume; a vehicle never heard from is given 30 s (the
+//             controller may start after the node), then the same. Same commands,
+//             bit-identical states.
 //
 // Commands: dds/command_arbiter.h (last writer wins, NaN rejected, out of range clamped,
 // failsafe after `command_timeout` of simulation time). Each step: the scene's script entries
@@ -65,6 +66,10 @@ struct DdsNodeOptions {
   // Each message is serialized once and the same bytes are published and recorded (see
   // app/dds_publisher.h); the file is completed at the end of the run and on SIGINT / SIGTERM.
   std::string record_file;
+  bool overwrite = false;  // record_file may replace an existing file (else exit 2)
+  // run although another node publishes in this domain and namespace (else exit 2; the
+  // status warns either way, app/peer_nodes.h)
+  bool allow_another_node = false;
   // wait before the first step until every vehicle that takes commands has received one (so
   // controllers started beside the node miss no step, in every mode; the status says waiting)
   bool wait_for_controllers = false;

@@ -44,6 +44,8 @@ class NodeEndpoints {
   // writer); throws dds::DdsError (serializer probe) or std::invalid_argument (a type without
   // ROS 2 definition)
   void StartRecording(const dds::Participant& participant, McapRecording* recording);
+  // no more recording (it failed: the messages still go to DDS)
+  void StopRecording() { recording_ = nullptr; }
   // waits up to `timeout` [s] until the readers acknowledged status and scene info (exit)
   void Flush(double timeout);
 

@@ -67,9 +67,12 @@ class CsvFile {
 
 ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, const std::string& ns,
                        bool recover) {
-  const io::McapReader reader =
-      recover ? io::McapReader::Recover(mcap_path) : io::McapReader::Open(mcap_path);
+  return ExportCsv(recover ? io::McapReader::Recover(mcap_path) : io::McapReader::Open(mcap_path),
+                   dir, ns);
+}
 
+ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
+                       const std::string& ns) {
   // the channels of the node under `ns`, by what they carry
   enum class Kind { kOdom, kForce, kCable, kStatus, kSceneInfo };
   struct Route {
@@ -113,9 +116,9 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
     }
   }
   if (routes.empty()) {
-    throw std::invalid_argument("no towsim topics under the namespace '" + ns + "' in " +
-                                mcap_path +
-                                " (topics: " + (all_topics.empty() ? "none" : all_topics) + ")");
+    throw std::invalid_argument(
+        "no towsim topics under the namespace '" + ns +
+        "' in the recording (topics: " + (all_topics.empty() ? "none" : all_topics) + ")");
   }
 
   // decode every message of those channels, in log-time order

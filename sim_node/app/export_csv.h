@@ -20,6 +20,8 @@
 #include <cstdint>
 #include <string>
 
+#include "io/mcap_reader.h"
+
 namespace towsim::app {
 
 struct ExportCounts {
@@ -32,5 +34,7 @@ struct ExportCounts {
 // topics under `ns`, a topic with an unexpected type) or std::runtime_error (writing failed).
 ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, const std::string& ns,
                        bool recover);
+// the same from a reader opened (or recovered) by the caller
+ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir, const std::string& ns);
 
 }  // namespace towsim::app

@@ -43,8 +43,12 @@ std::string TimePoint(std::uint64_t ns) {
 }  // namespace
 
 std::string RecordingInfo(const std::string& mcap_path, bool recover) {
-  const io::McapReader r =
-      recover ? io::McapReader::Recover(mcap_path) : io::McapReader::Open(mcap_path);
+  return RecordingInfo(
+      recover ? io::McapReader::Recover(mcap_path) : io::McapReader::Open(mcap_path), mcap_path,
+      recover);
+}
+
+std::string RecordingInfo(const io::McapReader& r, const std::string& mcap_path, bool recover) {
   const io::McapStatistics& s = r.statistics();
   const std::uint64_t duration =
       s.message_count > 0 ? s.message_end_time - s.message_start_time : 0;

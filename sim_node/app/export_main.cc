@@ -1,7 +1,9 @@
 // towsim_export: a towsim recording (MCAP) to the CSV files of DESIGN §5 (--csv DIR) and / or a
 // summary like `ros2 bag info` (--info). Exit codes: 0 done, 1 unexpected error (e.g. a CSV
 // file could not be written), 2 bad input (command line, unreadable or corrupt recording: the
-// reader's message names the byte offset).
+// reader's message names the byte offset), 4 --recover read the file but skipped damaged or
+// cut-off byte ranges (each on stderr: bytes, message count, the damage); the output holds
+// every intact chunk.
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -14,19 +16,22 @@
 #include "app/export_info.h"
 #include "io/cdr_reader.h"
 #include "io/mcap_format.h"
+#include "io/mcap_reader.h"
 
 namespace {
 
 constexpr int kExitOk = 0;
 constexpr int kExitError = 1;
 constexpr int kExitBadInput = 2;
+constexpr int kExitRecoveredWithLosses = 4;
 
 constexpr char kUsage[] =
     "usage: towsim_export FILE.mcap [--csv DIR] [--info] [--namespace NS] [--recover]\n"
     "  --csv DIR         write bodies.csv, cable.csv, forces.csv, status.csv into DIR\n"
     "  --info            print topics, types, counts and the time range (like ros2 bag info)\n"
     "  --namespace NS    the node's namespace in the recording (default /towsim)\n"
-    "  --recover         read what a killed recorder left (every complete chunk)\n"
+    "  --recover         read what a killed recorder or damage left: every intact chunk;\n"
+    "                    skipped byte ranges on stderr and exit 4 if anything was lost\n"
     "  --help            print this and exit\n"
     "At least one of --csv and --info.\n";
 
@@ -87,9 +92,11 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   }
   try {
-    if (info) std::printf("%s", towsim::app::RecordingInfo(file, recover).c_str());
+    using towsim::io::McapReader;
+    const McapReader reader = recover ? McapReader::Recover(file) : McapReader::Open(file);
+    if (info) std::printf("%s", towsim::app::RecordingInfo(reader, file, recover).c_str());
     if (!csv_dir.empty()) {
-      const auto n = towsim::app::ExportCsv(file, csv_dir, ns, recover);
+      const auto n = towsim::app::ExportCsv(reader, csv_dir, ns);
       std::fprintf(stderr,
                    "towsim_export: %s -> %s: bodies %llu rows, cable %llu, forces %llu, status "
                    "%llu\n",
@@ -97,6 +104,18 @@ int main(int argc, char** argv) {
                    static_cast<unsigned long long>(n.cable_rows),
                    static_cast<unsigned long long>(n.forces_rows),
                    static_cast<unsigned long long>(n.status_rows));
+    }
+    if (!reader.skipped().empty()) {
+      for (const towsim::io::McapSkipped& skipped : reader.skipped()) {
+        std::fprintf(stderr, "towsim_export: %s: skipped %s\n", file.c_str(),
+                     towsim::io::DescribeSkipped(skipped).c_str());
+      }
+      std::fprintf(stderr,
+                   "towsim_export: %s: recovered %llu messages in %zu chunks; %zu byte ranges "
+                   "lost (exit 4)\n",
+                   file.c_str(), static_cast<unsigned long long>(reader.statistics().message_count),
+                   reader.chunk_indexes().size(), reader.skipped().size());
+      return kExitRecoveredWithLosses;
     }
   } catch (const towsim::io::mcap::McapError& e) {
     std::fprintf(stderr, "towsim_export: error: %s: %s\n", file.c_str(), e.what());

@@ -10,10 +10,12 @@
 
 #include "app/command_line.h"
 #include "app/dds_node.h"
+#include "app/installed_data.h"
 #include "app/offline_run.h"
 #include "app/stop_signal.h"
 #include "core/model.h"
 #include "io/csv_writer.h"
+#include "io/output_error.h"
 #include "scene/scene_loader.h"
 
 namespace {
@@ -21,6 +23,25 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitError = 1;  // unexpected (e.g. a CSV write failed: disk full)
 constexpr int kExitBadInput = 2;
+
+std::string FormatSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
+// closes the CSV files after a run that ended with `code`; a failure to close is an output
+// failure (exit 1), told once
+int CloseCsv(towsim::io::CsvWriter* csv, int code) {
+  if (csv == nullptr) return code;
+  try {
+    csv->Close();
+  } catch (const std::exception& e) {
+    if (code != kExitError) std::fprintf(stderr, "sim_node: error: --csv: %s\n", e.what());
+    return kExitError;
+  }
+  return code;
+}
 
 int Run(const towsim::app::Options& options) {
   using towsim::app::Mode;
@@ -34,20 +55,34 @@ int Run(const towsim::app::Options& options) {
   }
 
   towsim::core::Model model;
+  // a bare scene name also finds the scenes of an installed towsim (P/share/towsim/scenes)
+  const std::string scene =
+      towsim::app::ResolveScene(options.scene, towsim::app::InstalledDataDir());
   try {
-    model = towsim::scene::LoadScene(options.scene, options.overrides);
+    model = towsim::scene::LoadScene(scene, options.overrides);
   } catch (const std::exception& e) {  // scene::ConfigError: what() is the full message
     std::fprintf(stderr, "sim_node: error: %s\n", e.what());
     return kExitBadInput;
   }
-  if (model.name.empty()) model.name = std::filesystem::path(options.scene).stem().string();
+  if (model.name.empty()) model.name = std::filesystem::path(scene).stem().string();
   const double duration = options.duration.value_or(model.time.duration);
   model.time.duration = duration;
+  if (!(duration / model.time.step <= towsim::core::kMaxSteps)) {
+    std::fprintf(stderr,
+                 "sim_node: error: --duration %s: must be <= 1e12 steps of time.step = %g s "
+                 "(%g s)\n",
+                 FormatSeconds(duration).c_str(), model.time.step,
+                 towsim::core::kMaxSteps * model.time.step);
+    return kExitBadInput;
+  }
 
   std::unique_ptr<towsim::io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {
     try {
       csv = std::make_unique<towsim::io::CsvWriter>(options.csv_dir);
+    } catch (const towsim::io::OutputError& e) {  // opened, not written: disk full
+      std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
+      return kExitError;
     } catch (const std::exception& e) {
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitBadInput;
@@ -66,19 +101,17 @@ int Run(const towsim::app::Options& options) {
     dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
+    dds.overwrite = options.overwrite;
+    dds.allow_another_node = options.allow_another_node;
     dds.start_paused = options.paused;
     dds.wait_for_controllers = options.wait_for_controllers;
     if (csv) {
       dds.output = [&](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
                        long us) { csv->Write(s, st, us); };
     }
-    const int code = towsim::app::RunDdsNode(model, dds);
-    if (csv) csv->Close();
-    return code;
+    return CloseCsv(csv.get(), towsim::app::RunDdsNode(model, dds));
   }
-  const int code = towsim::app::RunOffline(model, duration, csv.get());
-  if (csv) csv->Close();
-  return code;
+  return CloseCsv(csv.get(), towsim::app::RunOffline(model, duration, csv.get()));
 }
 
 }  // namespace

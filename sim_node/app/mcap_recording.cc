@@ -1,5 +1,6 @@
 #include "app/mcap_recording.h"
 
+#include <stdexcept>
 #include <string>
 
 #include "io/ros2_schemas.h"
@@ -27,8 +28,26 @@ std::string OfferedQosYaml(bool transient_local, int depth) {
   return y;
 }
 
-McapRecording::McapRecording(const std::string& path) : path_(path) {
-  writer_.Open(path, "ros2");
+namespace {
+
+io::McapWriter::Options WriterOptions(bool overwrite) {
+  io::McapWriter::Options options;
+  options.exclusive = !overwrite;
+  return options;
+}
+
+}  // namespace
+
+McapRecording::McapRecording(const std::string& path, bool overwrite)
+    : path_(path), writer_(WriterOptions(overwrite)) {
+  try {
+    writer_.Open(path, "ros2");
+  } catch (const std::runtime_error& e) {
+    if (!overwrite && std::string(e.what()).find(" exists") != std::string::npos) {
+      throw std::runtime_error(std::string(e.what()) + " (--overwrite replaces it)");
+    }
+    throw;
+  }
   last_flush_ = Clock::now();
 }
 
@@ -57,7 +76,12 @@ std::uint16_t McapRecording::AddTopic(const std::string& dds_topic,
 void McapRecording::Write(std::uint16_t channel, std::uint64_t log_time_ns,
                           std::uint64_t publish_time_ns, const std::uint8_t* data,
                           std::size_t size) {
-  writer_.Write(channel, ++sequences_[channel], log_time_ns, publish_time_ns, data, size);
+  try {
+    writer_.Write(channel, ++sequences_[channel], log_time_ns, publish_time_ns, data, size);
+  } catch (...) {
+    failed_ = true;
+    throw;
+  }
   bytes_ += size;
   FlushIfDue();
 }
@@ -66,7 +90,12 @@ void McapRecording::FlushIfDue() {
   const Clock::time_point now = Clock::now();
   if (std::chrono::duration<double>(now - last_flush_).count() < kFlushPeriod) return;
   last_flush_ = now;
-  writer_.Flush();
+  try {
+    writer_.Flush();
+  } catch (...) {
+    failed_ = true;
+    throw;
+  }
 }
 
 void McapRecording::Close() {

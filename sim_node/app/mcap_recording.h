@@ -35,8 +35,10 @@ class McapRecording {
  public:
   static constexpr double kFlushPeriod = 0.5;  // wall time between flushes [s]
 
-  // creates `path`; throws std::runtime_error naming it
-  explicit McapRecording(const std::string& path);
+  // creates `path` and locks it while it is written (io::McapWriter::Options::exclusive): an
+  // existing file is refused unless `overwrite`, a file another writer holds always; throws
+  // std::runtime_error naming it
+  explicit McapRecording(const std::string& path, bool overwrite = false);
   ~McapRecording();  // Close(), errors ignored
 
   // a channel for a DDS topic ("rt/...") of a DDS type ("nav_msgs::msg::dds_::Odometry_");
@@ -57,6 +59,8 @@ class McapRecording {
   std::uint64_t message_count() const { return writer_.message_count(); }
   std::size_t topic_count() const { return sequences_.size(); }
   std::uint64_t bytes() const { return bytes_; }
+  // a write or flush threw (io::OutputError): the file holds what reached it before
+  bool failed() const { return failed_; }
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -67,6 +71,7 @@ class McapRecording {
   std::uint64_t bytes_ = 0;                           // payload bytes written
   Clock::time_point last_flush_;
   bool closed_ = false;
+  bool failed_ = false;
 };
 
 }  // namespace towsim::app

@@ -1,7 +1,11 @@
 // towsim_record: records the topics of a towsim node from DDS into MCAP (issue 6).
 //
 //   towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]
-//                 [--duration S] [--quiet]
+//                 [--duration S] [--overwrite] [--quiet]
+//
+// The file is created exclusively: one that exists is refused (exit 2) unless --overwrite,
+// and it is locked while written, so a second writer (towsim_record or sim_node --record) on
+// the same file is refused too.
 //
 // It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
 // first), then subscribes to every towsim topic of the namespace (DESIGN §3: per body odom,
@@ -56,8 +60,9 @@ namespace dds = towsim::dds;
 
 const char* kUsage =
     "usage: towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]\n"
-    "                     [--duration S] [--quiet]\n"
-    "  --output FILE.mcap  the recording (created or replaced)\n"
+    "                     [--duration S] [--overwrite] [--quiet]\n"
+    "  --output FILE.mcap  the recording (created; refused if it exists)\n"
+    "  --overwrite         replace FILE.mcap if it exists (never while another writer holds it)\n"
     "  --domain N          DDS domain id (default 0)\n"
     "  --namespace NS      ROS 2 namespace of the node's topics (default /towsim)\n"
     "  --topics T ...      only these topics (ROS names: /towsim/towfish/odom /clock ...);\n"
@@ -73,6 +78,7 @@ struct Options {
   std::vector<std::string> topics;
   double duration = INFINITY;
   bool quiet = false;
+  bool overwrite = false;
 };
 
 int Bad(const std::string& message) {
@@ -103,6 +109,8 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
+    } else if (arg == "--overwrite") {
+      o->overwrite = true;
     } else if (arg == "--output") {
       if (!next(&o->output)) return "--output needs a value";
     } else if (arg == "--namespace") {
@@ -295,7 +303,7 @@ void Recorder::Progress(bool final) {
 
 int Recorder::Run() {
   try {
-    recording_ = std::make_unique<McapRecording>(opt_.output);
+    recording_ = std::make_unique<McapRecording>(opt_.output, opt_.overwrite);
   } catch (const std::exception& e) {
     return Bad("--output " + opt_.output + ": " + e.what());
   }

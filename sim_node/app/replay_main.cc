@@ -1,7 +1,7 @@
 // towsim_replay: republishes an MCAP recording on DDS with its recorded timing (issue 6).
 //
 //   towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]
-//                 [--delay S] [--domain N] [--namespace NS] [--quiet]
+//                 [--delay S] [--domain N] [--namespace NS] [--recover] [--quiet]
 //
 // Every message of the chosen channels is written raw (the recorded CDR bytes, dds/raw_cdr;
 // Cyclone validates them against the type) on a writer of the channel's type (the schema name,
@@ -22,7 +22,9 @@
 // stdout. SIGINT / SIGTERM stop it at once (exit 0). Exit 2: bad options, an unknown topic in
 // --topics (the message lists the recorded topics), a file that is not a complete, valid
 // MCAP file (the reader's message, naming the byte offset), a channel of a type outside the
-// contract, a DDS setup failure.
+// contract, a DDS setup failure. --recover reads a damaged or cut-off file as towsim_export
+// --recover does (every intact chunk; the skipped byte ranges on stderr) and exits 4 after
+// the replay if anything was skipped.
 
 #include <time.h>
 
@@ -53,16 +55,17 @@ namespace {
 constexpr int kExitOk = 0;
 constexpr int kExitError = 1;
 constexpr int kExitBadInput = 2;
-constexpr double kMaxSleepSlice = 0.05;   // wake at least this often for signals [s]
-constexpr double kProgressPeriod = 0.25;  // progress line redraw [s]
-constexpr double kAckTimeout = 1.0;       // at the end, for subscribers to acknowledge [s]
+constexpr int kExitRecoveredWithLosses = 4;  // --recover skipped damaged byte ranges
+constexpr double kMaxSleepSlice = 0.05;      // wake at least this often for signals [s]
+constexpr double kProgressPeriod = 0.25;     // progress line redraw [s]
+constexpr double kAckTimeout = 1.0;          // at the end, for subscribers to acknowledge [s]
 
 namespace dds = towsim::dds;
 namespace io = towsim::io;
 
 const char* kUsage =
     "usage: towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]\n"
-    "                     [--delay S] [--domain N] [--namespace NS] [--quiet]\n"
+    "                     [--delay S] [--domain N] [--namespace NS] [--recover] [--quiet]\n"
     "  --rate X        playback speed factor (default 1; 0: as fast as possible)\n"
     "  --fast          the same as --rate 0\n"
     "  --topics T ...  only these recorded topics (ROS names, /towsim/towfish/odom ...)\n"
@@ -71,6 +74,8 @@ const char* kUsage =
     "  --delay S       wait S seconds after creating the writers (discovery; default 1)\n"
     "  --domain N      DDS domain id (default 0)\n"
     "  --namespace NS  republish the recorded namespace under NS (/clock stays)\n"
+    "  --recover       replay every intact chunk of a damaged or cut-off file (exit 4 if\n"
+    "                  anything was skipped; the byte ranges on stderr)\n"
     "  --quiet         no progress line\n";
 
 struct Options {
@@ -83,6 +88,7 @@ struct Options {
   uint32_t domain = 0;
   std::string ns;  // empty: as recorded
   bool quiet = false;
+  bool recover = false;
 };
 
 int Bad(const std::string& message) {
@@ -121,6 +127,8 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       o->quiet = true;
     } else if (arg == "--loop") {
       o->loop = true;
+    } else if (arg == "--recover") {
+      o->recover = true;
     } else if (arg == "--fast") {
       o->rate = 0.0;
     } else if (arg == "--rate") {
@@ -216,9 +224,14 @@ void SleepUntil(double wall_target) {
 }
 
 int Replay(const Options& opt) {
-  io::McapReader reader = [&] {
-    return io::McapReader::Open(opt.file);  // throws McapError naming the offset
-  }();
+  // throws McapError naming the offset
+  io::McapReader reader =
+      opt.recover ? io::McapReader::Recover(opt.file) : io::McapReader::Open(opt.file);
+  for (const io::McapSkipped& skipped : reader.skipped()) {
+    std::fprintf(stderr, "towsim_replay: %s: skipped %s\n", opt.file.c_str(),
+                 io::DescribeSkipped(skipped).c_str());
+  }
+  const int done = reader.skipped().empty() ? kExitOk : kExitRecoveredWithLosses;
 
   // channels -> outputs
   std::set<std::string> available;
@@ -296,7 +309,7 @@ int Replay(const Options& opt) {
   });
   if (messages.empty()) {
     std::printf("towsim_replay: no messages to replay in %s\n", opt.file.c_str());
-    return kExitOk;
+    return done;
   }
   const uint64_t first_time = messages.front().log_time;
   const uint64_t skip_before = first_time + static_cast<uint64_t>(std::llround(opt.start * 1e9));
@@ -377,7 +390,7 @@ int Replay(const Options& opt) {
               static_cast<unsigned long long>(sent), outputs.size(),
               static_cast<double>(dds_time()) * 1e-9 - replay_start, opt.file.c_str());
   std::fflush(stdout);
-  return kExitOk;
+  return done;
 }
 
 }  // namespace

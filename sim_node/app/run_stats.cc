@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <regex>
 
 namespace towsim::app {
 
@@ -38,6 +39,33 @@ std::string SummaryLine(const std::string& scene_name, const RunStats& stats) {
     text += line;
   }
   return text;
+}
+
+std::optional<RunSummary> ParseSummaryLine(const std::string& text) {
+  // the fixed part after "sim_node: <scene>: " (the scene name may hold anything)
+  static const std::regex kLine(
+      "([0-9]+) steps, ([^ ]+) s simulated in ([^ ]+) s \\(RTF ([^)]+)\\), Newton iterations "
+      "mean ([^ ]+) max ([0-9]+), substeps ([0-9]+)(, coupling iterations mean ([^ ,\\n]+))?");
+  std::optional<RunSummary> found;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), kLine);
+       it != std::sregex_iterator(); ++it) {
+    const std::smatch& m = *it;
+    RunSummary s;
+    try {
+      s.steps = std::stol(m[1]);
+      s.sim_time = std::stod(m[2]);
+      s.wall_time = std::stod(m[3]);
+      s.real_time_factor = std::stod(m[4]);
+      s.iterations_mean = std::stod(m[5]);
+      s.iterations_max = std::stoi(m[6]);
+      s.substepped_steps = std::stol(m[7]);
+      if (m[9].matched) s.coupling_mean = std::stod(m[9]);
+    } catch (const std::exception&) {
+      continue;  // not numbers: not a summary line
+    }
+    found = s;
+  }
+  return found;
 }
 
 }  // namespace towsim::app

@@ -9,6 +9,7 @@
 // coupling iterations (vehicle-cable joint-force iterations per step,
 // Simulation::coupling_iterations) are shown when the scene has vehicles.
 
+#include <optional>
 #include <string>
 
 #include "core/simulation.h"
@@ -34,5 +35,20 @@ struct RunStats {
 
 // the summary line, without the trailing newline
 std::string SummaryLine(const std::string& scene_name, const RunStats& stats);
+
+// The numbers of a summary line, read back (towsim_sweep reads each case's stdout)
+struct RunSummary {
+  long steps = 0;
+  double sim_time = 0.0;   // [s]
+  double wall_time = 0.0;  // [s], 3 decimals as printed
+  double real_time_factor = 0.0;
+  double iterations_mean = 0.0;  // Newton iterations per step
+  int iterations_max = 0;
+  long substepped_steps = 0;
+  std::optional<double> coupling_mean;  // scenes with vehicles
+};
+
+// the summary line in `text` (the last one if several); nullopt if there is none
+std::optional<RunSummary> ParseSummaryLine(const std::string& text);
 
 }  // namespace towsim::app

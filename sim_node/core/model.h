@@ -16,6 +16,11 @@ namespace towsim::core {
 
 using Vec3 = Eigen::Vector3d;
 
+// the most steps a run may have (time.duration / time.step, --duration / time.step): a
+// step count must fit a long and a simulated time must advance (t + h > t); 1e12 steps are
+// 30 years of a 1 us step
+inline constexpr double kMaxSteps = 1e12;
+
 struct TimeSettings {
   double step = 0.01;         // fixed step h [s]
   double duration = 10.0;     // default run length [s]

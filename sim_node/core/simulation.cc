@@ -24,14 +24,19 @@ struct Simulation::Impl {
   int coupling_iterations = 0;
 };
 
-Simulation::Simulation(const Model& model) : impl_(std::make_unique<Impl>(model)) {
+Simulation::Simulation(const Model& model, const std::function<bool()>& stop_requested)
+    : impl_(std::make_unique<Impl>(model)) {
   System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
-    const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s);
+    const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s, stop_requested);
+    if (r.stopped) {
+      throw StopRequestedError("stopped during the static solve after " +
+                               std::to_string(r.iterations) + " iterations");
+    }
     if (!r.ok) throw SolverError(r.message);
   }
   if (!impl_->integrator.InitializeAcceleration(&s))

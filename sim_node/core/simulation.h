@@ -7,6 +7,7 @@
 //     if (!s.ok()) { ... s.message ... }
 //   }
 
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,13 @@ namespace towsim::core {
 
 // Thrown when the initial state cannot be built (e.g. the static solve fails).
 class SolverError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Thrown when the caller's stop request ended the building of the initial state (the static
+// solve asks it before every iteration).
+class StopRequestedError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
@@ -38,7 +46,8 @@ struct State;  // core/state.h
 
 class Simulation {
  public:
-  explicit Simulation(const Model& model);  // throws SolverError
+  // throws SolverError, or StopRequestedError once `stop_requested` (if set) returns true
+  explicit Simulation(const Model& model, const std::function<bool()>& stop_requested = {});
   ~Simulation();
   Simulation(Simulation&&) noexcept;
   Simulation& operator=(Simulation&&) noexcept;

@@ -32,7 +32,8 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, cons
 
 }  // namespace
 
-StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s) {
+StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
+                         const std::function<bool()>& stop) {
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
   const double tol = sys.model().integrator.tolerance;
@@ -50,6 +51,10 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   double delta = 1.0e-2;  // pseudo time step squared [s^2]
   double prev_norm = -1.0;
   for (int it = 1; it <= kMaxIterations; ++it) {
+    if (stop && stop()) {
+      res.stopped = true;
+      return res;
+    }
     res.iterations = it;
     // J = K + M_eff / delta (c_a = 1/delta, a = 0 in R); plain Newton once delta is huge
     const JacobianCoefficients cf{1.0, 0.0, delta > 1e12 ? 0.0 : 1.0 / delta};

@@ -11,6 +11,7 @@ CommandArbiter::CommandArbiter(std::vector<Vehicle> vehicles, double command_tim
 CheckedCommand CommandArbiter::Receive(int v, const ActuatorCommandMsg& msg, double t) {
   CheckedCommand checked = FromActuatorCommand(msg, vehicles_[v].limits);
   ++received_;
+  state_[v].heard = true;
   if (checked.verdict == CheckedCommand::kRejected) {
     ++rejected_;
     last_event_ = vehicles_[v].name + ": command rejected (" + checked.reason + ")";
@@ -73,15 +74,18 @@ std::vector<int> CommandArbiter::Missing(uint64_t step) const {
   return missing;
 }
 
-int CommandArbiter::TimeOut(uint64_t step) {
+int CommandArbiter::TimeOut(uint64_t step, bool unheard_too) {
   int n = 0;
   for (int v : Missing(step)) {
     State& s = state_[v];
-    if (!s.has_command) continue;  // never commanded: the controller may still be starting
+    // never heard from: the controller may still be starting (until unheard_too)
+    if (!s.heard && !unheard_too) continue;
     s.waited_for = false;
     ++lockstep_timeouts_;
     ++n;
-    EnterFailsafe(v, "lockstep: no command for step " + std::to_string(step) + " in time");
+    EnterFailsafe(v, std::string(s.has_command || !s.heard ? "lockstep: no command"
+                                                           : "lockstep: no valid command") +
+                         " for step " + std::to_string(step) + " in time");
   }
   return n;
 }

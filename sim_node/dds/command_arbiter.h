@@ -50,10 +50,11 @@ class CommandArbiter {
   bool ReadyFor(uint64_t step) const;
   // the vehicles ReadyFor is waiting for (names), for messages
   std::vector<int> Missing(uint64_t step) const;
-  // lockstep: the wait for `step` timed out: every missing vehicle that has been commanded
-  // before enters failsafe and is no longer waited for (a vehicle never commanded is still
-  // waited for: the controller may not have started yet). Returns how many timed out.
-  int TimeOut(uint64_t step);
+  // lockstep: the wait for `step` timed out: every missing vehicle that has sent a command
+  // before, valid or rejected, enters failsafe and is no longer waited for; with
+  // `unheard_too`, a vehicle never heard from too (else it is still waited for: its
+  // controller may not have started yet). Returns how many timed out.
+  int TimeOut(uint64_t step, bool unheard_too = false);
 
   // The command vehicle v must be given before the next step, if any: the failsafe command
   // on every step of a failsafe (so that no script overrides it), a newly received command
@@ -81,6 +82,7 @@ class CommandArbiter {
  private:
   struct State {
     bool has_command = false;  // a valid command came since the start (or reset)
+    bool heard = false;        // any command came, valid or rejected
     core::VehicleCommand held;
     uint64_t held_step = 0;  // the step the held command answers
     double last_time = 0.0;  // simulation time it came [s]

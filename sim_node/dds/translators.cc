@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 #include "core/actuator.h"
@@ -237,6 +238,11 @@ CheckedCommand FromActuatorCommand(const ActuatorCommandMsg& msg, const CommandL
   return out;
 }
 
+std::string CheckRate(double rate) {
+  if (std::isfinite(rate) && rate >= kMinRate && rate <= kMaxRate) return {};
+  return "the rate must be a number >= 1e-3 and <= 1e6 (--mode fast runs unpaced)";
+}
+
 ControlRequest FromSimControl(const SimControlMsg& msg) {
   ControlRequest r;
   switch (msg.command) {
@@ -258,8 +264,10 @@ ControlRequest FromSimControl(const SimControlMsg& msg) {
       r.kind = ControlRequest::kReset;
       break;
     case towsim_msgs_msg_dds__SimControl_Constants_SET_RATE:
-      if (!std::isfinite(msg.rate) || msg.rate <= 0.0) {
-        r.error = "SET_RATE needs a finite rate > 0, got " + std::to_string(msg.rate);
+      if (const std::string e = CheckRate(msg.rate); !e.empty()) {
+        char text[48];
+        std::snprintf(text, sizeof text, "%g", msg.rate);
+        r.error = std::string("SET_RATE ") + text + ": " + e;
         break;
       }
       r.kind = ControlRequest::kSetRate;

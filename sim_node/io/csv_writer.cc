@@ -7,6 +7,7 @@
 #include <system_error>
 
 #include "core/model.h"
+#include "io/output_error.h"
 
 namespace towsim::io {
 namespace {
@@ -67,7 +68,7 @@ void CsvWriter::Open(File& file, const char* name, const char* header) {
 
 void CsvWriter::Check(const File& file) const {
   if (std::fflush(file.f) != 0 || std::ferror(file.f)) {
-    throw std::runtime_error("writing '" + file.path + "' failed: " + std::strerror(errno));
+    throw OutputError("writing '" + file.path + "' failed: " + std::strerror(errno));
   }
 }
 
@@ -122,7 +123,7 @@ void CsvWriter::Close() {
     }
     file->f = nullptr;
   }
-  if (!error.empty()) throw std::runtime_error(error);
+  if (!error.empty()) throw OutputError(error);
 }
 
 }  // namespace towsim::io

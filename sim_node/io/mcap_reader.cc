@@ -229,7 +229,7 @@ void McapReader::ReadSummary() {
                     size);
   }
   if (std::memcmp(b.data() + size - mcap::kMagicSize, mcap::kMagic, mcap::kMagicSize) != 0) {
-    throw McapError("bad trailing magic: the file is truncated or not closed (try recovery)",
+    throw McapError("bad trailing magic: the file is truncated or not closed (try --recover)",
                     size - mcap::kMagicSize);
   }
   const std::uint64_t footer_start = size - mcap::kMagicSize - footer_record;
@@ -384,19 +384,124 @@ void McapReader::ReadSummary() {
   }
 }
 
+namespace {
+
+// the entries of a message index record: (log_time, offset) pairs of 16 bytes after the
+// channel id (2) and the array's byte length (4)
+std::uint64_t MessageIndexEntries(const std::string& b, const RecordView& r) {
+  Decoder d(b, r.content, r.end(), "message index record");
+  d.U16();
+  const std::uint32_t n = d.U32();
+  if (n % 16 != 0 || n != d.remaining()) {
+    throw McapError("message index of " + std::to_string(n) + " bytes is malformed", r.start);
+  }
+  return n / 16;
+}
+
+// a record whose header fits and whose content checks out at `p`: a chunk with a CRC that
+// holds, a data end, or a schema / channel / metadata / message index record that parses and
+// is followed by a record header that fits (or the end). Where recovery resumes after damage.
+bool RecordStartsAt(const std::string& b, std::uint64_t p, std::uint64_t size) {
+  if (p + 9 > size) return false;
+  try {
+    const RecordView r = RecordAt(b, p, size);
+    auto followed = [&] {
+      if (r.end() == size) return true;
+      const unsigned next = static_cast<unsigned>(RecordAt(b, r.end(), size).op);
+      return next >= static_cast<unsigned>(Op::kHeader) &&
+             next <= static_cast<unsigned>(Op::kDataEnd);
+    };
+    switch (r.op) {
+      case Op::kChunk: {
+        const ChunkView c = ParseChunk(b, r);
+        if (c.crc == 0) return false;  // nothing proves it is one
+        for (std::uint64_t q = c.records_begin; q < c.records_end;)
+          q = RecordAt(b, q, c.records_end).end();
+        return true;
+      }
+      case Op::kDataEnd:
+        return r.length == 4;
+      case Op::kSchema:
+        ParseSchema(b, r);
+        return followed();
+      case Op::kChannel:
+        ParseChannel(b, r);
+        return followed();
+      case Op::kMetadata:
+        ParseMetadata(b, r);
+        return followed();
+      case Op::kMessageIndex:
+        MessageIndexEntries(b, r);
+        return followed();
+      default:
+        return false;
+    }
+  } catch (const McapError&) {
+    return false;
+  }
+}
+
+// the first offset at or after `from` where a record starts (RecordStartsAt), else `size`
+std::uint64_t Resynchronize(const std::string& b, std::uint64_t from, std::uint64_t size) {
+  for (std::uint64_t p = from; p < size; ++p) {
+    if (RecordStartsAt(b, p, size)) return p;
+  }
+  return size;
+}
+
+}  // namespace
+
+std::string DescribeSkipped(const McapSkipped& s) {
+  std::string text = "bytes " + std::to_string(s.begin) + "-" + std::to_string(s.end) + " (" +
+                     std::to_string(s.end - s.begin) + " bytes, ";
+  text += s.messages_known ? std::to_string(s.messages) + " messages by its message indexes"
+                           : std::string("message count unknown");
+  return text + "): " + s.reason;
+}
+
 void McapReader::ScanLinear() {
   const std::string& b = bytes_;
   CheckLeadingMagic(b);
   const std::uint64_t size = b.size();
-  const RecordView header = RecordAt(b, mcap::kMagicSize, size);
-  if (header.op != Op::kHeader) {
-    throw McapError("first record is not the header", header.start);
-  }
-  Decoder hd(b, header.content, header.end(), "header record");
-  profile_ = hd.Str();
-  library_ = hd.Str();
-
   statistics_ = McapStatistics{};
+  skipped_.clear();
+  recovered_ = true;
+  recovery_note_ = "no data end record: the file ends after the last complete record";
+
+  // a damaged record at `pos`: skip it, to its own end if that is where a record starts, else
+  // to the next place one does; the message indexes after a skipped chunk count its messages
+  bool counting_skipped = false;  // message indexes now belong to the last skipped range
+  auto skip = [&](std::uint64_t pos, const std::string& reason) {
+    std::uint64_t next = size;
+    try {
+      const RecordView r = RecordAt(b, pos, size);
+      next = RecordStartsAt(b, r.end(), size) ? r.end() : Resynchronize(b, pos + 1, size);
+    } catch (const McapError&) {
+      next = Resynchronize(b, pos + 1, size);
+    }
+    skipped_.push_back({pos, next, reason, 0, false});
+    counting_skipped = true;
+    return next;
+  };
+
+  std::uint64_t pos = mcap::kMagicSize;
+  try {
+    const RecordView header = RecordAt(b, pos, size);
+    if (header.op != Op::kHeader) throw McapError("first record is not the header", header.start);
+    Decoder hd(b, header.content, header.end(), "header record");
+    profile_ = hd.Str();
+    library_ = hd.Str();
+    // a damaged length would step into the next record: it must hold exactly the two strings
+    if (hd.remaining() != 0) {
+      throw McapError("header record of " + std::to_string(header.length) + " bytes holds " +
+                          std::to_string(hd.remaining()) + " bytes after its profile and library",
+                      header.start);
+    }
+    pos = header.end();
+  } catch (const McapError& e) {
+    pos = skip(pos, e.what());
+  }
+
   bool any_message = false;
   auto count = [&](const McapMessage& m) {
     McapStatistics& s = statistics_;
@@ -408,9 +513,7 @@ void McapReader::ScanLinear() {
     ++s.channel_message_counts[m.channel_id];
   };
 
-  recovered_ = true;
-  recovery_note_ = "no data end record: the file ends after the last complete record";
-  std::uint64_t pos = header.end();
+  recovered_bytes_ = pos;
   while (pos < size) {
     try {
       const RecordView r = RecordAt(b, pos, size);
@@ -433,6 +536,7 @@ void McapReader::ScanLinear() {
           McapMessage m = ParseMessage(b, r);
           count(m);
           loose_messages_.push_back(std::move(m));
+          counting_skipped = false;
           break;
         }
         case Op::kChunk: {
@@ -459,27 +563,41 @@ void McapReader::ScanLinear() {
           index.compressed_size = index.uncompressed_size = c.uncompressed_size;
           chunk_indexes_.push_back(index);
           for (const McapMessage& m : messages) count(m);
+          counting_skipped = false;
           break;
         }
+        case Op::kMessageIndex:
+          if (counting_skipped) {
+            skipped_.back().messages += MessageIndexEntries(b, r);
+            skipped_.back().messages_known = true;
+          }
+          break;
         case Op::kDataEnd:
-          recovered_ = false;
-          recovery_note_.clear();
+          if (skipped_.empty()) {
+            recovered_ = false;
+            recovery_note_.clear();
+          }
           stop = true;
           break;
         case Op::kFooter:
           stop = true;
           break;
         default:
-          break;  // message indexes, attachments, unknown records
+          break;  // attachments, unknown records
       }
       pos = r.end();
+      recovered_bytes_ = pos;
       if (stop) break;
     } catch (const McapError& e) {
-      recovery_note_ = std::string("stopped at the first damaged record: ") + e.what();
-      break;
+      pos = skip(pos, e.what());
     }
   }
-  recovered_bytes_ = pos;
+  if (!skipped_.empty()) {
+    recovered_ = true;
+    recovery_note_ = std::to_string(skipped_.size()) + " damaged or cut-off byte range" +
+                     (skipped_.size() > 1 ? "s" : "") +
+                     " skipped; the first: " + DescribeSkipped(skipped_.front());
+  }
   statistics_.schema_count = static_cast<std::uint16_t>(schemas_.size());
   statistics_.channel_count = static_cast<std::uint32_t>(channels_.size());
   statistics_.metadata_count = static_cast<std::uint32_t>(metadata_.size());

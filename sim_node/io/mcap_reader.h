@@ -6,9 +6,14 @@
 // section CRC (DataEnd; accepted when computed from byte 0 or from byte 8, the two conventions
 // in use), reads schemas, channels, statistics, chunk and metadata indexes from the summary.
 // Chunk CRCs are checked when a chunk is read (ReadMessages / ForEachMessage).
-// Recover(): the killed-recording path. Scans records linearly from the header and keeps every
-// schema, channel, metadata and complete chunk whose CRC holds, stopping at the first record
-// that is cut off or malformed; statistics and chunk indexes are rebuilt from what was read.
+// Recover(): the killed-recording and damaged-file path. Scans records linearly from the
+// header and keeps every schema, channel, metadata and complete chunk whose CRC holds. A
+// record that is cut off or malformed is skipped: the scan resumes at its end if a record
+// starts there, else at the next offset where one does (a chunk whose CRC holds, a data end,
+// or a schema / channel / metadata / message index record that parses and is followed by a
+// record header), so every intact chunk after the damage is kept. skipped() lists the byte
+// ranges not read, with the message count of a skipped chunk from the message indexes that
+// follow it. Statistics and chunk indexes are rebuilt from what was read.
 //
 // Errors throw mcap::McapError, whose message names the byte offset ("chunk CRC mismatch:
 // stored 0x..., computed 0x... (at byte offset 1234)"). The whole file is held in memory.
@@ -67,6 +72,17 @@ struct McapMetadata {
   mcap::StringMap metadata;
 };
 
+// a byte range Recover() could not read
+struct McapSkipped {
+  std::uint64_t begin = 0, end = 0;  // [begin, end) [bytes]
+  std::string reason;                // the damage found at `begin` (McapError's message)
+  std::uint64_t messages = 0;        // messages in it, if messages_known
+  bool messages_known = false;       // message indexes after a skipped chunk counted them
+};
+
+// "bytes 9505-41377 (31872 bytes, 120 messages by its message indexes): chunk CRC mismatch..."
+std::string DescribeSkipped(const McapSkipped& skipped);
+
 struct McapMessage {
   std::uint16_t channel_id = 0;
   std::uint32_t sequence = 0;
@@ -80,7 +96,7 @@ class McapReader {
   // reads and validates a complete file; throws mcap::McapError (or std::runtime_error if the
   // file cannot be opened)
   static McapReader Open(const std::string& path);
-  // reads what a killed writer left: every complete, CRC-valid chunk before the first damage
+  // reads what a killed writer or damage left: every complete, CRC-valid chunk (see above)
   static McapReader Recover(const std::string& path);
   // the same from bytes in memory (tests)
   static McapReader OpenBytes(std::string bytes);
@@ -94,10 +110,13 @@ class McapReader {
   bool has_statistics() const { return has_statistics_; }
   const std::vector<McapChunkIndex>& chunk_indexes() const { return chunk_indexes_; }
   const std::vector<McapMetadata>& metadata() const { return metadata_; }
-  // Recover(): true if the file lacked a valid footer; where the scan stopped and why
+  // Recover(): true if the file lacked a data end record or had damage; the end of the last
+  // record read intact, and a note on what was missing
   bool recovered() const { return recovered_; }
   std::uint64_t recovered_bytes() const { return recovered_bytes_; }
   const std::string& recovery_note() const { return recovery_note_; }
+  // Recover(): the byte ranges skipped (damaged records, a cut-off end); empty: nothing lost
+  const std::vector<McapSkipped>& skipped() const { return skipped_; }
 
   // calls `fn` for every message in log-time order (ties in file order); checks chunk CRCs
   void ForEachMessage(const std::function<void(const McapMessage&)>& fn) const;
@@ -123,6 +142,7 @@ class McapReader {
   bool recovered_ = false;
   std::uint64_t recovered_bytes_ = 0;
   std::string recovery_note_;
+  std::vector<McapSkipped> skipped_;
 };
 
 }  // namespace towsim::io

@@ -1,11 +1,15 @@
 #include "io/mcap_writer.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
+
+#include "io/output_error.h"
 
 namespace towsim::io {
 
@@ -22,9 +26,26 @@ McapWriter::~McapWriter() {
 
 void McapWriter::Open(const std::string& path, const std::string& profile) {
   if (opened_) throw std::runtime_error("McapWriter: a writer writes one file, already " + path_);
-  file_ = std::fopen(path.c_str(), "wb");
-  if (file_ == nullptr) {
+  // create (exclusive: only if it does not exist), lock, and only then truncate: a file
+  // another writer holds is neither truncated nor written
+  const int flags = O_WRONLY | O_CREAT | O_CLOEXEC | (options_.exclusive ? O_EXCL : 0);
+  const int fd = ::open(path.c_str(), flags, 0644);
+  if (fd < 0) {
+    if (errno == EEXIST) throw std::runtime_error(path + " exists: a recording is not replaced");
     throw std::runtime_error("McapWriter: cannot open " + path + ": " + std::strerror(errno));
+  }
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    const int error = errno;
+    ::close(fd);
+    if (error == EWOULDBLOCK) {
+      throw std::runtime_error(path + " is being written by another process (it holds the lock)");
+    }
+    throw std::runtime_error("McapWriter: cannot lock " + path + ": " + std::strerror(error));
+  }
+  if (::ftruncate(fd, 0) != 0 || (file_ = ::fdopen(fd, "wb")) == nullptr) {
+    const int error = errno;
+    ::close(fd);
+    throw std::runtime_error("McapWriter: cannot open " + path + ": " + std::strerror(error));
   }
   path_ = path;
   opened_ = true;
@@ -214,15 +235,15 @@ void McapWriter::Close() {
   std::FILE* f = file_;
   file_ = nullptr;
   if (std::fclose(f) != 0) {
-    throw std::runtime_error("McapWriter: closing " + path_ + " failed: " + std::strerror(errno));
+    throw OutputError("McapWriter: closing " + path_ + " failed: " + std::strerror(errno));
   }
 }
 
 void McapWriter::WriteBytes(const void* data, std::size_t size) {
   if (size == 0) return;
   if (std::fwrite(data, 1, size, file_) != size) {
-    throw std::runtime_error("McapWriter: writing " + path_ + " failed at byte " +
-                             std::to_string(pos_) + ": " + std::strerror(errno));
+    throw OutputError("McapWriter: writing " + path_ + " failed at byte " + std::to_string(pos_) +
+                      ": " + std::strerror(errno));
   }
   pos_ += size;
   (in_data_section_ ? data_crc_ : summary_crc_).Update(data, size);
@@ -290,7 +311,7 @@ void McapWriter::CloseChunk() {
 
 void McapWriter::FlushFile() {
   if (std::fflush(file_) != 0) {
-    throw std::runtime_error("McapWriter: flushing " + path_ + " failed: " + std::strerror(errno));
+    throw OutputError("McapWriter: flushing " + path_ + " failed: " + std::strerror(errno));
   }
   if (options_.fsync) ::fsync(fileno(file_));
 }

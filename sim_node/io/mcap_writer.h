@@ -45,6 +45,9 @@ class McapWriter {
     std::uint64_t chunk_size = 1u << 20;              // close a chunk above this [bytes]
     std::uint64_t chunk_duration_ns = 1'000'000'000;  // close a chunk spanning this [ns]
     bool fsync = false;                               // fsync after each chunk
+    // refuse a file that exists (else it is truncated); either way the file is locked
+    // (flock, exclusive) from Open() to Close(), and a file another writer holds is refused
+    bool exclusive = false;
     std::string library = "towsim";
   };
 
@@ -54,9 +57,9 @@ class McapWriter {
   McapWriter(const McapWriter&) = delete;
   McapWriter& operator=(const McapWriter&) = delete;
 
-  // creates / truncates `path` and writes the magic and Header. One file per writer: throws
-  // std::runtime_error if the writer was opened before, or naming the path if it cannot be
-  // opened.
+  // creates / truncates `path` (Options::exclusive: creates it only), locks it and writes the
+  // magic and Header. One file per writer: throws std::runtime_error if the writer was opened
+  // before, or naming the path if it cannot be opened, exists (exclusive) or is locked.
   void Open(const std::string& path, const std::string& profile = "ros2");
 
   // registers a schema (e.g. name "towsim_msgs/msg/BodyState", encoding "ros2msg", data the

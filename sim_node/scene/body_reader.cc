@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <new>
 #include <optional>
 
 #include "scene/config_error.h"
@@ -122,10 +123,9 @@ Field LoadModelFile(const Field& model, const std::string& body_path, const std:
   source->name = path.filename().string();
   YAML::Node root;
   try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(model.path(), model.text(), source->name + line, "not valid YAML: " + e.msg);
+    root = LoadOneDocument(text, source->name, model.path(), model.text());
+  } catch (const std::bad_alloc&) {
+    model.Fail("out of memory while reading the model file " + path.string());
   }
   // a model file is a map of body parameters
   if (!root.IsMap()) {

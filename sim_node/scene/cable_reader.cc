@@ -200,9 +200,17 @@ core::CableParams ReadCable(const Field& field, const core::Model& model) {
   // material and discretization
   c.length = cable.Number("length", Range::Above(0.0));
   c.elements = cable.Integer("elements", Range::Closed(1, 10000));
-  c.diameter = cable.Number("diameter", Range::Above(0.0));
-  c.density = cable.Number("density", Range::Above(0.0));
-  c.youngs_modulus = cable.Number("youngs_modulus", Range::Above(0.0));
+  // positive, and no larger than any cable could be (README "cable": the limits and why)
+  auto physical = [&cable](const std::string& key, double max, const std::string& why) {
+    const Field f = cable.Require(key);
+    const double x = f.Number(Range::Above(0.0));
+    if (x > max) f.Fail("must be <= " + internal::FormatNumber(max) + " " + why);
+    return x;
+  };
+  c.diameter = physical("diameter", 10.0, "m (a cable, not a structure)");
+  c.density = physical("density", 1.0e5, "kg/m^3 (the densest material, osmium, is 2.26e4)");
+  c.youngs_modulus =
+      physical("youngs_modulus", 1.0e13, "Pa (the stiffest material, diamond, is 1.2e12)");
   c.axial_damping = cable.Number("axial_damping", Range::AtLeast(0.0), 0.0);
   c.added_mass_coefficient =
       cable.Number("added_mass_coefficient", Range::AtLeast(0.0), c.added_mass_coefficient);

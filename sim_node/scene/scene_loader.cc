@@ -1,9 +1,10 @@
 #include "scene/scene_loader.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <filesystem>
 #include <memory>
+#include <new>
+
+#include <yaml-cpp/yaml.h>
 
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
@@ -31,6 +32,12 @@ core::TimeSettings ReadTime(const Field& field) {
   // at least one step
   if (t.step > t.duration) {
     time.Get("step").Fail("must be <= time.duration (" + internal::FormatNumber(t.duration) + ")");
+  }
+  // a countable number of steps
+  if (!(t.duration / t.step <= core::kMaxSteps)) {
+    time.Get("step").Fail("must be >= time.duration / 1e12 (" +
+                          internal::FormatNumber(t.duration / core::kMaxSteps) +
+                          "): at most 1e12 steps");
   }
   return t;
 }
@@ -115,7 +122,12 @@ core::Model LoadScene(const std::string& path, const std::vector<std::string>& o
   // messages name the file by its basename; model paths are relative to its folder
   const std::filesystem::path file(path);
   const std::string base_dir = file.has_parent_path() ? file.parent_path().string() : ".";
-  return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+  try {
+    return LoadSceneFromString(text, file.filename().string(), base_dir, overrides);
+  } catch (const std::bad_alloc&) {
+    // a tree too large for the memory left: the file is named, not a bare std::bad_alloc
+    throw ConfigError("scene", path, path, "out of memory while reading the scene file");
+  }
 }
 
 core::Model LoadSceneFromString(const std::string& yaml, const std::string& name_for_messages,
@@ -124,22 +136,11 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
   auto source = std::make_shared<internal::Source>();
   source->name = name_for_messages;
 
-  // the text is YAML
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml);
-  } catch (const YAML::Exception& e) {
-    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
-    throw ConfigError(name_for_messages, "<not YAML>", name_for_messages + line,
-                      "not valid YAML: " + e.msg);
-  }
-  // a scene is a map of keys
-  if (!root.IsMap()) {
-    throw ConfigError(name_for_messages, root.IsNull() ? "<empty>" : internal::FormatNode(root),
-                      name_for_messages,
-                      "a scene must be a map of keys (name, time, environment, cable, bodies, "
-                      "integrator, script)");
-  }
+  // the text is YAML, a map of keys
+  YAML::Node root = internal::LoadYamlMap(
+      yaml, name_for_messages,
+      "a scene must be a map of keys (name, time, environment, cable, bodies, integrator, "
+      "script)");
 
   internal::ApplyOverrides(overrides, root, source.get());
   return BuildModel(Field(root, root.Mark(), "", source), base_dir);

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "scene/config_error.h"
 
@@ -89,15 +90,64 @@ bool ReadTextFile(const std::string& path, std::string* text, std::string* why) 
     *why = "it is a directory";
     return false;
   }
+  // a device (/dev/zero) never ends and a FIFO blocks until a writer comes: neither is read
+  if (!std::filesystem::is_regular_file(path, error)) {
+    *why = "not a regular file";
+    return false;
+  }
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (error) {
+    *why = "cannot read its size: " + error.message();
+    return false;
+  }
+  if (bytes > kMaxTextFileBytes) {
+    *why = std::to_string(bytes) + " bytes: larger than the limit of " +
+           std::to_string(kMaxTextFileBytes) + " bytes (16 MB)";
+    return false;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     *why = "cannot open it for reading";
     return false;
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  *text = buffer.str();
+  // at most the limit, even if the file grows while it is read
+  std::string buffer(kMaxTextFileBytes + 1, '\0');
+  in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  buffer.resize(static_cast<size_t>(in.gcount()));
+  if (buffer.size() > kMaxTextFileBytes) {
+    *why = "larger than the limit of " + std::to_string(kMaxTextFileBytes) + " bytes (16 MB)";
+    return false;
+  }
+  *text = std::move(buffer);
   return true;
+}
+
+YAML::Node LoadOneDocument(const std::string& text, const std::string& name_for_messages,
+                           const std::string& key, const std::string& value_if_invalid) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
+    throw ConfigError(key, value_if_invalid, name_for_messages + line, "not valid YAML: " + e.msg);
+  }
+  if (documents.size() > 1) {
+    const YAML::Mark second = documents[1].Mark();
+    const std::string line = second.is_null() ? "" : ":" + std::to_string(second.line + 1);
+    throw ConfigError(key, "<" + std::to_string(documents.size()) + " YAML documents>",
+                      name_for_messages + line,
+                      "a file must hold one YAML document (the second starts here)");
+  }
+  return documents.empty() ? YAML::Node() : documents[0];
+}
+
+YAML::Node LoadYamlMap(const std::string& yaml, const std::string& name,
+                       const std::string& not_a_map_rule) {
+  const YAML::Node root = LoadOneDocument(yaml, name, name, "<not YAML>");
+  if (!root.IsMap()) {
+    throw ConfigError(name, root.IsNull() ? "<empty>" : FormatNode(root), name, not_a_map_rule);
+  }
+  return root;
 }
 
 std::string JoinPath(const std::string& parent, const std::string& key) {

@@ -3,14 +3,15 @@
 // path, the value as written, where it was written (file:line, or --set) and the rule.
 // Private to the scene layer: the core and the app never see yaml-cpp.
 
-#include <yaml-cpp/yaml.h>
-
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <set>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <yaml-cpp/yaml.h>
 
 #include "core/model.h"
 #include "scene/scene_schema.h"
@@ -51,8 +52,26 @@ inline constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 // `text` without leading and trailing blanks (spaces, tabs)
 std::string Trim(const std::string& text);
 
-// Reads the file at `path` into `text`; false with the reason in `why` when it cannot.
+// The largest scene or model file read [bytes] (README "Scene format"): a YAML tree takes
+// hundreds of bytes per node, so a bigger file would cost gigabytes before any rule is checked.
+inline constexpr std::uintmax_t kMaxTextFileBytes = 16u << 20;
+
+// Reads the regular file at `path` (at most kMaxTextFileBytes) into `text`; false with the
+// reason in `why` when it cannot (missing, a directory, a device or FIFO, too large).
 bool ReadTextFile(const std::string& path, std::string* text, std::string* why);
+
+// Parses `text` as exactly one YAML document (an empty text reads as null). A syntax error
+// (value `value_if_invalid`) or a second document throws ConfigError(key, value,
+// name_for_messages:line, rule).
+YAML::Node LoadOneDocument(const std::string& text, const std::string& name_for_messages,
+                           const std::string& key, const std::string& value_if_invalid);
+
+// `yaml` parsed as one YAML document (LoadOneDocument) that must be a map of keys (a scene,
+// a sweep file).
+// Throws ConfigError: "<name> = <not YAML> (<name>:<line>): not valid YAML: ..." or, for a
+// document that is not a map, the value and `not_a_map_rule`.
+YAML::Node LoadYamlMap(const std::string& yaml, const std::string& name,
+                       const std::string& not_a_map_rule);
 
 // "a.b" from "a" and "b"; "b" when the parent is the root ("").
 std::string JoinPath(const std::string& parent, const std::string& key);

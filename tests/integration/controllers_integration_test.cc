@@ -17,7 +17,7 @@
 
 #include <gtest/gtest.h>
 
-#include "process.h"
+#include "testing/process.h"
 
 namespace towsim::testing {
 namespace {

@@ -22,9 +22,11 @@
 #include "core/script.h"
 #include "core/simulation.h"
 #include "dds/dds.h"
+#include "dds_observer.h"
 #include "nav_msgs.h"
-#include "process.h"
 #include "scene/scene_loader.h"
+#include "testing/csv_file.h"
+#include "testing/process.h"
 #include "towsim_msgs.h"
 
 namespace towsim::testing {
@@ -88,155 +90,6 @@ std::vector<OdomLine> ReadLog(const std::string& path) {
   }
   return lines;
 }
-
-struct Status {
-  std::string run_id, mode, message;
-  uint8_t state = 0, health = 0;
-  uint64_t step = 0;
-  double sim_time = 0.0, rate = 0.0;
-  std::vector<std::string> failsafe_bodies;
-  uint64_t failsafe_count = 0, received = 0, rejected = 0, clamped = 0, lockstep_timeouts = 0;
-  Clock::time_point when;
-};
-
-dds_qos_t* ReliableQos(int depth) {
-  dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
-  dds_qset_data_representation(q, 1, &xcdr1);
-  return q;
-}
-
-// this test as a DDS participant: the node's status, control requests and raw commands
-class Observer {
- public:
-  Observer(int domain, const std::string& ns = "/towsim")
-      : prefix_(ns == "/" ? "rt/" : "rt" + ns + "/") {
-    participant_ = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
-    EXPECT_GT(participant_, 0) << dds_strretcode(participant_);
-    dds_qos_t* qos = ReliableQos(1000);
-    const dds_entity_t status_topic =
-        dds_create_topic(participant_, &towsim_msgs_msg_dds__SimStatus__desc,
-                         (prefix_ + "status").c_str(), nullptr, nullptr);
-    status_reader_ = dds_create_reader(participant_, status_topic, qos, nullptr);
-    const dds_entity_t control_topic =
-        dds_create_topic(participant_, &towsim_msgs_msg_dds__SimControl__desc,
-                         (prefix_ + "sim_control").c_str(), nullptr, nullptr);
-    control_writer_ = dds_create_writer(participant_, control_topic, qos, nullptr);
-    dds_delete_qos(qos);
-  }
-  ~Observer() { dds_delete(participant_); }
-
-  // every status received so far, oldest first
-  const std::vector<Status>& statuses() {
-    Poll();
-    return statuses_;
-  }
-
-  // waits for a status that satisfies `pred` (among all received, oldest first)
-  bool WaitFor(const std::function<bool(const Status&)>& pred, Status* found,
-               double timeout = kEventTimeout) {
-    const Clock::time_point start = Clock::now();
-    size_t seen = 0;
-    for (;;) {
-      Poll();
-      for (; seen < statuses_.size(); ++seen) {
-        if (pred(statuses_[seen])) {
-          if (found != nullptr) *found = statuses_[seen];
-          return true;
-        }
-      }
-      if (Seconds(Clock::now() - start) > timeout) return false;
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  }
-
-  void Control(uint8_t command, uint32_t steps = 0, double rate = 0.0) {
-    ASSERT_TRUE(Matched(control_writer_)) << "the node's sim_control reader did not match";
-    towsim_msgs_msg_dds__SimControl_ m{};
-    m.header.frame_id = const_cast<char*>("");
-    m.command = command;
-    m.steps = steps;
-    m.rate = rate;
-    ASSERT_EQ(dds_write(control_writer_, &m), 0);
-  }
-
-  void Command(const std::string& body, uint64_t step, double thrust, double rudder,
-               double elevator) {
-    dds_entity_t& w = command_writers_[body];
-    if (w == 0) {
-      dds_qos_t* qos = ReliableQos(1);
-      const dds_entity_t t =
-          dds_create_topic(participant_, &towsim_msgs_msg_dds__ActuatorCommand__desc,
-                           (prefix_ + body + "/command").c_str(), nullptr, nullptr);
-      w = dds_create_writer(participant_, t, qos, nullptr);
-      dds_delete_qos(qos);
-    }
-    ASSERT_TRUE(Matched(w)) << "the node's command reader of " << body << " did not match";
-    towsim_msgs_msg_dds__ActuatorCommand_ m{};
-    m.header.frame_id = const_cast<char*>(body.c_str());
-    m.step = step;
-    m.thrust = thrust;
-    m.rudder = rudder;
-    m.elevator = elevator;
-    ASSERT_EQ(dds_write(w, &m), 0);
-  }
-
-  dds_entity_t participant() const { return participant_; }
-  const std::string& prefix() const { return prefix_; }
-
- private:
-  static bool Matched(dds_entity_t writer) {
-    const Clock::time_point start = Clock::now();
-    for (;;) {
-      dds_publication_matched_status_t m{};
-      dds_get_publication_matched_status(writer, &m);
-      if (m.current_count > 0) return true;
-      if (Seconds(Clock::now() - start) > kEventTimeout) return false;
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-  }
-
-  void Poll() {
-    void* samples[64] = {};
-    dds_sample_info_t infos[64];
-    for (;;) {
-      const dds_return_t n = dds_take(status_reader_, samples, infos, 64, 64);
-      if (n <= 0) return;
-      for (int i = 0; i < n; ++i) {
-        if (!infos[i].valid_data) continue;
-        const auto* m = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
-        Status s;
-        s.run_id = m->run_id;
-        s.mode = m->mode;
-        s.message = m->message;
-        s.state = m->state;
-        s.health = m->health;
-        s.step = m->step;
-        s.sim_time = m->sim_time;
-        s.rate = m->rate;
-        for (uint32_t k = 0; k < m->failsafe_bodies._length; ++k) {
-          s.failsafe_bodies.push_back(m->failsafe_bodies._buffer[k]);
-        }
-        s.failsafe_count = m->failsafe_count;
-        s.received = m->commands_received;
-        s.rejected = m->commands_rejected;
-        s.clamped = m->commands_clamped;
-        s.lockstep_timeouts = m->lockstep_timeouts;
-        s.when = Clock::now();
-        statuses_.push_back(s);
-      }
-      dds_return_loan(status_reader_, samples, n);
-      if (n < 64) return;
-    }
-  }
-
-  std::string prefix_;
-  dds_entity_t participant_ = 0, status_reader_ = 0, control_writer_ = 0;
-  std::map<std::string, dds_entity_t> command_writers_;
-  std::vector<Status> statuses_;
-};
 
 class DdsNodeTest : public ::testing::Test {
  protected:
@@ -376,16 +229,12 @@ TEST_F(DdsNodeTest, LockstepWithTheScriptsCommandsEqualsOffline) {
                   LogPrefix("offline"));
   ASSERT_TRUE(offline.Wait(kProcessTimeout));
   ASSERT_EQ(offline.exit_code(), 0) << offline.err();
-  std::stringstream csv(ReadFile(dir + "/bodies.csv"));
-  std::string row;
-  std::getline(csv, row);  // header t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
+  // header t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
+  const CsvTable csv = ReadCsv(dir + "/bodies.csv");
   const long stride = std::max(1L, std::lround(1.0 / (model.time.output_rate * model.time.step)));
   int rows = 0;
-  while (std::getline(csv, row)) {
-    std::vector<std::string> f;
-    std::stringstream s(row);
-    std::string cell;
-    while (std::getline(s, cell, ',')) f.push_back(cell);
+  for (const std::vector<std::string>& f : csv.rows) {
+    const std::string row = JoinCsvRow(f);
     ASSERT_EQ(f.size(), 14u) << row;
     const long k = stride * (rows / 2);
     const OdomLine* l = Find(log, k, f[1]);
@@ -439,10 +288,10 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
 TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
   constexpr uint8_t kWaiting = towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
   Observer watch(51);
-  Process node(Node(kCase1, "realtime", 51,
-                    {"--duration", "10", "--rate", "20", "--wait-for-controllers", "--set",
-                     "script=[]"}),
-               LogPrefix("node"));
+  Process node(
+      Node(kCase1, "realtime", 51,
+           {"--duration", "10", "--rate", "20", "--wait-for-controllers", "--set", "script=[]"}),
+      LogPrefix("node"));
   Status waiting;
   ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.state == kWaiting; }, &waiting));
   EXPECT_EQ(waiting.step, 0u);

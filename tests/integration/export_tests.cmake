@@ -1,9 +1,8 @@
 # towsim_export round trips (issue 6): sim_node --record + --csv, then towsim_export --csv;
-# real processes over loopback DDS, domains 91 and 92. Included from tests/unit/mcap_tests.cmake.
+# real processes over loopback DDS, domains 91, 92 and 134. Included from tests/unit/mcap_tests.cmake.
 set(_export_dir ${PROJECT_SOURCE_DIR}/tests/integration)
-add_executable(export_roundtrip_test ${_export_dir}/export_roundtrip_test.cc
-  ${_export_dir}/process.cc)
-target_link_libraries(export_roundtrip_test PRIVATE GTest::gtest GTest::gtest_main)
+add_executable(export_roundtrip_test ${_export_dir}/export_roundtrip_test.cc)
+target_link_libraries(export_roundtrip_test PRIVATE towsim::testing GTest::gtest GTest::gtest_main)
 target_compile_definitions(export_roundtrip_test PRIVATE
   TOWSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
   TOWSIM_DDS_URI="file://${PROJECT_SOURCE_DIR}/config/cyclonedds.xml"

@@ -24,7 +24,7 @@ for i in $(seq "$runs"); do
     --duration "$duration" --csv "$tmp/plain" > /dev/null
   plain+=("$(per_step "$tmp/plain")")
   "$build/sim_node/app/sim_node" --scene "$scene" --mode fast --domain 89 \
-    --duration "$duration" --csv "$tmp/rec" --record "$tmp/run.mcap" > /dev/null 2>&1
+    --duration "$duration" --csv "$tmp/rec" --record "$tmp/run.mcap" --overwrite > /dev/null 2>&1
   recorded+=("$(per_step "$tmp/rec")")
 done
 size=$(stat -c %s "$tmp/run.mcap")

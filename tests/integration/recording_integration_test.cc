@@ -24,7 +24,7 @@
 #include "dds/raw_cdr.h"
 #include "io/mcap_reader.h"
 #include "nav_msgs.h"
-#include "process.h"
+#include "testing/process.h"
 #include "towsim_msgs.h"
 
 namespace towsim::testing {
@@ -43,7 +43,9 @@ constexpr double kKillLoss = 1.0;  // [s], issue 6: "at most the last second"
 
 std::string Temp(const std::string& what) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->name() + "_" + what;
+  const std::string path = ::testing::TempDir() + "/towsim_" + info->name() + "_" + what;
+  std::remove(path.c_str());  // a recording of an earlier run: the tools refuse to replace it
+  return path;
 }
 
 std::vector<std::string> Env() { return {"CYCLONEDDS_URI=" + kUri}; }
@@ -321,8 +323,8 @@ TEST(RecordingTest, ReplayRepublishesTheSameMessagesWithTheRecordedTiming) {
   // and no drift: the replay is scheduled against its start, so the whole timeline keeps its
   // length (3 s) to within a few scheduling delays
   constexpr double kSpanError = 50e-3;  // [s]
-  const double span_original = 1e-9 * static_cast<double>(events.back().original -
-                                                          events.front().original);
+  const double span_original =
+      1e-9 * static_cast<double>(events.back().original - events.front().original);
   const double span_replayed = 1e-9 * (static_cast<double>(events.back().replayed) -
                                        static_cast<double>(events.front().replayed));
   EXPECT_NEAR(span_replayed, span_original, kSpanError);

@@ -17,3 +17,30 @@ towsim_add_test(sim_node_cli_test LABEL unit
 foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
+
+# the installed-scene lookup of sim_node --scene
+towsim_add_test(installed_data_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/installed_data.cc)
+target_include_directories(installed_data_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node
+                                                       ${CMAKE_CURRENT_LIST_DIR})
+
+# towsim_sweep (docs/sweeps.md): the combinator and the results of a case
+towsim_add_test(sweep_combinator_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_combinator_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_signals_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_signals_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_case_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_case_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_slurm_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_slurm_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(csv_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/csv_reader_test.cc
+  LIBS towsim::io towsim::core)
+towsim_add_test(sweep_table_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_table_test.cc
+  LIBS towsim_sweep_lib)

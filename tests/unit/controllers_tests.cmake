@@ -10,3 +10,12 @@ if(TARGET towsim::controller_laws)
     SOURCES ${PROJECT_SOURCE_DIR}/controllers/tests/controller_config_test.cc
     LIBS towsim::controller_config)
 endif()
+
+# the test fixture's pieces without a node (controllers/testing): golden CSV files, domain leases
+if(TARGET towsim::testing)
+  towsim_add_test(testing_fixture_test LABEL unit
+    SOURCES ${PROJECT_SOURCE_DIR}/controllers/tests/golden_csv_test.cc
+            ${PROJECT_SOURCE_DIR}/controllers/tests/dds_domain_test.cc
+    LIBS towsim::testing)
+  target_include_directories(testing_fixture_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+endif()

@@ -32,3 +32,8 @@ towsim_add_test(dds_entities_test LABEL unit
 towsim_add_test(raw_cdr_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/raw_cdr_test.cc
   LIBS towsim::dds)
+
+# the RTPS port mapping: which domain ids have ports with a configuration (issue 15)
+towsim_add_test(dds_port_mapping_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc
+  LIBS towsim::dds)

@@ -193,9 +193,10 @@ TEST(McapTest, EmptyFileIsValid) {
 
 TEST(McapTest, CrcDetectsFlippedByteInChunk) {
   const std::string path = TempPath("flip");
-  WriteRecording(path, 2000);
+  WriteRecording(path, 5000);  // 5 chunks
   std::string b = Slurp(path);
   const McapReader good = McapReader::OpenBytes(b);
+  ASSERT_EQ(good.chunk_indexes().size(), 5u);
   const McapChunkIndex c = good.chunk_indexes().at(1);
   const std::uint64_t at = c.chunk_start_offset + c.chunk_length - 3;  // in a payload
   b[at] = static_cast<char>(b[at] ^ 0x10);
@@ -207,12 +208,42 @@ TEST(McapTest, CrcDetectsFlippedByteInChunk) {
     EXPECT_NE(std::string(e.what()).find("data section CRC mismatch"), std::string::npos)
         << e.what();
   }
-  // recovery checks the chunk CRC and stops before the damaged chunk, naming its offset
+  // recovery checks the chunk CRC, skips the damaged chunk (naming its offset) and keeps the
+  // four intact ones, before and after it
   const McapReader rec = McapReader::RecoverBytes(b);
-  EXPECT_EQ(rec.chunk_indexes().size(), 1u);  // chunk 0 only
+  EXPECT_EQ(rec.chunk_indexes().size(), 4u);
   EXPECT_NE(rec.recovery_note().find("chunk CRC mismatch"), std::string::npos)
       << rec.recovery_note();
   EXPECT_NE(rec.recovery_note().find(std::to_string(c.chunk_start_offset)), std::string::npos);
+  ASSERT_EQ(rec.skipped().size(), 1u);
+  const McapSkipped& skipped = rec.skipped()[0];
+  EXPECT_EQ(skipped.begin, c.chunk_start_offset);
+  EXPECT_EQ(skipped.end, c.chunk_start_offset + c.chunk_length);
+  // the skipped chunk's messages, counted from its message indexes, are exactly those lost
+  std::uint64_t in_chunk = 0;
+  for (const McapMessage& m : good.ReadMessages()) {
+    in_chunk += m.log_time >= c.message_start_time && m.log_time <= c.message_end_time;
+  }
+  EXPECT_TRUE(skipped.messages_known);
+  EXPECT_EQ(skipped.messages, in_chunk);
+  EXPECT_EQ(rec.ReadMessages().size(), 5000u - in_chunk);
+}
+
+TEST(McapTest, RecoveryResynchronisesAfterADamagedRecordHeader) {
+  const std::string path = TempPath("flip_header");
+  WriteRecording(path, 3000);
+  std::string b = Slurp(path);
+  const McapReader good = McapReader::OpenBytes(b);
+  // the header's length (byte 9: after the magic and the opcode): the scan cannot step over it
+  b[9] = static_cast<char>(b[9] ^ 0x40);
+  const McapReader rec = McapReader::RecoverBytes(b);
+  ASSERT_EQ(rec.skipped().size(), 1u);
+  EXPECT_EQ(rec.skipped()[0].begin, 8u);
+  // everything after the header is kept: schemas, channels, every chunk and message
+  EXPECT_EQ(rec.schemas().size(), good.schemas().size());
+  EXPECT_EQ(rec.channels().size(), good.channels().size());
+  EXPECT_EQ(rec.chunk_indexes().size(), good.chunk_indexes().size());
+  EXPECT_EQ(rec.ReadMessages().size(), 3000u);
 }
 
 TEST(McapTest, CrcDetectsFlippedByteInSummary) {

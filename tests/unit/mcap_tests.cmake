@@ -27,6 +27,7 @@ if(NODE_EXECUTABLE)
     COMMAND ${CMAKE_COMMAND} -E env CYCLONEDDS_URI=${_dds_uri}
       $<TARGET_FILE:sim_node> --scene ${PROJECT_SOURCE_DIR}/config/scenes/case1_forward.yaml
       --mode fast --domain 93 --duration 40 --csv ${_js_run}/csv --record ${_js_run}/run.mcap
+      --overwrite
       --set publish.odom=10 --set publish.cable_force=10 --set publish.cable_state=10
       --set publish.status=10)
   set_tests_properties(mcap_js_record_run PROPERTIES

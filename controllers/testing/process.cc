@@ -1,4 +1,4 @@
-#include "process.h"
+#include "testing/process.h"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -24,6 +24,11 @@ std::string ReadFile(const std::string& path) {
 Process::Process(std::vector<std::string> argv, const std::string& log_prefix,
                  std::vector<std::string> env)
     : argv_(std::move(argv)), out_path_(log_prefix + ".out"), err_path_(log_prefix + ".err") {
+  // emptied before the child runs: a wait for a line must never find one of an earlier run
+  for (const std::string& path : {out_path_, err_path_}) {
+    const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    if (fd >= 0) close(fd);
+  }
   pid_ = fork();
   if (pid_ == 0) {
     const int out = open(out_path_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -1,0 +1,71 @@
+# cmake --install build --prefix P (docs/testing_controllers.md, "The installed package"):
+#   P/bin/                     sim_node, the tools and the controllers (TOWSIM_INSTALLED_PROGRAMS)
+#   P/share/towsim/            scenes/, vehicles/, maneuvers/, autopilot/, sweeps/,
+#                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
+#                              cyclonedds_two_hosts.xml, idl/*.idl,
+#                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/
+#   P/include/towsim/          msgs/*.h (generated from the IDL), common/*.h (client library),
+#                              testing/*.h (test fixture)
+#   P/lib/                     libtowsim_msgs.a, libtowsim_client.a (+ laws), libtowsim_testing.a
+#   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::client,
+#                              towsim::testing, towsim::sim_node (and every installed program as
+#                              towsim::<name>), towsim_SIM_NODE, towsim_DATA_DIR, towsim_DDS_URI
+# The programs find P/share/towsim from their own location (sim_node/app/installed_data.h).
+
+include(CMakePackageConfigHelpers)
+
+# every program of the package: add a new tool here (one line)
+set(TOWSIM_INSTALLED_PROGRAMS
+  sim_node
+  towsim_record
+  towsim_replay
+  towsim_export
+  towsim_sweep
+  maneuver_runner
+  towfish_depth
+  autopilot
+  hello_controller
+)
+foreach(_program IN LISTS TOWSIM_INSTALLED_PROGRAMS)
+  if(NOT TARGET ${_program})
+    message(FATAL_ERROR "TOWSIM_INSTALLED_PROGRAMS: ${_program} is not a target")
+  endif()
+endforeach()
+install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+
+# the libraries a user's controllers and tests link
+set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
+install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common towsim_testing
+        EXPORT towsimTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)
+install(FILES controllers/common/client.h controllers/common/dds_qos.h controllers/common/flags.h
+              controllers/common/laws.h
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/common)
+install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/testing
+        FILES_MATCHING PATTERN "*.h")
+
+# the configuration, the wire contract and the example
+set(TOWSIM_DATA_DESTINATION ${CMAKE_INSTALL_DATADIR}/towsim)
+install(DIRECTORY config/scenes config/vehicles config/maneuvers config/autopilot config/sweeps
+        DESTINATION ${TOWSIM_DATA_DESTINATION})
+install(FILES config/cyclonedds.xml config/cyclonedds_two_hosts.xml
+        DESTINATION ${TOWSIM_DATA_DESTINATION})
+install(FILES ${TOWSIM_IDL_FILES} DESTINATION ${TOWSIM_DATA_DESTINATION}/idl)
+install(DIRECTORY msgs/towsim_msgs DESTINATION ${TOWSIM_DATA_DESTINATION}/ros2)
+install(DIRECTORY examples/controller_ci DESTINATION ${TOWSIM_DATA_DESTINATION}/examples
+        PATTERN "build" EXCLUDE)
+
+# the CMake package
+set(TOWSIM_CMAKE_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/towsim)
+install(EXPORT towsimTargets NAMESPACE towsim:: DESTINATION ${TOWSIM_CMAKE_DESTINATION})
+configure_package_config_file(cmake/towsimConfig.cmake.in
+  ${CMAKE_CURRENT_BINARY_DIR}/towsimConfig.cmake
+  INSTALL_DESTINATION ${TOWSIM_CMAKE_DESTINATION}
+  PATH_VARS CMAKE_INSTALL_BINDIR TOWSIM_DATA_DESTINATION)
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/towsimConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/towsimConfig.cmake
+              ${CMAKE_CURRENT_BINARY_DIR}/towsimConfigVersion.cmake
+        DESTINATION ${TOWSIM_CMAKE_DESTINATION})

@@ -1,0 +1,493 @@
+#include "testing/sim_node.h"
+
+#include <signal.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "common/dds_qos.h"
+#include "common/laws.h"
+#include "dds/dds.h"
+#include "geometry_msgs.h"
+#include "nav_msgs.h"
+#include "towsim_msgs.h"
+
+namespace towsim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+double Stamp(const builtin_interfaces_msg_dds__Time_& s) { return s.sec + 1e-9 * s.nanosec; }
+
+std::string Prefix(const std::string& ns) { return ns == "/" ? "rt/" : "rt" + ns + "/"; }
+
+std::string DefaultLogDir(int domain) {
+  std::string name = "towsim";
+  if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
+    name += std::string("_") + info->test_suite_name() + "_" + info->name();
+  }
+  for (char& c : name) {
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
+  }
+  return ::testing::TempDir() + name + "_d" + std::to_string(domain);
+}
+
+// a bare scene name finds data_dir/scenes/NAME[.yaml] (sim_node's own rule for installed scenes)
+std::string SceneFile(const std::string& scene, const std::string& data_dir) {
+  std::error_code ec;
+  if (fs::exists(scene, ec) || fs::path(scene).has_parent_path()) return scene;
+  for (const std::string& c :
+       {data_dir + "/scenes/" + scene, data_dir + "/scenes/" + scene + ".yaml"}) {
+    if (fs::is_regular_file(c, ec)) return c;
+  }
+  return scene;
+}
+
+// appends `sample` to `history`, or replaces the last one if it is of the same state: the
+// paused / waiting node repeats its state, one sample per state is kept
+template <typename Sample>
+void AppendState(std::vector<Sample>& history, const Sample& sample) {
+  if (!history.empty() && history.back().run == sample.run && history.back().t == sample.t) {
+    history.back() = sample;
+  } else {
+    history.push_back(sample);
+  }
+}
+
+// the sample's run: the RESETs seen on that topic (sim time going back)
+struct RunCounter {
+  int run = 0;
+  double last_t = -1.0;
+  int Next(double t) {
+    if (t < last_t - 1e-9) ++run;
+    last_t = t;
+    return run;
+  }
+};
+
+}  // namespace
+
+bool StatusSample::running() const {
+  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING ||
+         state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
+}
+bool StatusSample::paused() const {
+  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_PAUSED;
+}
+bool StatusSample::finished() const {
+  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED;
+}
+bool StatusSample::terminal() const {
+  return finished() || state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED ||
+         state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
+}
+bool StatusSample::failsafe() const {
+  return health == towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_FAILSAFE;
+}
+
+struct SimNode::Impl {
+  SimNodeOptions opt;
+  std::unique_ptr<DomainLease> lease;
+  std::string dds_uri, prefix;
+  std::unique_ptr<Process> process;
+  SceneInfo scene;
+  dds_entity_t participant = 0, control_writer = 0;
+  dds_listener_t* listener = nullptr;
+
+  // what the listener fills, under `mutex`
+  mutable std::mutex mutex;
+  std::map<dds_entity_t, std::string> odom_readers, force_readers;  // reader -> body
+  dds_entity_t status_reader = 0, cable_reader = 0;
+  std::map<std::string, std::vector<OdometrySample>> odom;
+  std::map<std::string, std::vector<WrenchSample>> forces;
+  std::map<std::string, RunCounter> odom_runs, force_runs;
+  std::vector<StatusSample> statuses;
+  std::optional<CableSample> cable;
+  std::vector<TensionSample> tensions;
+  RunCounter cable_runs;
+
+  static void OnData(dds_entity_t reader, void* arg) { static_cast<Impl*>(arg)->Take(reader); }
+
+  void Take(dds_entity_t reader) {
+    void* samples[32] = {};
+    dds_sample_info_t infos[32];
+    for (;;) {
+      const dds_return_t n = dds_take(reader, samples, infos, 32, 32);
+      if (n <= 0) return;
+      std::lock_guard<std::mutex> lock(mutex);
+      for (int i = 0; i < n; ++i) {
+        if (infos[i].valid_data) Store(reader, samples[i]);
+      }
+      dds_return_loan(reader, samples, n);
+      if (n < 32) return;
+    }
+  }
+
+  void Store(dds_entity_t reader, const void* sample) {
+    if (reader == status_reader) {
+      const auto* m = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(sample);
+      StatusSample s;
+      s.run_id = m->run_id;
+      s.mode = m->mode;
+      s.message = m->message;
+      s.state = m->state;
+      s.health = m->health;
+      s.step = m->step;
+      s.t = m->sim_time;
+      s.failsafe_count = m->failsafe_count;
+      s.commands_received = m->commands_received;
+      s.commands_rejected = m->commands_rejected;
+      s.commands_clamped = m->commands_clamped;
+      s.lockstep_timeouts = m->lockstep_timeouts;
+      for (uint32_t k = 0; k < m->failsafe_bodies._length; ++k) {
+        s.failsafe_bodies.push_back(m->failsafe_bodies._buffer[k]);
+      }
+      statuses.push_back(std::move(s));
+    } else if (reader == cable_reader) {
+      const auto* m = static_cast<const towsim_msgs_msg_dds__CableState_*>(sample);
+      CableSample c;
+      c.step = m->step;
+      c.t = Stamp(m->header.stamp);
+      c.run = cable_runs.Next(c.t);
+      TensionSample top{c.run, c.t, -HUGE_VAL, 0};
+      for (uint32_t k = 0; k < m->positions._length; ++k) {
+        c.x.push_back(m->positions._buffer[k].x);
+        c.y.push_back(m->positions._buffer[k].y);
+        c.z.push_back(m->positions._buffer[k].z);
+      }
+      for (uint32_t k = 0; k < m->tensions._length; ++k) {
+        c.tension.push_back(m->tensions._buffer[k]);
+        if (m->tensions._buffer[k] > top.max) top = {c.run, c.t, m->tensions._buffer[k], int(k)};
+      }
+      tensions.push_back(top);
+      cable = std::move(c);
+    } else if (const auto it = odom_readers.find(reader); it != odom_readers.end()) {
+      const auto* m = static_cast<const nav_msgs_msg_dds__Odometry_*>(sample);
+      OdometrySample o;
+      o.t = Stamp(m->header.stamp);
+      o.run = odom_runs[it->second].Next(o.t);
+      const auto& p = m->pose.pose;
+      o.x = p.position.x;
+      o.y = p.position.y;
+      o.z = p.position.z;
+      o.qx = p.orientation.x;
+      o.qy = p.orientation.y;
+      o.qz = p.orientation.z;
+      o.qw = p.orientation.w;
+      const controllers::Euler e = controllers::EulerFromQuaternion(o.qx, o.qy, o.qz, o.qw);
+      o.roll = e.roll;
+      o.pitch = e.pitch;
+      o.yaw = e.yaw;
+      const auto& tw = m->twist.twist;
+      o.u = tw.linear.x;
+      o.v = tw.linear.y;
+      o.w = tw.linear.z;
+      o.p = tw.angular.x;
+      o.q = tw.angular.y;
+      o.r = tw.angular.z;
+      AppendState(odom[it->second], o);
+    } else if (const auto jt = force_readers.find(reader); jt != force_readers.end()) {
+      const auto* m = static_cast<const geometry_msgs_msg_dds__WrenchStamped_*>(sample);
+      WrenchSample f;
+      f.t = Stamp(m->header.stamp);
+      f.run = force_runs[jt->second].Next(f.t);
+      f.fx = m->wrench.force.x;
+      f.fy = m->wrench.force.y;
+      f.fz = m->wrench.force.z;
+      f.mx = m->wrench.torque.x;
+      f.my = m->wrench.torque.y;
+      f.mz = m->wrench.torque.z;
+      AppendState(forces[jt->second], f);
+    }
+  }
+
+  dds_entity_t Reader(const dds_topic_descriptor_t* type, const std::string& name, int depth,
+                      bool transient_local, bool listen) {
+    const dds_entity_t topic =
+        dds_create_topic(participant, type, (prefix + name).c_str(), nullptr, nullptr);
+    if (topic < 0) Fail("topic " + prefix + name + ": " + dds_strretcode(topic));
+    dds_qos_t* qos = controllers::ReliableQos(depth, transient_local);
+    const dds_entity_t r = dds_create_reader(participant, topic, qos, listen ? listener : nullptr);
+    dds_delete_qos(qos);
+    if (r < 0) Fail("reader " + prefix + name + ": " + dds_strretcode(r));
+    return r;
+  }
+
+  [[noreturn]] void Fail(const std::string& what) const {
+    std::string text = "SimNode: " + what;
+    if (process) {
+      text += "\n  " + process->command_line() + "\n--- sim_node stdout ---\n" + process->out() +
+              "--- sim_node stderr ---\n" + process->err();
+    }
+    throw std::runtime_error(text);
+  }
+
+  void Control(uint8_t command, uint32_t steps, double rate) {
+    const Clock::time_point begin = Clock::now();
+    for (;;) {
+      dds_publication_matched_status_t m{};
+      dds_get_publication_matched_status(control_writer, &m);
+      if (m.current_count > 0) break;
+      if (Seconds(Clock::now() - begin) > opt.startup_timeout) {
+        Fail("the node's sim_control reader did not match");
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    towsim_msgs_msg_dds__SimControl_ c{};
+    c.header.frame_id = const_cast<char*>("");
+    c.command = command;
+    c.steps = steps;
+    c.rate = rate;
+    const dds_return_t rc = dds_write(control_writer, &c);
+    if (rc < 0) Fail(std::string("writing a SimControl request: ") + dds_strretcode(rc));
+  }
+
+  NodeResult Result() const {
+    NodeResult r;
+    r.exit_code = process->exit_code();
+    std::stringstream out(process->out());
+    std::string line;
+    while (std::getline(out, line)) {
+      if (line.rfind("sim_node: ", 0) == 0 && line.find(" steps, ") != std::string::npos) {
+        r.summary = line;
+      }
+    }
+    return r;
+  }
+};
+
+SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.opt = std::move(options);
+  const SimNodeOptions& o = m.opt;
+  m.lease =
+      o.domain < 0 ? std::make_unique<DomainLease>() : std::make_unique<DomainLease>(o.domain);
+  const int domain = m.lease->id();
+  if (m.opt.log_dir.empty()) m.opt.log_dir = DefaultLogDir(domain);
+  fs::remove_all(o.log_dir);
+  fs::create_directories(o.log_dir);
+  m.prefix = Prefix(o.ns);
+
+  // the project's loopback configuration, for this process and the node
+  const std::string xml = o.data_dir + "/cyclonedds.xml";
+  if (!fs::is_regular_file(xml))
+    m.Fail("no DDS configuration " + xml + " (SimNodeOptions::data_dir)");
+  m.dds_uri = "file://" + xml;
+  setenv("CYCLONEDDS_URI", m.dds_uri.c_str(), 1);
+
+  m.participant = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
+  if (m.participant < 0) {
+    m.Fail("creating a DDS participant on domain " + std::to_string(domain) + ": " +
+           dds_strretcode(m.participant));
+  }
+  m.listener = dds_create_listener(&m);
+  dds_lset_data_available(m.listener, &Impl::OnData);
+  const dds_entity_t scene_reader =
+      m.Reader(&towsim_msgs_msg_dds__SceneInfo__desc, "scene_info", 1, true, false);
+  {
+    std::lock_guard<std::mutex> lock(m.mutex);
+    m.status_reader = m.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "status", 1000, false, true);
+    m.cable_reader =
+        m.Reader(&towsim_msgs_msg_dds__CableState__desc, "cable/state", 1000, false, true);
+  }
+  {
+    const dds_entity_t topic =
+        dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimControl__desc,
+                         (m.prefix + "sim_control").c_str(), nullptr, nullptr);
+    dds_qos_t* qos = controllers::ReliableQos(32, false);
+    m.control_writer = dds_create_writer(m.participant, topic, qos, nullptr);
+    dds_delete_qos(qos);
+    if (m.control_writer < 0)
+      m.Fail("sim_control writer: " + std::string(dds_strretcode(m.control_writer)));
+  }
+
+  std::vector<std::string> argv = {
+      o.sim_node, "--scene",  SceneFile(o.scene, o.data_dir), "--mode",
+      o.mode,     "--domain", std::to_string(domain),         "--namespace",
+      o.ns,       "--paused"};
+  auto number = [](double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+  };
+  argv.insert(argv.end(), {"--duration", number(o.duration)});
+  if (o.mode == "realtime") argv.insert(argv.end(), {"--rate", number(o.rate)});
+  for (const std::string& s : o.set) argv.insert(argv.end(), {"--set", s});
+  if (o.csv) argv.insert(argv.end(), {"--csv", csv_dir()});
+  argv.insert(argv.end(), o.extra_args.begin(), o.extra_args.end());
+  m.process = std::make_unique<Process>(argv, o.log_dir + "/sim_node",
+                                        std::vector<std::string>{"CYCLONEDDS_URI=" + m.dds_uri});
+
+  // scene_info: the bodies
+  const Clock::time_point begin = Clock::now();
+  auto check_alive = [&](const std::string& waiting_for) {
+    if (!m.process->running()) {
+      m.Fail("sim_node exited (code " + std::to_string(m.process->exit_code()) + ") before " +
+             waiting_for);
+    }
+    if (Seconds(Clock::now() - begin) > o.startup_timeout) {
+      m.Fail("no " + waiting_for + " within " + number(o.startup_timeout) + " s");
+    }
+  };
+  for (bool have = false; !have;) {
+    void* samples[1] = {nullptr};
+    dds_sample_info_t info;
+    const dds_return_t n = dds_take(scene_reader, samples, &info, 1, 1);
+    if (n > 0 && info.valid_data) {
+      const auto* s = static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]);
+      m.scene.run_id = s->run_id;
+      m.scene.scene = s->scene;
+      m.scene.mode = s->mode;
+      m.scene.step_size = s->step_size;
+      m.scene.duration = s->duration;
+      m.scene.command_timeout = s->command_timeout;
+      for (uint32_t k = 0; k < s->bodies._length; ++k)
+        m.scene.bodies.push_back(s->bodies._buffer[k]);
+      for (uint32_t k = 0; k < s->commanded_bodies._length; ++k) {
+        m.scene.commanded_bodies.push_back(s->commanded_bodies._buffer[k]);
+      }
+      m.scene.cable_nodes = s->cable_nodes;
+      have = true;
+    }
+    if (n > 0) dds_return_loan(scene_reader, samples, n);
+    if (!have) {
+      check_alive("scene_info");
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
+  {
+    std::lock_guard<std::mutex> lock(m.mutex);
+    for (const std::string& b : m.scene.bodies) {
+      m.odom_readers[m.Reader(&nav_msgs_msg_dds__Odometry__desc, b + "/odom", 1000, false, true)] =
+          b;
+      m.force_readers[m.Reader(&geometry_msgs_msg_dds__WrenchStamped__desc, b + "/cable_force",
+                               1000, false, true)] = b;
+    }
+  }
+  // the step-0 state of every body (repeated by the paused node) and a status
+  for (;;) {
+    bool all = status().has_value();
+    for (const std::string& b : m.scene.bodies) all = all && odometry(b).has_value();
+    if (all) break;
+    check_alive("first state of every body");
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  if (!o.start_paused) Resume();
+}
+
+SimNode::~SimNode() {
+  Impl& m = *impl_;
+  if (m.process && m.process->running()) {
+    m.process->Signal(SIGINT);
+    m.process->Wait(5.0);
+  }
+  if (m.participant > 0) dds_delete(m.participant);  // the listener stops first
+  if (m.listener != nullptr) dds_delete_listener(m.listener);
+}
+
+int SimNode::domain() const { return impl_->lease->id(); }
+const std::string& SimNode::ns() const { return impl_->opt.ns; }
+const SceneInfo& SimNode::scene_info() const { return impl_->scene; }
+std::string SimNode::dds_uri() const { return impl_->dds_uri; }
+const std::string& SimNode::log_dir() const { return impl_->opt.log_dir; }
+std::string SimNode::csv_dir() const { return impl_->opt.log_dir + "/csv"; }
+std::string SimNode::command_line() const { return impl_->process->command_line(); }
+std::string SimNode::log() const {
+  return "--- " + impl_->process->command_line() + " (stdout) ---\n" + impl_->process->out() +
+         "--- stderr ---\n" + impl_->process->err();
+}
+
+std::optional<OdometrySample> SimNode::odometry(const std::string& body) const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  const auto it = impl_->odom.find(body);
+  if (it == impl_->odom.end() || it->second.empty()) return std::nullopt;
+  return it->second.back();
+}
+std::optional<CableSample> SimNode::cable_state() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->cable;
+}
+std::optional<WrenchSample> SimNode::cable_force(const std::string& body) const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  const auto it = impl_->forces.find(body);
+  if (it == impl_->forces.end() || it->second.empty()) return std::nullopt;
+  return it->second.back();
+}
+std::optional<StatusSample> SimNode::status() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  if (impl_->statuses.empty()) return std::nullopt;
+  return impl_->statuses.back();
+}
+std::vector<OdometrySample> SimNode::odometry_history(const std::string& body) const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  const auto it = impl_->odom.find(body);
+  return it == impl_->odom.end() ? std::vector<OdometrySample>{} : it->second;
+}
+std::vector<WrenchSample> SimNode::cable_force_history(const std::string& body) const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  const auto it = impl_->forces.find(body);
+  return it == impl_->forces.end() ? std::vector<WrenchSample>{} : it->second;
+}
+std::vector<StatusSample> SimNode::status_history() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->statuses;
+}
+std::vector<SimNode::TensionSample> SimNode::max_tension_history() const {
+  std::lock_guard<std::mutex> lock(impl_->mutex);
+  return impl_->tensions;
+}
+
+std::optional<StatusSample> SimNode::WaitForStatus(
+    const std::function<bool(const StatusSample&)>& pred, double timeout) {
+  const Clock::time_point begin = Clock::now();
+  size_t seen = 0;
+  for (;;) {
+    const std::vector<StatusSample> all = status_history();
+    for (; seen < all.size(); ++seen) {
+      if (pred(all[seen])) return all[seen];
+    }
+    if (Seconds(Clock::now() - begin) > timeout) return std::nullopt;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+}
+
+void SimNode::Pause() { impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_PAUSE, 0, 0.0); }
+void SimNode::Resume() { impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_RESUME, 0, 0.0); }
+void SimNode::Step(uint32_t steps) {
+  impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_STEP, steps, 0.0);
+}
+void SimNode::Reset() { impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_RESET, 0, 0.0); }
+void SimNode::SetRate(double rate) {
+  impl_->Control(towsim_msgs_msg_dds__SimControl_Constants_SET_RATE, 0, rate);
+}
+
+NodeResult SimNode::Wait(double timeout) {
+  if (!impl_->process->Wait(timeout)) return NodeResult{};
+  return impl_->Result();
+}
+
+NodeResult SimNode::Stop(double timeout) {
+  impl_->process->Signal(SIGINT);
+  if (!impl_->process->Wait(timeout)) {
+    impl_->process->Signal(SIGKILL);
+    impl_->process->Wait(5.0);
+    NodeResult r = impl_->Result();
+    r.exit_code = -1;
+    return r;
+  }
+  return impl_->Result();
+}
+
+}  // namespace towsim::testing

@@ -1,0 +1,155 @@
+// The test fixture for controllers (controllers/testing, towsim::testing) against the
+// build tree's sim_node: start-up paused, SimControl STEP, the latest samples of every topic,
+// the samples equal to the node's own bodies.csv, stop with exit code and summary, a bad scene
+// reported with the node's message, and parallel nodes on distinct automatic domain ids.
+// Realtime mode too. Domains 170 and 171 (fixed), automatic ones from 200-231
+// (tests/integration/README.md).
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "testing/csv_file.h"
+#include "testing/sim_node.h"
+
+namespace towsim::testing {
+namespace {
+
+std::string G9(double x) {  // the CSV's number format (DESIGN §5)
+  char s[40];
+  std::snprintf(s, sizeof s, "%.9g", x);
+  return s;
+}
+
+// domain 170
+TEST(SimNodeFixture, StartsPausedStepsAndStops) {
+  SimNodeOptions o;
+  o.scene = "steady_tow";  // config/scenes/steady_tow.yaml: a sphere towed at 6 m/s, no vehicles
+  o.domain = 170;
+  o.duration = 100.0;
+  o.start_paused = true;
+  SimNode node(o);
+  EXPECT_EQ(node.domain(), 170);
+  EXPECT_EQ(node.scene_info().scene, "steady_tow");
+  EXPECT_EQ(node.scene_info().step_size, 0.05);
+  EXPECT_EQ(node.scene_info().bodies, std::vector<std::string>{"towfish"});
+  EXPECT_EQ(node.scene_info().cable_nodes, 21u);  // 20 elements
+  // the initial state, exactly as the scene gives it
+  ASSERT_TRUE(node.odometry("towfish").has_value());
+  EXPECT_EQ(node.odometry("towfish")->t, 0.0);
+  EXPECT_EQ(node.odometry("towfish")->z, 203.5);
+  ASSERT_TRUE(node.status().has_value());
+  EXPECT_TRUE(node.status()->paused());
+
+  node.Step(5);
+  ASSERT_TRUE(node.WaitForStatus([](const StatusSample& s) { return s.step == 5 && s.paused(); }));
+  // 5 steps of 0.05 s (the stamp: sec + 1e-9 nanosec, rounded)
+  ASSERT_TRUE(node.odometry("towfish").has_value());
+  EXPECT_NEAR(node.odometry("towfish")->t, 0.25, 1e-12);
+  // the cable state comes at the scene's output rate (10 Hz: every 2nd step), and the paused
+  // node repeats every topic's state every 0.5 s: step 5's within a second
+  for (int i = 0; i < 200 && !(node.cable_state() && node.cable_state()->step == 5); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  ASSERT_TRUE(node.cable_state().has_value());
+  EXPECT_EQ(node.cable_state()->step, 5u);
+  EXPECT_EQ(node.cable_state()->tension.size(), 21u);
+  ASSERT_TRUE(node.cable_force("towfish").has_value());
+  // one sample per state: 0, 1, ..., 5 (the paused node's repetitions merged)
+  const std::vector<OdometrySample> h = node.odometry_history("towfish");
+  ASSERT_EQ(h.size(), 6u);
+  for (size_t k = 0; k < h.size(); ++k) EXPECT_NEAR(h[k].t, 0.05 * k, 1e-12);
+
+  const NodeResult end = node.Stop();
+  EXPECT_EQ(end.exit_code, 0) << node.log();
+  EXPECT_EQ(end.summary.rfind("sim_node: steady_tow: lockstep, 5 steps, 0.25 s simulated", 0), 0u)
+      << end.summary;
+
+  // the fixture's samples are the node's: its bodies.csv (10 Hz: t = 0, 0.1, 0.2, and the
+  // final state 0.25) at 9 digits
+  const CsvTable csv = ReadCsv(node.csv_dir() + "/bodies.csv");
+  int rows = 0;
+  for (const std::vector<std::string>& f : csv.rows) {
+    const std::string row = JoinCsvRow(f);
+    ASSERT_EQ(f.size(), 14u) << row;
+    const double t = std::stod(f[0]);
+    const OdometrySample* match = nullptr;
+    for (const OdometrySample& x : h) {
+      if (std::abs(x.t - t) < 1e-9) match = &x;
+    }
+    ASSERT_NE(match, nullptr) << row;
+    EXPECT_EQ(f[2], G9(match->x)) << row;
+    EXPECT_EQ(f[4], G9(match->z)) << row;
+    EXPECT_EQ(f[8], G9(match->u)) << row;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 4);
+}
+
+// domain 171: the node exits 2 before scene_info; the exception carries its message
+TEST(SimNodeFixture, ABadSceneThrowsWithTheNodesMessage) {
+  SimNodeOptions o;
+  o.scene = "steady_tow";
+  o.domain = 171;
+  o.set = {"cable.elements=0"};
+  try {
+    SimNode node(o);
+    FAIL() << "the node started";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("sim_node exited (code 2) before scene_info"), std::string::npos) << what;
+    EXPECT_NE(what.find("cable.elements = 0"), std::string::npos) << what;
+  }
+}
+
+// automatic ids: two nodes at once on different domains, each seeing only its own node
+TEST(SimNodeFixture, ParallelNodesGetDistinctDomains) {
+  SimNodeOptions o;
+  o.scene = "steady_tow";
+  o.duration = 0.5;
+  SimNode a(o), b(o);
+  EXPECT_NE(a.domain(), b.domain());
+  for (const SimNode* n : {&a, &b}) {
+    EXPECT_GE(n->domain(), kFirstAutoDomain);
+    EXPECT_LE(n->domain(), kLastAutoDomain);
+  }
+  const NodeResult ra = a.Wait(), rb = b.Wait();
+  EXPECT_EQ(ra.exit_code, 0) << a.log();
+  EXPECT_EQ(rb.exit_code, 0) << b.log();
+  // 10 steps each: had they shared a domain, each fixture would hold both nodes' statuses
+  for (const SimNode* n : {&a, &b}) {
+    const std::vector<StatusSample> s = n->status_history();
+    ASSERT_FALSE(s.empty());
+    EXPECT_TRUE(s.back().finished());
+    EXPECT_EQ(s.back().step, 10u);
+    for (const StatusSample& x : s) EXPECT_EQ(x.run_id, s.front().run_id);
+  }
+}
+
+// realtime mode (automatic id): 2 s of simulated time at --rate 10 is 0.2 s of wall time
+TEST(SimNodeFixture, RealtimeModeRunsPaced) {
+  SimNodeOptions o;
+  o.scene = "steady_tow";
+  o.mode = "realtime";
+  o.rate = 10.0;
+  o.duration = 2.0;
+  SimNode node(o);
+  const NodeResult end = node.Wait();
+  EXPECT_EQ(end.exit_code, 0) << node.log();
+  EXPECT_EQ(end.summary.rfind("sim_node: steady_tow: realtime, 40 steps, 2 s simulated", 0), 0u)
+      << end.summary;
+  const std::optional<StatusSample> last = node.status();
+  ASSERT_TRUE(last.has_value());
+  EXPECT_TRUE(last->finished());
+  EXPECT_EQ(last->mode, "realtime");
+}
+
+}  // namespace
+}  // namespace towsim::testing

@@ -1,0 +1,264 @@
+// towsim_sweep run locally as a process (docs/sweeps.md): the table against sim_node run
+// directly with the same values, failed cases recorded with sim_node's message, --resume
+// rerunning only the missing and failed cases, SIGTERM losing no finished case, bad sweep
+// files exiting 2. Offline only: no DDS.
+
+#include <signal.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/csv_reader.h"
+#include "testing/process.h"
+#include "temp_dir.h"
+
+namespace towsim::testing {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSource = TOWSIM_SOURCE_DIR;
+const std::string kLocalSweep = kSource + "/tests/integration/sweeps/local_sweep.yaml";
+constexpr double kTimeout = 60.0;  // [s] a sweep that takes longer has hung
+
+// a folder of the test's own (removed at its end): the pid in its name keeps apart the runs of
+// other checkouts on the machine
+class SweepLocal : public ::testing::Test {
+ protected:
+  std::string Tmp(const std::string& what) const { return (tmp_.path() / what).string(); }
+
+ private:
+  test::TempDir tmp_;
+};
+
+struct Sweep {
+  int exit_code = -1;
+  std::string out, err;
+};
+
+Sweep RunSweep(const std::vector<std::string>& args, const std::string& log) {
+  std::vector<std::string> argv = {TOWSIM_SWEEP};
+  argv.insert(argv.end(), args.begin(), args.end());
+  Process p(argv, log);
+  EXPECT_TRUE(p.Wait(kTimeout)) << p.command_line();
+  return {p.exit_code(), p.out(), p.err()};
+}
+
+// the rows of results.csv by case, each a map column -> field
+std::map<std::string, std::map<std::string, std::string>> Table(const std::string& path) {
+  const io::CsvTable t = io::ReadCsvFile(path);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  for (const auto& row : t.rows) {
+    for (size_t i = 0; i < t.columns.size(); ++i) rows[row[0]][t.columns[i]] = row[i];
+  }
+  return rows;
+}
+
+// the last row of `body` in a bodies.csv: its fields
+std::vector<std::string> LastBodyRow(const std::string& bodies_csv, const std::string& body) {
+  const io::CsvTable t = io::ReadCsvFile(bodies_csv);
+  std::vector<std::string> last;
+  for (const auto& row : t.rows) {
+    if (row[1] == body) last = row;
+  }
+  return last;
+}
+
+fs::file_time_type Mtime(const fs::path& p) { return fs::last_write_time(p); }
+
+TEST_F(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
+  const std::string out = Tmp("out");
+  const Sweep s = RunSweep({kLocalSweep, "--out", out, "--workers", "2"}, Tmp("log"));
+  // two cases fail: the sweep ran to its end and says so with exit 4
+  EXPECT_EQ(s.exit_code, 4) << s.err;
+  EXPECT_NE(s.err.find("[towsim_sweep] 4/4 cases done, 2 failed, 0 running"), std::string::npos)
+      << s.err;
+  EXPECT_NE(s.out.find("towsim_sweep: local_sweep.yaml: 4 cases: 2 ok, 2 failed, 0 not run"),
+            std::string::npos)
+      << s.out;
+  EXPECT_EQ(ReadFile(out + "/summary.txt"), s.out);
+
+  // the header: fixed columns, parameters by key path, results by name
+  std::ifstream table_in(out + "/results.csv");
+  std::string header;
+  std::getline(table_in, header);
+  EXPECT_EQ(header,
+            "case,status,exit_code,message,wall_s,cable.elements,time.step,cable.youngs_modulus,"
+            "integrator.max_substep_level,towfish_depth,layback,top_tension_max,"
+            "top_tension_rms,towfish_track_error,newton_max,substeps");
+  auto rows = Table(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 4u);
+
+  // each case against sim_node run directly with the same --set values
+  const std::string scene = kSource + "/config/scenes/case1_forward.yaml";
+  const std::vector<std::vector<std::string>> sets = {
+      {"cable.elements=10", "time.step=0.05", "cable.youngs_modulus=7.0e8",
+       "integrator.max_substep_level=6"},
+      {"cable.elements=20", "time.step=0.1", "cable.youngs_modulus=7.0e8",
+       "integrator.max_substep_level=6"},
+      {"cable.elements=20", "time.step=1", "cable.youngs_modulus=7.0e11",
+       "integrator.max_substep_level=0"},
+      {"cable.elements=0", "time.step=0.05", "cable.youngs_modulus=7.0e8",
+       "integrator.max_substep_level=6"}};
+  const int expected_codes[] = {0, 0, 3, 2};
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = "case_000" + std::to_string(i);
+    const std::string direct_csv = Tmp("direct_" + std::to_string(i));
+    std::vector<std::string> argv = {TOWSIM_SIM_NODE, "--scene",    scene, "--mode",
+                                     "offline",       "--duration", "2"};
+    for (const std::string& set : sets[i]) argv.insert(argv.end(), {"--set", set});
+    argv.insert(argv.end(), {"--csv", direct_csv});
+    Process direct(argv, Tmp("direct_log_" + std::to_string(i)));
+    ASSERT_TRUE(direct.Wait(kTimeout));
+    ASSERT_EQ(direct.exit_code(), expected_codes[i]) << direct.err();
+    auto& row = rows[name];
+    EXPECT_EQ(row["exit_code"], std::to_string(expected_codes[i])) << name;
+    EXPECT_EQ(row["cable.elements"], sets[i][0].substr(sets[i][0].find('=') + 1));
+    if (expected_codes[i] != 0) {
+      // the message is sim_node's last line on stderr, the results are empty
+      EXPECT_EQ(row["status"], "failed");
+      std::string err = direct.err();
+      while (!err.empty() && err.back() == '\n') err.pop_back();
+      EXPECT_EQ(row["message"], err.substr(err.rfind('\n') + 1)) << name;
+      EXPECT_EQ(row["towfish_depth"], "");
+      continue;
+    }
+    EXPECT_EQ(row["status"], "ok");
+    EXPECT_EQ(row["message"], "");
+    // the CSV files of the case are sim_node's own, byte for byte
+    for (const char* file : {"bodies.csv", "cable.csv", "forces.csv"}) {
+      EXPECT_EQ(ReadFile(out + "/" + name + "/" + file), ReadFile(direct_csv + "/" + file))
+          << name << " " << file;
+    }
+    // the final towfish depth is the z of its last bodies.csv row (both "%.9g")
+    EXPECT_EQ(row["towfish_depth"], LastBodyRow(direct_csv + "/bodies.csv", "towfish")[4]);
+    // the run totals are those of sim_node's summary line
+    const std::string line = direct.out();
+    const size_t at = line.find("Newton iterations mean ");
+    ASSERT_NE(at, std::string::npos);
+    const std::string max = line.substr(line.find(" max ", at) + 5);
+    EXPECT_EQ(row["newton_max"], max.substr(0, max.find(','))) << line;
+    EXPECT_EQ(row["substeps"], "0");
+  }
+  // the plot: one point per ok case and result (2 x 7), the failed cases counted per panel
+  const std::string svg = ReadFile(out + "/results.svg");
+  size_t points = 0;
+  for (size_t at = svg.find("<circle"); at != std::string::npos; at = svg.find("<circle", at + 1)) {
+    ++points;
+  }
+  EXPECT_EQ(points, 14u);
+  EXPECT_NE(svg.find("towfish_depth (towfish.depth, final), 2 failed case(s) not shown"),
+            std::string::npos);
+
+  // the same folder again without --resume: refused, nothing touched
+  const Sweep again = RunSweep({kLocalSweep, "--out", out}, Tmp("again"));
+  EXPECT_EQ(again.exit_code, 2);
+  EXPECT_NE(again.err.find("holds an earlier sweep (results.csv); pass --resume"),
+            std::string::npos)
+      << again.err;
+
+  // --resume: case_0001 lost its status (as if the sweep was killed while it ran): it and the
+  // two failed cases run again, case_0000 does not
+  fs::remove(out + "/case_0001/case_status.txt");
+  const auto kept = Mtime(out + "/case_0000/case_status.txt");
+  const auto failed_before = Mtime(out + "/case_0003/case_status.txt");
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const Sweep resumed = RunSweep({kLocalSweep, "--out", out, "--resume"}, Tmp("resume"));
+  EXPECT_EQ(resumed.exit_code, 4) << resumed.err;
+  EXPECT_NE(resumed.out.find("2 failed, 0 not run; 3 run in"), std::string::npos) << resumed.out;
+  EXPECT_EQ(Mtime(out + "/case_0000/case_status.txt"), kept);
+  EXPECT_NE(Mtime(out + "/case_0003/case_status.txt"), failed_before);
+  auto resumed_rows = Table(out + "/results.csv");
+  ASSERT_EQ(resumed_rows.size(), 4u);
+  for (auto& [name, row] : resumed_rows) {
+    row.erase("wall_s");
+    rows[name].erase("wall_s");
+    EXPECT_EQ(row, rows[name]) << name;
+  }
+}
+
+TEST_F(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
+  // six cases of ~0.3 s each (Case 1 for 400 s) on one worker; SIGTERM during the third
+  const std::string dir = Tmp("sweep");
+  fs::create_directories(dir);
+  const std::string file = dir + "/long.yaml";
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                      << "duration: 400\nparameters:\n  cable.elements: [10, 11, 12, 13, 14, 15]\n"
+                      << "results:\n  depth: {signal: towfish.depth}\n";
+  const std::string out = dir + "/out";
+  Process sweep({TOWSIM_SWEEP, file, "--out", out, "--workers", "1"}, dir + "/log");
+  // wait for two finished cases, then stop the sweep
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!fs::exists(out + "/case_0001/case_status.txt") &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  sweep.Signal(SIGTERM);
+  ASSERT_TRUE(sweep.Wait(kTimeout));
+  EXPECT_EQ(sweep.exit_code(), 143) << sweep.err();
+  // every case that finished is in the table, the one stopped is not
+  auto rows = Table(out + "/results.csv");
+  ASSERT_GE(rows.size(), 2u);
+  ASSERT_LT(rows.size(), 6u);
+  for (auto& [name, row] : rows) {
+    EXPECT_EQ(row["status"], "ok") << name;
+    EXPECT_TRUE(fs::exists(out + "/" + name + "/case_status.txt")) << name;
+  }
+  const size_t finished = rows.size();
+  EXPECT_FALSE(fs::exists(out + "/case_000" + std::to_string(finished) + "/case_status.txt"));
+  EXPECT_NE(sweep.out().find(std::to_string(6 - finished) + " not run"), std::string::npos)
+      << sweep.out();
+
+  const Sweep resumed =
+      RunSweep({file, "--out", out, "--resume", "--workers", "2"}, dir + "/resume");
+  EXPECT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(
+      resumed.out.find("6 ok, 0 failed, 0 not run; " + std::to_string(6 - finished) + " run in"),
+      std::string::npos)
+      << resumed.out;
+  auto all = Table(out + "/results.csv");
+  ASSERT_EQ(all.size(), 6u);
+  for (auto& [name, row] : rows) EXPECT_EQ(all[name], row) << name;  // kept as they were
+}
+
+TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
+  const std::string dir = Tmp("bad");
+  fs::create_directories(dir);
+  const std::string file = dir + "/bad.yaml";
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/steady_tow.yaml\n"
+                      << "parameters:\n  cable.elemnts: [10, 20]\n";
+  Sweep s = RunSweep({file, "--out", dir + "/out"}, dir + "/log1");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: parameters.cable.elemnts = [10, 20] (bad.yaml:3): "
+                       "cable: unknown key; did you mean elements?"),
+            std::string::npos)
+      << s.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));  // nothing written for a bad sweep
+
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/steady_tow.yaml\n"
+                      << "parameters:\n  cable.elements: [10, 20]\n"
+                      << "results:\n  d: {signal: fish.depth}\n";
+  s = RunSweep({file, "--out", dir + "/out"}, dir + "/log2");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("results.d.signal = fish.depth (bad.yaml:5): no body named fish"),
+            std::string::npos)
+      << s.err;
+
+  s = RunSweep({file, "--workers", "0", "--out", dir + "/out"}, dir + "/log3");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("--workers 0: must be an integer >= 1"), std::string::npos) << s.err;
+  s = RunSweep({file}, dir + "/log4");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("--out DIR is required"), std::string::npos) << s.err;
+}
+
+}  // namespace
+}  // namespace towsim::testing

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# The installed package, tested from the outside (docs/testing_controllers.md):
+#
+#   installed_package.sh example BUILD_DIR SOURCE_DIR
+#     cmake --install BUILD_DIR into a temporary prefix, then configures, builds and tests
+#     SOURCE_DIR/examples/controller_ci against it (find_package(towsim) with
+#     CMAKE_PREFIX_PATH=<prefix> only: nothing of the build or source tree)
+#   installed_package.sh deb BUILD_DIR SOURCE_DIR
+#     cpack -G DEB, then checks the package without installing it into this machine's /usr:
+#     its Depends (from dpkg-shlibdeps) name the packages that own every shared library
+#     sim_node needs; apt-get resolves them (--simulate); the extracted files (dpkg -x into a
+#     throwaway root) hold the programs, the configuration and the CMake package, and the
+#     extracted sim_node answers --help and runs an installed scene by name.
+#
+# Registered as ctest tests InstalledPackage.ControllerCiExample / InstalledPackage.DebianPackage
+# (tests/package/CMakeLists.txt). Everything is written under a temporary directory that is
+# removed at the end, also on failure.
+set -euo pipefail
+mode="$1"
+build="$(cd "$2" && pwd)"
+source="$(cd "$3" && pwd)"
+work="$(mktemp -d "${TMPDIR:-/tmp}/towsim_package.XXXXXX")"
+trap 'rm -rf "$work"' EXIT
+fail() { echo "installed_package.sh: FAIL: $*" >&2; exit 1; }
+
+case "$mode" in
+example)
+  cmake --install "$build" --prefix "$work/prefix" > "$work/install.log" ||
+    { cat "$work/install.log"; fail "cmake --install"; }
+  for f in bin/sim_node bin/towfish_depth share/towsim/cyclonedds.xml \
+           share/towsim/scenes/case1_forward.yaml lib/cmake/towsim/towsimConfig.cmake; do
+    [[ -e "$work/prefix/$f" ]] || fail "the installation has no $f"
+  done
+  cmake -S "$source/examples/controller_ci" -B "$work/example" -DCMAKE_BUILD_TYPE=Release \
+        -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" ||
+    { cat "$work/configure.log"; fail "configuring examples/controller_ci"; }
+  grep -q "towsim_DIR:PATH=$work/prefix/lib/cmake/towsim" "$work/example/CMakeCache.txt" ||
+    fail "find_package(towsim) did not find the temporary prefix"
+  cmake --build "$work/example" -j2 > "$work/build.log" ||
+    { cat "$work/build.log"; fail "building examples/controller_ci"; }
+  # the example's tests pick their DDS domain ids themselves (DomainLease)
+  ctest --test-dir "$work/example" --output-on-failure
+  ;;
+deb)
+  (cd "$work" && cpack -G DEB --config "$build/CPackConfig.cmake" -B "$work/cpack" \
+     > "$work/cpack.log") || { cat "$work/cpack.log"; fail "cpack -G DEB"; }
+  debs=("$work"/cpack/towsim_*.deb)
+  [[ -f "${debs[0]}" ]] || fail "cpack made no towsim_*.deb"
+  deb="${debs[0]}"
+  echo "package: $(basename "$deb") ($(du -k "$deb" | cut -f1) kB)"
+  depends="$(dpkg-deb -f "$deb" Depends)"
+  echo "Depends: $depends"
+  # the package names of Depends, one a line (versions and alternatives dropped)
+  depends_names="$(tr ',' '\n' <<< "$depends" | sed 's/[(|].*//; s/ //g')"
+  for pkg in libddsc0debian libyaml-cpp0.7 libstdc++6 libc6; do
+    grep -qx "$pkg" <<< "$depends_names" || fail "Depends does not name $pkg"
+  done
+  dpkg -x "$deb" "$work/root"
+  for f in usr/bin/sim_node usr/bin/towsim_record usr/bin/towsim_replay usr/bin/towsim_export \
+           usr/bin/towfish_depth usr/share/towsim/cyclonedds.xml \
+           usr/share/towsim/scenes/case1_forward.yaml usr/share/towsim/idl/towsim_msgs.idl \
+           usr/share/towsim/ros2/towsim_msgs/package.xml usr/include/towsim/msgs/towsim_msgs.h \
+           usr/include/towsim/common/client.h usr/include/towsim/testing/sim_node_test.h \
+           usr/lib/cmake/towsim/towsimConfig.cmake; do
+    [[ -e "$work/root/$f" ]] || fail "the package has no /$f"
+  done
+  # every shared library sim_node links directly (NEEDED) belongs to a package Depends names
+  # (the libraries those load are their packages' own dependencies)
+  sim_node="$work/root/usr/bin/sim_node"
+  while read -r needed; do
+    lib="$(ldd "$sim_node" | awk -v n="$needed" '$1 == n { print $3 }')"
+    [[ -n "$lib" ]] || fail "sim_node needs $needed, which is not found"
+    owner=""
+    # /lib is /usr/lib on Debian 12 (merged /usr); dpkg knows one of the spellings
+    for path in "$lib" "/usr$lib" "$(realpath "$lib")"; do
+      [[ -n "$owner" ]] || owner="$( (dpkg -S "$path" 2>/dev/null || true) | head -1 | cut -d: -f1)"
+    done
+    [[ -n "$owner" ]] || fail "no Debian package owns $lib"
+    grep -qx "$owner" <<< "$depends_names" || fail "sim_node needs $lib of $owner, not in Depends"
+    echo "  $needed: $owner"
+  done < <(readelf -d "$sim_node" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+  # apt resolves the dependencies (nothing is installed)
+  apt-get install --simulate --no-install-recommends "$deb" > "$work/apt.log" 2>&1 ||
+    { cat "$work/apt.log"; fail "apt-get install --simulate $deb"; }
+  "$work/root/usr/bin/sim_node" --help > "$work/help.txt" || fail "sim_node --help"
+  grep -q "^usage: sim_node --scene FILE" "$work/help.txt" || fail "sim_node --help: no usage"
+  # the packaged sim_node finds the packaged scenes by name (<root>/usr/share/towsim/scenes)
+  "$work/root/usr/bin/sim_node" --scene case1_forward --mode offline --duration 1 \
+    > "$work/run.txt" || fail "sim_node --scene case1_forward (packaged)"
+  grep -q "^sim_node: case1_forward: 20 steps" "$work/run.txt" || fail "$(cat "$work/run.txt")"
+  echo "ok: $(basename "$deb"): Depends complete, files present, sim_node runs"
+  ;;
+*)
+  fail "mode must be example or deb, not '$mode'"
+  ;;
+esac

@@ -1,0 +1,50 @@
+// The installed-scene lookup of sim_node --scene (app/installed_data.h): a path that exists
+// wins, a bare name finds <data>/scenes/NAME[.yaml], anything else is passed on unchanged.
+
+#include "app/installed_data.h"
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "temp_dir.h"
+
+namespace towsim::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+void Touch(const fs::path& p) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << "name: x\n";
+}
+
+TEST(ResolveScene, BareNamesFindTheInstalledScenes) {
+  const test::TempDir tmp;
+  const fs::path data = tmp.path() / "share" / "towsim";
+  Touch(data / "scenes" / "case1_forward.yaml");
+  EXPECT_EQ(ResolveScene("case1_forward", data), (data / "scenes" / "case1_forward.yaml").string());
+  EXPECT_EQ(ResolveScene("case1_forward.yaml", data),
+            (data / "scenes" / "case1_forward.yaml").string());
+  // not installed, or with a directory: unchanged (the loader names the missing file)
+  EXPECT_EQ(ResolveScene("nope", data), "nope");
+  EXPECT_EQ(ResolveScene("scenes/case1_forward.yaml", data), "scenes/case1_forward.yaml");
+  EXPECT_EQ(ResolveScene("case1_forward", std::nullopt), "case1_forward");
+}
+
+TEST(ResolveScene, AnExistingPathWins) {
+  const test::TempDir tmp;
+  const fs::path data = tmp.path() / "share" / "towsim";
+  Touch(data / "scenes" / "mine.yaml");
+  const fs::path own = tmp.path() / "mine.yaml";
+  Touch(own);
+  EXPECT_EQ(ResolveScene(own.string(), data), own.string());
+}
+
+TEST(InstalledDataDir, NoneInABuildTree) {
+  // this test runs from the build tree (build/tests/unit/), not from P/bin
+  EXPECT_FALSE(InstalledDataDir().has_value());
+}
+
+}  // namespace
+}  // namespace towsim::app

@@ -1,0 +1,68 @@
+// app/sweep_case: a case's folder: its arguments, command.sh (run by bash), case_status.txt,
+// and the row collected from it.
+
+#include "app/sweep_case.h"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "app/text_file.h"
+#include "temp_dir.h"
+
+namespace towsim::app {
+namespace {
+
+TEST(SweepCase, LastLineIsTheLastNonEmptyOneAfterProgressRedraws) {
+  EXPECT_EQ(LastLine("a\nb\n\n"), "b");
+  EXPECT_EQ(LastLine("\r[sim_node] t = 1/2 s   \r[sim_node] t = 2/2 s   \nsim_node: error: x\n"),
+            "sim_node: error: x");
+  EXPECT_EQ(LastLine(""), "");
+  EXPECT_EQ(LastLine("only"), "only");
+}
+
+TEST(SweepCase, CommandShRunsTheCaseAndWritesItsStatus) {
+  test::TempDir dir;
+  const std::string case_dir = (dir.path() / "case_0000").string();
+  // a stand-in for sim_node: prints its arguments, one a line, and exits 3
+  const std::string fake = (dir.path() / "fake_sim_node").string();
+  std::ofstream(fake) << "#!/bin/bash\nprintf '%s\\n' \"$@\"\necho 'last words' >&2\nexit 3\n";
+  ASSERT_EQ(std::system(("chmod +x '" + fake + "'").c_str()), 0);
+  const std::vector<std::string> args = {"--set", "script=[{at: 0, thrust: 1}]", "--set",
+                                         "name=it's"};
+  PrepareCase(case_dir, fake, args);
+  EXPECT_TRUE(SameArguments(case_dir, args));
+  EXPECT_FALSE(SameArguments(case_dir, {"--set", "other"}));
+  EXPECT_FALSE(ReadCaseStatus(case_dir));  // not run yet
+  const int status = std::system(("bash '" + case_dir + "/command.sh'").c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 3);
+  // the arguments arrived unchanged through the shell quoting
+  EXPECT_EQ(ReadTextFile(case_dir + "/sim_node.out"),
+            "--set\nscript=[{at: 0, thrust: 1}]\n--set\nname=it's\n");
+  const std::optional<CaseStatus> s = ReadCaseStatus(case_dir);
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->exit_code, 3);
+  EXPECT_GE(s->wall_s, 0.0);
+
+  scene::SweepSpec spec;
+  SweepCase c;
+  c.name = "case_0000";
+  c.values = {{"script", "[{at: 0, thrust: 1}]"}};
+  const std::optional<SweepRow> row = CollectCase(spec, c, case_dir);
+  ASSERT_TRUE(row);
+  EXPECT_FALSE(row->ok);
+  EXPECT_EQ(row->exit_code, 3);
+  EXPECT_EQ(row->message, "last words");
+  EXPECT_EQ(row->parameters, (std::vector<std::string>{"[{at: 0, thrust: 1}]"}));
+
+  ClearCaseStatus(case_dir);
+  EXPECT_FALSE(CollectCase(spec, c, case_dir));
+  WriteCaseStatus(case_dir, {0, 1.5});
+  EXPECT_EQ(ReadTextFile(case_dir + "/case_status.txt"), "exit_code=0\nwall_s=1.500\n");
+}
+
+}  // namespace
+}  // namespace towsim::app

@@ -1,0 +1,148 @@
+// app/sweep_signals: the results of a case from its CSV files and summary line. The files are
+// written here with values whose statistics are known by hand.
+
+#include "app/sweep_signals.h"
+
+#include <cmath>
+#include <fstream>
+#include <stdexcept>
+
+#include <gtest/gtest.h>
+
+#include "app/run_stats.h"
+#include "io/csv_writer.h"
+#include "scene/config_error.h"
+#include "temp_dir.h"
+
+namespace towsim::app {
+namespace {
+
+constexpr double kExact = 1e-12;  // the files hold the values to 9 digits; these are exact
+
+void Write(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+}
+
+scene::SweepResult R(const std::string& signal, const std::string& stat,
+                     std::optional<double> from = std::nullopt) {
+  scene::SweepResult r;
+  r.name = "r";
+  r.signal = signal;
+  r.stat = stat;
+  r.from = from;
+  r.location = "sweep.yaml:1";
+  return r;
+}
+
+class SweepSignals : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    // the towfish starts at (10, 20) heading 90 deg (east, +y): its track is the line x = 10,
+    // starboard is -x; it drifts to x = 7 (3 m to starboard) and to z = 30
+    const std::string yaw = "1.57079632679";
+    Write(dir_.path() / "bodies.csv", std::string(io::kCsvBodiesHeader) + "\n" +
+                                          "0,tow,0,0,3,0,0,0,1,0,0,0,0,0\n"
+                                          "0,towfish,10,20,25,0,0," +
+                                          yaw +
+                                          ",3,4,0,0,0,0\n"
+                                          "1,tow,1,0,3,0,0,0,1,0,0,0,0,0\n"
+                                          "1,towfish,8,25,28,0,0," +
+                                          yaw +
+                                          ",0,0,0,0,0,0\n"
+                                          "2,tow,2,0,3,0,0,0,1,0,0,0,0,0\n"
+                                          "2,towfish,7,30,30,0,0," +
+                                          yaw + ",0,0,0,0,0,0\n");
+    // two nodes: tensions 3, 4 at t=0; 5, 1 at t=1; layback from node 0 to node 1
+    Write(dir_.path() / "cable.csv", std::string(io::kCsvCableHeader) + "\n" +
+                                         "0,0,0,0,0,3\n0,1,3,4,10,4\n"
+                                         "1,0,0,0,0,5\n1,1,6,8,10,1\n");
+    Write(dir_.path() / "forces.csv",
+          std::string(io::kCsvForcesHeader) + "\n" + "0,tow,3,4,12,0,0,0\n0,towfish,0,0,0,0,0,0\n");
+    Write(dir_.path() / "status.csv", std::string(io::kCsvStatusHeader) + "\n" +
+                                          "0,0,0,0,0\n1,10,4,1e-9,200\n2,20,2,3e-9,100\n");
+  }
+  double One(const scene::SweepResult& r, const std::string& out = "") {
+    return ComputeSweepResults({r}, dir_.path().string(), out).at(0);
+  }
+  test::TempDir dir_;
+};
+
+TEST_F(SweepSignals, StatisticsOfBodyCableAndStatusSignals) {
+  EXPECT_NEAR(One(R("towfish.depth", "final")), 30.0, kExact);
+  EXPECT_NEAR(One(R("towfish.z", "initial")), 25.0, kExact);
+  EXPECT_NEAR(One(R("towfish.speed", "max")), 5.0, kExact);        // |(3, 4, 0)|
+  EXPECT_NEAR(One(R("towfish.track_error", "final")), 3.0, 1e-9);  // yaw to 12 digits
+  EXPECT_NEAR(One(R("towfish.track_error", "max_abs")), 3.0, 1e-9);
+  EXPECT_NEAR(One(R("tow.x", "mean")), 1.0, kExact);
+  EXPECT_NEAR(One(R("tow.cable_force", "final")), 13.0, kExact);  // |(3, 4, 12)|
+  EXPECT_NEAR(One(R("layback", "initial")), 5.0, kExact);
+  EXPECT_NEAR(One(R("layback", "final")), 10.0, kExact);
+  EXPECT_NEAR(One(R("top_tension", "rms")), std::sqrt((9.0 + 25.0) / 2.0), kExact);
+  EXPECT_NEAR(One(R("top_tension", "std")), 1.0, kExact);  // 3 and 5 about 4
+  EXPECT_NEAR(One(R("max_tension", "min")), 4.0, kExact);
+  EXPECT_NEAR(One(R("end_tension", "max")), 4.0, kExact);
+  EXPECT_NEAR(One(R("newton_iterations", "max")), 4.0, kExact);
+  EXPECT_NEAR(One(R("newton_iterations", "mean", 0.5)), 3.0, kExact);  // t = 1, 2 only
+  EXPECT_NEAR(One(R("step_wall_us", "final")), 100.0, kExact);
+  EXPECT_NEAR(One(R("residual", "max")), 3e-9, kExact);
+}
+
+TEST_F(SweepSignals, RunTotalsComeFromTheSummaryLine) {
+  RunStats stats;
+  stats.steps = 100;
+  stats.sim_time = 5.0;
+  stats.wall_time = 0.25;
+  stats.iterations_sum = 150;
+  stats.iterations_max = 7;
+  stats.substepped_steps = 2;
+  stats.has_vehicles = true;
+  stats.coupling_sum = 120;
+  const std::string out = SummaryLine("steady: tow", stats) + "\n";
+  EXPECT_EQ(One(R("steps", ""), out), 100.0);
+  EXPECT_EQ(One(R("run_wall_s", ""), out), 0.25);
+  EXPECT_EQ(One(R("rtf", ""), out), 20.0);
+  EXPECT_EQ(One(R("newton_iterations_mean", ""), out), 1.5);
+  EXPECT_EQ(One(R("newton_iterations_max", ""), out), 7.0);
+  EXPECT_EQ(One(R("substeps", ""), out), 2.0);
+  EXPECT_EQ(One(R("coupling_iterations_mean", ""), out), 1.2);
+  EXPECT_THROW(One(R("steps", ""), "no summary here\n"), std::runtime_error);
+}
+
+TEST_F(SweepSignals, MissingFilesAndEmptyWindowsThrow) {
+  std::filesystem::remove(dir_.path() / "cable.csv");
+  try {
+    One(R("layback", "final"));
+    ADD_FAILURE() << "no exception";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cable.csv: cannot be read"), std::string::npos);
+  }
+  EXPECT_THROW(One(R("towfish.z", "final", 5.0)), std::runtime_error);
+}
+
+TEST(SweepSignalNames, UnknownSignalsAreBadInput) {
+  const std::vector<std::string> bodies = {"tow", "towfish"};
+  auto error = [&](const std::string& signal, const std::string& stat) -> std::string {
+    std::vector<scene::SweepResult> r = {R(signal, stat)};
+    try {
+      CheckSweepResults(&r, bodies);
+    } catch (const scene::ConfigError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error("towfish.depth", ""), "");
+  EXPECT_EQ(error("fish.depth", "max"),
+            "results.r.signal = fish.depth (sweep.yaml:1): no body named fish in the scene "
+            "(bodies: tow, towfish)");
+  EXPECT_NE(error("towfish.altitude", "max").find("unknown quantity altitude of a body"),
+            std::string::npos);
+  EXPECT_NE(error("tension", "max").find("unknown signal"), std::string::npos);
+  EXPECT_NE(error("rtf", "max").find("it takes no stat"), std::string::npos);
+  // a time signal without a statistic is its final value
+  std::vector<scene::SweepResult> r = {R("layback", "")};
+  CheckSweepResults(&r, bodies);
+  EXPECT_EQ(r[0].stat, "final");
+}
+
+}  // namespace
+}  // namespace towsim::app
