@@ -13,7 +13,10 @@
 #      the towfish depth excursion with and without the depth controller.
 # It ends by itself (about 10 s after the build) and leaves no process behind: every process
 # it starts is stopped on exit, also on Ctrl-C. Environment: TOWSIM_DOMAIN (DDS domain of the
-# first run, the second uses +1; default 20), TOWSIM_RATE (default 50).
+# first run, the second uses +1; default 20), TOWSIM_RATE (default 50), TOWSIM_SECURE=1: the DDS
+# runs secured end to end (DDS Security, docs/security.md): scripts/security.sh makes the
+# identities in out/security/ (the node; the manoeuvre runner may command the tow vehicle only,
+# the depth controller the towfish only) and every process runs with --security.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh" python3
 
@@ -25,6 +28,14 @@ depth_ctl="$bin"/controllers/towfish_depth
 domain="${TOWSIM_DOMAIN:-20}"
 rate="${TOWSIM_RATE:-50}"
 scene=config/scenes/case2_uturn.yaml
+node_security=() runner_security=() depth_security=()
+if [[ "${TOWSIM_SECURE:-0}" == 1 ]]; then
+  rm -rf out/security
+  scripts/security.sh out/security sim_node maneuver_runner:tow_vehicle towfish_depth:towfish
+  node_security=(--security out/security/sim_node)
+  runner_security=(--security out/security/maneuver_runner)
+  depth_security=(--security out/security/towfish_depth)
+fi
 
 # every process started here is stopped when the script ends, however it ends
 pids=()
@@ -65,12 +76,12 @@ run_uturn() {
   mkdir -p "$logs"
   "$sim_node" --scene "$scene" --mode realtime --rate "$rate" --wait-for-controllers \
     --duration 250 --set 'script=[]' --domain "$dom" --record "out/$name.mcap" \
-    >"$logs/sim_node.out" 2>"$logs/sim_node.err" &
+    "${node_security[@]}" >"$logs/sim_node.out" 2>"$logs/sim_node.err" &
   pids+=($!)
   "$runner" --body tow_vehicle --thrust 4165 --rudder-deg 20 --start 55 --until-yaw-deg 170 \
-    --domain "$dom" >"$logs/maneuver_runner.out" 2>"$logs/maneuver_runner.err" &
+    --domain "$dom" "${runner_security[@]}" >"$logs/maneuver_runner.out" 2>"$logs/maneuver_runner.err" &
   pids+=($!)
-  "$depth_ctl" --body towfish "$@" --domain "$dom" \
+  "$depth_ctl" --body towfish "$@" --domain "$dom" "${depth_security[@]}" \
     >"$logs/towfish_depth.out" 2>"$logs/towfish_depth.err" &
   pids+=($!)
 }
@@ -99,7 +110,8 @@ finish_uturn() {
 
 echo
 echo "== 2. Case 2 U-turn over DDS: sim_node + maneuver_runner + towfish_depth, twice" \
-     "(realtime x$rate, domains $domain and $((domain + 1)))"
+     "(realtime x$rate, domains $domain and $((domain + 1))$([[ ${#node_security[@]} -gt 0 ]] &&
+     echo ", DDS Security: identities in out/security/"))"
 run_uturn case2_uturn "$domain" --hold
 run_uturn case2_uturn_depth_control "$((domain + 1))" --depth 25
 finish_uturn case2_uturn "${pids[0]}" "${pids[1]}" "${pids[2]}"

@@ -6,7 +6,8 @@
 #                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/
 #   P/include/towsim/          msgs/*.h (generated from the IDL), common/*.h (client library),
 #                              testing/*.h (test fixture)
-#   P/lib/                     libtowsim_msgs.a, libtowsim_client.a (+ laws), libtowsim_testing.a
+#   P/lib/                     libtowsim_msgs.a, libtowsim_client.a (+ laws, dds_security),
+#                              libtowsim_testing.a
 #   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
 #                              towsim::<name>), towsim_SIM_NODE, towsim_DATA_DIR, towsim_DDS_URI
@@ -36,13 +37,15 @@ install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
 
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
-install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common towsim_testing
+install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common towsim_dds_security
+                towsim_testing
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)
 install(FILES controllers/common/client.h controllers/common/dds_qos.h controllers/common/flags.h
               controllers/common/laws.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/common)
+install(FILES sim_node/dds/security.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/dds)
 install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/testing
         FILES_MATCHING PATTERN "*.h")
 

@@ -17,7 +17,8 @@ cd "$towsim_root"
 
 # dpkg-dev: dpkg-shlibdeps, with which cpack -G DEB declares the package's dependencies
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
-                 cyclonedds-tools libgtest-dev libbenchmark-dev dpkg-dev "$@")
+                 cyclonedds-tools libgtest-dev libbenchmark-dev dpkg-dev libssl-dev
+                 openssl "$@")
 # who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
 for towsim_pkg in "$@"; do
   # and numpy, for scripts/plot_waves.py

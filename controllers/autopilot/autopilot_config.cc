@@ -88,7 +88,8 @@ std::vector<std::string> AutopilotFlagNames() {
           "log",
           "domain",
           "namespace",
-          "timeout"};
+          "timeout",
+          "security"};
 }
 std::vector<std::string> AutopilotSwitchNames() { return {}; }
 

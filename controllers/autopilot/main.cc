@@ -6,7 +6,7 @@
 //              [--survey-heading-deg H] [--turn starboard|port]] [--lookahead 60]
 //             [--acceptance-radius 30] [--heading-kp ..] [--heading-ki ..] [--heading-kd ..]
 //             [--speed-kp ..] [--speed-ki ..] [--log FILE] [--domain 0] [--namespace /towsim]
-//             [--timeout 30]
+//             [--timeout 30] [--security DIR/NAME]
 // Setpoints from t = 0, changed by the file's `schedule`; with waypoints (file) or a survey
 // (flags or file) the heading setpoint comes from the guidance. --log writes one line per
 // step: "t x y yaw u speed_d heading_d thrust rudder elevator waypoint". At the end it prints
@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     opt.domain = f.Domain();
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0);
+    opt.security = f.String(kSecurityFlag, "");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "autopilot: error: %s\n", e.what());
     return 2;
@@ -93,6 +94,10 @@ int main(int argc, char** argv) {
       }
     }
     return rc;
+  } catch (const SecurityError& e) {
+    if (log != nullptr) std::fclose(log);
+    std::fprintf(stderr, "autopilot: error: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     if (log != nullptr) std::fclose(log);
     std::fprintf(stderr, "autopilot: error: %s\n", e.what());

@@ -111,9 +111,13 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   RequireDdsUri();
   if (options.body.empty()) throw std::runtime_error("no body to command (--body)");
   const std::string prefix = TopicPrefix(options.ns);
-  m.participant = Check(dds_create_participant(options.domain, nullptr, nullptr),
-                        "creating the DDS participant (domain " +
-                            std::to_string(options.domain) + ")");
+  if (options.security.empty()) {
+    m.participant = Check(dds_create_participant(options.domain, nullptr, nullptr),
+                          "creating the DDS participant (domain " +
+                              std::to_string(options.domain) + ")");
+  } else {
+    m.participant = towsim::dds::CreateSecureParticipant(options.domain, options.security);
+  }
   dds_qos_t* state_qos = ReliableQos(16, false);
   dds_qos_t* command_qos = ReliableQos(1, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);

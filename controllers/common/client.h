@@ -9,7 +9,9 @@
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
 //     after a RESET (a new run id) it drops the old run's odometry still queued.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
-// throws with a clear message. Works in every DDS mode (realtime and fast answer each status
+// throws with a clear message. With `security` (--security DIR/NAME) the participant runs DDS
+// Security with that identity (docs/security.md; the setup is dds/security.h, shared with
+// sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in every DDS mode (realtime and fast answer each status
 // they see; lockstep waits for the answer).
 
 #include <atomic>
@@ -18,7 +20,15 @@
 #include <stdexcept>
 #include <string>
 
+#include "dds/security.h"
+
 namespace towsim::controllers {
+
+// --security DIR/NAME refused (a missing file, a bad certificate or document): exit 2
+using SecurityError = towsim::dds::SecurityError;
+
+// the flag every controller takes for its DDS Security identity
+inline constexpr const char* kSecurityFlag = "security";
 
 struct ClientOptions {
   uint32_t domain = 0;
@@ -28,6 +38,7 @@ struct ClientOptions {
   std::string name = "controller";  // for messages
   // when set (by another thread), the constructor's waits and Run end as on a stop signal
   const std::atomic<bool>* stop = nullptr;
+  std::string security;  // --security DIR/NAME: DDS Security identity; "": none
 };
 
 // the state of the body at one step, from its odometry

@@ -4,7 +4,7 @@
 //                   [--body tow_vehicle] [--thrust 4165] [--start 55] [--rudder-deg D]
 //                   [--heading-deg P] [--reversals 4] [--port-first] [--until-yaw-deg 170]
 //                   [--until-turn-deg 0] [--results FILE.yaml]
-//                   [--domain 0] [--namespace /towsim] [--timeout 30]
+//                   [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]
 //   case1           thrust T, rudder 0 (the paper's Case 1)
 //   uturn           from `start` the rudder at D until the yaw reaches --until-yaw-deg, then 0
 //                   (the paper's Case 2; the default manoeuvre)
@@ -48,6 +48,7 @@ int main(int argc, char** argv) {
     opt.domain = f.Domain();
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0);
+    opt.security = f.String(kSecurityFlag, "");
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
     return 2;
@@ -145,6 +146,9 @@ int main(int argc, char** argv) {
       }
     }
     return rc;
+  } catch (const SecurityError& e) {
+    std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
     return 1;

@@ -44,7 +44,8 @@ void SetDefaults(ManeuverConfig& c) {
 std::vector<std::string> ManeuverFlagNames() {
   return {"maneuver",   "config",      "body",          "thrust",         "start",
           "rudder-deg", "heading-deg", "until-yaw-deg", "until-turn-deg", "reversals",
-          "results",    "domain",      "namespace",     "timeout"};
+          "results",    "domain",      "namespace",     "timeout",
+          "security"};
 }
 std::vector<std::string> ManeuverSwitchNames() { return {"port-first"}; }
 

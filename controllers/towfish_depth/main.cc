@@ -4,7 +4,7 @@
 //   towfish_depth [--body towfish] (--depth D | --altitude A (--seabed-depth B |
 //                 --seabed-profile s0:d0,s1:d1,...) | --hold) [--kp 0.15] [--ki 0.01]
 //                 [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20] [--max-pitch-deg 30]
-//                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30]
+//                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]
 //                 [--log FILE]
 // Altitude mode: the commanded depth is seabed(s) - A, s the horizontal distance the body has
 // run since the first step (flat seabed at B, or piecewise linear through the profile).
@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
     const Flags f(argc, argv,
                   {"body", "depth", "kp", "ki", "kd", "max-elevator-deg", "rate-deg",
                    "max-pitch-deg", "elevator-sign", "domain", "namespace", "timeout", "log",
-                   "altitude", "seabed-depth", "seabed-profile"},
+                   "altitude", "seabed-depth", "seabed-profile", kSecurityFlag},
                   {"hold"});
     altitude_mode = f.Has("altitude");
     if (!f.Has("depth") && !f.Has("hold") && !altitude_mode) {
@@ -82,6 +82,7 @@ int main(int argc, char** argv) {
     opt.domain = f.Domain();
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0, 0.0, kNoLimit, /*lo_open=*/true);
+    opt.security = f.String(kSecurityFlag, "");
     p.depth = f.Number("depth", 0.0, 0.0, kNoLimit);  // [m] below the surface (NED z)
     p.kp = f.Number("kp", p.kp, 0.0, kNoLimit);
     p.ki = f.Number("ki", p.ki, 0.0, kNoLimit);
@@ -120,6 +121,10 @@ int main(int argc, char** argv) {
     std::printf("towfish_depth: %llu steps answered\n",
                 static_cast<unsigned long long>(client.steps_answered()));
     return rc;
+  } catch (const SecurityError& e) {
+    if (log != nullptr) std::fclose(log);
+    std::fprintf(stderr, "towfish_depth: error: %s\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     if (log != nullptr) std::fclose(log);
     std::fprintf(stderr, "towfish_depth: error: %s\n", e.what());

@@ -75,6 +75,8 @@ std::string Usage() {
          "  --wait-for-controllers\n"
          "                        DDS modes: the first step waits until every vehicle that\n"
          "                        takes commands has received one (status: waiting)\n"
+         "  --security DIR/NAME   DDS modes: DDS Security with the identity DIR/NAME made by\n"
+         "                        scripts/security.sh (docs/security.md)\n"
          "  -h, --help            print this help and exit\n"
          "  --version             print the version and exit\n"
          "\n"
@@ -119,7 +121,8 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     static const char* const kWithValue[] = {"--scene",  "--mode",   "--duration",
                                              "--rate",   "--set",    "--csv",
-                                             "--record", "--domain", "--namespace"};
+                                             "--record", "--domain", "--namespace",
+                                             "--security"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -178,12 +181,18 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
         return fail("--domain " + v + ": must be an integer >= 0");
       }
       o.domain = static_cast<uint32_t>(d);
+    } else if (name == "--security") {
+      if (v.empty()) return fail("--security needs DIR/NAME");
+      o.security = v;
     } else if (name == "--namespace") {
       if (v.empty() || v[0] != '/') return fail("--namespace " + v + ": must start with '/'");
       o.ns = v;
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
+  if (o.mode == Mode::kOffline && !o.security.empty()) {
+    return fail("--security " + o.security + ": needs a DDS mode (realtime, fast or lockstep)");
+  }
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +
                 ": needs a DDS mode (realtime, fast or lockstep); offline takes no commands");

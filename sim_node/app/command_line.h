@@ -3,6 +3,7 @@
 //
 //   sim_node --scene FILE [--mode realtime|fast|lockstep|offline] [--duration S] [--rate R]
 //            [--set key.path=value ...] [--csv DIR] [--record FILE.mcap] [--help] [--version]
+//            [--security DIR/NAME]
 //
 // Every option also accepts the --name=value form. Parsing only checks the syntax and the
 // ranges of the values; the scene is loaded (and --set applied) by the scene layer.
@@ -32,6 +33,7 @@ struct Options {
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)
   bool wait_for_controllers = false;   // --wait-for-controllers: first step once all commanded
+  std::string security;                // --security DIR/NAME: DDS Security identity (DDS modes)
   bool help = false;                   // --help / -h
   bool version = false;                // --version
 };

@@ -232,7 +232,9 @@ int DdsNode::Setup() {
     return bad("DDS setup failed: " + e);
   }
   try {
-    participant_ = std::make_unique<dds::Participant>(opt_.domain, config);
+    participant_ = std::make_unique<dds::Participant>(
+        opt_.domain, config, opt_.security,
+        opt_.open_outputs ? dds::Admit::kOpenOutputs : dds::Admit::kAuthenticated);
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
     std::vector<std::string> commanded;
@@ -252,6 +254,8 @@ int DdsNode::Setup() {
       peer_note_ = "warning: another node runs on " + where;
       std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
     }
+  } catch (const dds::SecurityError& e) {
+    return bad(e.what());
   } catch (const dds::DdsError& e) {
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;

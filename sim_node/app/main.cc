@@ -97,6 +97,8 @@ int Run(const towsim::app::Options& options) {
     dds.rate = options.rate.value_or(1.0);
     dds.domain = options.domain.value_or(0);
     dds.ns = options.ns;
+    dds.security = options.security;
+    dds.open_outputs = model.publishing.open_outputs;
     const towsim::core::Publishing& pub = model.publishing;
     dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
     dds.command_timeout = pub.command_timeout;

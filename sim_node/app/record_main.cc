@@ -2,6 +2,7 @@
 //
 //   towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]
 //                 [--duration S] [--overwrite] [--quiet]
+//                 [--security DIR/NAME]
 //
 // The file is created exclusively: one that exists is refused (exit 2) unless --overwrite,
 // and it is locked while written, so a second writer (towsim_record or sim_node --record) on
@@ -60,7 +61,7 @@ namespace dds = towsim::dds;
 
 const char* kUsage =
     "usage: towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]\n"
-    "                     [--duration S] [--overwrite] [--quiet]\n"
+    "                     [--duration S] [--overwrite] [--quiet] [--security DIR/NAME]\n"
     "  --output FILE.mcap  the recording (created; refused if it exists)\n"
     "  --overwrite         replace FILE.mcap if it exists (never while another writer holds it)\n"
     "  --domain N          DDS domain id (default 0)\n"
@@ -69,6 +70,8 @@ const char* kUsage =
     "                      default: every towsim topic of the namespace and /clock\n"
     "  --duration S        stop after S seconds of wall time (> 0)\n"
     "  --quiet             no progress line\n"
+    "  --security DIR/NAME DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
+    "                      docs/security.md)\n"
     "Ends with a complete file on SIGINT / SIGTERM or when the node's run ends.\n";
 
 struct Options {
@@ -79,6 +82,7 @@ struct Options {
   double duration = INFINITY;
   bool quiet = false;
   bool overwrite = false;
+  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -111,6 +115,8 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       o->quiet = true;
     } else if (arg == "--overwrite") {
       o->overwrite = true;
+    } else if (arg == "--security") {
+      if (!next(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
     } else if (arg == "--output") {
       if (!next(&o->output)) return "--output needs a value";
     } else if (arg == "--namespace") {
@@ -182,7 +188,7 @@ dds::Qos RecorderQos(bool transient_local) {
 class Recorder {
  public:
   Recorder(const Options& o, const std::string& config)
-      : opt_(o), names_(o.ns), participant_(o.domain, config), waitset_(participant_) {}
+      : opt_(o), names_(o.ns), participant_(o.domain, config, o.security), waitset_(participant_) {}
 
   int Run();
 
@@ -407,6 +413,8 @@ int main(int argc, char** argv) {
   std::unique_ptr<Recorder> recorder;
   try {
     recorder = std::make_unique<Recorder>(options, uri);
+  } catch (const dds::SecurityError& e) {
+    return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }

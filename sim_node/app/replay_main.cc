@@ -2,6 +2,7 @@
 //
 //   towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]
 //                 [--delay S] [--domain N] [--namespace NS] [--recover] [--quiet]
+//                 [--security DIR/NAME]
 //
 // Every message of the chosen channels is written raw (the recorded CDR bytes, dds/raw_cdr;
 // Cyclone validates them against the type) on a writer of the channel's type (the schema name,
@@ -66,6 +67,7 @@ namespace io = towsim::io;
 const char* kUsage =
     "usage: towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]\n"
     "                     [--delay S] [--domain N] [--namespace NS] [--recover] [--quiet]\n"
+    "                     [--security DIR/NAME]\n"
     "  --rate X        playback speed factor (default 1; 0: as fast as possible)\n"
     "  --fast          the same as --rate 0\n"
     "  --topics T ...  only these recorded topics (ROS names, /towsim/towfish/odom ...)\n"
@@ -76,7 +78,9 @@ const char* kUsage =
     "  --namespace NS  republish the recorded namespace under NS (/clock stays)\n"
     "  --recover       replay every intact chunk of a damaged or cut-off file (exit 4 if\n"
     "                  anything was skipped; the byte ranges on stderr)\n"
-    "  --quiet         no progress line\n";
+    "  --quiet         no progress line\n"
+    "  --security DIR/NAME  DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
+    "                  the node's, DIR/sim_node, to republish its outputs; docs/security.md)\n";
 
 struct Options {
   std::string file;
@@ -89,6 +93,7 @@ struct Options {
   std::string ns;  // empty: as recorded
   bool quiet = false;
   bool recover = false;
+  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -125,6 +130,9 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
+    } else if (arg == "--security") {
+      if (!next(&v) || v.empty()) return "--security needs DIR/NAME";
+      o->security = v;
     } else if (arg == "--loop") {
       o->loop = true;
     } else if (arg == "--recover") {
@@ -247,7 +255,9 @@ int Replay(const Options& opt) {
   const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_replay");
   std::unique_ptr<dds::Participant> participant;
   try {
-    participant = std::make_unique<dds::Participant>(opt.domain, uri);
+    participant = std::make_unique<dds::Participant>(opt.domain, uri, opt.security);
+  } catch (const dds::SecurityError& e) {
+    return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
   }

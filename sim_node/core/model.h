@@ -175,6 +175,9 @@ struct Publishing {
   double status = 0.0;
   double cable_state = -1.0;     // < 0: the scene's time.output_rate
   double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]
+  // security.open_outputs: with DDS Security, participants without a certificate may read the
+  // outputs (never command); docs/security.md
+  bool open_outputs = false;
 };
 
 struct Model {

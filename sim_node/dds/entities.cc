@@ -10,12 +10,18 @@ void Entity::Reset() {
   handle_ = 0;
 }
 
-Participant::Participant(uint32_t domain_id, const std::string& config) : domain_id_(domain_id) {
+Participant::Participant(uint32_t domain_id, const std::string& config, const std::string& security,
+                         Admit admit)
+    : domain_id_(domain_id) {
   const std::string where = "DDS domain " + std::to_string(domain_id);
   if (!config.empty()) {
     const dds_entity_t d = dds_create_domain(domain_id, config.c_str());
     if (d < 0) throw DdsError("creating " + where + " from " + config, d);
     domain_ = Entity(d);
+  }
+  if (!security.empty()) {
+    participant_ = Entity(CreateSecureParticipant(domain_id, security, nullptr, admit));
+    return;
   }
   const dds_entity_t p = dds_create_participant(domain_id, nullptr, nullptr);
   if (p < 0) throw DdsError("creating a participant in " + where, p);

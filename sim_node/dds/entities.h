@@ -16,6 +16,7 @@
 
 #include "dds/dds.h"
 #include "dds/qos.h"
+#include "dds/security.h"
 
 namespace towsim::dds {
 
@@ -57,11 +58,14 @@ class Entity {
 
 // A domain participant. With a non-empty `config` (what CYCLONEDDS_URI would hold: a
 // file:// URI or XML), the domain is created from it explicitly; otherwise Cyclone reads
-// $CYCLONEDDS_URI. Throws DdsError (e.g. a domain id whose ports are out of range, an
-// unreadable config file).
+// $CYCLONEDDS_URI. With a non-empty `security` (--security DIR/NAME, dds/security.h) the
+// participant runs DDS Security with that identity. Throws DdsError (e.g. a domain id whose
+// ports are out of range, an unreadable config file) or SecurityError (dds/security.h: a
+// missing file, or the plugins refused the identity, with Cyclone's reason).
 class Participant {
  public:
-  Participant(uint32_t domain_id, const std::string& config);
+  Participant(uint32_t domain_id, const std::string& config, const std::string& security = "",
+              Admit admit = Admit::kAuthenticated);
   dds_entity_t get() const { return participant_.get(); }
   uint32_t domain_id() const { return domain_id_; }
 

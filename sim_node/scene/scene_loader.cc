@@ -107,6 +107,11 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
 
   model.integrator = ReadIntegrator(scene.Get("integrator"));
   model.publishing = ReadPublish(scene.Get("publish"));
+  // security: what a node run with --security admits (docs/security.md)
+  const MapReader security(scene.Get("security"), MapKind::kSecurity);
+  if (security.Has("open_outputs")) {
+    model.publishing.open_outputs = security.Get("open_outputs").Boolean();
+  }
   model.script = internal::ReadScript(scene.Get("script"), model);
   return model;
 }

@@ -46,9 +46,11 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
       {MapKind::kScene,
-       {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish"}},
+       {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish",
+        "security"}},
       {MapKind::kPublish,
        {"clock", "odom", "cable_state", "cable_force", "status", "command_timeout"}},
+      {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
       {MapKind::kEnvironment,
        {"water_density", "dynamic_viscosity", "gravity", "current", "waves", "seabed"}},
@@ -104,6 +106,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "bodies") return MapKind::kBodies;
       if (key == "integrator") return MapKind::kIntegrator;
       if (key == "publish") return MapKind::kPublish;
+      if (key == "security") return MapKind::kSecurity;
       return std::nullopt;  // name; script is a list
     case MapKind::kEnvironment:
       // current is a value ([u, v, w] or a map): --set sets it whole

@@ -36,6 +36,7 @@ enum class MapKind {
   kCommand,      // bodies.<name>.command
   kIntegrator,   // integrator
   kPublish,      // publish
+  kSecurity,     // security
   kScriptEntry,  // script[i]
 };
 

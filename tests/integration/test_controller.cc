@@ -3,6 +3,7 @@
 //
 //   test_controller --domain N [--namespace /towsim] [--until-step K] [--log FILE]
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
+//                   [--security DIR/NAME]
 //
 // It learns the bodies from rt/<ns>/scene_info, then answers every SimStatus of a new step k
 // with one ActuatorCommand stamped k per commanded body: zeros, or the latest --command of
@@ -11,7 +12,8 @@
 //   step body x y z qx qy qz qw u v w p q r      (%.17g: the doubles exactly)
 // It exits 0 once the node reports step K (--until-step) or the end of its run, 1 when
 // nothing has happened for --timeout seconds (default 30) or on a DDS error. Needs
-// CYCLONEDDS_URI (the loopback configuration). --stats prints the lockstep rate on stdout:
+// CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
+// DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout:
 //   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step
 
 #include <cerrno>
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "dds/dds.h"
+#include "dds/security.h"
 #include "nav_msgs.h"
 #include "towsim_msgs.h"
 
@@ -47,6 +50,7 @@ struct Args {
   std::vector<ScheduledCommand> commands;
   double timeout = 30.0;
   bool stats = false;
+  std::string security;
 };
 
 [[noreturn]] void Fail(const std::string& message) {
@@ -79,6 +83,8 @@ Args Parse(int argc, char** argv) {
       a.until_step = std::strtoll(value().c_str(), nullptr, 10);
     } else if (arg == "--log") {
       a.log = value();
+    } else if (arg == "--security") {
+      a.security = value();
     } else if (arg == "--stats") {
       a.stats = true;
     } else if (arg == "--timeout") {
@@ -129,8 +135,13 @@ int main(int argc, char** argv) {
   if (uri == nullptr || *uri == '\0') Fail("CYCLONEDDS_URI is not set (use config/cyclonedds.xml)");
   const std::string prefix = Prefix(args.ns);
 
-  const dds_entity_t participant =
-      Check(dds_create_participant(args.domain, nullptr, nullptr), "creating the participant");
+  dds_entity_t participant = 0;
+  try {
+    participant = towsim::dds::CreateSecureParticipant(args.domain, args.security);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "test_controller: error: %s\n", e.what());
+    return 2;
+  }
   dds_qos_t* state_qos = ReliableQos(256, false);
   dds_qos_t* command_qos = ReliableQos(1, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);

@@ -37,3 +37,8 @@ towsim_add_test(raw_cdr_test LABEL unit
 towsim_add_test(dds_port_mapping_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc
   LIBS towsim::dds)
+# DDS Security setup (sim_node/dds/security): files, properties, key check; no participant
+towsim_add_test(dds_security_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_security_test.cc
+  LIBS towsim::dds_security)
+target_include_directories(dds_security_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})

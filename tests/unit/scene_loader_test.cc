@@ -1067,6 +1067,26 @@ TEST_F(SceneLoaderTest, PublishRatesAndCommandTimeout) {
   EXPECT_EQ(m.publishing.command_timeout, 2.0);
 }
 
+// security.open_outputs (docs/security.md): false unless the scene says true; a boolean
+TEST_F(SceneLoaderTest, OpenOutputsKey) {
+  EXPECT_FALSE(Load(Edit("", "")).publishing.open_outputs);
+  EXPECT_TRUE(Load(Edit("name: t\n", "name: t\nsecurity: {open_outputs: true}\n"))
+                  .publishing.open_outputs);
+  try {
+    Load(Edit("name: t\n", "name: t\nsecurity: {open_outputs: 3}\n"));
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "security.open_outputs") << e.what();
+  }
+  try {
+    Load(Edit("name: t\n", "name: t\nsecurity: {open: true}\n"));
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "security.open") << e.what();
+    EXPECT_NE(std::string(e.what()).find("unknown key"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(SceneLoaderTest, InitialVelocityIsTheBodiesDefault) {
   const Model m =
       Load(Edit("  initial: vertical\n", "  initial: vertical\n  initial_velocity: [1, 2, 3]\n"));
