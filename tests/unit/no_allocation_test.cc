@@ -3,7 +3,7 @@
 // allocation is forbidden aborts; std containers are caught by counting the global operator new.
 // The first steps may size work space (the sub-stepping backups, the first copies); after them
 // a step of the cable alone, of a sphere-ended tow and of vehicles with either coupling must
-// not allocate at all.
+// not allocate at all, also after a state was restored with SetState.
 
 #include <atomic>
 #include <cstdlib>
@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "core/simulation.h"
+#include "core/state.h"
 #include "steady_tow_model.h"
 
 namespace {
@@ -35,9 +36,15 @@ using test::InASea;
 using test::SteadyTowModel;
 using test::SteadyTowWithVehicle;
 
-void ExpectStepsDoNotAllocate(const Model& model) {
+// restored: the steps after Simulation::SetState (docs/state.md) must not allocate either
+void ExpectStepsDoNotAllocate(const Model& model, bool restored = false) {
   Simulation sim(model);
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(sim.Step().ok());  // warm-up: work space sized
+  if (restored) {
+    const State taken = sim.GetState();
+    for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+    sim.SetState(taken);  // may allocate (a copy); the steps after it may not
+  }
   Eigen::internal::set_is_malloc_allowed(false);
   g_news = 0;
   g_counting = true;
@@ -55,6 +62,13 @@ TEST(NoAllocation, VehicleStrongCoupling) {
 }
 TEST(NoAllocation, VehicleStaggeredCoupling) {
   ExpectStepsDoNotAllocate(SteadyTowWithVehicle(Coupling::kStaggered));
+}
+
+TEST(NoAllocation, VehicleAfterSetState) {
+  ExpectStepsDoNotAllocate(SteadyTowWithVehicle(Coupling::kStrong), true);
+}
+TEST(NoAllocation, VehicleInASeaAfterSetState) {
+  ExpectStepsDoNotAllocate(InASea(SteadyTowWithVehicle(Coupling::kStrong)), true);
 }
 
 TEST(NoAllocation, CableWithASphereInASea) { ExpectStepsDoNotAllocate(InASea(SteadyTowModel())); }

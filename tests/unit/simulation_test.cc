@@ -4,12 +4,13 @@
 // tolerance is zero (every double compared exactly). That the history in the state matters is
 // shown by StartFrom, which keeps q and v but clears the history: its continuation differs.
 
+#include "core/simulation.h"
+
 #include <stdexcept>
 #include <string>
 
 #include <gtest/gtest.h>
 
-#include "core/simulation.h"
 #include "core/state.h"
 #include "steady_tow_model.h"
 
