@@ -11,12 +11,16 @@
 #      towsim_export, the paper's figures are drawn into out/case2_uturn/figures/, and a
 #      summary table is printed: steady speed, turning radii, towfish depth range, tensions, and
 #      the towfish depth excursion with and without the depth controller.
+# While the first U-turn runs, towsim_foxglove serves it live to Foxglove at
+# ws://localhost:TOWSIM_FOXGLOVE_PORT (docs/foxglove.md; layout config/foxglove/towsim.json).
 # It ends by itself (about 10 s after the build) and leaves no process behind: every process
 # it starts is stopped on exit, also on Ctrl-C. Environment: TOWSIM_DOMAIN (DDS domain of the
-# first run, the second uses +1; default 20), TOWSIM_RATE (default 50), TOWSIM_SECURE=1: the DDS
+# first run, the second uses +1; default 20), TOWSIM_RATE (default 50; 1 to watch in real
+# time), TOWSIM_FOXGLOVE_PORT (default 8765), TOWSIM_SECURE=1: the DDS
 # runs secured end to end (DDS Security, docs/security.md): scripts/security.sh makes the
 # identities in out/security/ (the node; the manoeuvre runner may command the tow vehicle only,
-# the depth controller the towfish only) and every process runs with --security.
+# the depth controller the towfish only; the Foxglove bridge) and every process runs with
+# --security.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh" python3
 
@@ -25,24 +29,29 @@ sim_node="$bin"/sim_node/app/sim_node
 exporter="$bin"/sim_node/app/towsim_export
 runner="$bin"/controllers/maneuver_runner
 depth_ctl="$bin"/controllers/towfish_depth
+foxglove="$bin"/sim_node/app/towsim_foxglove
+foxglove_port="${TOWSIM_FOXGLOVE_PORT:-8765}"
 domain="${TOWSIM_DOMAIN:-20}"
 rate="${TOWSIM_RATE:-50}"
 scene=config/scenes/case2_uturn.yaml
-node_security=() runner_security=() depth_security=()
+node_security=() runner_security=() depth_security=() foxglove_security=()
 if [[ "${TOWSIM_SECURE:-0}" == 1 ]]; then
   rm -rf out/security
-  scripts/security.sh out/security sim_node maneuver_runner:tow_vehicle towfish_depth:towfish
+  scripts/security.sh out/security sim_node maneuver_runner:tow_vehicle towfish_depth:towfish \
+    towsim_foxglove
   node_security=(--security out/security/sim_node)
+  foxglove_security=(--security out/security/towsim_foxglove)
   runner_security=(--security out/security/maneuver_runner)
   depth_security=(--security out/security/towfish_depth)
 fi
 
 # every process started here is stopped when the script ends, however it ends
 pids=()
+bridge_pid=""
 cleanup() {
   local pid
-  for pid in "${pids[@]}"; do kill -TERM "$pid" 2>/dev/null || true; done
-  for pid in "${pids[@]}"; do wait "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}" $bridge_pid; do kill -TERM "$pid" 2>/dev/null || true; done
+  for pid in "${pids[@]}" $bridge_pid; do wait "$pid" 2>/dev/null || true; done
 }
 trap cleanup EXIT
 trap 'exit 130' INT
@@ -112,11 +121,21 @@ echo
 echo "== 2. Case 2 U-turn over DDS: sim_node + maneuver_runner + towfish_depth, twice" \
      "(realtime x$rate, domains $domain and $((domain + 1))$([[ ${#node_security[@]} -gt 0 ]] &&
      echo ", DDS Security: identities in out/security/"))"
+# the live view of the first run (a port in use only costs the live view: see its log)
+mkdir -p out
+"$foxglove" --domain "$domain" --port "$foxglove_port" --quiet "${foxglove_security[@]}" \
+  >out/towsim_foxglove.out 2>out/towsim_foxglove.err &
+bridge_pid=$!
+echo "Foxglove: open ws://localhost:$foxglove_port while the first run lasts" \
+     "(layout: config/foxglove/towsim.json; docs/foxglove.md)"
 run_uturn case2_uturn "$domain" --hold
 run_uturn case2_uturn_depth_control "$((domain + 1))" --depth 25
 finish_uturn case2_uturn "${pids[0]}" "${pids[1]}" "${pids[2]}"
 finish_uturn case2_uturn_depth_control "${pids[3]}" "${pids[4]}" "${pids[5]}"
 pids=()
+kill -TERM "$bridge_pid" 2>/dev/null || true
+wait "$bridge_pid" 2>/dev/null || true
+bridge_pid=""
 
 echo
 echo "== 3. recordings -> CSV -> figures and summary"

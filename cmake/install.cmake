@@ -1,12 +1,13 @@
 # cmake --install build --prefix P (docs/testing_controllers.md, "The installed package"):
 #   P/bin/                     sim_node, the tools and the controllers (TOWSIM_INSTALLED_PROGRAMS)
-#   P/share/towsim/            scenes/, vehicles/, maneuvers/, autopilot/, sweeps/,
+#   P/share/towsim/            scenes/, vehicles/, maneuvers/, autopilot/, sweeps/, foxglove/,
 #                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
 #                              cyclonedds_two_hosts.xml, idl/*.idl,
 #                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/
 #   P/include/towsim/          msgs/*.h (generated from the IDL), common/*.h (client library),
 #                              testing/*.h (test fixture)
-#   P/lib/                     libtowsim_msgs.a, libtowsim_client.a (+ laws, dds_security),
+#   P/lib/                     libtowsim_msgs.a, libtowsim_client.a (+ laws, dds_security,
+#                              ros_graph),
 #                              libtowsim_testing.a
 #   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
@@ -22,6 +23,7 @@ set(TOWSIM_INSTALLED_PROGRAMS
   towsim_replay
   towsim_export
   towsim_sweep
+  towsim_foxglove
   maneuver_runner
   towfish_depth
   autopilot
@@ -38,20 +40,21 @@ install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
 install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common towsim_dds_security
-                towsim_testing
+                towsim_ros_graph towsim_testing
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)
 install(FILES controllers/common/client.h controllers/common/dds_qos.h controllers/common/flags.h
               controllers/common/laws.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/common)
-install(FILES sim_node/dds/security.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/dds)
+install(FILES sim_node/dds/security.h sim_node/dds/ros_graph.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/dds)
 install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/testing
         FILES_MATCHING PATTERN "*.h")
 
 # the configuration, the wire contract and the example
 set(TOWSIM_DATA_DESTINATION ${CMAKE_INSTALL_DATADIR}/towsim)
 install(DIRECTORY config/scenes config/vehicles config/maneuvers config/autopilot config/sweeps
+                  config/foxglove
         DESTINATION ${TOWSIM_DATA_DESTINATION})
 install(FILES config/cyclonedds.xml config/cyclonedds_two_hosts.xml
         DESTINATION ${TOWSIM_DATA_DESTINATION})

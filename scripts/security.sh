@@ -214,6 +214,8 @@ for spec in "$@"; do
     # towsim_sertype_probe/*: the process-local probe topic of the recording tools
     # (dds/raw_cdr.h: how Cyclone serializes a type), never seen by another process
     publish+=("towsim_sertype_probe/*")
+    # ros_discovery_info: every participant's ROS 2 graph entry (docs/ros2_graph.md)
+    publish+=("ros_discovery_info")
     rules="$(rule allow publish "${publish[@]}")"$'\n'
     rules+="$(rule allow subscribe '*')"
   fi

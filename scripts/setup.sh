@@ -16,9 +16,10 @@ towsim_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$towsim_root"
 
 # dpkg-dev: dpkg-shlibdeps, with which cpack -G DEB declares the package's dependencies
+# libwebsocketpp-dev, libasio-dev and nlohmann-json3-dev: the Foxglove server (towsim_foxglove)
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
                  cyclonedds-tools libgtest-dev libbenchmark-dev dpkg-dev libssl-dev
-                 openssl "$@")
+                 openssl libwebsocketpp-dev libasio-dev nlohmann-json3-dev "$@")
 # who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
 for towsim_pkg in "$@"; do
   # and numpy, for scripts/plot_waves.py

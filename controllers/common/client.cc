@@ -8,12 +8,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
+#include "dds/ros_graph.h"
 #include "nav_msgs.h"
+#include "sensor_msgs.h"
 #include "towsim_msgs.h"
 
 namespace towsim::controllers {
@@ -71,6 +74,8 @@ struct LockstepClient::Impl {
   dds_entity_t participant = 0;
   dds_entity_t status_reader = 0, odom_reader = 0, command_writer = 0;
   dds_entity_t waitset = 0;
+  dds_entity_t altitude_reader = 0;  // 0: not subscribed
+  std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
   double step_size = 0.05;
   // the latest odometry taken
   nav_msgs_msg_dds__Odometry_ odom{};
@@ -103,6 +108,26 @@ struct LockstepClient::Impl {
     }
     if (k > 0) dds_return_loan(odom_reader, os, k);
   }
+
+  // the newest altimeter range stamped at most t (a RESET's old run has later stamps)
+  float altitude_range = 0.0f;
+  double altitude_time = -1.0;
+  void TakeAltitude(double t) {
+    void* rs[16] = {};
+    dds_sample_info_t ri[16];
+    const dds_return_t k = dds_take(altitude_reader, rs, ri, 16, 16);
+    for (int j = 0; j < k; ++j) {
+      if (!ri[j].valid_data) continue;
+      const auto* r = static_cast<const sensor_msgs_msg_dds__Range_*>(rs[j]);
+      const double stamp = StampSeconds(r->header.stamp.sec, r->header.stamp.nanosec);
+      if (stamp > t + 1e-9) continue;
+      if (stamp >= altitude_time) {
+        altitude_range = r->range;
+        altitude_time = stamp;
+      }
+    }
+    if (k > 0) dds_return_loan(altitude_reader, rs, k);
+  }
 };
 
 LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
@@ -111,13 +136,22 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   RequireDdsUri();
   if (options.body.empty()) throw std::runtime_error("no body to command (--body)");
   const std::string prefix = TopicPrefix(options.ns);
-  if (options.security.empty()) {
-    m.participant = Check(dds_create_participant(options.domain, nullptr, nullptr),
-                          "creating the DDS participant (domain " +
-                              std::to_string(options.domain) + ")");
-  } else {
-    m.participant = towsim::dds::CreateSecureParticipant(options.domain, options.security);
+  // a ROS 2 participant: USER_DATA enclave=/; (dds/ros_graph.h)
+  dds_qos_t* participant_qos = towsim::dds::NewParticipantQos();
+  try {
+    if (options.security.empty()) {
+      m.participant =
+          Check(dds_create_participant(options.domain, participant_qos, nullptr),
+                "creating the DDS participant (domain " + std::to_string(options.domain) + ")");
+    } else {
+      m.participant =
+          towsim::dds::CreateSecureParticipant(options.domain, options.security, participant_qos);
+    }
+  } catch (...) {
+    dds_delete_qos(participant_qos);
+    throw;
   }
+  dds_delete_qos(participant_qos);
   dds_qos_t* state_qos = ReliableQos(16, false);
   dds_qos_t* command_qos = ReliableQos(1, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);
@@ -132,8 +166,8 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
         Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimStatus__desc,
                                (prefix + "status").c_str(), nullptr, nullptr),
               "status topic");
-    m.status_reader = Check(dds_create_reader(m.participant, status_topic, state_qos, nullptr),
-                            "status reader");
+    m.status_reader =
+        Check(dds_create_reader(m.participant, status_topic, state_qos, nullptr), "status reader");
     const dds_entity_t odom_topic =
         Check(dds_create_topic(m.participant, &nav_msgs_msg_dds__Odometry__desc,
                                (prefix + options.body + "/odom").c_str(), nullptr, nullptr),
@@ -146,6 +180,22 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
               "command topic");
     m.command_writer = Check(dds_create_writer(m.participant, command_topic, command_qos, nullptr),
                              "command writer");
+    if (options.altitude) {
+      const dds_entity_t altitude_topic =
+          Check(dds_create_topic(m.participant, &sensor_msgs_msg_dds__Range__desc,
+                                 (prefix + options.body + "/altitude").c_str(), nullptr, nullptr),
+                "altitude topic");
+      m.altitude_reader = Check(
+          dds_create_reader(m.participant, altitude_topic, state_qos, nullptr), "altitude reader");
+    }
+    // the controller as a ROS 2 node <ns>/<name> with these endpoints (ros2 node list)
+    m.graph = std::make_unique<dds::RosGraphNode>(
+        m.participant, options.ns, options.name,
+        m.altitude_reader != 0
+            ? std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader,
+                                        m.altitude_reader}
+            : std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader},
+        std::vector<dds_entity_t>{m.command_writer});
 
     // the node's scene: the body must take commands
     const Clock::time_point begin = Clock::now();
@@ -166,8 +216,8 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
         if (!known) {
           const std::string scene = s->scene;
           dds_return_loan(scene_reader, samples, n);
-          throw std::runtime_error("body " + options.body + " takes no commands in scene " +
-                                   scene + " (commanded bodies: " + names + ")");
+          throw std::runtime_error("body " + options.body + " takes no commands in scene " + scene +
+                                   " (commanded bodies: " + names + ")");
         }
       }
       if (n > 0) dds_return_loan(scene_reader, samples, n);
@@ -249,6 +299,7 @@ int LockstepClient::Run(const Law& law) {
         if (new_run) {
           m.odom_time = -1.0;
           m.have_odom = false;
+          m.altitude_time = -1.0;
           if (!run_id.empty()) m.reset_time = t;  // a RESET, not the first run seen
         }
         // the odometry of this step (published before the status); the latest one after a
@@ -284,6 +335,17 @@ int LockstepClient::Run(const Law& law) {
           b.y_dot = vw.y;
           b.z_dot = vw.z;
           b.dt = (new_run || t <= last_time) ? m.step_size : t - last_time;
+          if (m.altitude_reader != 0) {
+            // the range of this step (published with the odometry, before the status)
+            const Clock::time_point altitude_begin = Clock::now();
+            for (;;) {
+              m.TakeAltitude(t);
+              if (m.altitude_time >= t - 1e-9) break;
+              if (Seconds(Clock::now() - altitude_begin) > 0.5 || Stopping(m.opt)) break;
+              dds_sleepfor(DDS_USECS(50));
+            }
+            if (m.altitude_time >= t - 1e-9) b.altitude = m.altitude_range;
+          }
           const Actuation a = law(b);
           towsim_msgs_msg_dds__ActuatorCommand_ cmd{};
           cmd.header.stamp = s->header.stamp;

@@ -1,22 +1,26 @@
 #pragma once
 // The controllers' DDS client (issue 5): one participant on the node's domain that
 //   - reads rt/<ns>/scene_info (which bodies exist and take commands),
-//   - subscribes to rt/<ns>/<body>/odom and rt/<ns>/status,
+//   - subscribes to rt/<ns>/<body>/odom and rt/<ns>/status (and, with `altitude`, to
+//     rt/<ns>/<body>/altitude),
 //   - publishes towsim_msgs ActuatorCommand on rt/<ns>/<body>/command, stamped with the step
 //     (and sim time) of the state it answers,
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
 //     after a RESET (a new run id) it drops the old run's odometry still queued.
+// It is a ROS 2 node `<ns>/<name>` (name: ClientOptions::name; dds/ros_graph.h), so
+// `ros2 node list` shows it next to /towsim/sim_node.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. With `security` (--security DIR/NAME) the participant runs DDS
 // Security with that identity (docs/security.md; the setup is dds/security.h, shared with
-// sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in every DDS mode (realtime and fast answer each status
-// they see; lockstep waits for the answer).
+// sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in
+// every DDS mode (realtime and fast answer each status they see; lockstep waits for the answer).
 
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -33,24 +37,30 @@ inline constexpr const char* kSecurityFlag = "security";
 struct ClientOptions {
   uint32_t domain = 0;
   std::string ns = "/towsim";
-  std::string body;        // the commanded body
-  double timeout = 30.0;   // [s] of wall time without a new step (or scene_info) -> error
-  std::string name = "controller";  // for messages
+  std::string body;                 // the commanded body
+  double timeout = 30.0;            // [s] of wall time without a new step (or scene_info) -> error
+  std::string name = "controller";  // for messages, and the ROS 2 node name
   // when set (by another thread), the constructor's waits and Run end as on a stop signal
   const std::atomic<bool>* stop = nullptr;
   std::string security;  // --security DIR/NAME: DDS Security identity; "": none
+  // also subscribe to rt/<ns>/<body>/altitude (sensor_msgs/Range, docs/sensors.md) and pass
+  // the newest range of the step answered in BodyState::altitude
+  bool altitude = false;
 };
 
 // the state of the body at one step, from its odometry
 struct BodyState {
   uint64_t step = 0;
-  double t = 0.0;                       // sim time [s]
-  double x = 0, y = 0, z = 0;           // world NED [m]
-  double roll = 0, pitch = 0, yaw = 0;  // ZYX [rad]
-  double u = 0, v = 0, w = 0;           // body frame [m/s]
-  double p = 0, q = 0, r = 0;           // body frame [rad/s]
+  double t = 0.0;                          // sim time [s]
+  double x = 0, y = 0, z = 0;              // world NED [m]
+  double roll = 0, pitch = 0, yaw = 0;     // ZYX [rad]
+  double u = 0, v = 0, w = 0;              // body frame [m/s]
+  double p = 0, q = 0, r = 0;              // body frame [rad/s]
   double x_dot = 0, y_dot = 0, z_dot = 0;  // world NED velocity [m/s]
   double dt = 0.0;  // sim time since the previous step answered (the scene's step first) [s]
+  // with ClientOptions::altitude: the altimeter's range of this step [m] (+inf: no seabed in
+  // range, REP 117); NaN when none came for this step (or not subscribed)
+  double altitude = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct Actuation {

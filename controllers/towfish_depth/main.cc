@@ -1,19 +1,26 @@
 // towfish_depth: holds a towed body at a commanded depth, or at a commanded altitude above
 // the seabed, with its elevators (PID with anti-windup and rate limit,
 // towfish_depth/depth_law.h; altitude: towfish_depth/seabed.h):
-//   towfish_depth [--body towfish] (--depth D | --altitude A (--seabed-depth B |
-//                 --seabed-profile s0:d0,s1:d1,...) | --hold) [--kp 0.15] [--ki 0.01]
+//   towfish_depth [--body towfish] (--depth D | --altitude A [--seabed-depth B |
+//                 --seabed-profile s0:d0,s1:d1,...] | --hold) [--kp 0.15] [--ki 0.01]
 //                 [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20] [--max-pitch-deg 30]
-//                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]
+//                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30]
+//                 [--security DIR/NAME]
 //                 [--log FILE]
-// Altitude mode: the commanded depth is seabed(s) - A, s the horizontal distance the body has
-// run since the first step (flat seabed at B, or piecewise linear through the profile).
+// Altitude mode: the commanded depth is z + range - A, range the sim's own altimeter
+// (<ns>/<body>/altitude, sensor_msgs/Range, docs/sensors.md) of the step answered; while it
+// reports no seabed (+inf: none in the scene or out of range) the last target (at first the
+// current depth) is held. Fallback for a scene without a seabed: --seabed-depth B or
+// --seabed-profile give the seabed instead (no altimeter read): the commanded depth is
+// seabed(s) - A, s the horizontal distance the body has run since the first step (flat at B, or
+// piecewise linear through the profile).
 // --elevator-sign 1 for a body that dives on positive elevator (-1: it rises, the towfish);
 // --hold commands zero elevator (the uncontrolled reference). --log writes
 // "t z elevator target_depth" per step. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run
 // or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <limits>
@@ -28,6 +35,27 @@
 
 using namespace towsim::controllers;
 
+namespace {
+constexpr char kUsage[] =
+    "usage: towfish_depth [--body towfish] (--depth D | --altitude A [--seabed-depth B |\n"
+    "                     --seabed-profile s0:d0,s1:d1,...] | --hold) [--kp 0.15] [--ki 0.01]\n"
+    "                     [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20]\n"
+    "                     [--max-pitch-deg 30] [--elevator-sign -1] [--domain 0]\n"
+    "                     [--namespace /towsim] [--timeout 30] [--security DIR/NAME] [--log FILE]\n"
+    "  --depth D          hold the depth D [m] below the surface\n"
+    "  --altitude A       hold A [m] above the seabed, measured by the sim's own altimeter\n"
+    "                     (<ns>/<body>/altitude, sensor_msgs/Range); while it sees no seabed\n"
+    "                     the depth is held\n"
+    "  --seabed-depth B   fallback for a scene without a seabed: a flat seabed at B [m]\n"
+    "                     (the altimeter is not read)\n"
+    "  --seabed-profile s0:d0,...  fallback for a scene without a seabed: piecewise-linear\n"
+    "                     seabed depth d [m] against the distance run s [m]\n"
+    "  --hold             zero elevator (the uncontrolled reference)\n"
+    "  --log FILE         writes \"t z elevator target_depth\" per step\n"
+    "Exit 0 at the end of the node's run or on SIGINT/SIGTERM, 1 error or timeout, 2 bad "
+    "command line.\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   ClientOptions opt;
   opt.name = "towfish_depth";
@@ -41,7 +69,11 @@ int main(int argc, char** argv) {
                   {"body", "depth", "kp", "ki", "kd", "max-elevator-deg", "rate-deg",
                    "max-pitch-deg", "elevator-sign", "domain", "namespace", "timeout", "log",
                    "altitude", "seabed-depth", "seabed-profile", kSecurityFlag},
-                  {"hold"});
+                  {"hold", "help"});
+    if (f.Has("help")) {
+      std::printf("%s", kUsage);
+      return 0;
+    }
     altitude_mode = f.Has("altitude");
     if (!f.Has("depth") && !f.Has("hold") && !altitude_mode) {
       throw std::runtime_error("--depth D (or --altitude A with a seabed, or --hold) is required");
@@ -54,9 +86,10 @@ int main(int argc, char** argv) {
       if (!(altitude > 0.0)) {
         throw std::runtime_error("--altitude " + f.String("altitude", "") + ": must be > 0 [m]");
       }
-      if (f.Has("seabed-depth") == f.Has("seabed-profile")) {
-        throw std::runtime_error("--altitude needs one of --seabed-depth B, --seabed-profile");
+      if (f.Has("seabed-depth") && f.Has("seabed-profile")) {
+        throw std::runtime_error("--seabed-depth and --seabed-profile: give one of them");
       }
+      opt.altitude = !f.Has("seabed-depth") && !f.Has("seabed-profile");  // the altimeter
       if (f.Has("seabed-depth")) {
         const double b = f.Number("seabed-depth", 0.0);
         if (!(b > altitude)) {
@@ -65,7 +98,7 @@ int main(int argc, char** argv) {
                                    "must be below the surface)");
         }
         seabed = FlatSeabed(b);
-      } else {
+      } else if (f.Has("seabed-profile")) {
         seabed = ParseSeabedProfile(f.String("seabed-profile", ""), "--seabed-profile");
         for (double d : seabed.depth) {
           if (!(d > altitude)) {
@@ -109,8 +142,27 @@ int main(int argc, char** argv) {
     LockstepClient client(opt);
     PidState state;
     AlongTrack track;
+    bool have_target = false, warned = false;
     const int rc = client.Run([&](const BodyState& b) {
-      if (altitude_mode) p.depth = AltitudeTargetDepth(seabed, track.Update(b.x, b.y), altitude);
+      if (altitude_mode && opt.altitude) {
+        if (std::isfinite(b.altitude)) {
+          p.depth = b.z + b.altitude - altitude;  // the seabed below, less the altitude
+          have_target = true;
+        } else {
+          if (!have_target) p.depth = b.z;  // nothing measured yet: hold the depth
+          have_target = true;
+          if (!warned) {
+            std::fprintf(stderr,
+                         "towfish_depth: warning: t = %g s: the altimeter sees no seabed "
+                         "(range %g); holding the depth %g m (a scene without a seabed needs "
+                         "--seabed-depth B or --seabed-profile)\n",
+                         b.t, b.altitude, p.depth);
+            warned = true;
+          }
+        }
+      } else if (altitude_mode) {
+        p.depth = AltitudeTargetDepth(seabed, track.Update(b.x, b.y), altitude);
+      }
       const double elevator = DepthStep(p, state, b.z, b.z_dot, b.pitch, b.dt);
       if (log != nullptr) {
         std::fprintf(log, "%.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth);

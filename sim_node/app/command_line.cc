@@ -68,6 +68,8 @@ std::string Usage() {
          "                        at the scene's time.output_rate\n"
          "  --record FILE.mcap    DDS modes: record every message published to MCAP (ros2);\n"
          "                        an existing file is refused unless --overwrite\n"
+         "  --foxglove PORT       DDS modes: serve every topic to Foxglove on\n"
+         "                        ws://127.0.0.1:PORT (0: a free port, printed)\n"
          "  --overwrite           --record may replace an existing file\n"
          "  --allow-another-node  DDS modes: run although another node publishes in the\n"
          "                        same domain and namespace (else exit 2; status warns)\n"
@@ -119,10 +121,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.allow_another_node = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene",  "--mode",   "--duration",
-                                             "--rate",   "--set",    "--csv",
-                                             "--record", "--domain", "--namespace",
-                                             "--security"};
+    static const char* const kWithValue[] = {"--scene",     "--mode",     "--duration", "--rate",
+                                             "--set",       "--csv",      "--record",   "--domain",
+                                             "--namespace", "--security", "--foxglove"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -187,9 +188,21 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     } else if (name == "--namespace") {
       if (v.empty() || v[0] != '/') return fail("--namespace " + v + ": must start with '/'");
       o.ns = v;
+    } else if (name == "--foxglove") {
+      double port = 0.0;
+      if (!ParseNumber(v, &port) || port < 0.0 || port > 65535.0 ||
+          port != static_cast<double>(static_cast<long>(port))) {
+        return fail("--foxglove " + v + ": must be a port number from 0 to 65535");
+      }
+      o.foxglove_port = static_cast<int>(port);
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
+  if (o.mode == Mode::kOffline && o.foxglove_port) {
+    return fail(
+        "--foxglove: needs a DDS mode (realtime, fast or lockstep); offline publishes "
+        "nothing");
+  }
   if (o.mode == Mode::kOffline && !o.security.empty()) {
     return fail("--security " + o.security + ": needs a DDS mode (realtime, fast or lockstep)");
   }

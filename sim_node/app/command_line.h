@@ -30,6 +30,7 @@ struct Options {
   bool overwrite = false;              // --overwrite: --record may replace an existing file
   bool allow_another_node = false;     // --allow-another-node: run beside another node
   std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)
+  std::optional<int> foxglove_port;    // --foxglove PORT: a Foxglove server (docs/foxglove.md)
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)
   bool wait_for_controllers = false;   // --wait-for-controllers: first step once all commanded

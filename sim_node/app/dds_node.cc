@@ -15,6 +15,7 @@
 #include "app/dds_pacer.h"
 #include "app/dds_publisher.h"
 #include "app/dds_uri.h"
+#include "app/foxglove_server.h"
 #include "app/mcap_recording.h"
 #include "app/peer_nodes.h"
 #include "app/stop_signal.h"
@@ -24,6 +25,7 @@
 #include "dds/command_arbiter.h"
 #include "dds/entities.h"
 #include "dds/port_mapping.h"
+#include "dds/ros_graph.h"
 #include "dds/topic_names.h"
 #include "dds/translators.h"
 #include "io/output_error.h"
@@ -52,7 +54,8 @@ constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [
 // expired), stopping would take a second per writer. The node's exit waits 10 ms per writer.
 constexpr const char* kLingerConfig =
     "<Internal><WriterLingerDuration>10ms</WriterLingerDuration></Internal>";
-constexpr int kMaxCommandNotes = 5;  // rejected / clamped commands told on stderr
+constexpr int kMaxCommandNotes = 5;            // rejected / clamped commands told on stderr
+constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (dds/ros_graph.h)
 
 constexpr uint8_t kRunning = towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING;
 constexpr uint8_t kPaused = towsim_msgs_msg_dds__SimStatus_Constants_STATE_PAUSED;
@@ -131,6 +134,8 @@ class DdsNode {
   std::unique_ptr<dds::Participant> participant_;
   std::unique_ptr<McapRecording> recording_;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints_;
+  std::unique_ptr<dds::RosGraphNode> graph_;  // the ROS 2 node /<ns>/sim_node
+  std::unique_ptr<FoxgloveServer> foxglove_;  // after endpoints_: stops before them
   std::unique_ptr<PeerNodes> peers_;          // other nodes in the namespace
   std::unique_ptr<UnknownCommands> unknown_;  // commands on topics of no commandable body
   std::string peer_note_;                     // the warning about them, for the status
@@ -254,9 +259,15 @@ int DdsNode::Setup() {
       peer_note_ = "warning: another node runs on " + where;
       std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
     }
+    // every reader and writer the node has now (the readers UnknownCommands makes later for
+    // commands on topics of no commandable body are not listed)
+    std::vector<dds_entity_t> readers = endpoints_->readers();
+    readers.push_back(peers_->reader());
+    graph_ = std::make_unique<dds::RosGraphNode>(participant_->get(), opt_.ns, kNodeName, readers,
+                                                 endpoints_->writers());
   } catch (const dds::SecurityError& e) {
     return bad(e.what());
-  } catch (const dds::DdsError& e) {
+  } catch (const std::runtime_error& e) {  // dds::DdsError, the ROS 2 graph entry
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());
     return kExitBadInput;
   }
@@ -273,12 +284,30 @@ int DdsNode::Setup() {
     }
   }
 
+  // after the recording: its channels are the recording's too
+  if (opt_.foxglove_port >= 0) {
+    try {
+      foxglove_ = std::make_unique<FoxgloveServer>(FoxgloveServer::Options{
+          "127.0.0.1", static_cast<uint16_t>(opt_.foxglove_port), "sim_node " + opt_.ns});
+      endpoints_->StartFoxglove(*participant_, foxglove_.get());
+      foxglove_->Start();
+    } catch (const std::exception& e) {
+      return bad("--foxglove " + std::to_string(opt_.foxglove_port) + ": " + e.what());
+    }
+    std::printf("sim_node: Foxglove at ws://127.0.0.1:%u\n",
+                static_cast<unsigned>(foxglove_->port()));
+    std::fflush(stdout);
+  }
+
   strides_.clock = Stride(opt_.rates.clock, h_);
   strides_.odom = Stride(opt_.rates.odom, h_);
   strides_.cable_force = Stride(opt_.rates.cable_force, h_);
+  strides_.sensors = Stride(opt_.rates.sensors, h_);
   strides_.status = lockstep() ? 1 : Stride(opt_.rates.status, h_);  // lockstep: every step
   strides_.cable_state =
       Stride(opt_.rates.cable_state < 0.0 ? model_.time.output_rate : opt_.rates.cable_state, h_);
+  strides_.markers =
+      Stride(opt_.rates.markers < 0.0 ? model_.time.output_rate : opt_.rates.markers, h_);
   output_stride_ = Stride(model_.time.output_rate, h_);
   if (std::isfinite(opt_.duration)) steps_to_run_ = std::max(0L, std::lround(opt_.duration / h_));
   paused_ = opt_.start_paused;

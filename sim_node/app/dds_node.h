@@ -45,6 +45,8 @@ struct PublishRates {
   double cable_force = 0.0;
   double status = 0.0;
   double cable_state = -1.0;  // < 0: the scene's time.output_rate
+  double sensors = 0.0;       // altitude and pressure (docs/sensors.md)
+  double markers = -1.0;      // < 0: the scene's time.output_rate
 };
 
 struct DdsNodeOptions {
@@ -68,6 +70,9 @@ struct DdsNodeOptions {
   // Each message is serialized once and the same bytes are published and recorded (see
   // app/dds_publisher.h); the file is completed at the end of the run and on SIGINT / SIGTERM.
   std::string record_file;
+  // a Foxglove WebSocket server on 127.0.0.1:foxglove_port serving every topic the node
+  // publishes (docs/foxglove.md; 0: a free port); < 0: none
+  int foxglove_port = -1;
   bool overwrite = false;  // record_file may replace an existing file (else exit 2)
   // run although another node publishes in this domain and namespace (else exit 2; the
   // status warns either way, app/peer_nodes.h)

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string>
 
+#include "io/ros2_schemas.h"
+
 namespace towsim::app {
 namespace {
 
@@ -12,7 +14,20 @@ bool Due(uint64_t step, long stride, bool all) {
 
 int64_t Nanoseconds(double s) { return static_cast<int64_t>(std::llround(s * 1e9)); }
 
+// simulation time as a Foxglove log time [ns] (negative times as 0)
+uint64_t SimNs(double t) { return t > 0.0 ? static_cast<uint64_t>(std::llround(t * 1e9)) : 0; }
+
 }  // namespace
+
+NodeEndpoints::SensorEndpoints::SensorEndpoints(const dds::Participant& participant,
+                                                const dds::TopicNames& names,
+                                                const std::string& body)
+    : altitude_topic(participant, &sensor_msgs_msg_dds__Range__desc, names.altitude(body)),
+      pressure_topic(participant, &sensor_msgs_msg_dds__FluidPressure__desc, names.pressure(body)),
+      altitude(participant, altitude_topic, dds::StateQos()),
+      pressure(participant, pressure_topic, dds::StateQos()),
+      altitude_msg(body),
+      pressure_msg(body) {}
 
 NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
                              const core::Simulation& sim, const std::vector<int>& command_vehicles)
@@ -21,13 +36,24 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
       status_topic_(participant, &towsim_msgs_msg_dds__SimStatus__desc, names.status()),
       scene_topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc, names.scene_info()),
       control_topic_(participant, &towsim_msgs_msg_dds__SimControl__desc, names.sim_control()),
+      tf_topic_(participant, &tf2_msgs_msg_dds__TFMessage__desc, names.tf()),
+      tf_static_topic_(participant, &tf2_msgs_msg_dds__TFMessage__desc, names.tf_static()),
+      markers_topic_(participant, &visualization_msgs_msg_dds__MarkerArray__desc, names.markers()),
       clock_(participant, clock_topic_, dds::StateQos()),
       cable_(participant, cable_topic_, dds::StateQos()),
       status_(participant, status_topic_, dds::StateQos()),
       scene_(participant, scene_topic_, dds::SceneInfoQos()),
+      tf_(participant, tf_topic_, dds::StateQos()),
+      tf_static_(participant, tf_static_topic_, dds::SceneInfoQos()),
+      markers_(participant, markers_topic_, dds::StateQos()),
       control_reader_(participant, control_topic_, dds::ControlQos()),
       waitset_(participant),
-      cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes())) {
+      cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes())),
+      tf_msg_(dds::BodyTransforms(sim)),
+      tf_static_msg_(dds::StaticTransforms(sim)),
+      markers_msg_(std::make_unique<dds::SceneMarkers>(sim)),
+      names_(names) {
+  for (int b = 0; b < sim.num_bodies(); ++b) body_names_.push_back(sim.body_name(b));
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const std::string& name = sim.body_name(b);
     dds::Topic odom_topic(participant, &nav_msgs_msg_dds__Odometry__desc, names.odom(name));
@@ -37,8 +63,11 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
     dds::Writer<dds::WrenchStampedMsg> force(participant, force_topic, dds::StateQos());
     bodies_.push_back(std::make_unique<BodyEndpoints>(BodyEndpoints{
         std::move(odom_topic), std::move(force_topic), std::move(odom), std::move(force),
-        std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, name),
-        std::make_unique<dds::WrenchStampedMessage>(name), Recorded{}, Recorded{}}));
+        std::make_unique<dds::OdometryMessage>(dds::kWorldFrame, dds::FrdFrame(name)),
+        std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(name)), Recorded{}, Recorded{}}));
+  }
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    sensors_.push_back(std::make_unique<SensorEndpoints>(participant, names, sim.body_name(b)));
   }
   const int num_spheres = sim.num_spheres();
   for (int v : command_vehicles) {
@@ -53,11 +82,12 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
 
 template <class T>
 void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg) {
-  if (recording_ == nullptr) {
+  const bool served = Served(recorded);
+  if (recording_ == nullptr && !served) {
     writer.Write(msg);
     return;
   }
-  // serialized once: these bytes go to DDS and into the recording
+  // serialized once: these bytes go to DDS, into the recording and to Foxglove
   const dds::CdrSample sample = dds::CdrSample::FromSample(*recorded.type, &msg);
   const dds_time_t now = dds_time();
   if (writer.matched()) {
@@ -65,8 +95,76 @@ void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const
     if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
   }
   sample.CopyTo(&buffer_);
-  recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
-                    buffer_.data(), buffer_.size());
+  if (recording_ != nullptr) {
+    recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                      buffer_.data(), buffer_.size());
+  }
+  if (served) fox_->Publish(recorded.fox, sim_ns_, buffer_.data(), buffer_.size());
+}
+
+template <class T>
+void NodeEndpoints::EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const T& msg) {
+  if (recording_ == nullptr && fox_ == nullptr) {
+    writer.Write(msg);
+    return;
+  }
+  const dds::CdrSample s = dds::CdrSample::FromSample(*recorded.type, &msg);
+  const dds_time_t now = dds_time();
+  const dds_return_t rc = s.Write(writer.get(), now);
+  if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
+  s.CopyTo(&buffer_);
+  if (recording_ != nullptr) {
+    recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+                      buffer_.data(), buffer_.size());
+  }
+  // latched: kept for the clients that subscribe later
+  if (fox_ != nullptr) fox_->Publish(recorded.fox, sim_ns_, buffer_.data(), buffer_.size());
+}
+
+const dds::RawType* NodeEndpoints::TypeOf(const dds::Participant& participant,
+                                          const dds_topic_descriptor_t* descriptor) {
+  for (const auto& t : raw_types_) {
+    if (t->descriptor() == descriptor) return t.get();
+  }
+  raw_types_.push_back(std::make_unique<dds::RawType>(participant, descriptor));
+  return raw_types_.back().get();
+}
+
+void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveServer* server) {
+  fox_ = server;
+  auto add = [&](const std::string& dds_topic, const dds_topic_descriptor_t* descriptor,
+                 Recorded* r, bool latched) {
+    r->type = TypeOf(participant, descriptor);  // the recording's, if it has one
+    const std::string type = io::Ros2TypeName(descriptor->m_typename);
+    r->fox = server->AddChannel(RosTopicName(dds_topic), type, io::Ros2MsgSchema(type), latched);
+  };
+  add(scene_.topic_name(), &towsim_msgs_msg_dds__SceneInfo__desc, &scene_rec_, true);
+  add(clock_.topic_name(), &rosgraph_msgs_msg_dds__Clock__desc, &clock_rec_, false);
+  add(status_.topic_name(), &towsim_msgs_msg_dds__SimStatus__desc, &status_rec_, false);
+  add(cable_.topic_name(), &towsim_msgs_msg_dds__CableState__desc, &cable_rec_, false);
+  add(tf_static_.topic_name(), &tf2_msgs_msg_dds__TFMessage__desc, &tf_static_rec_, true);
+  add(tf_.topic_name(), &tf2_msgs_msg_dds__TFMessage__desc, &tf_rec_, false);
+  add(markers_.topic_name(), &visualization_msgs_msg_dds__MarkerArray__desc, &markers_rec_, false);
+  for (auto& b : bodies_) {
+    add(b->odom.topic_name(), &nav_msgs_msg_dds__Odometry__desc, &b->odom_rec, false);
+    add(b->force.topic_name(), &geometry_msgs_msg_dds__WrenchStamped__desc, &b->force_rec, false);
+  }
+  // the inbound topics as channels too, so that Foxglove's Publish panel knows their schemas
+  // (no messages: what the node takes is not echoed)
+  for (const char* type : {"towsim_msgs/msg/ActuatorCommand", "towsim_msgs/msg/SimControl"}) {
+    const bool control = std::string(type).find("SimControl") != std::string::npos;
+    if (control) {
+      server->AddChannel(RosTopicName(control_topic_.name()), type, io::Ros2MsgSchema(type));
+      continue;
+    }
+    for (const dds::Topic& t : command_topics_) {
+      server->AddChannel(RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
+    }
+  }
+  // clients publish through writers of the node's participant: its own readers take them
+  fox_commands_ =
+      std::make_unique<FoxgloveCommands>(participant, names_, body_names_, "sim_node", false);
+  fox_commands_->Attach(server);
 }
 
 NodeEndpoints::Recorded NodeEndpoints::AddRecorded(const dds::Participant& participant,
@@ -74,13 +172,7 @@ NodeEndpoints::Recorded NodeEndpoints::AddRecorded(const dds::Participant& parti
                                                    const dds_topic_descriptor_t* descriptor,
                                                    bool transient_local) {
   Recorded r;
-  for (const auto& t : raw_types_) {
-    if (t->descriptor() == descriptor) r.type = t.get();
-  }
-  if (r.type == nullptr) {
-    raw_types_.push_back(std::make_unique<dds::RawType>(participant, descriptor));
-    r.type = raw_types_.back().get();
-  }
+  r.type = TypeOf(participant, descriptor);
   r.channel = recording_->AddTopic(topic, descriptor->m_typename, transient_local);
   return r;
 }
@@ -96,39 +188,76 @@ void NodeEndpoints::StartRecording(const dds::Participant& participant, McapReco
       AddRecorded(participant, status_.topic_name(), &towsim_msgs_msg_dds__SimStatus__desc, false);
   cable_rec_ =
       AddRecorded(participant, cable_.topic_name(), &towsim_msgs_msg_dds__CableState__desc, false);
+  tf_static_rec_ = AddRecorded(participant, tf_static_.topic_name(),
+                               &tf2_msgs_msg_dds__TFMessage__desc, /*transient_local=*/true);
+  tf_rec_ = AddRecorded(participant, tf_.topic_name(), &tf2_msgs_msg_dds__TFMessage__desc, false);
+  markers_rec_ = AddRecorded(participant, markers_.topic_name(),
+                             &visualization_msgs_msg_dds__MarkerArray__desc, false);
   for (auto& b : bodies_) {
     b->odom_rec =
         AddRecorded(participant, b->odom.topic_name(), &nav_msgs_msg_dds__Odometry__desc, false);
     b->force_rec = AddRecorded(participant, b->force.topic_name(),
                                &geometry_msgs_msg_dds__WrenchStamped__desc, false);
   }
+  for (auto& s : sensors_) {
+    s->altitude_rec = AddRecorded(participant, s->altitude.topic_name(),
+                                  &sensor_msgs_msg_dds__Range__desc, false);
+    s->pressure_rec = AddRecorded(participant, s->pressure.topic_name(),
+                                  &sensor_msgs_msg_dds__FluidPressure__desc, false);
+  }
 }
 
 void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
                                  const PublishStrides& strides, bool all) {
+  sim_ns_ = SimNs(sim.time());
   for (size_t b = 0; b < bodies_.size(); ++b) {
     BodyEndpoints& e = *bodies_[b];
-    if (Due(step, strides.odom, all) && Wanted(e.odom)) {
+    if (Due(step, strides.odom, all) && Wanted(e.odom, e.odom_rec)) {
       dds::ToOdometry(sim, static_cast<int>(b), &e.odom_msg->msg);
       Emit(e.odom, e.odom_rec, e.odom_msg->msg);
     }
-    if (Due(step, strides.cable_force, all) && Wanted(e.force)) {
+    if (Due(step, strides.cable_force, all) && Wanted(e.force, e.force_rec)) {
       dds::ToCableForce(sim, static_cast<int>(b), &e.force_msg->msg);
       Emit(e.force, e.force_rec, e.force_msg->msg);
     }
   }
-  if (Due(step, strides.cable_state, all) && Wanted(cable_)) {
+  if (Due(step, strides.odom, all) && Wanted(tf_, tf_rec_)) {
+    dds::ToBodyTransforms(sim, tf_msg_.get());
+    Emit(tf_, tf_rec_, tf_msg_->msg);
+  }
+  if (Due(step, strides.markers, all) && Wanted(markers_, markers_rec_)) {
+    markers_msg_->Update(sim);
+    Emit(markers_, markers_rec_, markers_msg_->msg);
+  }
+  for (size_t b = 0; b < sensors_.size(); ++b) {
+    SensorEndpoints& s = *sensors_[b];
+    if (!Due(step, strides.sensors, all)) break;
+    if (Wanted(s.altitude, s.altitude_rec)) {
+      dds::ToAltitude(sim, static_cast<int>(b), &s.altitude_msg.msg);
+      Emit(s.altitude, s.altitude_rec, s.altitude_msg.msg);
+    }
+    if (Wanted(s.pressure, s.pressure_rec)) {
+      dds::ToPressure(sim, static_cast<int>(b), &s.pressure_msg.msg);
+      Emit(s.pressure, s.pressure_rec, s.pressure_msg.msg);
+    }
+  }
+  if (Due(step, strides.cable_state, all) && Wanted(cable_, cable_rec_)) {
     dds::ToCableState(sim, step, cable_msg_.get());
     Emit(cable_, cable_rec_, cable_msg_->msg);
   }
-  if (Due(step, strides.clock, all) && Wanted(clock_)) {
+  if (Due(step, strides.clock, all) && Wanted(clock_, clock_rec_)) {
     dds::ToClock(sim.time(), &clock_msg_);
     Emit(clock_, clock_rec_, clock_msg_);
+  }
+  if (fox_ != nullptr && fox_->clients() > 0 && Due(step, strides.clock, all)) {
+    fox_->BroadcastTime(sim_ns_);  // the `time` capability
   }
 }
 
 void NodeEndpoints::PublishStatus(const dds::StatusSample& sample) {
-  if (!Wanted(status_)) return;
+  sim_ns_ = SimNs(sample.sim_time);
+  if (fox_commands_) fox_commands_->SetStatusStep(sample.step);  // what Teleop answers
+  if (!Wanted(status_, status_rec_)) return;
   dds::ToSimStatus(sample, &status_msg_);
   Emit(status_, status_rec_, status_msg_.msg);
 }
@@ -136,17 +265,30 @@ void NodeEndpoints::PublishStatus(const dds::StatusSample& sample) {
 void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
   // transient local: written even without a reader, for late joiners
   dds::ToSceneInfo(sample, &scene_msg_);
-  if (recording_ == nullptr) {
-    scene_.Write(scene_msg_.msg);
-    return;
+  sim_ns_ = SimNs(sample.time);
+  EmitAlways(scene_, scene_rec_, scene_msg_.msg);
+  // the static frames with it (also after a reset: the stamp of the new run)
+  for (int i = 0; i < tf_static_msg_->size(); ++i) {
+    tf_static_msg_->transform(i).header.stamp = scene_msg_.msg.header.stamp;
   }
-  const dds::CdrSample s = dds::CdrSample::FromSample(*scene_rec_.type, &scene_msg_.msg);
-  const dds_time_t now = dds_time();
-  const dds_return_t rc = s.Write(scene_.get(), now);
-  if (rc < 0) throw dds::DdsError("writing to " + scene_.topic_name(), rc);
-  s.CopyTo(&buffer_);
-  recording_->Write(scene_rec_.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
-                    buffer_.data(), buffer_.size());
+  EmitAlways(tf_static_, tf_static_rec_, tf_static_msg_->msg);
+}
+
+std::vector<dds_entity_t> NodeEndpoints::readers() const {
+  std::vector<dds_entity_t> out;
+  for (const auto& r : command_readers_) out.push_back(r->get());
+  out.push_back(control_reader_.get());
+  return out;
+}
+
+std::vector<dds_entity_t> NodeEndpoints::writers() const {
+  std::vector<dds_entity_t> out = {clock_.get(), cable_.get(),     status_.get(), scene_.get(),
+                                   tf_.get(),    tf_static_.get(), markers_.get()};
+  for (const auto& b : bodies_) {
+    out.push_back(b->odom.get());
+    out.push_back(b->force.get());
+  }
+  return out;
 }
 
 void NodeEndpoints::Flush(double timeout) {

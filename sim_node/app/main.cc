@@ -79,7 +79,8 @@ int Run(const towsim::app::Options& options) {
   std::unique_ptr<towsim::io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {
     try {
-      csv = std::make_unique<towsim::io::CsvWriter>(options.csv_dir);
+      csv = std::make_unique<towsim::io::CsvWriter>(options.csv_dir,
+                                                    towsim::io::HasSea(model.environment));
     } catch (const towsim::io::OutputError& e) {  // opened, not written: disk full
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitError;
@@ -100,9 +101,11 @@ int Run(const towsim::app::Options& options) {
     dds.security = options.security;
     dds.open_outputs = model.publishing.open_outputs;
     const towsim::core::Publishing& pub = model.publishing;
-    dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state};
+    dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state, pub.sensors,
+                 pub.markers};
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
+    dds.foxglove_port = options.foxglove_port.value_or(-1);
     dds.overwrite = options.overwrite;
     dds.allow_another_node = options.allow_another_node;
     dds.start_paused = options.paused;

@@ -10,7 +10,8 @@
 //
 // It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
 // first), then subscribes to every towsim topic of the namespace (DESIGN §3: per body odom,
-// cable_force and command; cable/state, status, scene_info, sim_control) and /clock, or to the
+// cable_force and command; cable/state, status, scene_info, sim_control, markers), /clock, /tf
+// and /tf_static, or to the
 // --topics given (ROS names, "/towsim/towfish/odom"). The payloads are stored as received
 // (dds_takecdr: the CDR bytes, never deserialized and serialized again), log time = the wall
 // clock when taken from the reader (receive time), publish time = the writer's source
@@ -40,6 +41,8 @@
 #include "app/dds_uri.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
+#include "app/tool_flags.h"
+#include "app/topic_types.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
 #include "dds/qos.h"
@@ -92,23 +95,10 @@ int Bad(const std::string& message) {
 
 // "" on success, else the error
 std::string Parse(int argc, char** argv, Options* o, bool* help) {
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i], value;
-    bool has_value = false;
-    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      has_value = true;
-    }
-    auto next = [&](std::string* v) {
-      if (has_value) {
-        *v = value;
-        return true;
-      }
-      if (i + 1 >= argc) return false;
-      *v = argv[++i];
-      return true;
-    };
+  towsim::app::ToolFlags flags(argc, argv);
+  while (flags.Next()) {
+    const std::string& arg = flags.arg();
+    std::string v;
     if (arg == "--help" || arg == "-h") {
       *help = true;
     } else if (arg == "--quiet") {
@@ -116,48 +106,26 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
     } else if (arg == "--overwrite") {
       o->overwrite = true;
     } else if (arg == "--security") {
-      if (!next(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
+      if (!flags.Value(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
     } else if (arg == "--output") {
-      if (!next(&o->output)) return "--output needs a value";
+      if (!flags.Value(&o->output)) return "--output needs a value";
     } else if (arg == "--namespace") {
-      if (!next(&o->ns)) return "--namespace needs a value";
+      if (!flags.Value(&o->ns)) return "--namespace needs a value";
       if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
         return "--namespace " + o->ns + ": " + e;
       }
     } else if (arg == "--domain") {
-      std::string v;
-      if (!next(&v)) return "--domain needs a value";
-      char* end = nullptr;
-      const long d = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end != '\0' || d < 0 || d > 232) {
-        return "--domain " + v + ": must be an integer from 0 to 232";
-      }
-      o->domain = static_cast<uint32_t>(d);
+      if (!flags.Value(&v)) return "--domain needs a value";
+      if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
     } else if (arg == "--duration") {
-      std::string v;
-      if (!next(&v)) return "--duration needs a value";
+      if (!flags.Value(&v)) return "--duration needs a value";
       char* end = nullptr;
       o->duration = std::strtod(v.c_str(), &end);
       if (v.empty() || *end != '\0' || !(o->duration > 0.0)) {
         return "--duration " + v + ": must be a number > 0 [s]";
       }
     } else if (arg == "--topics") {
-      // values up to the next option; commas separate too
-      std::vector<std::string> values;
-      if (has_value) values.push_back(value);
-      while (!has_value && i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) {
-        values.push_back(argv[++i]);
-      }
-      for (const std::string& v : values) {
-        size_t start = 0;
-        while (start <= v.size()) {
-          const size_t comma = v.find(',', start);
-          const std::string t = v.substr(start, comma == std::string::npos ? comma : comma - start);
-          if (!t.empty()) o->topics.push_back(t[0] == '/' ? t : "/" + t);
-          if (comma == std::string::npos) break;
-          start = comma + 1;
-        }
-      }
+      for (const std::string& t : towsim::app::TopicList(flags.List())) o->topics.push_back(t);
       if (o->topics.empty()) return "--topics needs at least one topic";
     } else {
       return "unknown option '" + arg + "'";
@@ -195,9 +163,6 @@ class Recorder {
  private:
   Subscription& Subscribe(const std::string& topic, const dds_topic_descriptor_t* descriptor,
                           bool transient_local);
-  // the topics to record once the bodies are known
-  std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> Topics(
-      const std::vector<std::string>& bodies) const;
   // takes everything available; returns true if the node's run ended
   bool TakeAll();
   void Progress(bool final);
@@ -236,22 +201,6 @@ Subscription& Recorder::Subscribe(const std::string& topic,
   s->channel = recording_->AddTopic(topic, descriptor->m_typename, transient_local, 1);
   subs_.push_back(std::move(s));
   return *subs_.back();
-}
-
-std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> Recorder::Topics(
-    const std::vector<std::string>& bodies) const {
-  std::vector<std::pair<std::string, const dds_topic_descriptor_t*>> all = {
-      {names_.clock(), &rosgraph_msgs_msg_dds__Clock__desc},
-      {names_.status(), &towsim_msgs_msg_dds__SimStatus__desc},
-      {names_.cable_state(), &towsim_msgs_msg_dds__CableState__desc},
-      {names_.sim_control(), &towsim_msgs_msg_dds__SimControl__desc},
-  };
-  for (const std::string& b : bodies) {
-    all.push_back({names_.odom(b), &nav_msgs_msg_dds__Odometry__desc});
-    all.push_back({names_.cable_force(b), &geometry_msgs_msg_dds__WrenchStamped__desc});
-    all.push_back({names_.command(b), &towsim_msgs_msg_dds__ActuatorCommand__desc});
-  }
-  return all;
 }
 
 bool Recorder::TakeAll() {
@@ -353,12 +302,12 @@ int Recorder::Run() {
         }
       }
       std::set<std::string> known;
-      for (const auto& [topic, descriptor] : Topics(bodies)) {
-        const std::string ros = towsim::app::RosTopicName(topic);
+      for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies)) {
+        const std::string ros = towsim::app::RosTopicName(t.dds_name);
         if (known.count(ros)) continue;
         known.insert(ros);
         if (explicit_topics && !wanted.count(ros)) continue;
-        Subscribe(topic, descriptor, false);
+        Subscribe(t.dds_name, t.descriptor, t.transient_local);
       }
       if (explicit_topics) {
         if (scene != nullptr) known.insert(towsim::app::RosTopicName(names_.scene_info()));

@@ -43,6 +43,7 @@
 #include "app/dds_uri.h"
 #include "app/mcap_recording.h"
 #include "app/stop_signal.h"
+#include "app/tool_flags.h"
 #include "app/topic_types.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
@@ -108,30 +109,16 @@ bool Number(const std::string& v, double* out) {
 }
 
 std::string Parse(int argc, char** argv, Options* o, bool* help) {
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i], value;
-    bool has_value = false;
-    if (const auto eq = arg.find('='); arg.rfind("--", 0) == 0 && eq != std::string::npos) {
-      value = arg.substr(eq + 1);
-      arg = arg.substr(0, eq);
-      has_value = true;
-    }
-    auto next = [&](std::string* v) {
-      if (has_value) {
-        *v = value;
-        return true;
-      }
-      if (i + 1 >= argc) return false;
-      *v = argv[++i];
-      return true;
-    };
+  towsim::app::ToolFlags flags(argc, argv);
+  while (flags.Next()) {
+    const std::string& arg = flags.arg();
     std::string v;
     if (arg == "--help" || arg == "-h") {
       *help = true;
     } else if (arg == "--quiet") {
       o->quiet = true;
     } else if (arg == "--security") {
-      if (!next(&v) || v.empty()) return "--security needs DIR/NAME";
+      if (!flags.Value(&v) || v.empty()) return "--security needs DIR/NAME";
       o->security = v;
     } else if (arg == "--loop") {
       o->loop = true;
@@ -140,48 +127,28 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
     } else if (arg == "--fast") {
       o->rate = 0.0;
     } else if (arg == "--rate") {
-      if (!next(&v)) return "--rate needs a value";
+      if (!flags.Value(&v)) return "--rate needs a value";
       if (!Number(v, &o->rate) || o->rate < 0.0) return "--rate " + v + ": must be a number >= 0";
     } else if (arg == "--start") {
-      if (!next(&v)) return "--start needs a value";
+      if (!flags.Value(&v)) return "--start needs a value";
       if (!Number(v, &o->start) || o->start < 0.0) {
         return "--start " + v + ": must be a number >= 0 [s]";
       }
     } else if (arg == "--delay") {
-      if (!next(&v)) return "--delay needs a value";
+      if (!flags.Value(&v)) return "--delay needs a value";
       if (!Number(v, &o->delay) || o->delay < 0.0) {
         return "--delay " + v + ": must be a number >= 0 [s]";
       }
     } else if (arg == "--domain") {
-      if (!next(&v)) return "--domain needs a value";
-      char* end = nullptr;
-      const long d = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end != '\0' || d < 0 || d > 232) {
-        return "--domain " + v + ": must be an integer from 0 to 232";
-      }
-      o->domain = static_cast<uint32_t>(d);
+      if (!flags.Value(&v)) return "--domain needs a value";
+      if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
     } else if (arg == "--namespace") {
-      if (!next(&o->ns)) return "--namespace needs a value";
+      if (!flags.Value(&o->ns)) return "--namespace needs a value";
       if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
         return "--namespace " + o->ns + ": " + e;
       }
     } else if (arg == "--topics") {
-      std::vector<std::string> values;
-      if (has_value) values.push_back(value);
-      while (!has_value && i + 1 < argc && std::string(argv[i + 1]).rfind("--", 0) != 0) {
-        values.push_back(argv[++i]);
-      }
-      for (const std::string& t : values) {
-        size_t start = 0;
-        while (start <= t.size()) {
-          const size_t comma = t.find(',', start);
-          const std::string one =
-              t.substr(start, comma == std::string::npos ? comma : comma - start);
-          if (!one.empty()) o->topics.push_back(one[0] == '/' ? one : "/" + one);
-          if (comma == std::string::npos) break;
-          start = comma + 1;
-        }
-      }
+      for (const std::string& t : towsim::app::TopicList(flags.List())) o->topics.push_back(t);
       if (o->topics.empty()) return "--topics needs at least one topic";
     } else if (arg.rfind("--", 0) == 0 || !o->file.empty()) {
       return "unknown option '" + arg + "'";
@@ -300,7 +267,9 @@ int Replay(const Options& opt) {
           dds_create_topic(participant->get(), d, out->dds_topic.c_str(), nullptr, nullptr);
       if (t < 0) throw dds::DdsError("creating topic " + out->dds_topic, t);
       out->topic = dds::Entity(t);
-      dds::Qos qos = out->scene_info                               ? dds::SceneInfoQos()
+      // scene_info and /tf_static are transient local (late joiners get them)
+      const bool latched = out->scene_info || out->ros_topic == "/tf_static";
+      dds::Qos qos = latched                                       ? dds::SceneInfoQos()
                      : d == &towsim_msgs_msg_dds__SimControl__desc ? dds::ControlQos()
                                                                    : dds::StateQos(1);
       const dds_entity_t w = dds_create_writer(participant->get(), t, qos.get(), nullptr);

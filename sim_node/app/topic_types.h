@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "dds/dds.h"
+#include "dds/topic_names.h"
 
 namespace towsim::app {
 
@@ -16,5 +17,19 @@ const std::vector<const dds_topic_descriptor_t*>& ContractTypes();
 
 // the descriptor of a ROS 2 type name ("nav_msgs/msg/Odometry"); nullptr if not a contract type
 const dds_topic_descriptor_t* DescriptorOfRos2Type(const std::string& ros2_type);
+
+// one topic of a node: its DDS name ("rt/towsim/towfish/odom"), type and durability
+struct NodeTopic {
+  std::string dds_name;
+  const dds_topic_descriptor_t* descriptor = nullptr;
+  bool transient_local = false;  // scene_info and /tf_static
+};
+
+// every topic of a towsim node of namespace `names` with these bodies (DESIGN §3,
+// docs/frames.md): /clock, status, cable/state, sim_control, /tf, /tf_static, markers, and per
+// body odom, cable_force and command; scene_info first when `with_scene_info`
+std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
+                                  const std::vector<std::string>& bodies,
+                                  bool with_scene_info = false);
 
 }  // namespace towsim::app

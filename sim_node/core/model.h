@@ -174,6 +174,8 @@ struct Publishing {
   double cable_force = 0.0;
   double status = 0.0;
   double cable_state = -1.0;     // < 0: the scene's time.output_rate
+  double sensors = 0.0;          // altitude and pressure of every body (docs/sensors.md)
+  double markers = -1.0;         // 3D markers; < 0: the scene's time.output_rate
   double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]
   // security.open_outputs: with DDS Security, participants without a certificate may read the
   // outputs (never command); docs/security.md

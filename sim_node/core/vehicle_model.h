@@ -76,6 +76,9 @@ struct ActuatorLimits {
 struct VehicleParams {
   std::string source;   // where the numbers come from
   double length = 1.0;  // [m]
+  // hull diameter [m], for drawing only (3D markers); 0: that of the cylinder of length
+  // `length` and volume `volume`
+  double diameter = 0.0;
   double mass = 1.0;    // [kg]
   Vec3 inertia = Vec3::Ones();  // principal inertia about the CG, [Ixx Iyy Izz] [kg m^2]
   Vec3 r_g = Vec3::Zero();      // CG in B [m]

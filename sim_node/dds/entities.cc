@@ -1,5 +1,9 @@
 #include "dds/entities.h"
 
+#include <memory>
+
+#include "dds/ros_graph.h"
+
 namespace towsim::dds {
 
 DdsError::DdsError(const std::string& action, dds_return_t code)
@@ -19,11 +23,13 @@ Participant::Participant(uint32_t domain_id, const std::string& config, const st
     if (d < 0) throw DdsError("creating " + where + " from " + config, d);
     domain_ = Entity(d);
   }
+  // USER_DATA "enclave=/;", as every ROS 2 participant has (dds/ros_graph.h)
+  std::unique_ptr<dds_qos_t, decltype(&dds_delete_qos)> qos(NewParticipantQos(), &dds_delete_qos);
   if (!security.empty()) {
-    participant_ = Entity(CreateSecureParticipant(domain_id, security, nullptr, admit));
+    participant_ = Entity(CreateSecureParticipant(domain_id, security, qos.get(), admit));
     return;
   }
-  const dds_entity_t p = dds_create_participant(domain_id, nullptr, nullptr);
+  const dds_entity_t p = dds_create_participant(domain_id, qos.get(), nullptr);
   if (p < 0) throw DdsError("creating a participant in " + where, p);
   participant_ = Entity(p);
 }

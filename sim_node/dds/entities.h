@@ -58,10 +58,11 @@ class Entity {
 
 // A domain participant. With a non-empty `config` (what CYCLONEDDS_URI would hold: a
 // file:// URI or XML), the domain is created from it explicitly; otherwise Cyclone reads
-// $CYCLONEDDS_URI. With a non-empty `security` (--security DIR/NAME, dds/security.h) the
-// participant runs DDS Security with that identity. Throws DdsError (e.g. a domain id whose
-// ports are out of range, an unreadable config file) or SecurityError (dds/security.h: a
-// missing file, or the plugins refused the identity, with Cyclone's reason).
+// $CYCLONEDDS_URI. Its USER_DATA is "enclave=/;" (a ROS 2 participant, dds/ros_graph.h). With a
+// non-empty `security` (--security DIR/NAME, dds/security.h) the participant runs DDS Security with
+// that identity. Throws DdsError (e.g. a domain id whose ports are out of range, an unreadable
+// config file) or SecurityError (dds/security.h: a missing file, or the plugins refused the
+// identity, with Cyclone's reason).
 class Participant {
  public:
   Participant(uint32_t domain_id, const std::string& config, const std::string& security = "",

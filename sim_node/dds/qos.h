@@ -5,7 +5,7 @@
 //                           never blocks the node on a slow subscriber;
 //   commands                reliable, keep last 1: the newest command wins;
 //   sim_control             reliable, keep last 32: no request is lost in a burst;
-//   scene_info              reliable, transient local, keep last 1: late joiners get it.
+//   scene_info, /tf_static  reliable, transient local, keep last 1: late joiners get it.
 // Every one fixes the data representation to XCDR1 (plain CDR), which ROS 2 expects.
 
 #include "dds/dds.h"

@@ -29,10 +29,16 @@ class TopicNames {
   std::string odom(const std::string& body) const { return prefix_ + body + "/odom"; }
   std::string cable_force(const std::string& body) const { return prefix_ + body + "/cable_force"; }
   std::string command(const std::string& body) const { return prefix_ + body + "/command"; }
+  std::string altitude(const std::string& body) const { return prefix_ + body + "/altitude"; }
+  std::string pressure(const std::string& body) const { return prefix_ + body + "/pressure"; }
   std::string cable_state() const { return prefix_ + "cable/state"; }
   std::string status() const { return prefix_ + "status"; }
   std::string sim_control() const { return prefix_ + "sim_control"; }
   std::string scene_info() const { return prefix_ + "scene_info"; }
+  // tf at the root, where tf2 listeners and viewers look (docs/frames.md)
+  std::string tf() const { return "rt/tf"; }
+  std::string tf_static() const { return "rt/tf_static"; }
+  std::string markers() const { return prefix_ + "markers"; }
 
  private:
   std::string ns_;

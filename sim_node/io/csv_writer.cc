@@ -1,6 +1,7 @@
 #include "io/csv_writer.h"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
@@ -19,6 +20,10 @@ bool IsHeldSupport(const core::CableEnd& end) {
 
 }  // namespace
 
+bool HasSea(const core::Environment& env) {
+  return !env.waves.empty() || !env.current.IsZero() || env.seabed.present();
+}
+
 std::string CsvField(const std::string& name) {
   if (name.find_first_of(",\"\r\n") == std::string::npos) return name;
   std::string quoted = "\"";
@@ -29,7 +34,7 @@ std::string CsvField(const std::string& name) {
   return quoted + "\"";
 }
 
-CsvWriter::CsvWriter(const std::string& dir) : dir_(dir) {
+CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -40,8 +45,9 @@ CsvWriter::CsvWriter(const std::string& dir) : dir_(dir) {
     Open(cable_, "cable.csv", kCsvCableHeader);
     Open(forces_, "forces.csv", kCsvForcesHeader);
     Open(status_, "status.csv", kCsvStatusHeader);
+    if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
   } catch (...) {
-    for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
+    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
     }
@@ -50,7 +56,7 @@ CsvWriter::CsvWriter(const std::string& dir) : dir_(dir) {
 }
 
 CsvWriter::~CsvWriter() {
-  for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
 }
@@ -112,11 +118,28 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
                status.residual, wall_us);
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
+  if (environment_.f != nullptr) WriteEnvironment(sim);
+}
+
+void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
+  const double t = sim.time();
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    // no seabed: the altitude is NaN, written as an empty field (the files never hold NaN)
+    const double altitude = sim.body_altitude(b);
+    char altitude_field[32] = "";
+    if (!std::isnan(altitude))
+      std::snprintf(altitude_field, sizeof altitude_field, "%.9g", altitude);
+    const core::Vec3 u = sim.water_velocity_at(b);
+    std::fprintf(environment_.f, "%.9g,%s,%.9g,%s,%.9g,%.9g,%.9g,%.9g\n", t,
+                 CsvField(sim.body_name(b)).c_str(), sim.surface_elevation_at(b), altitude_field,
+                 sim.body_depth(b), u.x(), u.y(), u.z());
+  }
+  Check(environment_);
 }
 
 void CsvWriter::Close() {
   std::string error;
-  for (File* file : {&bodies_, &cable_, &forces_, &status_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

@@ -1,5 +1,6 @@
 #pragma once
-// CSV output of a run (DESIGN §5): four files in one directory, one row set per Write().
+// CSV output of a run (DESIGN §5): four files in one directory, one row set per Write(), and
+// a fifth, environment.csv, when the scene has a sea (HasSea below).
 //
 //   bodies.csv  t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
 //               one row per body, spheres then vehicles (Simulation's body order): position
@@ -15,6 +16,14 @@
 //   status.csv  t,step,newton_iterations,residual,wall_us
 //               Newton iterations and final residual [N] of the step that led here, and its
 //               wall time [us] as measured by the caller
+//   environment.csv  t,body,wave_elevation,altitude,depth,current_u,current_v,current_w
+//               one row per body, only when HasSea(model.environment) (a calm scene writes
+//               exactly the four files above): the surface elevation eta at the body origin
+//               (positive up) [m], the altitude above the seabed straight below [m] (an EMPTY
+//               field without a seabed; the files never hold NaN), the depth below the
+//               instantaneous surface z + eta [m], and the water's velocity there (current +
+//               wave orbital velocity, world NED) [m/s] (Simulation::body_altitude, body_depth,
+//               surface_elevation_at, water_velocity_at; docs/environment.md)
 //
 // Spheres: their frame stays aligned with the world, so roll = pitch = yaw = 0, p = q = r = 0,
 // (u, v, w) is the world velocity and the moment is 0.
@@ -34,21 +43,28 @@ inline constexpr char kCsvBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,
 inline constexpr char kCsvCableHeader[] = "t,node,x,y,z,tension";
 inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
 inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+inline constexpr char kCsvEnvironmentHeader[] =
+    "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
+
+// whether a run in `env` writes environment.csv: it has waves, a (non-zero) current or a seabed
+bool HasSea(const core::Environment& env);
 
 // a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
 std::string CsvField(const std::string& name);
 
 class CsvWriter {
  public:
-  // creates `dir` (and its parents) if needed, truncates the four files and writes their
-  // headers; throws std::runtime_error naming the path if a file cannot be opened
-  explicit CsvWriter(const std::string& dir);
+  // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
+  // when `sea`, i.e. HasSea of the scene) and writes their headers; throws
+  // std::runtime_error naming the path if a file cannot be opened
+  explicit CsvWriter(const std::string& dir, bool sea = false);
   ~CsvWriter();  // closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
 
   // appends one row set for the current state of `sim`: one row per body, one per cable node,
-  // one per body and held cable end in forces.csv, one status row. `status` is the status of
+  // one per body and held cable end in forces.csv, one status row (and one per body in
+  // environment.csv when it is written). `status` is the status of
   // the step that produced the state (a default StepStatus at t = 0), `wall_us` its wall time.
   // Throws std::runtime_error if writing fails (e.g. disk full).
   void Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us);
@@ -66,12 +82,14 @@ class CsvWriter {
   };
   void Open(File& file, const char* name, const char* header);
   void Check(const File& file) const;
+  void WriteEnvironment(const core::Simulation& sim);
 
   std::string dir_;
   File bodies_;
   File cable_;
   File forces_;
   File status_;
+  File environment_;  // f == nullptr: not written (a calm scene)
 };
 
 }  // namespace towsim::io

@@ -19,7 +19,8 @@ const std::map<std::string, std::string>& TowsimMsgTexts();
 namespace {
 
 // the ROS 2 definitions of the standard types towsim uses (ros2/common_interfaces, ros2/
-// rcl_interfaces), "pkg/Name" -> .msg text: field for field as msgs/idl/*.idl
+// rcl_interfaces, ros2/geometry2, ros2/rmw_dds_common; Jazzy), "pkg/Name" -> .msg text: field
+// for field as msgs/idl/*.idl
 const std::map<std::string, std::string>& StandardTexts() {
   static const std::map<std::string, std::string> texts = {
       {"builtin_interfaces/Time", "int32 sec\nuint32 nanosec\n"},
@@ -38,6 +39,42 @@ const std::map<std::string, std::string>& StandardTexts() {
        "std_msgs/Header header\nstring child_frame_id\ngeometry_msgs/PoseWithCovariance pose\n"
        "geometry_msgs/TwistWithCovariance twist\n"},
       {"rosgraph_msgs/Clock", "builtin_interfaces/Time clock\n"},
+      // ROS 2 Jazzy's layout (Range with the variance field Humble's lacks)
+      {"sensor_msgs/Range",
+       "uint8 ULTRASOUND=0\nuint8 INFRARED=1\nstd_msgs/Header header\nuint8 radiation_type\n"
+       "float32 field_of_view\nfloat32 min_range\nfloat32 max_range\nfloat32 range\n"
+       "float32 variance\n"},
+      {"sensor_msgs/FluidPressure",
+       "std_msgs/Header header\nfloat64 fluid_pressure\nfloat64 variance\n"},
+      {"builtin_interfaces/Duration", "int32 sec\nuint32 nanosec\n"},
+      {"std_msgs/ColorRGBA", "float32 r\nfloat32 g\nfloat32 b\nfloat32 a\n"},
+      {"geometry_msgs/Transform", "Vector3 translation\nQuaternion rotation\n"},
+      {"geometry_msgs/TransformStamped",
+       "std_msgs/Header header\nstring child_frame_id\nTransform transform\n"},
+      {"tf2_msgs/TFMessage", "geometry_msgs/TransformStamped[] transforms\n"},
+      {"sensor_msgs/CompressedImage", "std_msgs/Header header\nstring format\nuint8[] data\n"},
+      // visualization_msgs as in ROS 2 Jazzy (Marker gained texture and mesh_file fields there)
+      {"visualization_msgs/UVCoordinate", "float32 u\nfloat32 v\n"},
+      {"visualization_msgs/MeshFile", "string filename\nuint8[] data\n"},
+      {"visualization_msgs/Marker",
+       "int32 ARROW=0\nint32 CUBE=1\nint32 SPHERE=2\nint32 CYLINDER=3\nint32 LINE_STRIP=4\n"
+       "int32 LINE_LIST=5\nint32 CUBE_LIST=6\nint32 SPHERE_LIST=7\nint32 POINTS=8\n"
+       "int32 TEXT_VIEW_FACING=9\nint32 MESH_RESOURCE=10\nint32 TRIANGLE_LIST=11\n"
+       "int32 ARROW_STRIP=12\n\nint32 ADD=0\nint32 MODIFY=0\nint32 DELETE=2\nint32 DELETEALL=3\n\n"
+       "std_msgs/Header header\nstring ns\nint32 id\nint32 type\nint32 action\n"
+       "geometry_msgs/Pose pose\ngeometry_msgs/Vector3 scale\nstd_msgs/ColorRGBA color\n"
+       "builtin_interfaces/Duration lifetime\nbool frame_locked\ngeometry_msgs/Point[] points\n"
+       "std_msgs/ColorRGBA[] colors\nstring texture_resource\nsensor_msgs/CompressedImage texture\n"
+       "UVCoordinate[] uv_coordinates\nstring text\nstring mesh_resource\nMeshFile mesh_file\n"
+       "bool mesh_use_embedded_materials\n"},
+      {"visualization_msgs/MarkerArray", "Marker[] markers\n"},
+      // rmw_dds_common as in ROS 2 Jazzy (16-byte Gid)
+      {"rmw_dds_common/Gid", "char[16] data\n"},
+      {"rmw_dds_common/NodeEntitiesInfo",
+       "string<=256 node_namespace\nstring<=256 node_name\nGid[] reader_gid_seq\n"
+       "Gid[] writer_gid_seq\n"},
+      {"rmw_dds_common/ParticipantEntitiesInfo",
+       "Gid gid\nNodeEntitiesInfo[] node_entities_info_seq\n"},
   };
   return texts;
 }

@@ -31,9 +31,9 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   static const std::vector<std::string> kSphereKeys = {"mass", "volume", "drag_coefficient",
                                                        "added_mass_coefficient", "source"};
   static const std::vector<std::string> kVehicleKeys = {
-      "source",     "length",      "mass",    "inertia",  "r_g",    "r_b",      "volume",
-      "added_mass", "munk_moment", "damping", "surfaces", "rudder", "elevator", "propeller",
-      "waterplane"};
+      "source", "length",   "diameter",   "mass",        "inertia", "r_g",
+      "r_b",    "volume",   "added_mass", "munk_moment", "damping", "surfaces",
+      "rudder", "elevator", "propeller",  "waterplane"};
   // type first, then the keys of `groups`, each once, in order
   const auto join = [](std::vector<std::string> keys,
                        std::initializer_list<const std::vector<std::string>*> groups) {
@@ -49,7 +49,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
        {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish",
         "security"}},
       {MapKind::kPublish,
-       {"clock", "odom", "cable_state", "cable_force", "status", "command_timeout"}},
+       {"clock", "odom", "cable_state", "cable_force", "status", "markers", "command_timeout",
+        "sensors"}},
       {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
       {MapKind::kEnvironment,

@@ -136,6 +136,8 @@ core::VehicleParams ReadVehicleParams(const BodyKeys& keys) {
 
   // rigid body: dimensions, mass, inertia about the CG, CG and CB in the body frame
   p.length = keys.Require("length").Number(Range::Above(0.0));
+  // hull diameter (drawn by the markers only; default: the cylinder of the displaced volume)
+  if (keys.Has("diameter")) p.diameter = keys.Get("diameter").Number(Range::Above(0.0));
   p.mass = keys.Require("mass").Number(Range::Above(0.0));
   p.inertia = PositiveVector(keys.Require("inertia"));
   p.r_g = keys.Require("r_g").Vector();

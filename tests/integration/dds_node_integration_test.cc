@@ -495,7 +495,7 @@ TEST_F(DdsNodeTest, PublishesTheStandardTopics) {
   EXPECT_TRUE(take_one(odom, [](const void* x) {
     const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(x);
     EXPECT_STREQ(o->header.frame_id, "world_ned");
-    EXPECT_STREQ(o->child_frame_id, "towfish");
+    EXPECT_STREQ(o->child_frame_id, "towfish_frd");  // the physics' body frame (docs/frames.md)
     EXPECT_GT(o->pose.pose.position.z, 10.0);  // deep below the tow point (NED: z down)
     EXPECT_EQ(o->pose.pose.orientation.w, 1.0);
   }));

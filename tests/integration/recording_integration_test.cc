@@ -168,7 +168,12 @@ TEST(RecordingTest, NodeRecordHoldsEveryMessageItPublishedByteForByte) {
       {"/towsim/scene_info", "towsim_msgs/msg/SceneInfo"},
       {"/towsim/cable/state", "towsim_msgs/msg/CableState"},
       {"/towsim/towfish/odom", "nav_msgs/msg/Odometry"},
-      {"/towsim/towfish/cable_force", "geometry_msgs/msg/WrenchStamped"}};
+      {"/towsim/towfish/cable_force", "geometry_msgs/msg/WrenchStamped"},
+      {"/towsim/towfish/altitude", "sensor_msgs/msg/Range"},
+      {"/towsim/towfish/pressure", "sensor_msgs/msg/FluidPressure"},
+      {"/tf", "tf2_msgs/msg/TFMessage"},
+      {"/tf_static", "tf2_msgs/msg/TFMessage"},
+      {"/towsim/markers", "visualization_msgs/msg/MarkerArray"}};
   EXPECT_EQ(types, expected_types);
   bool rosbag2 = false;
   for (const auto& m : r.metadata()) rosbag2 = rosbag2 || m.name == "rosbag2";
@@ -179,6 +184,8 @@ TEST(RecordingTest, NodeRecordHoldsEveryMessageItPublishedByteForByte) {
   const Messages m = ByTopic(r);
   EXPECT_EQ(m.at("/towsim/towfish/odom").size(), kSteps + 1);
   EXPECT_EQ(m.at("/towsim/towfish/cable_force").size(), kSteps + 1);
+  EXPECT_EQ(m.at("/towsim/towfish/altitude").size(), kSteps + 1);  // publish.sensors: every step
+  EXPECT_EQ(m.at("/towsim/towfish/pressure").size(), kSteps + 1);
   EXPECT_EQ(m.at("/clock").size(), kSteps + 1);
   EXPECT_EQ(m.at("/towsim/cable/state").size(), kSteps / 2 + 1);
   EXPECT_EQ(m.at("/towsim/status").size(), kSteps + 2);

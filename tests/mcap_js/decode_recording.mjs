@@ -11,17 +11,25 @@
 //   prints 9 significant digits ("%.9g"), so a decoded value v and its CSV text c agree when
 //   |v - c| <= 5e-9 |c| (half a unit in the 9th digit) + kAbs; Euler angles are computed
 //   here from the quaternion, so they get kAbsAngle on top (float64 rounding of the formulas).
+// - the frames and markers (docs/frames.md): /tf, /tf_static and /towsim/markers decode with
+//   their OFFICIAL ROS 2 Jazzy definitions (@foxglove/rosmsg-msgs-common, not the recording's
+//   schemas) to the same values; every frame named by the markers and the odometry resolves to
+//   `world` through /tf_static and /tf (the tree walked here, transforms composed here); /tf
+//   carries the odometry's pose at the same stamp; the cable marker's points are the cable
+//   state's positions in `world` (x_E = y_N, y_E = x_N, z_E = -z_N) at the same stamp.
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
 import { readFileSync } from "node:fs";
 import { join } from "node:path";
+import { isDeepStrictEqual } from "node:util";
 
 import { linearRead, readableOf } from "./mcap_file.mjs";
 
-let mcap, rosmsg, serialization;
+let mcap, rosmsg, serialization, common;
 try {
   mcap = await import("@mcap/core");
   rosmsg = await import("@foxglove/rosmsg");
   serialization = await import("@foxglove/rosmsg2-serialization");
+  common = await import("@foxglove/rosmsg-msgs-common");
 } catch (e) {
   console.error(`node modules not installed (run "npm ci" in tests/mcap_js): ${e.message}`);
   process.exit(77);
@@ -81,6 +89,8 @@ for (const channel of reader.channelsById.values()) {
 
 // decode every message (chunk CRCs validated)
 const byTopic = new Map();
+const rawByTopic = new Map(); // the bytes of the frame and marker topics
+const kVisualTopics = ["/tf", "/tf_static", "/towsim/markers"];
 let count = 0;
 for await (const m of reader.readMessages({ validateCrcs: true })) {
   const { topic, type } = topics.get(m.channelId);
@@ -93,6 +103,10 @@ for await (const m of reader.readMessages({ validateCrcs: true })) {
   }
   if (!byTopic.has(topic)) byTopic.set(topic, []);
   byTopic.get(topic).push(value);
+  if (kVisualTopics.includes(topic)) {
+    if (!rawByTopic.has(topic)) rawByTopic.set(topic, { type, data: [] });
+    rawByTopic.get(topic).data.push(m.data);
+  }
   count += 1;
 }
 check(BigInt(count) === reader.statistics.messageCount, `decoded ${count} of ${reader.statistics.messageCount}`);
@@ -128,7 +142,7 @@ for (const body of bodies) {
     const w = o.twist.twist.angular;
     const what = `${body} row ${i}`;
     near(stampSec(o.header.stamp), r.t, `${what} t`, 1e-9);
-    check(o.child_frame_id === body, `${what} child_frame_id ${o.child_frame_id}`);
+    check(o.child_frame_id === `${body}_frd`, `${what} child_frame_id ${o.child_frame_id}`);
     check(o.header.frame_id === "world_ned", `${what} frame_id ${o.header.frame_id}`);
     near(p.x, r.x, `${what} x`);
     near(p.y, r.y, `${what} y`);
@@ -218,11 +232,145 @@ for (let i = 1; i < clock.length; i++) {
   if (!check(stampSec(clock[i].clock) > stampSec(clock[i - 1].clock), `clock ${i} increases`)) break;
 }
 
+// --- frames and markers ---
+// the official definitions of a type and its dependencies, root first
+const jazzy = (common.ros2jazzy ?? common.default.ros2jazzy);
+function officialDefinitions(type) {
+  const name = type.replace("/msg/", "/");
+  const out = [];
+  const seen = new Set();
+  const visit = (n) => {
+    if (seen.has(n)) return;
+    seen.add(n);
+    const d = jazzy[n];
+    check(d !== undefined, `official definition of ${n}`);
+    if (d === undefined) return;
+    out.push(d);
+    for (const f of d.definitions) if (f.isComplex) visit(f.type);
+  };
+  visit(name);
+  return out;
+}
+for (const topic of kVisualTopics) {
+  const raw = rawByTopic.get(topic);
+  if (!check(raw !== undefined && raw.data.length > 0, `${topic} recorded`)) continue;
+  const official = new MessageReader(officialDefinitions(raw.type));
+  raw.data.forEach((d, i) => {
+    let value;
+    try {
+      value = official.readMessage(d);
+    } catch (e) {
+      check(false, `${topic} message ${i}: official ${raw.type} does not decode it: ${e.message}`);
+      return;
+    }
+    check(isDeepStrictEqual(value, byTopic.get(topic)[i]), `${topic} message ${i}: official and recorded definitions decode alike`);
+  });
+}
+const stampKey = (t) => `${t.sec}.${t.nanosec ?? t.nsec}`;
+// quaternions [x, y, z, w]: Hamilton product and rotation of a vector
+const qmul = (a, b) => [
+  a[3] * b[0] + a[0] * b[3] + a[1] * b[2] - a[2] * b[1],
+  a[3] * b[1] - a[0] * b[2] + a[1] * b[3] + a[2] * b[0],
+  a[3] * b[2] + a[0] * b[1] - a[1] * b[0] + a[2] * b[3],
+  a[3] * b[3] - a[0] * b[0] - a[1] * b[1] - a[2] * b[2],
+];
+const qrot = (q, v) => {
+  const p = qmul(qmul(q, [v[0], v[1], v[2], 0]), [-q[0], -q[1], -q[2], q[3]]);
+  return [p[0], p[1], p[2]];
+};
+// the tree: child -> {parent, t, q} from /tf_static (all) and the last /tf at or before `stamp`
+const statics = (byTopic.get("/tf_static") ?? []).flatMap((m) => m.transforms);
+const tfs = byTopic.get("/tf") ?? [];
+const edgeOf = (ts) => ({
+  parent: ts.header.frame_id,
+  t: [ts.transform.translation.x, ts.transform.translation.y, ts.transform.translation.z],
+  q: [ts.transform.rotation.x, ts.transform.rotation.y, ts.transform.rotation.z, ts.transform.rotation.w],
+});
+function treeAt(stamp) {
+  const tree = new Map();
+  for (const s of statics) tree.set(s.child_frame_id, edgeOf(s));
+  const tf = tfs.find((m) => m.transforms.length > 0 && stampKey(m.transforms[0].header.stamp) === stamp);
+  if (tf) for (const s of tf.transforms) tree.set(s.child_frame_id, edgeOf(s));
+  return { tree, found: tf !== undefined };
+}
+// the pose of `frame` in `world`: composed up the tree; undefined if it does not get there
+function inWorld(tree, frame) {
+  let t = [0, 0, 0];
+  let q = [0, 0, 0, 1];
+  for (let f = frame, hops = 0; f !== "world"; hops++) {
+    const e = tree.get(f);
+    if (e === undefined || hops > 20) return undefined;
+    // X_parent_frame = X_parent_f * X_f_frame
+    const r = qrot(e.q, t);
+    t = [e.t[0] + r[0], e.t[1] + r[1], e.t[2] + r[2]];
+    q = qmul(e.q, q);
+    f = e.parent;
+  }
+  return { t, q };
+}
+const kAbsPos = 1e-9; // [m] float64 rounding over a 3-edge chain of ~200 m
+check(statics.some((s) => s.header.frame_id === "world" && s.child_frame_id === "world_ned"), "world -> world_ned static");
+let framesResolved = 0;
+const markers = byTopic.get("/towsim/markers") ?? [];
+const cableByStamp = new Map(cable.map((c) => [stampKey(c.header.stamp), c]));
+for (const [k, ma] of markers.entries()) {
+  const stamp = stampKey(ma.markers[0].header.stamp);
+  const { tree, found } = treeAt(stamp);
+  check(found, `markers ${k}: a /tf at its stamp ${stamp}`);
+  for (const mk of ma.markers) {
+    check(inWorld(tree, mk.header.frame_id) !== undefined, `markers ${k} ${mk.ns}/${mk.id}: frame ${mk.header.frame_id} resolves to world`);
+    framesResolved += 1;
+  }
+  const line = ma.markers.find((mk) => mk.ns === "cable");
+  const c = cableByStamp.get(stamp);
+  if (check(line !== undefined && c !== undefined, `markers ${k}: cable marker and cable state at ${stamp}`)) {
+    const X = inWorld(tree, line.header.frame_id);
+    check(line.points.length === c.positions.length, `markers ${k}: ${line.points.length} cable points`);
+    line.points.forEach((p, i) => {
+      // the node in world (ENU) from world_ned through the static edge world -> world_ned
+      const ned = c.positions[i];
+      const w = inWorld(tree, "world_ned");
+      const r = qrot(w.q, [ned.x, ned.y, ned.z]);
+      const expect = [w.t[0] + r[0], w.t[1] + r[1], w.t[2] + r[2]];
+      // the marker's point in world
+      const pr = qrot(X.q, [p.x, p.y, p.z]);
+      const got = [X.t[0] + pr[0], X.t[1] + pr[1], X.t[2] + pr[2]];
+      for (let a = 0; a < 3; a++) {
+        check(Math.abs(got[a] - expect[a]) <= kAbsPos, `markers ${k} cable point ${i}[${a}]: ${got[a]} vs ${expect[a]}`);
+      }
+    });
+    compared += 1;
+  }
+}
+check(markers.length > 0 && framesResolved > 0, "marker frames resolved");
+// odometry: frames, and /tf at the same stamp carries the same pose
+for (const body of bodies) {
+  for (const [i, o] of (byTopic.get(`/towsim/${body}/odom`) ?? []).entries()) {
+    const { tree, found } = treeAt(stampKey(o.header.stamp));
+    check(found, `${body} odom ${i}: a /tf at its stamp`);
+    check(inWorld(tree, o.header.frame_id) !== undefined && inWorld(tree, o.child_frame_id) !== undefined,
+      `${body} odom ${i}: ${o.header.frame_id} and ${o.child_frame_id} resolve to world`);
+    const e = tree.get(o.child_frame_id);
+    const p = o.pose.pose.position;
+    const q = o.pose.pose.orientation;
+    check(e !== undefined && e.parent === o.header.frame_id &&
+      isDeepStrictEqual(e.t, [p.x, p.y, p.z]) && isDeepStrictEqual(e.q, [q.x, q.y, q.z, q.w]),
+      `${body} odom ${i}: /tf holds the odometry's pose exactly`);
+    framesResolved += 1;
+  }
+}
+for (const body of bodies) {
+  for (const [i, f] of (byTopic.get(`/towsim/${body}/cable_force`) ?? []).entries()) {
+    check(f.header.frame_id === `${body}_frd`, `${body} cable_force ${i} frame ${f.header.frame_id}`);
+  }
+}
+
 if (failures > 0) {
   console.error(`${failures} failures`);
   process.exit(1);
 }
 console.log(
   `ok: ${count} messages on ${topics.size} topics decoded, ${compared} CSV rows matched, ` +
+    `${framesResolved} frames resolved to world, ` +
     `${reader.chunkIndexes.length} chunks`,
 );

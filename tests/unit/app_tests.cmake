@@ -18,6 +18,15 @@ foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
 
+# the Foxglove WebSocket protocol messages (app/foxglove_protocol), no sockets
+towsim_add_test(foxglove_protocol_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc
+  LIBS towsim::foxglove)
+
+# the command lines of the DDS tools (app/tool_flags)
+towsim_add_test(tool_flags_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/tool_flags_test.cc
+  LIBS towsim::recording)
 # the installed-scene lookup of sim_node --scene
 towsim_add_test(installed_data_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc

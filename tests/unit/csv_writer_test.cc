@@ -1,10 +1,12 @@
 // CsvWriter writes the four files of DESIGN §5 with exactly the documented headers and one row
-// set per Write(): a row per body, per cable node, per body and held end, and a status row.
+// set per Write(): a row per body, per cable node, per body and held end, and a status row; and
+// environment.csv (a row per body: the sea at the body) only for a scene with a sea.
 
 #include "io/csv_writer.h"
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -16,10 +18,9 @@
 
 #include <gtest/gtest.h>
 
-#include "temp_dir.h"
-
 #include "core/model.h"
 #include "core/simulation.h"
+#include "temp_dir.h"
 
 namespace towsim::io {
 namespace {
@@ -275,6 +276,94 @@ TEST(CsvWriterTest, UncreatableDirectoryThrowsNamingIt) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(dir), std::string::npos) << e.what();
   }
+}
+
+// the sphere of TinyModel in a regular sea over a flat bed, in a uniform current
+core::Model SeaModel() {
+  core::Model model = TinyModel();
+  core::Environment& env = model.environment;
+  constexpr double kBedDepth = 30.0;
+  env.seabed = core::Seabed::Flat(kBedDepth);
+  env.current = core::CurrentField::Uniform(core::Vec3(0.5, -0.2, 0.0));
+  // H 2 m, T 6 s (wavelength 56 m: the 10 m deep sphere sees orbital velocity e^{-kz} ~ 0.33)
+  env.waves =
+      core::WaveField::Regular(2.0, 6.0, 0.3, 0.4, kBedDepth, env.gravity, env.water_density);
+  return model;
+}
+
+TEST(CsvWriterTest, EnvironmentRowsAreTheCoreAccessorsAtTheWrittenTimes) {
+  TempDir tmp;
+  const core::Model model = SeaModel();
+  ASSERT_TRUE(HasSea(model.environment));
+  core::Simulation sim(model);
+  CsvWriter csv(tmp.path().string(), HasSea(model.environment));
+  // what the accessors say at each written time: eta, altitude, depth, water velocity
+  std::vector<std::vector<double>> expected;
+  auto write = [&](const core::StepStatus& status) {
+    csv.Write(sim, status, 0);
+    const core::Vec3 u = sim.water_velocity_at(0);
+    expected.push_back({sim.time(), sim.surface_elevation_at(0), sim.body_altitude(0),
+                        sim.body_depth(0), u.x(), u.y(), u.z()});
+  };
+  write(core::StepStatus{});
+  for (int k = 0; k < 10; ++k) {
+    const core::StepStatus status = sim.Step();
+    ASSERT_TRUE(status.ok()) << status.message;
+    if (k % 3 == 2) write(status);
+  }
+  csv.Close();
+
+  std::string header;
+  const Rows rows = ReadCsv(tmp.path() / "environment.csv", &header);
+  EXPECT_EQ(header, "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w");
+  ASSERT_EQ(rows.size(), expected.size());
+  double max_eta = 0.0, max_orbital = 0.0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 8u) << "row " << i;
+    EXPECT_EQ(rows[i][1], "ball");
+    const std::vector<double>& e = expected[i];
+    ExpectNear(rows[i][0], e[0], "t");
+    for (int c = 1; c < 7; ++c) ExpectNear(rows[i][c + 1], e[c], "column " + std::to_string(c + 1));
+    // independent of the accessors: the altitude is the bed depth minus z, the depth z + eta
+    EXPECT_NEAR(e[2] + e[3] - e[1], 30.0, 1e-9) << "altitude + z = bed depth, row " << i;
+    max_eta = std::max(max_eta, std::abs(e[1]));
+    max_orbital =
+        std::max(max_orbital, (core::Vec3(e[4], e[5], e[6]) - core::Vec3(0.5, -0.2, 0.0)).norm());
+  }
+  // the columns carry the sea, not zeros: a wave and its orbital velocity were there
+  EXPECT_GT(max_eta, 0.1);
+  EXPECT_GT(max_orbital, 0.01);
+}
+
+TEST(CsvWriterTest, NoSeabedLeavesTheAltitudeEmpty) {
+  TempDir tmp;
+  core::Model model = TinyModel();
+  model.environment.current = core::CurrentField::Uniform(core::Vec3(1.0, 0.0, 0.0));
+  ASSERT_TRUE(HasSea(model.environment));
+  core::Simulation sim(model);
+  CsvWriter csv(tmp.path().string(), HasSea(model.environment));
+  csv.Write(sim, core::StepStatus{}, 0);
+  csv.Close();
+  std::string header;
+  const Rows rows = ReadCsv(tmp.path() / "environment.csv", &header);
+  ASSERT_EQ(rows.size(), 1u);
+  ASSERT_EQ(rows[0].size(), 8u);
+  EXPECT_EQ(rows[0][3], "") << "no seabed: an empty altitude, never nan";
+  ExpectNear(rows[0][2], 0.0, "calm surface");
+  ExpectNear(rows[0][4], 10.0, "depth of the sphere");
+  ExpectNear(rows[0][5], 1.0, "current_u");
+}
+
+TEST(CsvWriterTest, CalmSceneWritesNoEnvironmentFile) {
+  TempDir tmp;
+  const core::Model model = TinyModel();
+  EXPECT_FALSE(HasSea(model.environment));
+  core::Simulation sim(model);
+  CsvWriter csv(tmp.path().string(), HasSea(model.environment));
+  csv.Write(sim, core::StepStatus{}, 0);
+  csv.Close();
+  EXPECT_FALSE(fs::exists(tmp.path() / "environment.csv"));
+  EXPECT_TRUE(fs::exists(tmp.path() / "status.csv"));
 }
 
 }  // namespace

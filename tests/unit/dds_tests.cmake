@@ -12,6 +12,10 @@ towsim_add_test(dds_translators_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_translators_test.cc
   LIBS towsim::dds towsim::scene)
 
+towsim_add_test(sensor_translators_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensor_translators_test.cc
+  LIBS towsim::dds towsim::scene)
+
 towsim_add_test(dds_command_arbiter_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_command_arbiter_test.cc
   LIBS towsim::dds)
@@ -33,6 +37,13 @@ towsim_add_test(raw_cdr_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/raw_cdr_test.cc
   LIBS towsim::dds)
 
+# frames and tf (docs/frames.md), the 3D markers and the ROS 2 graph entry
+towsim_add_test(dds_frames_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_frames_test.cc
+  LIBS towsim::dds towsim::scene)
+towsim_add_test(dds_markers_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_markers_test.cc
+  LIBS towsim::dds towsim::scene)
 # the RTPS port mapping: which domain ids have ports with a configuration (issue 15)
 towsim_add_test(dds_port_mapping_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc

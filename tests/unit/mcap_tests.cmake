@@ -29,7 +29,7 @@ if(NODE_EXECUTABLE)
       --mode fast --domain 93 --duration 40 --csv ${_js_run}/csv --record ${_js_run}/run.mcap
       --overwrite
       --set publish.odom=10 --set publish.cable_force=10 --set publish.cable_state=10
-      --set publish.status=10)
+      --set publish.status=10 --set publish.markers=10)
   set_tests_properties(mcap_js_record_run PROPERTIES
     FIXTURES_SETUP mcap_js_run LABELS integration ENVIRONMENT "CYCLONEDDS_URI=${_dds_uri}")
   add_test(NAME mcap_js_decode_recording

@@ -49,6 +49,9 @@ std::string IdlToRos2(std::string t, const std::string& pkg) {
   t = Trim(t);
   if (auto it = kPrimitive.find(t); it != kPrimitive.end()) return it->second;
   std::smatch m;
+  if (std::regex_match(t, m, std::regex(R"(string<\s*(\d+)\s*>)"))) {
+    return "string<=" + std::string(m[1]);  // a bounded string
+  }
   if (std::regex_match(t, m, std::regex(R"(sequence<\s*(.+?)\s*>)"))) {
     return IdlToRos2(m[1], pkg) + "[]";
   }
@@ -95,7 +98,7 @@ std::map<std::string, std::vector<Field>> ParseIdl() {
 }
 
 bool IsPrimitive(std::string type) {
-  type = type.substr(0, type.find('['));
+  type = type.substr(0, type.find_first_of("[<"));  // arrays, bounded strings
   static const std::set<std::string> kPrimitive = {
       "bool",  "byte",   "char",  "float32", "float64", "int8",   "uint8",
       "int16", "uint16", "int32", "uint32",  "int64",   "uint64", "string"};
@@ -114,6 +117,8 @@ std::vector<Field> MsgFields(const std::string& text, const std::string& pkg) {
     std::string type, name;
     words >> type >> name;
     if (name.find('=') != std::string::npos) continue;  // a constant
+    // ROS 2's char is uint8 (rosidl maps it to the IDL uint8)
+    if (type.rfind("char", 0) == 0) type = "uint8" + type.substr(4);
     if (!IsPrimitive(type) && type.find('/') == std::string::npos) type = pkg + "/" + type;
     fields.emplace_back(type, name);
   }

@@ -227,6 +227,9 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{"missing_name", Edit("name: t\n", ""), "name", "is required", ""},
         BrokenCase{"negative_publish_rate", Edit("name: t\n", "name: t\npublish: {odom: -5}\n"),
                    "publish.odom", ">= 0", ""},
+        BrokenCase{"negative_sensors_rate",
+                   Edit("name: t\n", "name: t\npublish: {sensors: -1}\n"), "publish.sensors",
+                   ">= 0", ""},
         BrokenCase{"zero_command_timeout",
                    Edit("name: t\n", "name: t\npublish: {command_timeout: 0}\n"),
                    "publish.command_timeout", "> 0", ""},
@@ -1057,6 +1060,7 @@ TEST_F(SceneLoaderTest, PublishRatesAndCommandTimeout) {
   const Model defaults = Load(Edit("", ""));
   EXPECT_EQ(defaults.publishing.odom, 0.0);
   EXPECT_EQ(defaults.publishing.cable_state, -1.0);
+  EXPECT_EQ(defaults.publishing.sensors, 0.0);
   EXPECT_EQ(defaults.publishing.command_timeout, 0.5);
   const Model m = Load(Edit(
       "name: t\n", "name: t\npublish: {odom: 50, cable_state: 5, status: 1, command_timeout: 2}\n"));
@@ -1065,6 +1069,8 @@ TEST_F(SceneLoaderTest, PublishRatesAndCommandTimeout) {
   EXPECT_EQ(m.publishing.status, 1.0);
   EXPECT_EQ(m.publishing.clock, 0.0);
   EXPECT_EQ(m.publishing.command_timeout, 2.0);
+  const Model sensors = Load(Edit("name: t\n", "name: t\npublish: {sensors: 10}\n"));
+  EXPECT_EQ(sensors.publishing.sensors, 10.0);
 }
 
 // security.open_outputs (docs/security.md): false unless the scene says true; a boolean

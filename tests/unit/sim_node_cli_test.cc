@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -196,6 +197,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadArgs{"NamespaceWithoutSlash",
                 {"--scene", kCatenary, "--mode", "fast", "--namespace", "towsim"},
                 {"--namespace towsim", "must start with '/'"}},
+        BadArgs{"FoxglovePortOutOfRange",
+                {"--scene", kCatenary, "--mode", "fast", "--foxglove", "70000"},
+                {"--foxglove 70000", "port number from 0 to 65535"}},
+        BadArgs{"FoxgloveOffline",
+                {"--scene", kCatenary, "--mode", "offline", "--foxglove", "8765"},
+                {"--foxglove", "needs a DDS mode"}},
         BadArgs{"PausedOffline",
                 {"--scene", kCatenary, "--mode", "offline", "--paused"},
                 {"--paused", "needs a DDS mode"}},
@@ -261,6 +268,8 @@ TEST(SimNodeCliTest, OfflineCatenaryWritesTheFourCsvFiles) {
   const std::vector<std::string> status = Lines(ReadFile(csv / "status.csv"));
   EXPECT_EQ(status[1].rfind("0,0,0,", 0), 0u) << status[1];
   EXPECT_EQ(status.back().rfind("1,20,", 0), 0u) << status.back();
+  // a calm scene: no environment.csv (the four files, as before)
+  EXPECT_FALSE(fs::exists(csv / "environment.csv"));
 }
 
 // --- vehicles and the script ----------------------------------------------------------------
@@ -279,6 +288,53 @@ double Value(const std::vector<std::string>& lines, const std::string& t, const 
   }
   ADD_FAILURE() << "no row for " << body << " at t = " << t;
   return 0.0;
+}
+
+// the sea at the sphere of kGoodScene, written by the node: environment.csv is the bodies'
+// positions seen through the seabed and the surface (columns checked against bodies.csv and the
+// plane's closed form, not against the accessors that wrote them)
+TEST(SimNodeCliTest, SeaSceneWritesEnvironmentCsv) {
+  TempDir tmp;
+  constexpr double kBed = 40.0, kSlopeDeg = 3.0, kSlopeDirDeg = 30.0;
+  const fs::path scene = tmp.path() / "sea.yaml";
+  WriteFile(scene, std::string(kGoodScene) +
+                       "environment:\n"
+                       "  current: [0.4, 0.1, 0]\n"
+                       "  waves: {regular: {height: 2, period: 7, direction_deg: 20}}\n"
+                       "  seabed: {depth: 40, slope_deg: 3, slope_direction_deg: 30}\n");
+  const fs::path csv = tmp.path() / "csv";
+  const SimNodeResult r = RunSimNode(
+      {"--scene", scene.string(), "--mode", "offline", "--csv", csv.string()}, tmp.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> env = Lines(ReadFile(csv / "environment.csv"));
+  const std::vector<std::string> bodies = Lines(ReadFile(csv / "bodies.csv"));
+  ASSERT_FALSE(env.empty());
+  EXPECT_EQ(env[0], "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w");
+  ASSERT_EQ(env.size(), 1u + 11u) << "one row per body at t = 0, 0.1, ..., 1";
+  ASSERT_EQ(Times(env), Times(bodies));
+  // "%.9g": a value read back is within 1e-8 relative of the printed double
+  constexpr double kPrintRelTol = 1e-8;
+  const double pi = std::acos(-1.0);
+  double max_eta = 0.0;
+  for (const std::string& t : Times(env)) {
+    SCOPED_TRACE("t = " + t);
+    const double x = Value(bodies, t, "ball", 2), y = Value(bodies, t, "ball", 3);
+    const double z = Value(bodies, t, "ball", 4);
+    const double eta = Value(env, t, "ball", 2), altitude = Value(env, t, "ball", 3);
+    const double depth = Value(env, t, "ball", 4);
+    const double c = kSlopeDirDeg * pi / 180.0;
+    const double bed =
+        kBed + std::tan(kSlopeDeg * pi / 180.0) * (x * std::cos(c) + y * std::sin(c));
+    EXPECT_NEAR(altitude, bed - z, kPrintRelTol * bed) << "altitude = d(x, y) - z";
+    EXPECT_NEAR(depth, z + eta, kPrintRelTol * (std::abs(z) + 1.0)) << "depth = z + eta";
+    EXPECT_LE(std::abs(eta), 1.0 + 1e-9) << "a 2 m wave: |eta| <= a";
+    max_eta = std::max(max_eta, std::abs(eta));
+    // 20 m below a 7 s wave (k = 0.082 /m): orbital velocity a w e^{-kz} = 0.17 m/s at most
+    const double u = Value(env, t, "ball", 5), v = Value(env, t, "ball", 6);
+    EXPECT_NEAR(u, 0.4, 0.2);
+    EXPECT_NEAR(v, 0.1, 0.2);
+  }
+  EXPECT_GT(max_eta, 0.1) << "the wave is in the file";
 }
 
 TEST(SimNodeCliTest, VehicleSceneRunsTheScript) {

@@ -1,0 +1,190 @@
+#include "dds/markers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "dds/frames.h"
+#include "dds/translators.h"
+
+namespace towsim::dds {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+void SetPoint(const core::Vec3& p, geometry_msgs_msg_dds__Point_* out) {
+  out->x = p.x();
+  out->y = p.y();
+  out->z = p.z();
+}
+
+void SetPose(const core::Vec3& p, const Eigen::Quaterniond& q, geometry_msgs_msg_dds__Pose_* out) {
+  SetPoint(p, &out->position);
+  out->orientation.x = q.x();
+  out->orientation.y = q.y();
+  out->orientation.z = q.z();
+  out->orientation.w = q.w();
+}
+
+ColorMsg Rgba(float r, float g, float b, float a) {
+  ColorMsg c;
+  c.r = r;
+  c.g = g;
+  c.b = b;
+  c.a = a;
+  return c;
+}
+
+// an FRD vector of the body frame in FLU: (x, -y, -z)
+core::Vec3 FrdToFlu(const core::Vec3& v) { return core::Vec3(v.x(), -v.y(), -v.z()); }
+
+// the number of markers of sim's scene (so that the vector never reallocates)
+size_t CountMarkers(const core::Simulation& sim) {
+  size_t n = 1 + static_cast<size_t>(sim.num_bodies()) + 2;
+  for (const core::Vehicle& v : sim.model().vehicles) n += v.params.surfaces.size();
+  return n;
+}
+
+bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; }
+
+}  // namespace
+
+ColorMsg TensionColor(double tension) {
+  const double s = std::clamp(tension / kTensionLegendMax, 0.0, 1.0);
+  // blue -> green over [0, 0.5], green -> red over [0.5, 1]
+  const double r = std::max(0.0, 2.0 * s - 1.0);
+  const double b = std::max(0.0, 1.0 - 2.0 * s);
+  const double g = 1.0 - r - b;
+  return Rgba(static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f);
+}
+
+MarkerMsg& SceneMarkers::Add(const std::string& ns, int id, int type, const std::string& frame) {
+  // strings_ was reserved: the pointers stay valid
+  strings_.push_back(ns);
+  const char* ns_chars = strings_.back().c_str();
+  strings_.push_back(frame);
+  const char* frame_chars = strings_.back().c_str();
+  markers_.push_back(MarkerMsg{});
+  MarkerMsg& m = markers_.back();
+  m.header.frame_id = const_cast<char*>(frame_chars);
+  m.ns = const_cast<char*>(ns_chars);
+  m.id = id;
+  m.type = type;
+  m.action = visualization_msgs_msg_dds__Marker_Constants_ADD;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = m.scale.y = m.scale.z = 1.0;
+  m.color = Rgba(1.0f, 1.0f, 1.0f, 1.0f);
+  static char kEmpty[] = "";
+  m.texture_resource = kEmpty;
+  m.texture.header.frame_id = kEmpty;
+  m.texture.format = kEmpty;
+  m.text = kEmpty;
+  m.mesh_resource = kEmpty;
+  m.mesh_file.filename = kEmpty;
+  return m;
+}
+
+SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
+  const size_t count = CountMarkers(sim);
+  markers_.reserve(count);
+  strings_.reserve(2 * count);
+  const core::Model& model = sim.model();
+
+  // the cable
+  cable_points_.resize(static_cast<size_t>(sim.num_nodes()));
+  cable_colors_.resize(cable_points_.size());
+  {
+    MarkerMsg& m =
+        Add("cable", 0, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP, kEnuWorldFrame);
+    m.scale.x = kCableLineWidth;
+    const uint32_t n = static_cast<uint32_t>(cable_points_.size());
+    m.points = {n, n, cable_points_.data(), false};
+    m.colors = {n, n, cable_colors_.data(), false};
+  }
+
+  // hulls and fins
+  const Eigen::Quaterniond z_to_x(Eigen::AngleAxisd(0.5 * kPi, core::Vec3::UnitY()));
+  int fin_id = 0;
+  for (int b = 0; b < sim.num_bodies(); ++b) {
+    const std::string& name = sim.body_name(b);
+    if (!sim.body_is_vehicle(b)) {
+      const core::SphereBody& s = model.bodies[static_cast<size_t>(b)];
+      const double d = 2.0 * std::cbrt(3.0 * s.volume / (4.0 * kPi));
+      MarkerMsg& m = Add("hull", b, visualization_msgs_msg_dds__Marker_Constants_SPHERE, name);
+      m.scale.x = m.scale.y = m.scale.z = d;
+      m.color = Rgba(0.9f, 0.5f, 0.1f, 1.0f);
+      m.frame_locked = true;
+      continue;
+    }
+    const core::VehicleParams& p =
+        model.vehicles[static_cast<size_t>(b - sim.num_spheres())].params;
+    const double d = p.diameter > 0.0 ? p.diameter : std::sqrt(4.0 * p.volume / (kPi * p.length));
+    MarkerMsg& hull = Add("hull", b, visualization_msgs_msg_dds__Marker_Constants_CYLINDER, name);
+    // the cylinder's axis is its z: turned onto x
+    SetPose(core::Vec3::Zero(), z_to_x, &hull.pose);
+    hull.scale.x = hull.scale.y = d;
+    hull.scale.z = p.length;
+    hull.color = p.has_propeller ? Rgba(1.0f, 0.85f, 0.1f, 1.0f) : Rgba(0.9f, 0.5f, 0.1f, 1.0f);
+    hull.frame_locked = true;
+    for (const core::LiftingSurface& s : p.surfaces) {
+      const double span = std::sqrt(s.area * s.aspect_ratio);
+      const double chord = span > 0.0 ? s.area / span : 0.0;
+      // plate axes in FLU: x chordwise (body x without its normal part), z the normal
+      const core::Vec3 n = FrdToFlu(s.normal_B).normalized();
+      core::Vec3 x = core::Vec3::UnitX() - n.x() * n;
+      if (x.norm() < 1e-9) x = core::Vec3::UnitY() - n.y() * n;
+      x.normalize();
+      Eigen::Matrix3d R;
+      R.col(0) = x;
+      R.col(1) = n.cross(x);
+      R.col(2) = n;
+      MarkerMsg& fin =
+          Add("fins", fin_id++, visualization_msgs_msg_dds__Marker_Constants_CUBE, name);
+      SetPose(FrdToFlu(s.position_B), Eigen::Quaterniond(R), &fin.pose);
+      fin.scale.x = chord;
+      fin.scale.y = span;
+      fin.scale.z = kFinThickness;
+      fin.color = Rgba(0.3f, 0.3f, 0.35f, 1.0f);
+      fin.frame_locked = true;
+    }
+  }
+
+  // force arrows at the held ends
+  const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
+  arrow_points_.resize(4);
+  for (int e = 0; e < 2; ++e) {
+    if (!Held(*ends[e])) continue;
+    MarkerMsg& m =
+        Add("cable_force", e, visualization_msgs_msg_dds__Marker_Constants_ARROW, kEnuWorldFrame);
+    m.scale.x = 0.15;  // shaft diameter [m]
+    m.scale.y = 0.4;   // head diameter [m]
+    m.scale.z = 0.6;   // head length [m]
+    m.color = Rgba(0.9f, 0.1f, 0.9f, 1.0f);
+    m.points = {2, 2, &arrow_points_[static_cast<size_t>(2 * e)], false};
+    arrows_.push_back({markers_.size() - 1, e, e == 0 ? 0 : sim.num_nodes() - 1});
+  }
+
+  const uint32_t n = static_cast<uint32_t>(markers_.size());
+  msg.markers = {n, n, markers_.data(), false};
+  Update(sim);
+}
+
+void SceneMarkers::Update(const core::Simulation& sim) {
+  const TimeMsg stamp = ToTimeMsg(sim.time());
+  for (MarkerMsg& m : markers_) m.header.stamp = stamp;
+  const size_t n = std::min(cable_points_.size(), static_cast<size_t>(sim.num_nodes()));
+  for (size_t i = 0; i < n; ++i) {
+    SetPoint(NedToEnu(sim.node_position(static_cast<int>(i))), &cable_points_[i]);
+    cable_colors_[i] = TensionColor(sim.node_tension(static_cast<int>(i)));
+  }
+  for (const Arrow& a : arrows_) {
+    const core::Vec3 p = sim.node_position(a.node);
+    const core::Vec3 f = sim.end_force(a.end);
+    SetPoint(NedToEnu(p), &arrow_points_[static_cast<size_t>(2 * a.end)]);
+    SetPoint(NedToEnu(p + kForceArrowScale * f),
+             &arrow_points_[static_cast<size_t>(2 * a.end + 1)]);
+  }
+}
+
+}  // namespace towsim::dds

@@ -1,0 +1,55 @@
+#pragma once
+// A body's altimeter and pressure sensor on the wire (docs/sensors.md): pure translators from
+// the core's sea at a body (Simulation::body_altitude, body_depth) to sensor_msgs/Range and
+// sensor_msgs/FluidPressure; no DDS entities, no clocks (tests/unit/sensor_translators_test.cc).
+//
+//   altitude  sensor_msgs/Range: range = the altitude above the seabed straight below the body
+//             origin [m]; ULTRASOUND (an acoustic altimeter), field of view kAltimeterFieldOfView,
+//             min_range 0, max_range kAltimeterMaxRange. REP 117: +inf when there is no seabed
+//             or it is beyond max_range (no echo), -inf when the origin is below the bed
+//   pressure  sensor_msgs/FluidPressure: absolute pressure [Pa] = kAtmosphericPressure +
+//             rho g max(0, depth), depth = z + eta below the instantaneous surface (hydrostatic
+//             and the wave's surface elevation, as a pressure sensor's depth is read); variance 0
+//
+// Header: stamp = simulation time, frame_id = the body's name (its body frame).
+
+#include <string>
+
+#include "core/simulation.h"
+#include "dds/messages.h"
+
+namespace towsim::dds {
+
+inline constexpr float kAltimeterFieldOfView = 0.1f;      // [rad], a narrow-beam altimeter
+inline constexpr float kAltimeterMaxRange = 200.0f;       // [m]
+inline constexpr double kAtmosphericPressure = 101325.0;  // [Pa], standard atmosphere
+
+class RangeMessage {
+ public:
+  // frame_id: the body; the altimeter's constants set once
+  explicit RangeMessage(std::string frame_id);
+  RangeMessage(const RangeMessage&) = delete;
+  RangeMessage& operator=(const RangeMessage&) = delete;
+  RangeMsg msg;
+
+ private:
+  std::string frame_id_;
+};
+
+class FluidPressureMessage {
+ public:
+  explicit FluidPressureMessage(std::string frame_id);
+  FluidPressureMessage(const FluidPressureMessage&) = delete;
+  FluidPressureMessage& operator=(const FluidPressureMessage&) = delete;
+  FluidPressureMsg msg;
+
+ private:
+  std::string frame_id_;
+};
+
+// the altitude of body b as the altimeter reports it (above); never allocates
+void ToAltitude(const core::Simulation& sim, int body, RangeMsg* msg);
+// the absolute pressure at body b's origin (above); never allocates
+void ToPressure(const core::Simulation& sim, int body, FluidPressureMsg* msg);
+
+}  // namespace towsim::dds

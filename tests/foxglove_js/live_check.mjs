@@ -1,0 +1,322 @@
+// An independent Foxglove client of a live towsim node (docs/foxglove.md), built on
+// @foxglove/ws-protocol (FoxgloveClient) over the `ws` WebSocket, decoding with
+// @foxglove/rosmsg + @foxglove/rosmsg2-serialization from the schemas the server advertises:
+//   node live_check.mjs SIM_NODE TOWSIM_FOXGLOVE SOURCE_DIR OUT_DIR DOMAIN [in-node]
+// It starts and stops the processes itself (also when it fails):
+//   1. sim_node: Case 1 in lockstep for 10 s without its script, --csv OUT_DIR/csv;
+//   2. towsim_foxglove --domain DOMAIN --port 0 (a free port, read from its first line); or,
+//      with `in-node`, no bridge: sim_node --foxglove 0 serves the same itself;
+//   3. this client: serverInfo (clientPublish, time, cdr), every channel cdr / ros2msg,
+//      subscribes to all of them and decodes every message; it is the lockstep controller of
+//      both vehicles through clientPublish (ActuatorCommand answering each status step): zero
+//      thrust up to kThrustStep, then 4165 N. At kBadStep it first sends a malformed command
+//      (truncated CDR: the bridge rejects and counts it, an error status comes back) and a
+//      NaN thrust (the node rejects and counts it: SimStatus.commands_rejected). At
+//      kTeleopStep the tow vehicle's answer is a geometry_msgs/Twist, as Foxglove's Teleop panel
+//      sends (the bridge turns it into the command answering the newest status).
+// Then: the odometry decoded from the WebSocket equals the node's bodies.csv row for row
+// (every CSV row at t > 0 has its message; 9 significant digits, as decode_recording.mjs);
+// the tow vehicle at rest until the thrust comes and moving after it; time messages are
+// /clock's stamps; the bridge's summary counts the malformed message.
+// Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
+import { spawn } from "node:child_process";
+import { mkdirSync, readFileSync, rmSync } from "node:fs";
+import { join } from "node:path";
+
+let ws, wsProtocol, rosmsg, serialization;
+try {
+  ws = await import("ws");
+  wsProtocol = await import("@foxglove/ws-protocol");
+  rosmsg = await import("@foxglove/rosmsg");
+  serialization = await import("@foxglove/rosmsg2-serialization");
+} catch (e) {
+  console.error(`node modules not installed (run "npm ci" in tests/foxglove_js): ${e.message}`);
+  process.exit(77);
+}
+const WebSocket = ws.default ?? ws.WebSocket;
+const { FoxgloveClient } = wsProtocol.FoxgloveClient ? wsProtocol : wsProtocol.default; // CommonJS from ESM
+const { parse: parseMessageDefinition } = rosmsg;
+const { MessageReader, MessageWriter } = serialization;
+
+const [simNode, bridgeExe, sourceDir, outDir, domainText, where] = process.argv.slice(2);
+const inNode = where === "in-node";
+const kDuration = 10; // [s] simulated
+const kThrustStep = 20; // the first step answered with thrust
+const kBadStep = 60; // the step whose answer is preceded by a malformed and a NaN command
+const kTeleopStep = 80; // the step the tow vehicle is answered with a Twist (Teleop panel)
+const kThrust = 4165; // [N] Case 1
+const kBadAnswerDelay = 200; // [ms] between the NaN command and the good one
+const kTimeout = 60e3; // [ms] the whole check; a run that takes longer has hung
+const kRelCsv = 5e-9; // half a unit in the 9th significant digit of the CSV
+const kAbs = 1e-300;
+const kAtRest = 0.05; // [m/s] |u| of the tow vehicle before any thrust (the cable's pull)
+const kMoving = 0.5; // [m/s] u after 7 s of 4165 N (Case 1 reaches 6 m/s)
+
+let failures = 0;
+function check(ok, what) {
+  if (!ok) {
+    failures += 1;
+    if (failures <= 20) console.error(`FAIL: ${what}`);
+  }
+  return ok;
+}
+
+rmSync(outDir, { recursive: true, force: true });
+mkdirSync(outDir, { recursive: true });
+const children = [];
+function start(argv, name) {
+  const child = spawn(argv[0], argv.slice(1), { stdio: ["ignore", "pipe", "pipe"] });
+  child.out = "";
+  child.err = "";
+  child.stdout.on("data", (d) => (child.out += d));
+  child.stderr.on("data", (d) => (child.err += d));
+  child.exited = new Promise((resolve) => child.on("exit", (code, signal) => resolve(code ?? 128)));
+  child.name = name;
+  children.push(child);
+  return child;
+}
+function stopAll() {
+  for (const c of children) if (c.exitCode === null) c.kill("SIGKILL");
+}
+process.on("exit", stopAll);
+const deadline = setTimeout(() => {
+  console.error("FAIL: timed out");
+  console.error(`received: ${[...byTopic.entries()].map(([t, v]) => `${t} ${v.length}`).join(", ")}; ` +
+    `statuses ${JSON.stringify(statuses)}; steps answered ${answered.size}`);
+  for (const c of children) console.error(`${c.name} stderr:\n${c.err}`);
+  stopAll();
+  process.exit(1);
+}, kTimeout);
+
+const node = start(
+  [simNode, "--scene", join(sourceDir, "config/scenes/case1_forward.yaml"), "--mode", "lockstep",
+    "--duration", String(kDuration), "--domain", domainText, "--csv", join(outDir, "csv"),
+    "--set", "script=[]", ...(inNode ? ["--foxglove", "0"] : [])],
+  "sim_node",
+);
+const bridge = inNode ? node : start([bridgeExe, "--domain", domainText, "--port", "0"], "towsim_foxglove");
+const url = await new Promise((resolve, reject) => {
+  const poll = setInterval(() => {
+    const m = bridge.out.match(inNode ? /Foxglove at (ws:\/\/\S+)/ : /serving (ws:\/\/[^ ]+) /);
+    if (m) {
+      clearInterval(poll);
+      resolve(m[1]);
+    } else if (bridge.exitCode !== null) {
+      clearInterval(poll);
+      reject(new Error(`towsim_foxglove exited ${bridge.exitCode}: ${bridge.err}`));
+    }
+  }, 20);
+});
+
+// --- the client ---
+console.error(`connecting to ${url} (${inNode ? "sim_node --foxglove" : "towsim_foxglove"})`);
+const client = new FoxgloveClient({ ws: new WebSocket(url, [FoxgloveClient.SUPPORTED_SUBPROTOCOL]) });
+let serverInfo;
+const channels = new Map(); // channel id -> {topic, reader}
+const subscriptions = new Map(); // subscription id -> channel id
+const byTopic = new Map(); // topic -> [{timestamp, value}]
+const times = [];
+const statuses = [];
+let decodeFailures = 0;
+const commandChannels = new Map(); // body -> client channel id
+let commandWriter;
+let teleopChannel;
+// geometry_msgs/Twist as Foxglove's Teleop panel sends it, with the official definitions
+const twistWriter = new MessageWriter(parseMessageDefinition(
+  "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n================================================================================\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n",
+  { ros2: true }));
+const answered = new Set();
+
+function command(step, thrust) {
+  return {
+    header: { stamp: { sec: 0, nanosec: 0 }, frame_id: "" },
+    step: BigInt(step),
+    thrust,
+    rudder: 0,
+    elevator: 0,
+  };
+}
+
+const finished = new Promise((resolve) => {
+  client.on("serverInfo", (info) => (serverInfo = info));
+  client.on("status", (s) => statuses.push(s));
+  client.on("time", (t) => times.push(t.timestamp));
+  client.on("advertise", (list) => {
+    for (const c of list) {
+      check(c.encoding === "cdr" && c.schemaEncoding === "ros2msg", `${c.topic}: encoding ${c.encoding} / ${c.schemaEncoding}`);
+      const definitions = parseMessageDefinition(c.schema, { ros2: true });
+      channels.set(c.id, { topic: c.topic, reader: new MessageReader(definitions), schemaName: c.schemaName });
+      subscriptions.set(client.subscribe(c.id), c.id);
+      const m = c.topic.match(/^\/towsim\/([^/]+)\/command$/);
+      if (m) {
+        check(c.schemaName === "towsim_msgs/msg/ActuatorCommand", `${c.topic} schema ${c.schemaName}`);
+        commandWriter = new MessageWriter(definitions);
+        commandChannels.set(m[1], client.advertise({ topic: c.topic, encoding: "cdr", schemaName: c.schemaName }));
+        if (m[1] === "tow_vehicle") {
+          teleopChannel = client.advertise({ topic: c.topic, encoding: "cdr", schemaName: "geometry_msgs/msg/Twist" });
+        }
+      }
+    }
+  });
+  client.on("message", ({ subscriptionId, timestamp, data }) => {
+    const channel = channels.get(subscriptions.get(subscriptionId));
+    let value;
+    try {
+      value = channel.reader.readMessage(new Uint8Array(data.buffer, data.byteOffset, data.byteLength));
+    } catch (e) {
+      decodeFailures += 1;
+      check(false, `${channel.topic}: does not decode: ${e.message}`);
+      return;
+    }
+    if (!byTopic.has(channel.topic)) byTopic.set(channel.topic, []);
+    byTopic.get(channel.topic).push({ timestamp, value });
+    if (channel.topic !== "/towsim/status") return;
+    // the lockstep controller: answer each step once, both vehicles
+    const step = Number(value.step);
+    if (value.state === 3 || value.state === 4 || value.state === 5) resolve();
+    if (value.state !== 0 && value.state !== 2) return; // running or waiting
+    if (answered.has(step) || commandWriter === undefined || commandChannels.size < 2) return;
+    answered.add(step);
+    const thrust = step >= kThrustStep ? kThrust : 0;
+    const answer = () => {
+      if (step === kTeleopStep) {
+        // the bridge makes it the command answering the newest status: this step
+        client.sendMessage(teleopChannel, twistWriter.writeMessage({
+          linear: { x: thrust, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } }));
+      } else {
+        client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, thrust)));
+      }
+      client.sendMessage(commandChannels.get("towfish"), commandWriter.writeMessage(command(step, 0)));
+    };
+    if (step !== kBadStep) {
+      answer();
+      return;
+    }
+    const good = commandWriter.writeMessage(command(step, thrust));
+    client.sendMessage(commandChannels.get("tow_vehicle"), good.subarray(0, 12)); // truncated
+    client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, NaN)));
+    // the answer after the node took the NaN command (its reader keeps the newest command only)
+    setTimeout(answer, kBadAnswerDelay);
+  });
+});
+await finished;
+// the last messages in flight
+await new Promise((r) => setTimeout(r, 300));
+client.close();
+if (!inNode) bridge.kill("SIGTERM");
+const [nodeCode, bridgeCode] = await Promise.all([node.exited, bridge.exited]);
+clearTimeout(deadline);
+check(nodeCode === 0, `sim_node exit ${nodeCode}: ${node.err}`);
+check(bridgeCode === 0, `towsim_foxglove exit ${bridgeCode}: ${bridge.err}`);
+
+// --- checks ---
+check(serverInfo !== undefined, "serverInfo received");
+if (serverInfo) {
+  check(serverInfo.capabilities.includes("clientPublish") && serverInfo.capabilities.includes("time"), `capabilities ${serverInfo.capabilities}`);
+  check(serverInfo.supportedEncodings?.includes("cdr"), `supportedEncodings ${serverInfo.supportedEncodings}`);
+}
+const topics = new Set([...channels.values()].map((c) => c.topic));
+for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/status", "/towsim/scene_info",
+  "/towsim/cable/state", "/towsim/sim_control", "/towsim/tow_vehicle/odom", "/towsim/tow_vehicle/command",
+  "/towsim/towfish/odom", "/towsim/towfish/cable_force"]) {
+  check(topics.has(t), `channel ${t} advertised`);
+}
+// the bridge's command channel carries the commands on DDS (this client's among them); the
+// node's own server advertises it for its schema only
+for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/cable/state", "/towsim/tow_vehicle/odom",
+  ...(inNode ? [] : ["/towsim/tow_vehicle/command"])]) {
+  check((byTopic.get(t) ?? []).length > 0, `messages on ${t}`);
+}
+check(decodeFailures === 0, `${decodeFailures} messages failed to decode`);
+
+// odometry against bodies.csv
+const stampSec = (t) => t.sec + 1e-9 * (t.nanosec ?? t.nsec);
+const stampNs = (t) => BigInt(t.sec) * 1000000000n + BigInt(t.nanosec ?? t.nsec);
+const lines = readFileSync(join(outDir, "csv/bodies.csv"), "utf8").trim().split("\n");
+const header = lines.shift().split(",");
+const rows = lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [header[i], v])));
+const near = (v, text, what) => {
+  const c = Number(text);
+  return check(Math.abs(v - c) <= kRelCsv * Math.abs(c) + kAbs, `${what}: ${v} vs CSV ${text}`);
+};
+let compared = 0;
+for (const body of ["tow_vehicle", "towfish"]) {
+  const odom = new Map();
+  for (const { timestamp, value } of byTopic.get(`/towsim/${body}/odom`) ?? []) {
+    check(timestamp === stampNs(value.header.stamp), `${body} odom log time ${timestamp} is its stamp`);
+    odom.set(stampSec(value.header.stamp).toFixed(6), value);
+  }
+  for (const r of rows.filter((r) => r.body === body && Number(r.t) > 0)) {
+    const o = odom.get(Number(r.t).toFixed(6));
+    if (!check(o !== undefined, `${body} t = ${r.t}: an odometry message`)) continue;
+    check(o.child_frame_id === `${body}_frd` && o.header.frame_id === "world_ned", `${body} frames`);
+    const p = o.pose.pose.position;
+    const v = o.twist.twist.linear;
+    const w = o.twist.twist.angular;
+    for (const [val, key] of [[p.x, "x"], [p.y, "y"], [p.z, "z"], [v.x, "u"], [v.y, "v"], [v.z, "w"], [w.x, "p"], [w.y, "q"], [w.z, "r"]]) {
+      near(val, r[key], `${body} t = ${r.t} ${key}`);
+    }
+    compared += 1;
+  }
+}
+check(compared >= 2 * 10 * kDuration, `${compared} CSV rows compared`);
+
+// the vehicle responds to the commands sent through the WebSocket
+const u = (t) => Number(rows.find((r) => r.body === "tow_vehicle" && Math.abs(Number(r.t) - t) < 1e-6)?.u);
+const h = 0.05; // case1_forward's time.step [s]
+check(Math.abs(u(kThrustStep * h)) < kAtRest, `at rest before the thrust: u = ${u(kThrustStep * h)}`);
+check(u(kDuration) > kMoving, `moving after the thrust: u = ${u(kDuration)}`);
+
+// the NaN command: rejected and counted by the node; the malformed one: by the bridge
+const last = (byTopic.get("/towsim/status") ?? []).at(-1)?.value;
+check(last !== undefined && Number(last.commands_rejected) === 1, `node: commands_rejected ${last?.commands_rejected}`);
+// the Teleop Twist answered its step: no lockstep timeout, no failsafe
+check(last !== undefined && Number(last.lockstep_timeouts) === 0 && Number(last.failsafe_count) === 0,
+  `lockstep timeouts ${last?.lockstep_timeouts}, failsafes ${last?.failsafe_count}`);
+check(statuses.some((s) => s.level === 2 && /malformed/.test(s.message)), `an error status for the malformed command (${JSON.stringify(statuses)})`);
+if (inNode) {
+  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === 1, `sim_node's note of the malformed command: ${node.err}`);
+} else {
+  check(/malformed 1\)/.test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+}
+
+// time messages: the simulation time of /clock
+const clocks = new Set((byTopic.get("/clock") ?? []).map(({ value }) => stampNs(value.clock)));
+check(times.length > 0 && times.every((t) => clocks.has(t)), `${times.length} time messages, all /clock stamps`);
+for (let i = 1; i < times.length; i++) if (!check(times[i] >= times[i - 1], `time ${i} not decreasing`)) break;
+
+// the layout (config/foxglove/towsim.json): every plotted path resolves to a number in the
+// messages decoded here, the 3D panel follows a frame of /tf, Teleop drives a command topic
+const layout = JSON.parse(readFileSync(join(sourceDir, "config/foxglove/towsim.json"), "utf8"));
+for (const [id, panel] of Object.entries(layout.configById)) {
+  if (id.startsWith("Plot!")) {
+    for (const { value } of panel.paths) {
+      const dot = value.indexOf(".");
+      const topic = value.slice(0, dot);
+      const message = (byTopic.get(topic) ?? []).at(-1)?.value;
+      let v = message;
+      for (const part of value.slice(dot + 1).split(".")) {
+        const m = part.match(/^(\w+)(?:\[(\d+)\])?$/);
+        v = v?.[m[1]];
+        if (m[2] !== undefined) v = v?.[Number(m[2])];
+      }
+      check(typeof v === "number" && Number.isFinite(v), `layout ${id}: ${value} = ${v}`);
+    }
+  }
+  if (id.startsWith("3D!")) {
+    const frames = new Set((byTopic.get("/tf") ?? []).flatMap(({ value }) => value.transforms.map((t) => t.child_frame_id)));
+    (byTopic.get("/tf_static") ?? []).forEach(({ value }) => value.transforms.forEach((t) => frames.add(t.child_frame_id)));
+    check(frames.has(panel.followTf), `layout ${id}: follows ${panel.followTf}`);
+    check(panel.layers.grid.frameId === "world", `layout ${id}: grid in world`);
+  }
+  if (id.startsWith("Teleop!")) check(commandChannels.has(panel.topic.split("/")[2]), `layout ${id}: ${panel.topic}`);
+}
+
+if (failures > 0) {
+  console.error(`${failures} failures`);
+  process.exit(1);
+}
+let count = 0;
+for (const v of byTopic.values()) count += v.length;
+console.log(`ok: ${count} messages on ${byTopic.size} topics decoded, ${compared} CSV rows matched, ` +
+  `${answered.size} steps commanded through clientPublish, ${times.length} time messages`);

@@ -1,0 +1,162 @@
+// sim_node/dds/markers: the MarkerArray of a scene (docs/frames.md) against the state it is
+// drawn from: the cable's points are the CableState positions in `world` (ENU, converted here
+// by the axis permutation of REP-103, not by the library's helper), the colours follow the
+// legend, hulls and fins have the vehicle file's dimensions, the force arrows the end forces.
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/script.h"
+#include "core/simulation.h"
+#include "dds/markers.h"
+#include "dds/translators.h"
+#include "scene/scene_loader.h"
+
+namespace towsim::dds {
+namespace {
+
+constexpr double kExact = 0.0;        // copied or permuted numbers
+constexpr double kScaledTol = 1e-12;  // a force times a scale [m]: rounding only
+constexpr float kColorTol = 1e-6f;    // float32 channels
+
+constexpr const char* kScene = R"(
+name: dds_markers
+time: {step: 0.05, duration: 1, output_rate: 10}
+cable:
+  length: 200
+  elements: 10
+  diameter: 0.041
+  density: 1300
+  youngs_modulus: 7.0e8
+  initial: vertical
+  start: {body: tow_vehicle, at: [0, 0, 0.2]}
+  end: {body: towfish, at: [1.65, 0, 0]}
+bodies:
+  tow_vehicle: {model: ../vehicles/tow_vehicle.yaml, position: [0, 0, 3.5], euler_deg: [0, 0, 30]}
+  towfish: {model: ../vehicles/towfish.yaml, position: [-1.65, 0, 203.7]}
+script:
+  - {at: 0, body: tow_vehicle, thrust: 4165}
+)";
+
+const MarkerMsg* Find(const MarkerArrayMsg& a, const std::string& ns, int id) {
+  for (uint32_t i = 0; i < a.markers._length; ++i) {
+    const MarkerMsg& m = a.markers._buffer[i];
+    if (ns == m.ns && m.id == id) return &m;
+  }
+  return nullptr;
+}
+
+TEST(TensionColorTest, LegendFromBlueThroughGreenToRed) {
+  auto expect = [](double t, float r, float g, float b) {
+    const ColorMsg c = TensionColor(t);
+    EXPECT_NEAR(c.r, r, kColorTol) << t;
+    EXPECT_NEAR(c.g, g, kColorTol) << t;
+    EXPECT_NEAR(c.b, b, kColorTol) << t;
+    EXPECT_EQ(c.a, 1.0f);
+  };
+  expect(0.0, 0, 0, 1);
+  expect(-100.0, 0, 0, 1);  // compression: blue
+  expect(0.25 * kTensionLegendMax, 0, 0.5f, 0.5f);
+  expect(0.5 * kTensionLegendMax, 0, 1, 0);
+  expect(0.75 * kTensionLegendMax, 0.5f, 0.5f, 0);
+  expect(kTensionLegendMax, 1, 0, 0);
+  expect(3 * kTensionLegendMax, 1, 0, 0);
+}
+
+TEST(SceneMarkersTest, DrawsTheStateItWasUpdatedFrom) {
+  const core::Model model = scene::LoadSceneFromString(
+      kScene, "dds_markers.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  core::Simulation sim(model);
+  SceneMarkers markers(sim);
+  core::ScriptRunner script(model);
+  for (int k = 0; k < 10; ++k) {
+    script.Apply(&sim);
+    ASSERT_TRUE(sim.Step().ok());
+  }
+  markers.Update(sim);
+  const MarkerArrayMsg& a = markers.msg;
+
+  // the cable: CableState's positions (NED) permuted to ENU (x_E = y_N, y_E = x_N, z_E = -z_N)
+  CableStateMessage state(kWorldFrame, sim.num_nodes());
+  ToCableState(sim, 10, &state);
+  const MarkerMsg* cable = Find(a, "cable", 0);
+  ASSERT_NE(cable, nullptr);
+  EXPECT_EQ(cable, &a.markers._buffer[markers.cable_marker()]);
+  EXPECT_STREQ(cable->header.frame_id, "world");
+  EXPECT_EQ(cable->type, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP);
+  EXPECT_EQ(cable->header.stamp.sec, state.msg.header.stamp.sec);
+  EXPECT_EQ(cable->header.stamp.nanosec, state.msg.header.stamp.nanosec);
+  ASSERT_EQ(cable->points._length, state.msg.positions._length);
+  ASSERT_EQ(cable->colors._length, state.msg.positions._length);
+  for (uint32_t i = 0; i < cable->points._length; ++i) {
+    const auto& p = cable->points._buffer[i];
+    const auto& n = state.msg.positions._buffer[i];
+    EXPECT_NEAR(p.x, n.y, kExact);
+    EXPECT_NEAR(p.y, n.x, kExact);
+    EXPECT_NEAR(p.z, -n.z, kExact);
+    const ColorMsg c = TensionColor(state.msg.tensions._buffer[i]);
+    EXPECT_EQ(cable->colors._buffer[i].r, c.r);
+    EXPECT_EQ(cable->colors._buffer[i].b, c.b);
+  }
+  EXPECT_GT(state.msg.tensions._buffer[0], 0.0);  // a towed cable: not all blue
+
+  // hulls: cylinders of the vehicle files' length and diameter, axis along the body x
+  const MarkerMsg* hull = Find(a, "hull", 0);
+  ASSERT_NE(hull, nullptr);
+  EXPECT_STREQ(hull->header.frame_id, "tow_vehicle");
+  EXPECT_EQ(hull->type, visualization_msgs_msg_dds__Marker_Constants_CYLINDER);
+  EXPECT_EQ(hull->scale.z, 8.2);
+  EXPECT_EQ(hull->scale.x, 1.0);
+  EXPECT_TRUE(hull->frame_locked);
+  const auto& o = hull->pose.orientation;
+  const core::Vec3 axis = Eigen::Quaterniond(o.w, o.x, o.y, o.z) * core::Vec3::UnitZ();
+  EXPECT_NEAR((axis - core::Vec3::UnitX()).norm(), 0.0, kScaledTol);
+  const MarkerMsg* fish = Find(a, "hull", 1);
+  ASSERT_NE(fish, nullptr);
+  EXPECT_EQ(fish->scale.z, 3.3);
+  EXPECT_EQ(fish->scale.x, 0.47);
+
+  // fins: one plate per lifting surface, at its centre of pressure (FRD -> FLU), its area
+  int fins = 0;
+  for (const core::Vehicle& v : model.vehicles) {
+    for (const core::LiftingSurface& s : v.params.surfaces) {
+      const MarkerMsg* f = Find(a, "fins", fins++);
+      ASSERT_NE(f, nullptr) << s.name;
+      EXPECT_EQ(std::string(f->header.frame_id), v.name);
+      EXPECT_EQ(f->pose.position.x, s.position_B.x());
+      EXPECT_EQ(f->pose.position.y, -s.position_B.y());
+      EXPECT_EQ(f->pose.position.z, -s.position_B.z());
+      EXPECT_NEAR(f->scale.x * f->scale.y, s.area, 1e-12) << s.name;
+      // the plate's thin axis (z) is the surface normal, FRD -> FLU
+      const auto& q = f->pose.orientation;
+      const core::Vec3 n = Eigen::Quaterniond(q.w, q.x, q.y, q.z) * core::Vec3::UnitZ();
+      const core::Vec3 expected(s.normal_B.x(), -s.normal_B.y(), -s.normal_B.z());
+      EXPECT_NEAR((n - expected.normalized()).norm(), 0.0, 1e-12) << s.name;
+    }
+  }
+  EXPECT_GT(fins, 0);
+  EXPECT_EQ(Find(a, "fins", fins), nullptr);
+
+  // force arrows: from the end node along the end force, kForceArrowScale m/N, in world (ENU)
+  for (int e = 0; e < 2; ++e) {
+    const MarkerMsg* arrow = Find(a, "cable_force", e);
+    ASSERT_NE(arrow, nullptr);
+    ASSERT_EQ(arrow->points._length, 2u);
+    const core::Vec3 node = sim.node_position(e == 0 ? 0 : sim.num_nodes() - 1);
+    const core::Vec3 f = sim.end_force(e);
+    const auto& p0 = arrow->points._buffer[0];
+    const auto& p1 = arrow->points._buffer[1];
+    EXPECT_EQ(p0.x, node.y());
+    EXPECT_EQ(p0.y, node.x());
+    EXPECT_EQ(p0.z, -node.z());
+    EXPECT_NEAR(p1.x - p0.x, kForceArrowScale * f.y(), kScaledTol);
+    EXPECT_NEAR(p1.y - p0.y, kForceArrowScale * f.x(), kScaledTol);
+    EXPECT_NEAR(p1.z - p0.z, -kForceArrowScale * f.z(), kScaledTol);
+    EXPECT_GT(f.norm(), 100.0);
+  }
+}
+
+}  // namespace
+}  // namespace towsim::dds

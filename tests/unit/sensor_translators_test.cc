@@ -1,0 +1,108 @@
+// sim_node/dds/sensor_translators: a body's altimeter (sensor_msgs/Range) and pressure sensor
+// (sensor_msgs/FluidPressure) at t = 0, where the body's position is the scene's and the
+// surface elevation is the regular wave's closed form a cos(phase) at x = y = t = 0.
+
+#include "dds/sensor_translators.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/simulation.h"
+#include "dds/translators.h"
+#include "scene/scene_loader.h"
+
+namespace towsim::dds {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// the range is a float32: round-off 2^-24 relative (2^-23 allowed)
+constexpr double kFloatRelTol = 1.0 / (1 << 23);
+// the pressure: a few ulps of 3e5 Pa
+constexpr double kPressureTol = 1e-8;
+
+// a sphere hanging at (3, 4, 20) on a cable from a fixed point above; environment appended
+constexpr const char* kScene = R"(
+name: sensor_translators
+time: {step: 0.05, duration: 1, output_rate: 10}
+cable:
+  length: 20
+  elements: 4
+  diameter: 0.041
+  density: 1300
+  youngs_modulus: 7.0e8
+  start: {fixed: [3, 4, 0]}
+  end: {body: ball, at: [0, 0, 0]}
+bodies:
+  ball: {type: sphere, mass: 50, volume: 0.01, position: [3, 4, 20]}
+)";
+
+core::Model Load(const std::string& environment) {
+  return scene::LoadSceneFromString(std::string(kScene) + environment, "sensor_translators.yaml",
+                                    std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+}
+
+TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
+  const core::Model model = Load(
+      "environment:\n"
+      "  water_density: 1025\n"
+      "  gravity: 9.81\n"
+      "  waves: {regular: {height: 1.5, period: 8, direction_deg: 0, phase_deg: 60}}\n"
+      "  seabed: {depth: 40, slope_deg: 5, slope_direction_deg: 90}\n");
+  const core::Simulation sim(model);
+  RangeMessage range("ball");
+  ToAltitude(sim, 0, &range.msg);
+  // the plane: d(x, y) = 40 + tan(5 deg) (x cos 90 + y sin 90) at (3, 4); the ball at z = 20
+  const double bed = 40.0 + std::tan(5.0 * kPi / 180.0) * 4.0;
+  EXPECT_NEAR(range.msg.range, bed - 20.0, kFloatRelTol * (bed - 20.0));
+  EXPECT_EQ(range.msg.radiation_type, sensor_msgs_msg_dds__Range_Constants_ULTRASOUND);
+  EXPECT_FLOAT_EQ(range.msg.field_of_view, 0.1f);
+  EXPECT_EQ(range.msg.min_range, 0.0f);
+  EXPECT_EQ(range.msg.max_range, 200.0f);
+  EXPECT_STREQ(range.msg.header.frame_id, "ball");
+  EXPECT_EQ(range.msg.header.stamp.sec, 0);
+  EXPECT_EQ(range.msg.header.stamp.nanosec, 0u);
+
+  FluidPressureMessage pressure("ball");
+  ToPressure(sim, 0, &pressure.msg);
+  // eta at (3, 4), t = 0: a cos(k x + phase) (waves toward north); k from the deep-water
+  // w^2 / g, which at kh = 2.5 (h = 40 m) is 1.4 % below the exact dispersion relation's k the
+  // core uses: 0.003 rad of phase at x = 3 m, within 1 % of a
+  const double eta = sim.surface_elevation_at(0);
+  const double k_deep = std::pow(2.0 * kPi / 8.0, 2) / 9.81;
+  EXPECT_NEAR(eta, 0.75 * std::cos(k_deep * 3.0 + kPi / 3.0), 0.75 * 0.01);
+  EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * (20.0 + eta),
+              kPressureTol * 3e5);
+  EXPECT_EQ(pressure.msg.variance, 0.0);
+  EXPECT_EQ(range.msg.variance, 0.0f);
+  EXPECT_STREQ(pressure.msg.header.frame_id, "ball");
+
+  // stamps are simulation time
+  core::Simulation later(model);
+  ASSERT_TRUE(later.Step().ok());
+  ToAltitude(later, 0, &range.msg);
+  ToPressure(later, 0, &pressure.msg);
+  EXPECT_EQ(FromTimeMsg(range.msg.header.stamp), 0.05);
+  EXPECT_EQ(FromTimeMsg(pressure.msg.header.stamp), 0.05);
+}
+
+TEST(SensorTranslators, NoEchoIsPlusInfinity) {
+  RangeMessage range("ball");
+  // no seabed: REP 117's +inf (nothing detected)
+  const core::Simulation bottomless(Load(""));
+  ToAltitude(bottomless, 0, &range.msg);
+  EXPECT_EQ(range.msg.range, std::numeric_limits<float>::infinity());
+  // a bed 480 m below the ball, beyond max_range 200 m: +inf too
+  const core::Simulation deep(Load("environment: {seabed: {depth: 500}}\n"));
+  ToAltitude(deep, 0, &range.msg);
+  EXPECT_EQ(range.msg.range, std::numeric_limits<float>::infinity());
+  // calm water without a seabed: the pressure is still atmospheric + rho g z
+  FluidPressureMessage pressure("ball");
+  ToPressure(bottomless, 0, &pressure.msg);
+  EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * 20.0, kPressureTol * 3e5);
+}
+
+}  // namespace
+}  // namespace towsim::dds
