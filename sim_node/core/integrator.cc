@@ -34,7 +34,10 @@ Integrator::Integrator(const System& system)
   dl_.setZero(m);
   backup_.resize(system.model().integrator.max_substep_level + 1);
   waves_ = system.sea().has_waves();
-  if (waves_) system.ResizeWaveSamples(&wave_samples_);
+  if (waves_) {
+    system.ResizeWaveSamples(&wave_samples_);
+    wave_q_.setZero(n);
+  }
 }
 
 bool Integrator::InitializeAcceleration(State* s) {
@@ -42,11 +45,11 @@ bool Integrator::InitializeAcceleration(State* s) {
   s->a.setZero(n);
   s->lambda.setZero(m);
   JacobianCoefficients cf{0.0, 0.0, 1.0};
-  tangent_valid_ = false;  // jac_ now holds the mass matrix, not a Newton matrix
+  s->newton.valid = false;  // jac_ now holds the mass matrix, not a Newton matrix
   if (waves_) system_.SampleWaves(s->q, s->t, &wave_samples_);
   wave_time_ = -1.0;
   system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr);
+                   waves_ ? &wave_samples_ : nullptr, s->supports);
   // acceleration-level constraints: Phi_q a = 0 (linear joints, constant driven velocity)
   phi_.setZero();
   system_.ToBlocks(-r_, phi_, &rhs_);
@@ -84,22 +87,24 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   st.a = a_const + a_fac * a_hat;
   const JacobianCoefficients cf{1.0, p.gamma / (p.beta * h), a_fac / (p.beta * h2)};
   const double tol = settings.tolerance * q_scale_;
-  bool refresh = full || !tangent_valid_ || tangent_h_ != h;
+  NewtonPoint& kept = st.newton;  // the kept matrix in jac_ (State::newton)
+  bool refresh = full || !kept.valid || kept.h != h;
   // the waves at t_{n+1} at the predicted positions, once per step (see the header)
   const bool waves_each_iteration = waves_ && settings.waves_per_iteration;
   if (waves_ && (t1 != wave_time_ || full) && !waves_each_iteration) {
     system_.SampleWaves(st.q, t1, &wave_samples_);
+    wave_q_ = st.q;  // copies in place
     wave_time_ = t1;
   }
   const WaveSamples* waves = waves_ ? &wave_samples_ : nullptr;
-  ++theta_age_;  // one more step since the kept matrix's rate was measured
+  ++kept.theta_age;  // one more step since the kept matrix's rate was measured
   double dq_prev = 0.0;
   for (int it = 1; it <= settings.max_iterations; ++it) {
     at.iterations = it;
     // residual always; the Newton matrix only when it is refreshed
     if (waves_each_iteration) system_.SampleWaves(st.q, t1, &wave_samples_);
     system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_,
-                     refresh ? &jac_ : nullptr, waves);
+                     refresh ? &jac_ : nullptr, waves, st.supports);
     if (!r_.allFinite() || !phi_.allFinite()) {
       at.non_finite = true;
       return at;
@@ -107,15 +112,22 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     at.residual = r_.lpNorm<Eigen::Infinity>();
     r_.cwiseAbs().maxCoeff(&at.worst_dof);
     if (refresh) {
-      tangent_valid_ = false;
+      kept.valid = false;
       if (!jac_.Factor()) {
         at.non_finite = true;
         return at;
       }
-      tangent_valid_ = true;
-      tangent_h_ = h;
-      theta_ = 0.0;
-      theta_age_ = kMaxThetaAge + 1;  // the new matrix's rate is not known yet
+      // the point the matrix was formed at, to rebuild it from the state (RestoreNewtonMatrix);
+      // copies in place (same sizes)
+      kept.valid = true;
+      kept.h = h;
+      kept.t = t1;
+      kept.q = st.q;
+      kept.v = st.v;
+      kept.a = st.a;
+      if (waves_) kept.wave_q = waves_each_iteration ? st.q : wave_q_;
+      kept.theta = 0.0;
+      kept.theta_age = kMaxThetaAge + 1;  // the new matrix's rate is not known yet
       ++tangent_refreshes_;
     } else {
       at.reused = true;
@@ -138,23 +150,24 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     // measured: the same matrix gave this increment and the one before
     const bool measured = !refresh && it > 1;
     if (measured) {
-      theta_ = dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
-      theta_age_ = 0;
+      kept.theta = dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
+      kept.theta_age = 0;
     }
     dq_prev = dq_norm;
     // a fresh matrix: classic Newton test (quadratic convergence); a kept one: its rate must
     // be known (measured in this step, or at most kMaxThetaAge steps ago for the first
     // iteration) to bound the error left
-    const bool rate_known = refresh || measured || theta_age_ <= kMaxThetaAge;
+    const bool rate_known = refresh || measured || kept.theta_age <= kMaxThetaAge;
+    const double theta = kept.theta;
     const bool converged =
-        dq_norm <= tol && rate_known && theta_ < 1.0 && theta_ / (1.0 - theta_) * dq_norm <= tol;
+        dq_norm <= tol && rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
     if (converged) {
       at.ok = true;
       st.a_alpha = a_hat;
       st.t = t1;
       return at;
     }
-    refresh = full || theta_ > kMaxContraction;
+    refresh = full || kept.theta > kMaxContraction;
   }
   return at;
 }
@@ -167,6 +180,7 @@ StepStatus Integrator::Advance(State* s, double h, int level, const State* guess
   if (!at.ok && at.reused) {
     // the kept matrix may be what failed: retry with classic Newton before halving
     *s = backup_[level];
+    s->newton.valid = false;  // jac_ may no longer hold the backup's kept matrix
     at = Newton(s, h, true, nullptr);
     status.iterations += at.iterations;
   }
@@ -174,6 +188,7 @@ StepStatus Integrator::Advance(State* s, double h, int level, const State* guess
   if (at.ok) return status;
   last_failure_ = at;
   *s = backup_[level];
+  s->newton.valid = false;  // jac_ may no longer hold the backup's kept matrix
   if (level >= system_.model().integrator.max_substep_level) {
     status.code = at.non_finite ? StepStatus::kNonFinite : StepStatus::kNotConverged;
     return status;
@@ -192,6 +207,20 @@ StepStatus Integrator::Advance(State* s, double h, int level, const State* guess
     }
   }
   return total;
+}
+
+bool Integrator::RestoreNewtonMatrix(const State& s) {
+  wave_time_ = -1.0;
+  const NewtonPoint& kept = s.newton;
+  if (!kept.valid) return true;
+  // the same evaluation as the refresh that formed it (Newton): bit for bit the same matrix
+  const double h = kept.h, h2 = h * h;
+  const double a_fac = (1.0 - ap_.alpha_m) / (1.0 - ap_.alpha_f);
+  const JacobianCoefficients cf{1.0, ap_.gamma / (ap_.beta * h), a_fac / (ap_.beta * h2)};
+  if (waves_) system_.SampleWaves(kept.wave_q, kept.t, &wave_samples_);
+  system_.Evaluate(kept.q, kept.v, kept.a, s.lambda, kept.t, 1.0, cf, &r_, &phi_, &jac_,
+                   waves_ ? &wave_samples_ : nullptr, s.supports);
+  return jac_.Factor();
 }
 
 StepStatus Integrator::Step(State* s, double h, const State* guess) {

@@ -14,6 +14,12 @@
 // c_a = (1 - alpha_m) / ((1 - alpha_f) beta h^2), c_v = gamma / (beta h),
 // solved block-tridiagonally. A step whose Newton fails is halved recursively.
 //
+// The kept Newton matrix (below) belongs to the state: State::newton holds the point it was
+// formed at (q, v, a, t, h and the waves' sampling positions), its contraction rate and age;
+// the factored matrix in this class is a cache of it, rebuilt by RestoreNewtonMatrix when a
+// state is set, so a restored run continues bit for bit. The Newton matrix depends on neither
+// the multipliers nor the support positions (the joints are linear in q).
+//
 // Modified Newton: the factored Newton matrix is kept across iterations and steps (most steps
 // converge in one iteration, and a residual alone costs a fraction of residual + tangent +
 // factorization). It is refreshed when h changes (c_a, c_v depend on it) or when it contracts
@@ -56,6 +62,9 @@ class Integrator {
   StepStatus Step(State* state, double h, const State* guess = nullptr);
   // consistent a and lambda at the current q, v: [M_eff Phi_q^T; Phi_q 0] [a; lambda] = [Q - F; 0]
   bool InitializeAcceleration(State* state);
+  // rebuilds the kept Newton matrix of `state` (State::newton) into this integrator's cache;
+  // false if it cannot be factored
+  bool RestoreNewtonMatrix(const State& state);
   // Newton matrices factored so far (full evaluations of the tangent), for profiling and tests
   long tangent_refreshes() const { return tangent_refreshes_; }
 
@@ -94,11 +103,7 @@ class Integrator {
   WaveSamples wave_samples_;
   double wave_time_ = -1.0;  // t of wave_samples_ (< 0: none yet)
   Attempt last_failure_;
-  // the factored Newton matrix in jac_: valid, for which step size, its contraction rate
-  bool tangent_valid_ = false;
-  double tangent_h_ = 0.0;
-  double theta_ = 0.0;
-  int theta_age_ = kMaxThetaAge + 1;  // steps since theta_ was measured
+  Eigen::VectorXd wave_q_;  // positions wave_samples_ were sampled at
   long tangent_refreshes_ = 0;
 };
 

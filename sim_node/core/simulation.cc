@@ -1,6 +1,8 @@
 #include "core/simulation.h"
 
 #include <limits>
+#include <sstream>
+#include <stdexcept>
 
 #include "core/environment_field.h"
 #include "core/initial_shape.h"
@@ -19,7 +21,6 @@ struct Simulation::Impl {
   VehicleCoupling coupling;
   State state;
   std::vector<VehicleCommand> commands;
-  long steps = 0;
   int coupling_iterations = 0;
 };
 
@@ -29,7 +30,7 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   State& s = impl_->state;
   BuildInitialState(sys, &s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
-  impl_->coupling.HoldSupports(s);
+  impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
     const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s, stop_requested);
     if (r.stopped) {
@@ -59,7 +60,7 @@ StepStatus Simulation::StepBy(double h) {
     s = impl_->coupling.Step(&impl_->state, impl_->commands, h);
     impl_->coupling_iterations = impl_->coupling.last_iterations();
   }
-  if (s.ok()) ++impl_->steps;
+  if (s.ok()) ++impl_->state.step;
   return s;
 }
 
@@ -67,14 +68,71 @@ const Model& Simulation::model() const { return impl_->system.model(); }
 const System& Simulation::system() const { return impl_->system; }
 const State& Simulation::state() const { return impl_->state; }
 double Simulation::time() const { return impl_->state.t; }
-long Simulation::step_count() const { return impl_->steps; }
+long Simulation::step_count() const { return impl_->state.step; }
 int Simulation::coupling_iterations() const { return impl_->coupling_iterations; }
 
+State Simulation::GetState() const { return impl_->state; }
+
+namespace {
+
+// "SetState: <what> has <n> entries, this model needs <m> (<why>)" unless n == m
+void CheckSize(const char* what, long n, long m, const std::string& why) {
+  if (n == m) return;
+  std::ostringstream msg;
+  msg << "SetState: " << what << " has " << n << " entries, this model needs " << m << " (" << why
+      << ")";
+  throw std::invalid_argument(msg.str());
+}
+
+}  // namespace
+
+void Simulation::CheckStateShape(const State& s) const {
+  const System& sys = impl_->system;
+  std::ostringstream why;
+  why << "3 per sphere body and 6 per cable node: " << sys.num_bodies() << " bodies, "
+      << sys.num_nodes() << " nodes";
+  const long n = sys.num_q();
+  CheckSize("q", s.q.size(), n, why.str());
+  CheckSize("v", s.v.size(), n, why.str());
+  CheckSize("a", s.a.size(), n, why.str());
+  CheckSize("a_alpha", s.a_alpha.size(), n, why.str());
+  CheckSize("lambda", s.lambda.size(), sys.num_lambda(),
+            "3 per held cable end, 2 more per clamped end");
+  const long nv = num_vehicles();
+  CheckSize("vehicles", static_cast<long>(s.vehicles.size()), nv, "one per scene vehicle");
+  CheckSize("coupling.f_previous", static_cast<long>(s.coupling.f_previous.size()), nv,
+            "one per scene vehicle");
+  CheckSize("coupling.flow_end", static_cast<long>(s.coupling.flow_end.size()), nv,
+            "one per scene vehicle");
+  if (s.newton.valid) {
+    CheckSize("newton.q", s.newton.q.size(), n, why.str());
+    CheckSize("newton.v", s.newton.v.size(), n, why.str());
+    CheckSize("newton.a", s.newton.a.size(), n, why.str());
+    if (sys.sea().has_waves()) CheckSize("newton.wave_q", s.newton.wave_q.size(), n, why.str());
+  }
+}
+
 void Simulation::SetState(const State& state) {
+  CheckStateShape(state);
   impl_->state = state;
-  impl_->coupling.HoldSupports(impl_->state);
+  impl_->coupling.SizeWorkSpace(impl_->state);
+  if (!impl_->integrator.RestoreNewtonMatrix(impl_->state))
+    throw SolverError("SetState: the kept Newton matrix of the state cannot be factored");
+}
+
+void Simulation::StartFrom(const State& state) {
+  State s = state;
+  s.a = s.v;  // sized like v; recomputed below
+  s.a_alpha = s.v;
+  s.lambda.setZero(impl_->system.num_lambda());
+  s.newton = NewtonPoint();
+  s.coupling.f_previous.assign(num_vehicles(), Vec3::Zero());
+  s.coupling.flow_end.assign(num_vehicles(), VehicleFlow());
+  CheckStateShape(s);
+  impl_->state = s;
+  impl_->coupling.HoldSupports(&impl_->state);
   if (!impl_->integrator.InitializeAcceleration(&impl_->state))
-    throw SolverError("SetState: accelerations could not be computed for the given state");
+    throw SolverError("StartFrom: accelerations could not be computed for the given state");
 }
 
 int Simulation::cable_dof(int node) const { return impl_->system.cable_dof(node); }

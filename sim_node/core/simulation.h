@@ -60,9 +60,17 @@ class Simulation {
   const Model& model() const;
   const System& system() const;
   const State& state() const;
-  // replace the state (tests: perturbations); accelerations and multipliers are recomputed
-  // from the equations of motion so that the next step starts consistent
+  // the complete state (state.h): everything the next step depends on
+  State GetState() const;
+  // restores a state taken with GetState (of a Simulation of the same Model): stepping on
+  // continues bit for bit as if the run had never stopped. Throws std::invalid_argument
+  // naming the field if the state's shape does not fit this model (vector sizes, vehicles)
   void SetState(const State& state);
+  // starts the run over from t, q, v and the vehicles of `state` (tests: perturbations): the
+  // accelerations, multipliers and every history (coupling predictor, kept Newton matrix)
+  // are recomputed or cleared so that the next step starts consistent; shape errors as
+  // SetState
+  void StartFrom(const State& state);
   int cable_dof(int node) const;  // offset of node's e = [r, r'] in q
   int body_dof(int body) const;   // offset of body's p_WB in q
   double time() const;
@@ -121,6 +129,7 @@ class Simulation {
   Vec3 water_velocity_at(int b) const;
 
  private:
+  void CheckStateShape(const State& state) const;
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

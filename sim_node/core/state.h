@@ -1,10 +1,22 @@
 #pragma once
-// The dynamic state: a copyable value (DESIGN §1: Model / State / Workspace kept apart).
+// The dynamic state: a copyable value (DESIGN §1: Model / State / Workspace kept apart), and
+// complete: everything a step reads from the steps before it is here, so that a State taken
+// with Simulation::GetState and given back with Simulation::SetState continues bit for bit as
+// if the run had never stopped (tests/unit/simulation_state_test.cc).
 //
 // Generalized coordinates q (n x 1), ordered
 //   [ body 0 (3) ... body B-1 (3) | cable node 0 (6) ... cable node N (6) ]
 // where a cable node holds e = [r (3), r' = dr/dx (3)] (paper Eq. 1) and a sphere body holds
 // its position p_WB (3). Offsets come from Simulation::body_dof / cable_dof.
+//
+// Besides t, q, v, a and the multipliers, a step depends on
+//   - the motion of the vehicle attachment points over the step (`supports`): the vehicles are
+//     driven supports of the cable's Newton solve (vehicle_coupling.h);
+//   - the coupling's history (`coupling`): the joint forces of the previous step for the
+//     predictor and the water sampled at the end of the previous step;
+//   - the integrator's kept Newton matrix (`newton`, integrator.h): not stored itself (it is a
+//     cache), but the point it was linearized at, its step size and contraction rate, from
+//     which Simulation::SetState rebuilds it exactly.
 
 #include <vector>
 
@@ -14,14 +26,47 @@
 
 namespace towsim::core {
 
+// a vehicle attachment point moving linearly from p0 at t0 to p1 at t1 (t1 <= t0: held at p1)
+struct SupportMotion {
+  Vec3 p0 = Vec3::Zero(), p1 = Vec3::Zero();
+  double t0 = 0.0, t1 = 0.0;
+};
+
+// what the vehicle coupling carries from one step to the next (vehicle_coupling.h)
+struct CouplingHistory {
+  bool have_previous = false;    // the predictor has a previous step
+  double h_previous = 0.0;       // its length [s]
+  std::vector<Vec3> f_previous;  // joint force on each vehicle at its start, world frame [N]
+  // the water at each vehicle sampled at the end of the previous step (at the predicted pose)
+  // and its time (< 0: none; the next step then samples its start itself)
+  double flow_time = -1.0;
+  std::vector<VehicleFlow> flow_end;
+};
+
+// the linearization point of the integrator's kept Newton matrix (integrator.h)
+struct NewtonPoint {
+  bool valid = false;       // a kept matrix exists
+  double h = 0.0;           // step size it was formed for [s]
+  double t = 0.0;           // time it was evaluated at [s]
+  Eigen::VectorXd q, v, a;  // the iterate it was evaluated at
+  // the waves it was evaluated with: sampled at wave_q at t (only with waves)
+  Eigen::VectorXd wave_q;
+  double theta = 0.0;  // its measured contraction rate
+  int theta_age = 0;   // steps since theta was measured
+};
+
 struct State {
   double t = 0.0;           // [s]
+  long step = 0;            // steps taken
   Eigen::VectorXd q;        // generalized positions
   Eigen::VectorXd v;        // generalized velocities
   Eigen::VectorXd a;        // generalized accelerations
   Eigen::VectorXd a_alpha;  // generalized-alpha pseudo acceleration (equals a for trapezoidal)
   Eigen::VectorXd lambda;   // constraint multipliers: start end, then end end [N]
   std::vector<VehicleState> vehicles;  // 6-DOF vehicles (Model::vehicles order)
+  SupportMotion supports[2];           // vehicle attachment points (start end, end end)
+  CouplingHistory coupling;
+  NewtonPoint newton;
 };
 
 }  // namespace towsim::core

@@ -58,7 +58,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
     res.iterations = it;
     // J = K + M_eff / delta (c_a = 1/delta, a = 0 in R); plain Newton once delta is huge
     const JacobianCoefficients cf{1.0, 0.0, delta > 1e12 ? 0.0 : 1.0 / delta};
-    sys.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r, &phi, &jac);
+    sys.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r, &phi, &jac, nullptr, s->supports);
     const double norm = r.lpNorm<Eigen::Infinity>();
     res.residual = norm;
     if (!std::isfinite(norm) || !phi.allFinite()) break;

@@ -142,7 +142,8 @@ void System::AddQL(BlockTridiagonal* jac, int qi, int li, const Vec3& col) const
   d.block<1, 3>(bl.local, bq.local) += col.transpose();
 }
 
-Vec3 System::SupportPosition(int end, const VectorXd& q, double t) const {
+Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
+                             const SupportMotion* supports) const {
   const CableEnd& e = end == 0 ? model_.cable.start : model_.cable.end;
   switch (e.kind) {
     case EndKind::kFixed:
@@ -152,7 +153,8 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t) const {
     case EndKind::kBody:
       return q.segment<3>(body_dof(e.body)) + e.at_B;  // sphere frames stay world-aligned
     case EndKind::kVehicle: {
-      const VehicleSupport& s = vehicle_support_[end];
+      if (!supports) break;
+      const SupportMotion& s = supports[end];
       if (s.t1 <= s.t0) return s.p1;
       return s.p0 + ((t - s.t0) / (s.t1 - s.t0)) * (s.p1 - s.p0);
     }
@@ -160,10 +162,6 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t) const {
       break;
   }
   return Vec3::Constant(std::nan(""));
-}
-
-void System::SetVehicleSupport(int end, const Vec3& p0, double t0, const Vec3& p1, double t1) {
-  vehicle_support_[end] = {p0, p1, t0, t1};
 }
 
 void System::ResizeWaveSamples(WaveSamples* out) const {
@@ -184,7 +182,8 @@ void System::SampleWaves(const VectorXd& q, double t, WaveSamples* out) const {
 void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
                       const VectorXd& lambda, double t, double load_scale,
                       const JacobianCoefficients& cf, VectorXd* residual, VectorXd* phi,
-                      BlockTridiagonal* jac, const WaveSamples* waves) const {
+                      BlockTridiagonal* jac, const WaveSamples* waves,
+                      const SupportMotion* supports) const {
   residual->setZero(num_q_);
   phi->setZero(num_lambda_);
   if (jac) jac->SetZero();
@@ -283,7 +282,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
     const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
     const int lo = end_lambda(end);
-    phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t);
+    phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t, supports);
     residual->segment<3>(nd) += lambda.segment<3>(lo);
     const bool body = ce.kind == EndKind::kBody;
     if (body) residual->segment<3>(body_dof(ce.body)) -= lambda.segment<3>(lo);

@@ -23,6 +23,7 @@
 #include "core/cable_loads.h"
 #include "core/environment_field.h"
 #include "core/model.h"
+#include "core/state.h"
 
 namespace towsim::core {
 
@@ -59,11 +60,13 @@ class System {
 
   // Evaluates R and Phi; fills the Newton matrix when jac != nullptr. `load_scale` scales the
   // external loads (weight, buoyancy, drag) for the static load continuation. The waves come
-  // from `waves` (SampleWaves; nullptr: calm water); the current is evaluated here.
+  // from `waves` (SampleWaves; nullptr: calm water); the current is evaluated here. A cable end
+  // on a vehicle follows `supports[end]` (State::supports; required when an end is on one).
   void Evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
                 const Eigen::VectorXd& lambda, double t, double load_scale,
                 const JacobianCoefficients& coeffs, Eigen::VectorXd* residual, Eigen::VectorXd* phi,
-                BlockTridiagonal* jac, const WaveSamples* waves = nullptr) const;
+                BlockTridiagonal* jac, const WaveSamples* waves = nullptr,
+                const SupportMotion* supports = nullptr) const;
 
   // the sea every load reads (environment_field.h)
   const EnvironmentField& sea() const { return sea_; }
@@ -83,12 +86,11 @@ class System {
   Vec12 ElementCoordinates(const Eigen::VectorXd& q, int e) const {
     return q.segment<12>(cable_dof(e));
   }
-  // world position of the support of a cable end at time t (fixed / driven / body point)
-  Vec3 SupportPosition(int end, const Eigen::VectorXd& q, double t) const;
-  // Motion of a vehicle attachment point over the current step, set by the coupling scheme
-  // (vehicle_coupling.h) before the cable is solved: linear from p0 at t0 to p1 at t1. The
-  // vehicles are not unknowns of the cable's Newton solve; for it they are driven supports.
-  void SetVehicleSupport(int end, const Vec3& p0, double t0, const Vec3& p1, double t1);
+  // world position of the support of a cable end at time t (fixed / driven / body point; a
+  // vehicle point from `supports`, the motion the coupling scheme set for the step: the
+  // vehicles are not unknowns of the cable's Newton solve, for it they are driven supports)
+  Vec3 SupportPosition(int end, const Eigen::VectorXd& q, double t,
+                       const SupportMotion* supports) const;
 
   double KineticEnergy(const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
   double PotentialEnergy(const Eigen::VectorXd& q) const;
@@ -118,11 +120,6 @@ class System {
   int num_q_ = 0, num_lambda_ = 0, cable_offset_ = 0;
   int lambda_count_[2] = {0, 0};
   Eigen::Vector3d clamp_dirs_[2][2];  // two normals to the slope of a clamped end
-  struct VehicleSupport {
-    Vec3 p0 = Vec3::Zero(), p1 = Vec3::Zero();
-    double t0 = 0.0, t1 = 0.0;
-  };
-  VehicleSupport vehicle_support_[2];
   std::vector<int> block_sizes_, block_offsets_;
   std::vector<BlockIndex> q_index_, lambda_index_;
   std::vector<double> body_mass_eff_, body_drag_k_;  // m + C_a rho V, 1/2 rho C_D pi r^2

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -33,7 +34,6 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
                          .maxCoeff();
   }
   const size_t nv = system_->model().vehicles.size();
-  f_previous_.resize(nv);
   vehicles_.resize(nv);
   f0_.resize(nv);
   f1_.resize(nv);
@@ -57,23 +57,40 @@ Vec3 VehicleCoupling::JointForce(const State& state, int v) const {
   return f;
 }
 
-void VehicleCoupling::HoldSupports(const State& state) {
-  have_previous_ = false;
-  flow_time_ = -1.0;
-  previous_pass_ = state;  // sizes the work space (Step does not allocate)
+void VehicleCoupling::HoldSupports(State* state) {
+  const size_t nv = system_->model().vehicles.size();
+  CouplingHistory& history = state->coupling;
+  history.have_previous = false;
+  history.h_previous = 0.0;
+  history.f_previous.assign(nv, Vec3::Zero());
+  history.flow_time = -1.0;
+  history.flow_end.assign(nv, VehicleFlow());
   for (int e = 0; e < 2; ++e) {
+    state->supports[e] = SupportMotion();
     if (vehicle_end_[e] < 0) continue;
-    const Vec3 p = AttachmentPoint(state.vehicles[vehicle_end_[e]], e);
-    system_->SetVehicleSupport(e, p, state.t, p, state.t);
+    const Vec3 p = AttachmentPoint(state->vehicles[vehicle_end_[e]], e);
+    state->supports[e] = {p, p, state->t, state->t};
   }
+  SizeWorkSpace(*state);
 }
 
-StepStatus VehicleCoupling::Accept(const State& start, double h, StepStatus* status) {
-  // remember lambda_n for the next step's predictor
-  const int nv = static_cast<int>(f_previous_.size());
-  for (int v = 0; v < nv; ++v) f_previous_[v] = JointForce(start, v);
-  h_previous_ = h;
-  have_previous_ = true;
+void VehicleCoupling::SizeWorkSpace(const State& state) {
+  previous_pass_ = state;  // sizes the work space (Step does not allocate)
+  start_ = state;
+  newton_ = state.newton;
+}
+
+StepStatus VehicleCoupling::Accept(const State& start, double h, State* state, StepStatus* status) {
+  // remember lambda_n for the next step's predictor, and the water at the end of the step
+  CouplingHistory& history = state->coupling;
+  const int nv = static_cast<int>(history.f_previous.size());
+  for (int v = 0; v < nv; ++v) {
+    history.f_previous[v] = JointForce(start, v);
+    history.flow_end[v] = flow1_[v];
+  }
+  history.h_previous = h;
+  history.have_previous = true;
+  history.flow_time = start.t + h;
   return *status;
 }
 
@@ -93,10 +110,11 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   std::vector<Vec3>& residual = residual_;
   std::vector<Vec3>& residual_prev = residual_prev_;
   // predictor of lambda_{n+1}: linear extrapolation of the last two steps (strong scheme)
-  const bool predict = strong && have_previous_ && h_previous_ > 0.0;
+  const CouplingHistory& history = start_.coupling;
+  const bool predict = strong && history.have_previous && history.h_previous > 0.0;
   for (int v = 0; v < nv; ++v) {
     f0[v] = f1[v] = JointForce(start_, v);
-    if (predict) f1[v] += (h / h_previous_) * (f0[v] - f_previous_[v]);
+    if (predict) f1[v] += (h / history.h_previous) * (f0[v] - history.f_previous[v]);
   }
   // the water at each vehicle over the step (vehicle_coupling.h)
   const EnvironmentField& sea = system_->sea();
@@ -107,11 +125,11 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       flow0_[v] = flow1_[v] = UniformFlow(sea.uniform_current());
       continue;
     }
-    flow0_[v] = flow_time_ == t0 ? flow1_[v] : SampleVehicleFlow(vp, sea, vs.p_W, vs.q_WB, t0);
+    flow0_[v] = history.flow_time == t0 ? history.flow_end[v]
+                                        : SampleVehicleFlow(vp, sea, vs.p_W, vs.q_WB, t0);
     const Vec3 p1 = vs.p_W + h * (vs.q_WB * Vec3(vs.nu.head<3>()));
     flow1_[v] = SampleVehicleFlow(vp, sea, p1, vs.q_WB, t0 + h);
   }
-  flow_time_ = t0 + h;
   // the largest point compliance of a vehicle end: the force tolerance of the residual test
   double compliance = 0.0;
   for (int e = 0; e < 2; ++e) compliance = std::max(compliance, compliance_[e]);
@@ -135,6 +153,15 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       AdvanceVehicle(model.vehicles[v].params, model.environment, flow0_[v], flow1_[v], commands[v],
                      load, h, &vehicles[v], &sea);
     }
+    // later passes start the cable's Newton from the previous pass (its supports moved a
+    // little); a pass that needed substeps is no such guess
+    const bool warm = k > 1 && previous_pass_substeps_ == 1;
+    if (warm) previous_pass_ = *state;  // same sizes: copies in place
+    // every pass starts from the step's start, but the integrator's kept Newton matrix is the
+    // one the previous pass left (State::newton; swaps move buffers, no allocation)
+    std::swap(newton_, state->newton);
+    *state = start_;
+    if (k > 1) std::swap(newton_, state->newton);
     // the cable with the attachment points as driven supports
     double moved = 0.0;
     for (int e = 0; e < 2; ++e) {
@@ -144,13 +171,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       const Vec3 p1 = AttachmentPoint(vehicles[v], e);
       if (k > 1) moved = std::max(moved, (p1 - p_end_prev[e]).lpNorm<Eigen::Infinity>());
       p_end_prev[e] = p1;
-      system_->SetVehicleSupport(e, p0, t0, p1, t0 + h);
+      state->supports[e] = {p0, p1, t0, t0 + h};
     }
-    // later passes start the cable's Newton from the previous pass (its supports moved a
-    // little); a pass that needed substeps is no such guess
-    const bool warm = k > 1 && previous_pass_substeps_ == 1;
-    if (warm) previous_pass_ = *state;  // same sizes: copies in place
-    *state = start_;
     const StepStatus cable = integrator_->Step(state, h, warm ? &previous_pass_ : nullptr);
     previous_pass_substeps_ = cable.substeps;
     status.iterations += cable.iterations;
@@ -160,7 +182,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       status.code = cable.code;
       status.message = cable.message;
       *state = start_;
-      state->vehicles = start_.vehicles;
+      state->newton.valid = false;  // the integrator's cache is no longer start_'s matrix
       return status;
     }
     state->vehicles = vehicles;
@@ -174,7 +196,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       status.message = m.str();
       return status;
     }
-    if (!strong || (k > 1 && moved <= tol)) return Accept(start_, h, &status);
+    if (!strong || (k > 1 && moved <= tol)) return Accept(start_, h, state, &status);
     // Aitken-relaxed update of the joint force at t_{n+1}
     double num = 0.0, den = 0.0, r_max = 0.0;
     for (int v = 0; v < nv; ++v) {
@@ -187,7 +209,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       }
     }
     // the residual can no longer move an attachment point by the tolerance: converged
-    if (0.5 * h * h * compliance * r_max <= tol) return Accept(start_, h, &status);
+    if (0.5 * h * h * compliance * r_max <= tol) return Accept(start_, h, state, &status);
     if (k > 1 && den > 0.0) omega = std::clamp(-omega * num / den, 0.05, 1.5);
     for (int v = 0; v < nv; ++v) {
       f1[v] += omega * residual[v];

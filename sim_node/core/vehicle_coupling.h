@@ -42,9 +42,11 @@ class VehicleCoupling {
  public:
   VehicleCoupling(System* system, Integrator* integrator);
 
-  // sets the attachment points of the current state as the (static) supports; forgets the
-  // joint-force history of the predictor (the state may have been replaced)
-  void HoldSupports(const State& state);
+  // sets the attachment points of *state as its (static) supports and clears its coupling
+  // history (State::coupling): a state that starts a run
+  void HoldSupports(State* state);
+  // sizes the per-step work space like `state` (Step then does not allocate)
+  void SizeWorkSpace(const State& state);
   // one step of length h of cable and vehicles with the given vehicle commands
   StepStatus Step(State* state, const std::vector<VehicleCommand>& commands, double h);
   int last_iterations() const { return last_iterations_; }
@@ -55,29 +57,26 @@ class VehicleCoupling {
   Vec3 AttachmentPoint(const VehicleState& vs, int end) const;
 
  private:
-  // a converged step: keeps lambda_n (of `start`) and h for the next predictor
-  StepStatus Accept(const State& start, double h, StepStatus* status);
+  // a converged step: keeps lambda_n (of `start`), h and the water at the step's end in
+  // state->coupling for the next step
+  StepStatus Accept(const State& start, double h, State* state, StepStatus* status);
 
   System* system_;
   Integrator* integrator_;
   int vehicle_end_[2] = {-1, -1};      // vehicle index holding each cable end, or -1
   double compliance_[2] = {0.0, 0.0};  // largest eigenvalue of G at each vehicle end [1/kg]
   int last_iterations_ = 0;
-  // joint forces of the previous step and its length, for the predictor
-  bool have_previous_ = false;
-  double h_previous_ = 0.0;
-  std::vector<Vec3> f_previous_;
   // per-step work space, sized once: Step does not allocate
   State start_;
   State previous_pass_;  // the cable's solution of the previous strong-coupling pass
+  NewtonPoint newton_;   // the kept Newton matrix carried from pass to pass
   int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
   std::vector<Vec3> f0_, f1_, residual_, residual_prev_;
   // the water at each vehicle at the start and the end of the step (vehicle_model.h): sampled
   // once per step, the end at the pose predicted from the start (p + h R_WB nu_1); the end of
-  // one step is the start of the next (flow_time_ its time, < 0: none)
+  // one step is the start of the next (State::coupling.flow_end)
   std::vector<VehicleFlow> flow0_, flow1_;
-  double flow_time_ = -1.0;
 };
 
 }  // namespace towsim::core

@@ -5,6 +5,7 @@
 
 #include <Eigen/LU>
 
+#include "core/actuator.h"
 #include "core/environment_field.h"
 #include "core/gauss_quadrature.h"
 #include "core/lifting_surface.h"
@@ -15,12 +16,6 @@ namespace towsim::core {
 namespace {
 
 using Mat3 = Eigen::Matrix3d;
-
-// fin servo: delta_dot = clamp((clamp(cmd, +-max_deflection) - delta) / T_servo, +-max_rate),
-// a first-order servo with a rate limit; T_servo = 0.05 s is fast against every rigid-body
-// time constant (> 0.5 s) and keeps the right-hand side Lipschitz for RK4 (a pure rate limiter,
-// sign(cmd - delta) max_rate, chatters about the target)
-constexpr double kFinServoTimeConstant = 0.05;  // [s]
 
 // S(a) b = a x b
 Mat3 Skew(const Vec3& a) {
@@ -57,12 +52,6 @@ double Deflection(const VehicleState& s, Channel channel) {
       break;
   }
   return 0.0;
-}
-
-// rate-limited first-order fin servo (see kFinServoTimeConstant)
-double FinRate(const ActuatorLimits& lim, double cmd, double delta) {
-  const double target = std::clamp(cmd, -lim.max_deflection, lim.max_deflection);
-  return std::clamp((target - delta) / kFinServoTimeConstant, -lim.max_rate, lim.max_rate);
 }
 
 }  // namespace
@@ -253,13 +242,10 @@ VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const Ve
   rhs -= M2C(m_rb, s.nu) * s.nu;
   d.nu_dot = mass_lu.solve(rhs);
 
-  // actuators: thrust_dot = (clamp(cmd, [-max/4, max]) - thrust) / T; fins: rate-limited servo
-  if (p.has_propeller) {
-    const double target = std::clamp(cmd.thrust, -0.25 * p.max_thrust, p.max_thrust);
-    d.thrust_dot = (target - s.thrust) / p.thrust_time_constant;
-  }
-  d.rudder_dot = FinRate(p.rudder, cmd.rudder, s.rudder);
-  d.elevator_dot = FinRate(p.elevator, cmd.elevator, s.elevator);
+  // actuators (actuator.h): x_dot = clamp((clamp(u, range) - x) / T, +-max_rate)
+  if (p.has_propeller) d.thrust_dot = ThrustActuator(p).Rate(cmd.thrust, s.thrust);
+  d.rudder_dot = FinActuator(p.rudder).Rate(cmd.rudder, s.rudder);
+  d.elevator_dot = FinActuator(p.elevator).Rate(cmd.elevator, s.elevator);
   return d;
 }
 

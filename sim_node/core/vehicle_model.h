@@ -67,6 +67,7 @@ struct LiftingSurface {
   double deflection_sign = 1.0;    // +1 or -1: maps the channel command to alpha
 };
 
+// a fin channel's limits (its servo: actuator.h)
 struct ActuatorLimits {
   double max_deflection = 0.5236;  // [rad]
   double max_rate = 0.5236;        // [rad/s]
@@ -110,8 +111,9 @@ struct VehicleParams {
   std::vector<LiftingSurface> surfaces;  // fins and wings
   ActuatorLimits rudder, elevator;
   // propeller (towing vehicle only): thrust along +x_B through the origin, first-order lag
+  // (actuator.h, ThrustActuator)
   bool has_propeller = false;
-  double max_thrust = 0.0;             // [N] (commands clamped to [-max/4, max])
+  double max_thrust = 0.0;             // ahead limit [N] (the range: actuator.h)
   double thrust_time_constant = 1.0;   // [s]
 };
 

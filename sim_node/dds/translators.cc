@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "core/actuator.h"
 #include "towsim_msgs.h"
 
 namespace towsim::dds {
@@ -183,16 +184,16 @@ void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out) {
 }
 
 CommandLimits LimitsOf(const core::VehicleParams& params) {
+  // the actuators' ranges (core/actuator.h): the same the vehicle model clamps to
   CommandLimits limits;
-  if (params.has_propeller) {
-    limits.thrust_min = -0.25 * params.max_thrust;
-    limits.thrust_max = params.max_thrust;
-  }
+  const core::Actuator thrust = core::ThrustActuator(params);
+  limits.thrust_min = thrust.min;
+  limits.thrust_max = thrust.max;
   for (const core::LiftingSurface& s : params.surfaces) {
-    if (s.channel == core::Channel::kRudder) limits.rudder_max = params.rudder.max_deflection;
-    if (s.channel == core::Channel::kElevator) {
-      limits.elevator_max = params.elevator.max_deflection;
-    }
+    if (s.channel == core::Channel::kRudder)
+      limits.rudder_max = core::FinActuator(params.rudder).max;
+    if (s.channel == core::Channel::kElevator)
+      limits.elevator_max = core::FinActuator(params.elevator).max;
   }
   return limits;
 }

@@ -158,8 +158,9 @@ struct CommandLimits {
   double elevator_max = 0.0;                  // |elevator| [rad]
 };
 
-// from the vehicle model: thrust in [-max_thrust / 4, max_thrust] (as the propeller model
-// clamps), fins within +-max_deflection of each channel that drives a surface
+// the ranges of the vehicle's actuators (core/actuator.h): thrust in
+// [-max_thrust / 4, max_thrust], fins within +-max_deflection of each channel that drives a
+// surface
 CommandLimits LimitsOf(const core::VehicleParams& params);
 
 // whether a vehicle takes commands at all (a propeller, or a surface on a channel)

@@ -7,6 +7,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "core/actuator.h"
+
 namespace towsim::scene::internal {
 namespace {
 
@@ -204,10 +206,10 @@ void CheckThrust(const Field& field, double thrust, const core::Vehicle& vehicle
     }
     return;
   }
-  const double lo = -0.25 * p.max_thrust;
-  if (thrust < lo || thrust > p.max_thrust) {
-    field.Fail("must be in [-max_thrust/4, max_thrust] = [" + FormatNumber(lo) + ", " +
-               FormatNumber(p.max_thrust) + "] N for " + vehicle.name);
+  const core::Actuator propeller = core::ThrustActuator(p);  // its range (actuator.h)
+  if (thrust < propeller.min || thrust > propeller.max) {
+    field.Fail("must be in [-max_thrust/4, max_thrust] = [" + FormatNumber(propeller.min) + ", " +
+               FormatNumber(propeller.max) + "] N for " + vehicle.name);
   }
 }
 

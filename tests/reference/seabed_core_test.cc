@@ -106,7 +106,7 @@ TEST(SeabedCore, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight) {
     laid.v.segment<3>(sim.cable_dof(n)) = Vec3(kSpeed, 0.0, 0.0);
     laid.v.segment<3>(sim.cable_dof(n) + 3).setZero();
   }
-  sim.SetState(laid);
+  sim.StartFrom(laid);
   for (int i = 0; i < 400; ++i) ASSERT_TRUE(sim.Step().ok());  // 20 s: the start-up's
   // elastic waves have died out (the pull settles to 1e-5 by then)
   const double pull = -sim.end_force(0).x();  // the force on the cable from its driven end

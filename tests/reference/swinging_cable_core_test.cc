@@ -6,7 +6,7 @@
 // clamped) at the origin, free end; loads: gravity and bending only. Released from rest,
 // straight and horizontal along +x. The core builds a free-ended cable hanging vertically
 // whatever the requested shape (initial_shape.cc: a free end has no position to aim at), so
-// the horizontal start is set with SetState: r_i = (X_i, 0, 0), r'_i = (1, 0, 0), v = 0.
+// the horizontal start is set with StartFrom: r_i = (X_i, 0, 0), r'_i = (1, 0, 0), v = 0.
 //
 // The energy scale is the potential-energy swing from horizontal to hanging,
 // dPE = rho A g L^2 / 2 = 77.0 J.
@@ -79,7 +79,7 @@ core::Simulation Released(const core::Model& m) {
   }
   s.v.setZero();
   s.t = 0.0;
-  sim.SetState(s);
+  sim.StartFrom(s);
   return sim;
 }
 

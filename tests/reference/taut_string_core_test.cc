@@ -4,7 +4,7 @@
 // L = 10 m unstretched between pins 10.1 m apart (straight initial shape, uniform Green strain
 // 0.01005), no weight, buoyancy, drag, added mass or bending. EA = 1e4 N and rho A = 0.1 kg/m
 // give T = 101.505 N and f1 = 1.585087 Hz. The string is set moving with a small half-sine
-// transverse velocity through SetState, and the frequency is read from the zero crossings of
+// transverse velocity through StartFrom, and the frequency is read from the zero crossings of
 // the middle node's transverse displacement over 5 periods (trapezoidal rule, h = 1e-3 s).
 
 #include <cmath>
@@ -90,7 +90,7 @@ TEST(TautStringCore, FirstFrequency) {
     s.v.segment<3>(k) = v0 * std::sin(kPi * x / kLength) * Vec3::UnitZ();
     s.v.segment<3>(k + 3) = v0 * (kPi / kLength) * std::cos(kPi * x / kLength) * Vec3::UnitZ();
   }
-  sim.SetState(s);
+  sim.StartFrom(s);
 
   std::vector<double> t = {sim.time()};
   std::vector<double> z = {sim.node_position(mid).z()};

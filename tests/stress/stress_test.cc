@@ -17,6 +17,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/actuator.h"
 #include "core/simulation.h"
 #include "stress_run.h"
 #include "towed_cable_steady_core.h"
@@ -190,7 +191,7 @@ TEST(StressSlackThenSnap, Case1) {
   constexpr double kSettle = 60.0, kStop = 30.0, kMaxAstern = 60.0, kSnap = 60.0;  // [s]
   constexpr double kSlackTension = 0.0;  // [N] slack: no tension (or pushing)
   const core::Model model = LoadShippedScene("case1_forward.yaml", {});
-  const double astern = -0.25 * model.vehicles.at(0).params.max_thrust;
+  const double astern = core::ThrustActuator(model.vehicles.at(0).params).min;  // full astern
   Simulation sim(model);
   const StressResult settle = RunStress(&sim, kSettle);
   Print("case 1, settle", settle);
@@ -383,7 +384,8 @@ TEST(StressRandom, TenThousandStepsOfRandomCommands) {
   core::VehicleCommand c{4165.0, 0.0, 0.0};
   double thrust_min = 0, thrust_max = 0, rudder_max = 0, elevator_max = 0;
   const StressResult r = RunStress(&sim, kSteps * model.time.step, [&](Simulation* s, long) {
-    c.thrust = std::clamp(c.thrust + d_thrust(rng), -0.25 * p.max_thrust, p.max_thrust);
+    c.thrust += d_thrust(rng);
+    core::ThrustActuator(p).Clamp(&c.thrust);
     c.rudder = std::clamp(c.rudder + d_fin(rng), -p.rudder.max_deflection, p.rudder.max_deflection);
     c.elevator =
         std::clamp(c.elevator + d_fin(rng), -p.elevator.max_deflection, p.elevator.max_deflection);

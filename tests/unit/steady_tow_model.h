@@ -30,4 +30,46 @@ inline core::Model SteadyTowModel() {
   return m;
 }
 
+// the steady tow pulled by a towing vehicle (no hydrodynamic coefficients: none are needed to
+// exercise the coupling) instead of the driven point
+inline core::Model SteadyTowWithVehicle(core::Coupling coupling) {
+  core::Model m = SteadyTowModel();
+  m.integrator.coupling = coupling;
+  m.cable.start.kind = core::EndKind::kVehicle;
+  m.cable.start.body = 0;
+  m.cable.start.at_B = core::Vec3(0, 0, 0.2);
+  core::Vehicle v;
+  v.name = "tow_vehicle";
+  v.params.mass = 6950;
+  v.params.inertia = core::Vec3(397, 3970, 3069);
+  v.params.r_g = core::Vec3(0, 0, 0.2);
+  v.params.volume = 6950 / 1025.0;
+  v.params.added_mass.diagonal() << 217, 8280, 8280, 624, 43263, 43263;
+  v.params.x_uu = -35;
+  v.params.has_propeller = true;
+  v.params.max_thrust = 20000;
+  v.position = core::Vec3(0, 0, 3.3);
+  v.nu(0) = 6.0;
+  v.command.thrust = 4000;
+  m.vehicles.push_back(v);
+  return m;
+}
+
+// the whole sea around a scene: an irregular sea, a sheared current and a seabed
+inline core::Model InASea(core::Model m) {
+  core::Environment& env = m.environment;
+  env.current = core::CurrentField::Profile(
+      {{0.0, core::Vec3(0.5, 0.2, 0.0)}, {100.0, core::Vec3(0.1, 0.0, 0.0)}});
+  core::WaveSpectrum spectrum;
+  spectrum.hs = 2.0;
+  spectrum.tp = 8.0;
+  spectrum.components = 100;
+  env.waves = core::WaveField::Irregular(spectrum, 250.0, env.gravity, env.water_density);
+  env.seabed = core::Seabed::Flat(250.0);
+  core::SeabedContact contact;
+  contact.friction = 0.5;
+  env.seabed.set_contact(contact);
+  return m;
+}
+
 }  // namespace towsim::test

@@ -1,0 +1,128 @@
+// Simulation's state is complete (state.h): a run continued from a state taken with GetState
+// and restored with SetState, in the same or in a fresh Simulation of the same Model, is bit
+// for bit the run that never stopped. The reference is that uninterrupted run itself; the
+// tolerance is zero (every double compared exactly). That the history in the state matters is
+// shown by StartFrom, which keeps q and v but clears the history: its continuation differs.
+
+#include "core/simulation.h"
+
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/state.h"
+#include "steady_tow_model.h"
+
+namespace towsim::core {
+namespace {
+
+using test::InASea;
+using test::SteadyTowModel;
+using test::SteadyTowWithVehicle;
+
+constexpr int kBefore = 40;  // steps before the state is taken (the kept Newton matrix and
+                             // the coupling predictor are in use by then)
+constexpr int kAfter = 40;   // steps continued from it
+
+void StepN(Simulation* sim, int steps) {
+  for (int k = 0; k < steps; ++k) ASSERT_TRUE(sim->Step().ok()) << "step " << k;
+}
+
+// every number a step produces, compared exactly
+void ExpectBitIdentical(const Simulation& a, const Simulation& b) {
+  const State& x = a.state();
+  const State& y = b.state();
+  EXPECT_EQ(x.t, y.t);
+  EXPECT_EQ(x.step, y.step);
+  ASSERT_EQ(x.q.size(), y.q.size());
+  for (int i = 0; i < x.q.size(); ++i) {
+    ASSERT_EQ(x.q(i), y.q(i)) << "q(" << i << ")";
+    ASSERT_EQ(x.v(i), y.v(i)) << "v(" << i << ")";
+    ASSERT_EQ(x.a(i), y.a(i)) << "a(" << i << ")";
+  }
+  for (int i = 0; i < x.lambda.size(); ++i) ASSERT_EQ(x.lambda(i), y.lambda(i)) << "lambda";
+  ASSERT_EQ(x.vehicles.size(), y.vehicles.size());
+  for (size_t v = 0; v < x.vehicles.size(); ++v) {
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(x.vehicles[v].p_W(i), y.vehicles[v].p_W(i));
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(x.vehicles[v].nu(i), y.vehicles[v].nu(i));
+    EXPECT_EQ(x.vehicles[v].q_WB.coeffs(), y.vehicles[v].q_WB.coeffs());
+    EXPECT_EQ(x.vehicles[v].thrust, y.vehicles[v].thrust);
+  }
+}
+
+// the uninterrupted run against one restored into a fresh Simulation and one restored into
+// the same Simulation after it had run on
+void ExpectRoundTrip(const Model& model) {
+  Simulation straight(model);
+  StepN(&straight, kBefore + kAfter);
+
+  Simulation first(model);
+  StepN(&first, kBefore);
+  const State taken = first.GetState();
+  StepN(&first, 7);  // runs on: its caches (Newton matrix, coupling history) move on
+
+  Simulation fresh(model);
+  fresh.SetState(taken);
+  StepN(&fresh, kAfter);
+  ExpectBitIdentical(straight, fresh);
+
+  first.SetState(taken);
+  StepN(&first, kAfter);
+  ExpectBitIdentical(straight, first);
+}
+
+TEST(SimulationState, RoundTripCableWithASphere) { ExpectRoundTrip(SteadyTowModel()); }
+TEST(SimulationState, RoundTripVehicleStrongCoupling) {
+  ExpectRoundTrip(SteadyTowWithVehicle(Coupling::kStrong));
+}
+TEST(SimulationState, RoundTripVehicleStaggeredCoupling) {
+  ExpectRoundTrip(SteadyTowWithVehicle(Coupling::kStaggered));
+}
+TEST(SimulationState, RoundTripVehicleInASea) {
+  ExpectRoundTrip(InASea(SteadyTowWithVehicle(Coupling::kStrong)));
+}
+
+// the history matters: restarting from the same q, v without it (StartFrom) gives another run
+TEST(SimulationState, HistoryIsPartOfTheState) {
+  const Model model = SteadyTowWithVehicle(Coupling::kStrong);
+  Simulation straight(model);
+  StepN(&straight, kBefore + kAfter);
+  Simulation restarted(model);
+  StepN(&restarted, kBefore);
+  restarted.StartFrom(restarted.GetState());
+  StepN(&restarted, kAfter);
+  EXPECT_NE((straight.state().q - restarted.state().q).lpNorm<Eigen::Infinity>(), 0.0);
+}
+
+std::string SetStateError(const Model& model, const State& s) {
+  Simulation sim(model);
+  try {
+    sim.SetState(s);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(accepted)";
+}
+
+TEST(SimulationState, WrongShapeIsRejected) {
+  const Model model = SteadyTowWithVehicle(Coupling::kStrong);
+  Model longer = model;
+  longer.cable.elements = 21;
+  const State other = Simulation(longer).GetState();
+  EXPECT_EQ(SetStateError(model, other),
+            "SetState: q has 135 entries, this model needs 129 (3 per sphere body and 6 per cable "
+            "node: 1 bodies, 21 nodes)");
+  State s = Simulation(model).GetState();
+  s.vehicles.clear();
+  EXPECT_EQ(SetStateError(model, s),
+            "SetState: vehicles has 0 entries, this model needs 1 (one per scene vehicle)");
+  s = Simulation(model).GetState();
+  s.lambda.resize(5);
+  EXPECT_EQ(SetStateError(model, s),
+            "SetState: lambda has 5 entries, this model needs 6 (3 per held cable end, 2 more "
+            "per clamped end)");
+}
+
+}  // namespace
+}  // namespace towsim::core
