@@ -3,11 +3,9 @@
 // EIGEN_RUNTIME_NO_MALLOC and asserts on, so an Eigen heap allocation aborts; std containers
 // are caught by counting the global operator new while the queries run.
 
-#include <atomic>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <new>
 
 #include <Eigen/Core>
 #include <gtest/gtest.h>
@@ -15,19 +13,7 @@
 #include "core/current_field.h"
 #include "core/seabed.h"
 #include "core/wave_field.h"
-
-namespace {
-std::atomic<long> g_news{0};
-std::atomic<bool> g_counting{false};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  if (g_counting.load()) ++g_news;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "counting_new.h"
 
 namespace towsim::core {
 namespace {

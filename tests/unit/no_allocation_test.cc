@@ -5,9 +5,7 @@
 // a step of the cable alone, of a sphere-ended tow and of vehicles with either coupling must
 // not allocate at all, also after a state was restored with SetState.
 
-#include <atomic>
 #include <cstdlib>
-#include <new>
 
 #include <Eigen/Core>
 #include <gtest/gtest.h>
@@ -15,19 +13,7 @@
 #include "core/simulation.h"
 #include "core/state.h"
 #include "steady_tow_model.h"
-
-namespace {
-std::atomic<long> g_news{0};
-std::atomic<bool> g_counting{false};
-}  // namespace
-
-void* operator new(std::size_t n) {
-  if (g_counting.load()) ++g_news;
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "counting_new.h"
 
 namespace towsim::core {
 namespace {

@@ -1,0 +1,22 @@
+#pragma once
+// Replaces the global operator new with one that counts its calls while g_counting is set, so a
+// test can assert that a piece of code does not allocate through std containers (Eigen's own
+// allocations are caught by EIGEN_RUNTIME_NO_MALLOC). Include it in exactly one translation
+// unit of a test executable: the replacement functions are defined here.
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> g_news{0};
+std::atomic<bool> g_counting{false};
+}  // namespace
+
+void* operator new(std::size_t n) {
+  if (g_counting.load()) ++g_news;
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
