@@ -103,24 +103,17 @@ int Bad(const std::string& message) {
 // "" on success, else the error
 std::string Parse(int argc, char** argv, Options* o, bool* help) {
   towsim::app::ToolFlags flags(argc, argv);
+  const towsim::app::DdsToolFields dds_fields{&o->domain, &o->ns, &o->security, &o->quiet,
+                                              &o->has_domain};
   while (flags.Next()) {
     const std::string& arg = flags.arg();
     std::string v;
+    if (std::string e; towsim::app::ReadDdsToolOption(flags, dds_fields, &e)) {
+      if (!e.empty()) return e;
+      continue;
+    }
     if (arg == "--help" || arg == "-h") {
       *help = true;
-    } else if (arg == "--quiet") {
-      o->quiet = true;
-    } else if (arg == "--security") {
-      if (!flags.Value(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
-    } else if (arg == "--domain") {
-      if (!flags.Value(&v)) return "--domain needs a value";
-      if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
-      o->has_domain = true;
-    } else if (arg == "--namespace") {
-      if (!flags.Value(&o->ns)) return "--namespace needs a value";
-      if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
-        return "--namespace " + o->ns + ": " + e;
-      }
     } else if (arg == "--port") {
       if (!flags.Value(&v)) return "--port needs a value";
       char* end = nullptr;

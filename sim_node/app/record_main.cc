@@ -96,27 +96,20 @@ int Bad(const std::string& message) {
 // "" on success, else the error
 std::string Parse(int argc, char** argv, Options* o, bool* help) {
   towsim::app::ToolFlags flags(argc, argv);
+  const towsim::app::DdsToolFields dds_fields{&o->domain, &o->ns, &o->security, &o->quiet};
   while (flags.Next()) {
     const std::string& arg = flags.arg();
     std::string v;
+    if (std::string e; towsim::app::ReadDdsToolOption(flags, dds_fields, &e)) {
+      if (!e.empty()) return e;
+      continue;
+    }
     if (arg == "--help" || arg == "-h") {
       *help = true;
-    } else if (arg == "--quiet") {
-      o->quiet = true;
     } else if (arg == "--overwrite") {
       o->overwrite = true;
-    } else if (arg == "--security") {
-      if (!flags.Value(&o->security) || o->security.empty()) return "--security needs DIR/NAME";
     } else if (arg == "--output") {
       if (!flags.Value(&o->output)) return "--output needs a value";
-    } else if (arg == "--namespace") {
-      if (!flags.Value(&o->ns)) return "--namespace needs a value";
-      if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
-        return "--namespace " + o->ns + ": " + e;
-      }
-    } else if (arg == "--domain") {
-      if (!flags.Value(&v)) return "--domain needs a value";
-      if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
     } else if (arg == "--duration") {
       if (!flags.Value(&v)) return "--duration needs a value";
       char* end = nullptr;

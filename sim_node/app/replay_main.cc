@@ -110,16 +110,16 @@ bool Number(const std::string& v, double* out) {
 
 std::string Parse(int argc, char** argv, Options* o, bool* help) {
   towsim::app::ToolFlags flags(argc, argv);
+  const towsim::app::DdsToolFields dds_fields{&o->domain, &o->ns, &o->security, &o->quiet};
   while (flags.Next()) {
     const std::string& arg = flags.arg();
     std::string v;
+    if (std::string e; towsim::app::ReadDdsToolOption(flags, dds_fields, &e)) {
+      if (!e.empty()) return e;
+      continue;
+    }
     if (arg == "--help" || arg == "-h") {
       *help = true;
-    } else if (arg == "--quiet") {
-      o->quiet = true;
-    } else if (arg == "--security") {
-      if (!flags.Value(&v) || v.empty()) return "--security needs DIR/NAME";
-      o->security = v;
     } else if (arg == "--loop") {
       o->loop = true;
     } else if (arg == "--recover") {
@@ -138,14 +138,6 @@ std::string Parse(int argc, char** argv, Options* o, bool* help) {
       if (!flags.Value(&v)) return "--delay needs a value";
       if (!Number(v, &o->delay) || o->delay < 0.0) {
         return "--delay " + v + ": must be a number >= 0 [s]";
-      }
-    } else if (arg == "--domain") {
-      if (!flags.Value(&v)) return "--domain needs a value";
-      if (const std::string e = towsim::app::ParseDomain(v, &o->domain); !e.empty()) return e;
-    } else if (arg == "--namespace") {
-      if (!flags.Value(&o->ns)) return "--namespace needs a value";
-      if (const std::string e = dds::CheckNamespace(o->ns); !e.empty()) {
-        return "--namespace " + o->ns + ": " + e;
       }
     } else if (arg == "--topics") {
       for (const std::string& t : towsim::app::TopicList(flags.List())) o->topics.push_back(t);

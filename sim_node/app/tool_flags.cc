@@ -2,6 +2,8 @@
 
 #include <cstdlib>
 
+#include "dds/topic_names.h"
+
 namespace towsim::app {
 
 bool ToolFlags::Next() {
@@ -61,6 +63,36 @@ std::vector<std::string> TopicList(const std::vector<std::string>& values) {
   std::vector<std::string> out;
   for (const std::string& t : values) out.push_back(t[0] == '/' ? t : "/" + t);
   return out;
+}
+
+bool ReadDdsToolOption(ToolFlags& flags, const DdsToolFields& f, std::string* error) {
+  const std::string& arg = flags.arg();
+  std::string v;
+  if (arg == "--quiet") {
+    *f.quiet = true;
+  } else if (arg == "--security") {
+    if (!flags.Value(&v) || v.empty()) {
+      *error = "--security needs DIR/NAME";
+    } else {
+      *f.security = v;
+    }
+  } else if (arg == "--domain") {
+    if (!flags.Value(&v)) {
+      *error = "--domain needs a value";
+    } else {
+      *error = ParseDomain(v, f.domain);
+      if (error->empty() && f.has_domain != nullptr) *f.has_domain = true;
+    }
+  } else if (arg == "--namespace") {
+    if (!flags.Value(f.ns)) {
+      *error = "--namespace needs a value";
+    } else if (const std::string e = dds::CheckNamespace(*f.ns); !e.empty()) {
+      *error = "--namespace " + *f.ns + ": " + e;
+    }
+  } else {
+    return false;
+  }
+  return true;
 }
 
 }  // namespace towsim::app

@@ -3,6 +3,7 @@
 
 #include "app/tool_flags.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -65,6 +66,47 @@ TEST(ToolFlagsTest, DomainIsAnIntegerFrom0To232) {
               std::string("--domain ") + bad + ": must be an integer from 0 to 232");
   }
   EXPECT_EQ(d, 232u);  // unchanged by a bad value
+}
+
+// the options every DDS tool shares: read into the tool's fields; other arguments left alone
+TEST(ToolFlagsTest, SharedDdsOptionsAreReadIntoTheToolsFields) {
+  std::vector<std::string> args = {
+      "tool",        "--domain=9", "--namespace", "/sys_a",   "--security",
+      "keys/ctl",    "--quiet",    "file.mcap",   "--domain", "300",
+      "--namespace", "no slash",   "--security",  ""};
+  std::vector<char*> argv = Argv(args);
+  ToolFlags f(static_cast<int>(argv.size()), argv.data());
+  uint32_t domain = 0;
+  std::string ns, security;
+  bool quiet = false, has_domain = false;
+  const DdsToolFields fields{&domain, &ns, &security, &quiet, &has_domain};
+  std::string error;
+  for (int i = 0; i < 4; ++i) {
+    ASSERT_TRUE(f.Next());
+    EXPECT_TRUE(ReadDdsToolOption(f, fields, &error)) << f.arg();
+    EXPECT_EQ(error, "") << f.arg();
+  }
+  EXPECT_EQ(domain, 9u);
+  EXPECT_TRUE(has_domain);
+  EXPECT_EQ(ns, "/sys_a");
+  EXPECT_EQ(security, "keys/ctl");
+  EXPECT_TRUE(quiet);
+  ASSERT_TRUE(f.Next());
+  EXPECT_FALSE(ReadDdsToolOption(f, fields, &error));  // a positional argument
+  EXPECT_EQ(error, "");
+  ASSERT_TRUE(f.Next());
+  EXPECT_TRUE(ReadDdsToolOption(f, fields, &error));
+  EXPECT_EQ(error, ParseDomain("300", &domain));  // the domain's own rule
+  EXPECT_NE(error, "");
+  error.clear();
+  ASSERT_TRUE(f.Next());
+  EXPECT_TRUE(ReadDdsToolOption(f, fields, &error));
+  EXPECT_EQ(error.rfind("--namespace no slash: ", 0), 0u) << error;
+  error.clear();
+  ASSERT_TRUE(f.Next());
+  EXPECT_TRUE(ReadDdsToolOption(f, fields, &error));
+  EXPECT_EQ(error, "--security needs DIR/NAME");
+  EXPECT_FALSE(f.Next());
 }
 
 }  // namespace
