@@ -55,7 +55,7 @@ std::string CsvField(const std::string& name);
 
 // appends `x` to `line` as printf's "%.9g" writes it (9 significant digits, the shorter of
 // fixed and exponent form, trailing zeros dropped), by std::to_chars, which the standard
-// defines as printf in the "C" locale: the same bytes at a seventh of the instructions
+// defines as printf in the "C" locale: the same bytes for a third of the instructions
 // (docs/benchmarks.md, "Start-up")
 void AppendCsvNumber(double x, std::string* line);
 
