@@ -145,10 +145,10 @@ int main(int argc, char** argv) {
   if (duration < 0.0) duration = model.time.duration;
   char duration_text[32];
   std::snprintf(duration_text, sizeof duration_text, "%.17g", duration);
-  const std::vector<std::string> run = {sim_node, "--scene", scene, "--mode", "offline",
-                                        "--duration", duration_text};
-  const std::vector<std::string> start = {sim_node, "--scene", scene, "--mode", "offline",
-                                          "--duration", "0"};
+  const std::vector<std::string> run = {sim_node,  "--scene",    scene,        "--mode",
+                                        "offline", "--duration", duration_text};
+  const std::vector<std::string> start = {sim_node,  "--scene",    scene, "--mode",
+                                          "offline", "--duration", "0"};
   const std::vector<std::string> version = {sim_node, "--version"};
 
   Cost in_process, whole, startup, loading;

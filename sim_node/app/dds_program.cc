@@ -28,7 +28,8 @@ int ExecDdsProgram(Mode mode, char** argv) {
   std::error_code ec;
   const fs::path exe = fs::canonical("/proc/self/exe", ec);
   if (ec) {
-    std::fprintf(stderr, "sim_node: error: --mode %s: cannot find this program (/proc/self/exe: %s)\n",
+    std::fprintf(stderr,
+                 "sim_node: error: --mode %s: cannot find this program (/proc/self/exe: %s)\n",
                  ModeName(mode), ec.message().c_str());
     return 1;
   }
@@ -42,10 +43,11 @@ int ExecDdsProgram(Mode mode, char** argv) {
     }
     looked += (looked.empty() ? "" : ", ") + program.string();
   }
-  std::fprintf(stderr,
-               "sim_node: error: --mode %s: the DDS modes run in %s, which is not installed (looked "
-               "for %s); --mode offline needs no DDS\n",
-               ModeName(mode), kDdsProgramName, looked.c_str());
+  std::fprintf(
+      stderr,
+      "sim_node: error: --mode %s: the DDS modes run in %s, which is not installed (looked "
+      "for %s); --mode offline needs no DDS\n",
+      ModeName(mode), kDdsProgramName, looked.c_str());
   return 1;
 }
 

@@ -20,8 +20,7 @@ namespace towsim::app {
 
 // runs a DDS mode in this process: the scene's model (its duration already set from
 // --duration), the options and the CSV writer (null without --csv); returns the exit code
-using DdsModeRunner = int (*)(const core::Model& model, const Options& options,
-                              io::CsvWriter* csv);
+using DdsModeRunner = int (*)(const core::Model& model, const Options& options, io::CsvWriter* csv);
 
 // the whole program: returns its exit code. `run_dds` null (sim_node): a DDS mode execs the
 // DDS program before the scene is read; else (sim_node_dds) a DDS mode runs through it.

@@ -1,7 +1,7 @@
 #include "io/csv_writer.h"
 
-#include <charconv>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <filesystem>

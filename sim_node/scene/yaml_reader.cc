@@ -120,7 +120,7 @@ bool ReadTextFile(const std::string& path, std::string* text, std::string* why) 
     buffer.resize(std::min<size_t>(old_size + wanted, kMaxTextFileBytes + 1));
     in.read(buffer.data() + old_size, static_cast<std::streamsize>(buffer.size() - old_size));
     buffer.resize(old_size + static_cast<size_t>(in.gcount()));
-    if (!in) break;  // end of file (or a read error: the bytes read so far)
+    if (!in) break;          // end of file (or a read error: the bytes read so far)
     wanted = buffer.size();  // grew while read: double the buffer
   }
   if (buffer.size() > kMaxTextFileBytes) {

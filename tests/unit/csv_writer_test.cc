@@ -390,13 +390,14 @@ TEST(AppendCsvNumber, SameBytesAsPrintf) {
       return bits;
     }();
   };
-  for (double x : {0.0, -0.0, 1.0, -1.0, 0.1, 0.05, 100.0, 123456789.0, 1234567890.0, 1e9, 1e-5,
-                   1e-4, 9.99999999e-5, 999999999.5, 0.000123456789, 5e-324, 2.2250738585072014e-308,
-                   1.7976931348623157e308, std::numeric_limits<double>::infinity(),
-                   -std::numeric_limits<double>::infinity(),
-                   std::numeric_limits<double>::quiet_NaN()}) {
-    check(x);
-  }
+  const double kInf = std::numeric_limits<double>::infinity();
+  const double kNaN = std::numeric_limits<double>::quiet_NaN();
+  // clang-format off
+  const double kEdges[] = {0.0, -0.0, 1.0, -1.0, 0.1, 0.05, 100.0, 123456789.0, 1234567890.0,
+                           1e9, 1e-5, 1e-4, 9.99999999e-5, 999999999.5, 0.000123456789, 5e-324,
+                           2.2250738585072014e-308, 1.7976931348623157e308, kInf, -kInf, kNaN};
+  // clang-format on
+  for (double x : kEdges) check(x);
   std::mt19937_64 random(20261201);  // seeded: the same numbers every run
   std::uniform_real_distribution<double> exponent(-12.0, 12.0);
   for (int i = 0; i < 100000; ++i) {

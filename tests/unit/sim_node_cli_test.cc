@@ -466,8 +466,8 @@ TEST(SimNodeCliTest, OfflineLoadsNoDdsLibrary) {
   fs::create_directories(logs);
   ::setenv("LD_DEBUG", "libs", 1);
   ::setenv("LD_DEBUG_OUTPUT", (logs / "libs").c_str(), 1);
-  const SimNodeResult r = RunSimNode(
-      {"--scene", (tmp.path() / "good.yaml").string(), "--mode", "offline"}, tmp.path());
+  const SimNodeResult r =
+      RunSimNode({"--scene", (tmp.path() / "good.yaml").string(), "--mode", "offline"}, tmp.path());
   ::unsetenv("LD_DEBUG");
   ::unsetenv("LD_DEBUG_OUTPUT");
   EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -502,11 +502,11 @@ TEST(SimNodeCliTest, DdsModesRunInTheDdsProgram) {
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 1);
   const std::string err = ReadFile(tmp.path() / "err.txt");
-  EXPECT_NE(err.find("sim_node: error: --mode fast: the DDS modes run in sim_node_dds, which is "
-                     "not installed (looked for " +
-                     (bin / "sim_node_dds").string() + ", " +
-                     (libexec / "sim_node_dds").string() + ")"),
-            std::string::npos)
+  EXPECT_NE(
+      err.find("sim_node: error: --mode fast: the DDS modes run in sim_node_dds, which is "
+               "not installed (looked for " +
+               (bin / "sim_node_dds").string() + ", " + (libexec / "sim_node_dds").string() + ")"),
+      std::string::npos)
       << err;
 
   fs::create_directories(libexec);
