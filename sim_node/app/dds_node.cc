@@ -44,8 +44,8 @@ constexpr int kExitStoppedInSetup = -1;  // Setup(): a signal stopped it (Run() 
 constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
 constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
 constexpr double kLockstepHintAfter = 5.0;  // say what lockstep waits for after [s]
-// lockstep: a vehicle never heard from is waited for this long, then failsafe (README "DDS
-// node"; --wait-for-controllers waits without limit before the first step) [s]
+// lockstep: a vehicle never heard from is waited for this long, then failsafe (docs/topics.md,
+// "Commands and lockstep"; --wait-for-controllers waits without limit before the first step) [s]
 constexpr double kLockstepStartTimeout = 30.0;
 constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
 constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
@@ -245,7 +245,7 @@ int DdsNode::Setup() {
     std::vector<std::string> commanded;
     for (int i = 0; i < arbiter_->size(); ++i) commanded.push_back(arbiter_->vehicle(i).name);
     unknown_ = std::make_unique<UnknownCommands>(*participant_, opt_.ns, commanded);
-    // another node in this domain and namespace: refused (README "DDS node"); nothing of
+    // another node in this domain and namespace: refused (docs/topics.md); nothing of
     // this node is published yet
     peers_ = std::make_unique<PeerNodes>(*participant_, dds::TopicNames(opt_.ns));
     if (peers_->WaitForAny(PeerNodes::kStartWindow, [] { return StopRequested() != 0; })) {
@@ -328,8 +328,8 @@ int DdsNode::Run() {
     if (realtime()) pacer_.Start(period());
     exit_code = Loop(&end_state);
   } catch (const io::OutputError& e) {
-    // an output failed (README "Exit codes"): the run ends, FAILED with the reason, and what
-    // still works (DDS, the other output) ends cleanly
+    // an output failed (docs/command_line.md "Exit codes"): the run ends, FAILED with the
+    // reason, and what still works (DDS, the other output) ends cleanly
     exit_code = kExitError;
     end_state = kFailed;
     failure_ = std::string("output failed: ") + e.what();
@@ -457,7 +457,7 @@ void DdsNode::PublishStatus(uint8_t state) {
   s.commands_clamped = arbiter_->clamped();
   s.lockstep_timeouts = arbiter_->lockstep_timeouts();
   if (peers_ && peers_->Poll()) {
-    // one that appeared while this node runs: both go on, warned (README "DDS node")
+    // one that appeared while this node runs: both go on, warned (docs/topics.md)
     peer_note_ = "warning: another node runs on DDS domain " + std::to_string(opt_.domain) +
                  ", namespace " + opt_.ns + " (" + peers_->Names() + ")";
     std::fprintf(stderr, "sim_node: %s\n", peer_note_.c_str());
