@@ -6,6 +6,10 @@
 #                           docs/figures/work_precision_*.png and prints the Pareto fronts
 #   bench/run.sh targets    the shipped scenes at their own settings: real-time factor and the
 #                           towfish-track error against a run 4x finer (issue 7's targets)
+#   bench/run.sh startup [SIM_NODE] [ARGS]
+#                           sim_node offline as a whole process against its stepping loop in
+#                           process (Case 1, 100 s, 10 pairs; ~5 s): both RTFs and their ratio
+#                           (docs/benchmarks.md, "Start-up"); SIM_NODE defaults to the build's
 # BUILD_DIR=dir selects another build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,6 +24,13 @@ case "${1:-}" in
   targets)
     need work_precision
     exec "$build/bench/work_precision" --targets
+    ;;
+  startup)
+    need startup_cost
+    shift
+    sim_node="$build/sim_node/app/sim_node"
+    if [[ $# -gt 0 && "$1" != --* ]]; then sim_node="$1"; shift; fi
+    exec "$build/bench/startup_cost" "$sim_node" "$@"
     ;;
   *)
     need cable_bench

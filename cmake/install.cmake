@@ -1,5 +1,6 @@
 # cmake --install build --prefix P (docs/testing_controllers.md, "The installed package"):
 #   P/bin/                     sim_node, the tools and the controllers (TOWSIM_INSTALLED_PROGRAMS)
+#   P/libexec/towsim/          sim_node_dds (the DDS modes sim_node execs)
 #   P/share/towsim/            scenes/, vehicles/, maneuvers/, autopilot/, sweeps/, foxglove/,
 #                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
 #                              cyclonedds_two_hosts.xml, idl/*.idl,
@@ -36,6 +37,9 @@ foreach(_program IN LISTS TOWSIM_INSTALLED_PROGRAMS)
 endforeach()
 install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# the programs only other programs run: sim_node's DDS modes (sim_node/app/node_main.h), found
+# by sim_node at P/libexec/towsim (kPrivateProgramDir in sim_node/app/installed_data.h)
+install(TARGETS sim_node_dds RUNTIME DESTINATION libexec/towsim)
 
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)

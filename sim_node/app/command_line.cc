@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "dds/translators.h"
+#include "dds/pacing_rate.h"
 
 namespace towsim::app {
 namespace {

@@ -1,18 +1,34 @@
 #include "app/installed_data.h"
 
+#include <iterator>
 #include <system_error>
 
 namespace towsim::app {
 
 namespace fs = std::filesystem;
 
+std::optional<fs::path> InstallPrefix(const fs::path& exe) {
+  const fs::path dir = exe.parent_path();
+  if (dir.filename() == "bin") return dir.parent_path();
+  // P/libexec/towsim/<program>: the directory's last components are kPrivateProgramDir
+  const fs::path private_dir(kPrivateProgramDir);
+  fs::path prefix = dir;
+  for (auto part = std::distance(private_dir.begin(), private_dir.end()); part > 0; --part) {
+    prefix = prefix.parent_path();
+  }
+  if (!prefix.empty() && prefix / private_dir == dir) return prefix;
+  return std::nullopt;
+}
+
 std::optional<fs::path> InstalledDataDir() {
   std::error_code ec;
   const fs::path exe = fs::canonical("/proc/self/exe", ec);
   if (ec) return std::nullopt;
-  // P/bin/<program> -> P/share/towsim
-  const fs::path data = exe.parent_path().parent_path() / "share" / "towsim";
-  if (exe.parent_path().filename() != "bin" || !fs::is_directory(data, ec)) return std::nullopt;
+  // P/bin/<program> or P/libexec/towsim/<program> -> P/share/towsim
+  const std::optional<fs::path> prefix = InstallPrefix(exe);
+  if (!prefix) return std::nullopt;
+  const fs::path data = *prefix / "share" / "towsim";
+  if (!fs::is_directory(data, ec)) return std::nullopt;
   return data;
 }
 

@@ -239,11 +239,6 @@ CheckedCommand FromActuatorCommand(const ActuatorCommandMsg& msg, const CommandL
   return out;
 }
 
-std::string CheckRate(double rate) {
-  if (std::isfinite(rate) && rate >= kMinRate && rate <= kMaxRate) return {};
-  return "the rate must be a number >= 1e-3 and <= 1e6 (--mode fast runs unpaced)";
-}
-
 ControlRequest FromSimControl(const SimControlMsg& msg) {
   ControlRequest r;
   switch (msg.command) {

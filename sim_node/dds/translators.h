@@ -21,6 +21,7 @@
 #include "core/simulation.h"
 #include "core/vehicle_model.h"
 #include "dds/messages.h"
+#include "dds/pacing_rate.h"
 
 namespace towsim::dds {
 
@@ -198,13 +199,7 @@ struct CheckedCommand {
 // NaN or infinite in any field: rejected; beyond the limits: clamped
 CheckedCommand FromActuatorCommand(const ActuatorCommandMsg& msg, const CommandLimits& limits);
 
-// the realtime pacing factor (--rate, SET_RATE): kMinRate <= rate <= kMaxRate. Below, a step
-// period is more than 1000 steps of simulated time (and the wall-clock deadlines overflow);
-// above, the period is below the clock's resolution (--mode fast runs unpaced).
-inline constexpr double kMinRate = 1e-3;
-inline constexpr double kMaxRate = 1e6;
-// the rule broken by `rate`, or empty
-std::string CheckRate(double rate);
+// the realtime pacing factor of SET_RATE: CheckRate in dds/pacing_rate.h
 
 struct ControlRequest {
   enum Kind { kInvalid, kPause, kResume, kStep, kReset, kSetRate };

@@ -1,6 +1,7 @@
 #include "io/csv_writer.h"
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -18,7 +19,50 @@ bool IsHeldSupport(const core::CableEnd& end) {
   return end.kind == core::EndKind::kFixed || end.kind == core::EndKind::kDriven;
 }
 
+// one row of a CSV file, built in memory and written in one call: fields appended with their
+// separating commas, numbers as "%.9g"
+class Row {
+ public:
+  explicit Row(std::string* line) : line_(line) { line_->clear(); }
+  Row& Number(double x) {
+    Comma();
+    AppendCsvNumber(x, line_);
+    return *this;
+  }
+  Row& Integer(long n) {
+    Comma();
+    char text[24];
+    const std::to_chars_result r = std::to_chars(text, text + sizeof text, n);
+    line_->append(text, r.ptr);
+    return *this;
+  }
+  Row& Text(const std::string& text) {
+    Comma();
+    line_->append(text);
+    return *this;
+  }
+  // the row and its line break, on `f` (errors: CsvWriter::Check)
+  void WriteTo(std::FILE* f) {
+    line_->push_back('\n');
+    std::fwrite(line_->data(), 1, line_->size(), f);
+  }
+
+ private:
+  void Comma() {
+    if (!line_->empty()) line_->push_back(',');
+  }
+  std::string* line_;
+};
+
 }  // namespace
+
+void AppendCsvNumber(double x, std::string* line) {
+  // 9 significant digits need at most 16 characters ("-1.23456789e-308"); nan and inf fit too
+  char text[32];
+  const std::to_chars_result r =
+      std::to_chars(text, text + sizeof text, x, std::chars_format::general, 9);
+  line->append(text, r.ptr);
+}
 
 bool HasSea(const core::Environment& env) {
   return !env.waves.empty() || !env.current.IsZero() || env.seabed.present();
@@ -83,56 +127,83 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   const core::Model& model = sim.model();
   const double t = sim.time();
 
+  std::string line;  // one row, reused
   // bodies (spheres, then vehicles): origin in W, ZYX Euler angles of q_WB, body-frame twist
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const core::Vec3 p_WB = sim.body_position(b);
     const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
     const core::Vec6 nu = sim.body_twist(b);
-    std::fprintf(bodies_.f, "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n",
-                 t, CsvField(sim.body_name(b)).c_str(), p_WB.x(), p_WB.y(), p_WB.z(), rpy.x(),
-                 rpy.y(), rpy.z(), nu(0), nu(1), nu(2), nu(3), nu(4), nu(5));
+    Row row(&line);
+    row.Number(t).Text(CsvField(sim.body_name(b)));
+    for (int k = 0; k < 3; ++k) row.Number(p_WB(k));
+    for (int k = 0; k < 3; ++k) row.Number(rpy(k));
+    for (int k = 0; k < 6; ++k) row.Number(nu(k));
+    row.WriteTo(bodies_.f);
   }
 
   for (int i = 0; i < sim.num_nodes(); ++i) {
     const core::Vec3 r = sim.node_position(i);
-    std::fprintf(cable_.f, "%.9g,%d,%.9g,%.9g,%.9g,%.9g\n", t, i, r.x(), r.y(), r.z(),
-                 sim.node_tension(i));
+    Row(&line)
+        .Number(t)
+        .Integer(i)
+        .Number(r.x())
+        .Number(r.y())
+        .Number(r.z())
+        .Number(sim.node_tension(i))
+        .WriteTo(cable_.f);
   }
 
   // forces: the cable's force and moment on each body (body frame), then held supports (world)
   for (int b = 0; b < sim.num_bodies(); ++b) {
     core::Vec3 f, m;
     sim.body_cable_wrench(b, &f, &m);
-    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
-                 CsvField(sim.body_name(b)).c_str(), f.x(), f.y(), f.z(), m.x(), m.y(), m.z());
+    Row row(&line);
+    row.Number(t).Text(CsvField(sim.body_name(b)));
+    for (int k = 0; k < 3; ++k) row.Number(f(k));
+    for (int k = 0; k < 3; ++k) row.Number(m(k));
+    row.WriteTo(forces_.f);
   }
   const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
   const char* end_names[2] = {"cable.start", "cable.end"};
   for (int e = 0; e < 2; ++e) {
     if (!IsHeldSupport(*ends[e])) continue;
     const core::Vec3 f = sim.end_force(e);
-    std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t, end_names[e], f.x(), f.y(), f.z());
+    Row(&line)
+        .Number(t)
+        .Text(end_names[e])
+        .Number(f.x())
+        .Number(f.y())
+        .Number(f.z())
+        .Text("0,0,0")
+        .WriteTo(forces_.f);
   }
 
-  std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld\n", t, sim.step_count(), status.iterations,
-               status.residual, wall_us);
+  Row(&line)
+      .Number(t)
+      .Integer(sim.step_count())
+      .Integer(status.iterations)
+      .Number(status.residual)
+      .Integer(wall_us)
+      .WriteTo(status_.f);
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
-  if (environment_.f != nullptr) WriteEnvironment(sim);
+  if (environment_.f != nullptr) WriteEnvironment(sim, &line);
 }
 
-void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
+void CsvWriter::WriteEnvironment(const core::Simulation& sim, std::string* line) {
   const double t = sim.time();
   for (int b = 0; b < sim.num_bodies(); ++b) {
     // no seabed: the altitude is NaN, written as an empty field (the files never hold NaN)
     const double altitude = sim.body_altitude(b);
-    char altitude_field[32] = "";
-    if (!std::isnan(altitude))
-      std::snprintf(altitude_field, sizeof altitude_field, "%.9g", altitude);
     const core::Vec3 u = sim.water_velocity_at(b);
-    std::fprintf(environment_.f, "%.9g,%s,%.9g,%s,%.9g,%.9g,%.9g,%.9g\n", t,
-                 CsvField(sim.body_name(b)).c_str(), sim.surface_elevation_at(b), altitude_field,
-                 sim.body_depth(b), u.x(), u.y(), u.z());
+    Row row(line);
+    row.Number(t).Text(CsvField(sim.body_name(b))).Number(sim.surface_elevation_at(b));
+    if (std::isnan(altitude)) {
+      row.Text("");
+    } else {
+      row.Number(altitude);
+    }
+    row.Number(sim.body_depth(b)).Number(u.x()).Number(u.y()).Number(u.z()).WriteTo(environment_.f);
   }
   Check(environment_);
 }

@@ -28,8 +28,9 @@
 // Spheres: their frame stays aligned with the world, so roll = pitch = yaw = 0, p = q = r = 0,
 // (u, v, w) is the world velocity and the moment is 0.
 //
-// Numbers are written with 9 significant digits ("%.9g"). Every Write() is flushed to the
-// operating system, so the files survive Ctrl-C or a kill of the process.
+// Numbers are written with 9 significant digits, exactly as printf's "%.9g" writes them
+// (AppendCsvNumber). Every Write() is flushed to the operating system, so the files survive
+// Ctrl-C or a kill of the process.
 
 #include <cstdio>
 #include <string>
@@ -51,6 +52,12 @@ bool HasSea(const core::Environment& env);
 
 // a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
 std::string CsvField(const std::string& name);
+
+// appends `x` to `line` as printf's "%.9g" writes it (9 significant digits, the shorter of
+// fixed and exponent form, trailing zeros dropped), by std::to_chars, which the standard
+// defines as printf in the "C" locale: the same bytes for a third of the instructions
+// (docs/benchmarks.md, "Start-up")
+void AppendCsvNumber(double x, std::string* line);
 
 class CsvWriter {
  public:
@@ -82,7 +89,7 @@ class CsvWriter {
   };
   void Open(File& file, const char* name, const char* header);
   void Check(const File& file) const;
-  void WriteEnvironment(const core::Simulation& sim);
+  void WriteEnvironment(const core::Simulation& sim, std::string* line);
 
   std::string dir_;
   File bodies_;

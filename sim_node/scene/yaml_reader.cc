@@ -110,10 +110,19 @@ bool ReadTextFile(const std::string& path, std::string* text, std::string* why) 
     *why = "cannot open it for reading";
     return false;
   }
-  // at most the limit, even if the file grows while it is read
-  std::string buffer(kMaxTextFileBytes + 1, '\0');
-  in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-  buffer.resize(static_cast<size_t>(in.gcount()));
+  // the size found plus one byte, then more only if the file grew meanwhile, never past the
+  // limit + 1 (a buffer of the whole limit would cost 16 MB of zeroed pages for every file:
+  // docs/benchmarks.md, "Start-up")
+  std::string buffer;
+  size_t wanted = static_cast<size_t>(bytes) + 1;
+  while (buffer.size() <= kMaxTextFileBytes) {
+    const size_t old_size = buffer.size();
+    buffer.resize(std::min<size_t>(old_size + wanted, kMaxTextFileBytes + 1));
+    in.read(buffer.data() + old_size, static_cast<std::streamsize>(buffer.size() - old_size));
+    buffer.resize(old_size + static_cast<size_t>(in.gcount()));
+    if (!in) break;          // end of file (or a read error: the bytes read so far)
+    wanted = buffer.size();  // grew while read: double the buffer
+  }
   if (buffer.size() > kMaxTextFileBytes) {
     *why = "larger than the limit of " + std::to_string(kMaxTextFileBytes) + " bytes (16 MB)";
     return false;

@@ -10,7 +10,8 @@
 #     its Depends (from dpkg-shlibdeps) name the packages that own every shared library
 #     sim_node needs; apt-get resolves them (--simulate); the extracted files (dpkg -x into a
 #     throwaway root) hold the programs, the configuration and the CMake package, and the
-#     extracted sim_node answers --help and runs an installed scene by name.
+#     extracted sim_node answers --help and runs an installed scene by name, offline and (in
+#     its DDS program, usr/libexec/towsim/sim_node_dds) in --mode fast on domain 196.
 #
 # Registered as ctest tests InstalledPackage.ControllerCiExample / InstalledPackage.DebianPackage
 # (tests/package/CMakeLists.txt). Everything is written under a temporary directory that is
@@ -64,21 +65,31 @@ deb)
            usr/lib/cmake/towsim/towsimConfig.cmake; do
     [[ -e "$work/root/$f" ]] || fail "the package has no /$f"
   done
-  # every shared library sim_node links directly (NEEDED) belongs to a package Depends names
+  # every shared library sim_node and its DDS program (usr/libexec/towsim/sim_node_dds, which
+  # sim_node execs for the DDS modes) link directly (NEEDED) belongs to a package Depends names
   # (the libraries those load are their packages' own dependencies)
   sim_node="$work/root/usr/bin/sim_node"
-  while read -r needed; do
-    lib="$(ldd "$sim_node" | awk -v n="$needed" '$1 == n { print $3 }')"
-    [[ -n "$lib" ]] || fail "sim_node needs $needed, which is not found"
-    owner=""
-    # /lib is /usr/lib on Debian 12 (merged /usr); dpkg knows one of the spellings
-    for path in "$lib" "/usr$lib" "$(realpath "$lib")"; do
-      [[ -n "$owner" ]] || owner="$( (dpkg -S "$path" 2>/dev/null || true) | head -1 | cut -d: -f1)"
-    done
-    [[ -n "$owner" ]] || fail "no Debian package owns $lib"
-    grep -qx "$owner" <<< "$depends_names" || fail "sim_node needs $lib of $owner, not in Depends"
-    echo "  $needed: $owner"
-  done < <(readelf -d "$sim_node" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+  for program in "$sim_node" "$work/root/usr/libexec/towsim/sim_node_dds"; do
+    [[ -x "$program" ]] || fail "the package has no ${program#"$work/root"}"
+    echo "${program#"$work/root"}:"
+    while read -r needed; do
+      lib="$(ldd "$program" | awk -v n="$needed" '$1 == n { print $3 }')"
+      [[ -n "$lib" ]] || fail "$program needs $needed, which is not found"
+      owner=""
+      # /lib is /usr/lib on Debian 12 (merged /usr); dpkg knows one of the spellings
+      for path in "$lib" "/usr$lib" "$(realpath "$lib")"; do
+        [[ -n "$owner" ]] || owner="$( (dpkg -S "$path" 2>/dev/null || true) | head -1 | cut -d: -f1)"
+      done
+      [[ -n "$owner" ]] || fail "no Debian package owns $lib"
+      grep -qx "$owner" <<< "$depends_names" ||
+        fail "${program#"$work/root"} needs $lib of $owner, not in Depends"
+      echo "  $needed: $owner"
+    done < <(readelf -d "$program" | sed -n 's/.*(NEEDED).*\[\(.*\)\]/\1/p')
+  done
+  # the offline sim_node loads no DDS library (docs/benchmarks.md, "Start-up")
+  if readelf -d "$sim_node" | grep -q 'NEEDED.*libddsc'; then
+    fail "usr/bin/sim_node links libddsc: the offline node must not load DDS"
+  fi
   # apt resolves the dependencies (nothing is installed)
   apt-get install --simulate --no-install-recommends "$deb" > "$work/apt.log" 2>&1 ||
     { cat "$work/apt.log"; fail "apt-get install --simulate $deb"; }
@@ -88,6 +99,20 @@ deb)
   "$work/root/usr/bin/sim_node" --scene case1_forward --mode offline --duration 1 \
     > "$work/run.txt" || fail "sim_node --scene case1_forward (packaged)"
   grep -q "^sim_node: case1_forward: 20 steps" "$work/run.txt" || fail "$(cat "$work/run.txt")"
+  # a DDS mode runs in the packaged DDS program, found beside the packaged sim_node
+  # (<root>/usr/libexec/towsim), which finds the packaged scene and cyclonedds.xml itself;
+  # domain 196 (tests/integration/README.md), inside a network namespace of its own if we may
+  fast=("$work/root/usr/bin/sim_node" --scene case1_forward --mode fast --duration 1 --domain 196)
+  if unshare -n true 2>/dev/null; then
+    CYCLONEDDS_URI="file://$work/root/usr/share/towsim/cyclonedds.xml" \
+      unshare -n bash -c 'ip link set lo up && exec "$@"' fast "${fast[@]}" \
+      > "$work/fast.txt" 2> "$work/fast.err" || fail "packaged sim_node --mode fast: $(cat "$work/fast.err")"
+  else
+    CYCLONEDDS_URI="file://$work/root/usr/share/towsim/cyclonedds.xml" "${fast[@]}" \
+      > "$work/fast.txt" 2> "$work/fast.err" || fail "packaged sim_node --mode fast: $(cat "$work/fast.err")"
+  fi
+  grep -q "^sim_node: case1_forward: fast, 20 steps" "$work/fast.txt" ||
+    fail "packaged sim_node --mode fast: $(cat "$work/fast.txt" "$work/fast.err")"
   echo "ok: $(basename "$deb"): Depends complete, files present, sim_node runs"
   ;;
 *)

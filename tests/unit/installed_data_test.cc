@@ -1,5 +1,6 @@
 // The installed-scene lookup of sim_node --scene (app/installed_data.h): a path that exists
-// wins, a bare name finds <data>/scenes/NAME[.yaml], anything else is passed on unchanged.
+// wins, a bare name finds <data>/scenes/NAME[.yaml], anything else is passed on unchanged; the
+// prefix of an installed program (P/bin, P/libexec/towsim).
 
 #include "app/installed_data.h"
 
@@ -39,6 +40,19 @@ TEST(ResolveScene, AnExistingPathWins) {
   const fs::path own = tmp.path() / "mine.yaml";
   Touch(own);
   EXPECT_EQ(ResolveScene(own.string(), data), own.string());
+}
+
+// P/bin/<program> and P/libexec/towsim/<program> (sim_node's DDS program) are installed
+TEST(InstallPrefix, BinAndPrivateProgramDir) {
+  EXPECT_EQ(InstallPrefix("/usr/bin/sim_node"), fs::path("/usr"));
+  EXPECT_EQ(InstallPrefix("/opt/p/libexec/towsim/sim_node_dds"), fs::path("/opt/p"));
+  EXPECT_EQ(InstallPrefix("/tmp/x/root/usr/libexec/towsim/sim_node_dds"),
+            fs::path("/tmp/x/root/usr"));
+  // anywhere else: a build tree
+  EXPECT_FALSE(InstallPrefix("/work/build/sim_node/app/sim_node").has_value());
+  EXPECT_FALSE(InstallPrefix("/opt/p/libexec/sim_node_dds").has_value());
+  EXPECT_FALSE(InstallPrefix("/opt/p/lib/towsim/sim_node_dds").has_value());
+  EXPECT_FALSE(InstallPrefix("/towsim/sim_node_dds").has_value());
 }
 
 TEST(InstalledDataDir, NoneInABuildTree) {

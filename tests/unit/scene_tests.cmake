@@ -13,3 +13,9 @@ towsim_add_test(sweep_values_test LABEL unit
 towsim_add_test(environment_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/environment_reader_test.cc
   LIBS towsim::scene)
+# the scene loader's text file reader (scene/yaml_reader.h): exact bytes, the size limit, and
+# a buffer of the file's size
+towsim_add_test(yaml_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/yaml_reader_test.cc
+  LIBS towsim::scene)
+target_include_directories(yaml_reader_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})

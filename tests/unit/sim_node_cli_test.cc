@@ -35,6 +35,7 @@ const std::string kSimNode = TOWSIM_SIM_NODE;
 
 using towsim::test::ReadFile;
 using towsim::test::RunSimNode;
+using towsim::test::ShellQuote;
 using towsim::test::SimNodeResult;
 using towsim::test::TempDir;
 
@@ -451,6 +452,71 @@ TEST(SimNodeCliTest, SigtermStopsCleanly) {
     ASSERT_FALSE(text.empty()) << file;
     EXPECT_EQ(text.back(), '\n') << file;
   }
+}
+
+// --- the offline node and its DDS program (app/node_main.h; docs/benchmarks.md "Start-up") ----
+
+// an offline run loads no DDS, iceoryx or OpenSSL library: the dynamic loader's own list of the
+// libraries it loads (LD_DEBUG=libs, written to LD_DEBUG_OUTPUT.<pid> for the shell and for
+// sim_node) names the C library and none of them
+TEST(SimNodeCliTest, OfflineLoadsNoDdsLibrary) {
+  TempDir tmp;
+  WriteFile(tmp.path() / "good.yaml", kGoodScene);
+  const fs::path logs = tmp.path() / "ld";
+  fs::create_directories(logs);
+  ::setenv("LD_DEBUG", "libs", 1);
+  ::setenv("LD_DEBUG_OUTPUT", (logs / "libs").c_str(), 1);
+  const SimNodeResult r =
+      RunSimNode({"--scene", (tmp.path() / "good.yaml").string(), "--mode", "offline"}, tmp.path());
+  ::unsetenv("LD_DEBUG");
+  ::unsetenv("LD_DEBUG_OUTPUT");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  std::string libs;  // the loader's log of the sim_node process
+  for (const fs::directory_entry& log : fs::directory_iterator(logs)) {
+    const std::string text = ReadFile(log.path());
+    if (text.find("initialize program: " + kSimNode) != std::string::npos) libs = text;
+  }
+  ASSERT_NE(libs.find("libc.so.6"), std::string::npos) << "no LD_DEBUG=libs log of sim_node";
+  for (const char* library : {"libddsc", "libiceoryx", "libssl", "libcrypto"}) {
+    EXPECT_EQ(libs.find(library), std::string::npos) << library << " loaded:\n" << libs;
+  }
+}
+
+// sim_node and its DDS program laid out as installed (P/bin/sim_node,
+// P/libexec/towsim/sim_node_dds): a DDS mode runs in the DDS program, found from sim_node's own
+// place; without it, exit 1 naming the places looked at. Domain 197 (tests/integration/README.md)
+TEST(SimNodeCliTest, DdsModesRunInTheDdsProgram) {
+  TempDir tmp;
+  WriteFile(tmp.path() / "good.yaml", kGoodScene);
+  const fs::path bin = tmp.path() / "bin";
+  const fs::path libexec = tmp.path() / "libexec" / "towsim";
+  fs::create_directories(bin);
+  fs::copy_file(kSimNode, bin / "sim_node");
+  const std::string command = ShellQuote((bin / "sim_node").string()) + " --scene " +
+                              ShellQuote((tmp.path() / "good.yaml").string()) +
+                              " --mode fast --duration 0.5 --domain 197 </dev/null >" +
+                              ShellQuote((tmp.path() / "out.txt").string()) + " 2>" +
+                              ShellQuote((tmp.path() / "err.txt").string());
+  ::setenv("CYCLONEDDS_URI", "file://" TOWSIM_SOURCE_DIR "/config/cyclonedds.xml", 1);
+  int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string err = ReadFile(tmp.path() / "err.txt");
+  EXPECT_NE(
+      err.find("sim_node: error: --mode fast: the DDS modes run in sim_node_dds, which is "
+               "not installed (looked for " +
+               (bin / "sim_node_dds").string() + ", " + (libexec / "sim_node_dds").string() + ")"),
+      std::string::npos)
+      << err;
+
+  fs::create_directories(libexec);
+  fs::copy_file(fs::path(kSimNode).parent_path() / "sim_node_dds", libexec / "sim_node_dds");
+  status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << ReadFile(tmp.path() / "err.txt");
+  EXPECT_NE(ReadFile(tmp.path() / "out.txt").find("sim_node: cli_test: fast, 10 steps"),
+            std::string::npos)
+      << ReadFile(tmp.path() / "out.txt");
 }
 
 }  // namespace
