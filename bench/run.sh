@@ -6,6 +6,10 @@
 #                           docs/figures/work_precision_*.png and prints the Pareto fronts
 #   bench/run.sh targets    the shipped scenes at their own settings: real-time factor and the
 #                           towfish-track error against a run 4x finer (issue 7's targets)
+#   bench/run.sh lockstep [--ddsperf] [BUILD_DIR] [RUNS] [ROUNDS]
+#                           the bare round trip of one lockstep step against the lockstep
+#                           overhead per step (bench/lockstep.sh; ~1 min; last line
+#                           "lockstep overhead / round trip = R")
 # BUILD_DIR=dir selects another build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,6 +24,11 @@ case "${1:-}" in
   targets)
     need work_precision
     exec "$build/bench/work_precision" --targets
+    ;;
+  lockstep)
+    need lockstep_pingpong
+    shift
+    BUILD_DIR="$build" exec bench/lockstep.sh "$@"
     ;;
   *)
     need cable_bench

@@ -3,19 +3,23 @@
 //
 //   test_controller --domain N [--namespace /towsim] [--until-step K] [--log FILE]
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
-//                   [--security DIR/NAME]
+//                   [--security DIR/NAME] [--body NAME ...]
 //
 // It learns the bodies from rt/<ns>/scene_info, then answers every SimStatus of a new step k
 // with one ActuatorCommand stamped k per commanded body: zeros, or the latest --command of
-// that body whose time T has come (t >= T, the script's rule). With --log it writes, for every
+// that body whose time T has come (t >= T, the script's rule); with --body (repeatable) only
+// the bodies named (and their odometry only), so that several controller processes share a
+// run. With --log it writes, for every
 // step answered, one line per body of the odometry of that step (matched by stamp):
 //   step body x y z qx qy qz qw u v w p q r      (%.17g: the doubles exactly)
 // It exits 0 once the node reports step K (--until-step) or the end of its run, 1 when
 // nothing has happened for --timeout seconds (default 30) or on a DDS error. Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
-// DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout:
-//   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step
+// DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout, the
+// mean and the median wall time between consecutive answers:
+//   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step (median 301.2 us)
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -51,6 +55,7 @@ struct Args {
   double timeout = 30.0;
   bool stats = false;
   std::string security;
+  std::vector<std::string> only;  // --body: the commanded bodies answered; empty: all
 };
 
 [[noreturn]] void Fail(const std::string& message) {
@@ -85,6 +90,8 @@ Args Parse(int argc, char** argv) {
       a.log = value();
     } else if (arg == "--security") {
       a.security = value();
+    } else if (arg == "--body") {
+      a.only.push_back(value());
     } else if (arg == "--stats") {
       a.stats = true;
     } else if (arg == "--timeout") {
@@ -172,10 +179,23 @@ int main(int argc, char** argv) {
       for (uint32_t i = 0; i < s->bodies._length; ++i) {
         Body b;
         b.name = s->bodies._buffer[i];
-        bodies.push_back(b);
+        // --body: the odometry of those bodies only
+        if (args.only.empty() ||
+            std::find(args.only.begin(), args.only.end(), b.name) != args.only.end()) {
+          bodies.push_back(b);
+        }
       }
       for (uint32_t i = 0; i < s->commanded_bodies._length; ++i) {
-        commanded.push_back(s->commanded_bodies._buffer[i]);
+        const std::string name = s->commanded_bodies._buffer[i];
+        if (args.only.empty() ||
+            std::find(args.only.begin(), args.only.end(), name) != args.only.end()) {
+          commanded.push_back(name);
+        }
+      }
+      for (const std::string& name : args.only) {
+        if (std::find(commanded.begin(), commanded.end(), name) == commanded.end()) {
+          Fail("--body " + name + ": not a commanded body of the node's scene");
+        }
       }
     }
     if (n > 0) dds_return_loan(scene_reader, samples, n);
@@ -239,6 +259,8 @@ int main(int argc, char** argv) {
   Clock::time_point last_progress = Clock::now();
   Clock::time_point first_answer;
   long answers = 0;
+  std::vector<double> intervals;  // --stats: between consecutive answers [us]
+  if (args.stats) intervals.reserve(1 << 16);
   int exit_code = -1;
   while (exit_code < 0) {
     dds_waitset_wait(waitset, nullptr, 0, DDS_MSECS(100));
@@ -258,8 +280,10 @@ int main(int argc, char** argv) {
       }
       run_id = s->run_id;
       answered = s->step;
+      const Clock::time_point previous = last_progress;
       last_progress = Clock::now();
       if (answers++ == 0) first_answer = last_progress;
+      if (args.stats && answers > 1) intervals.push_back(1e6 * Seconds(last_progress - previous));
 
       // the odometry of this step, matched by stamp
       if (log != nullptr) {
@@ -330,8 +354,10 @@ int main(int argc, char** argv) {
   if (log != nullptr) std::fclose(log);
   if (args.stats && answers > 1) {
     const double wall = Seconds(last_progress - first_answer);
-    std::printf("test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step\n", answers - 1,
-                wall, (answers - 1) / wall, 1e6 * wall / (answers - 1));
+    std::sort(intervals.begin(), intervals.end());
+    std::printf("test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step (median %.1f us)\n",
+                answers - 1, wall, (answers - 1) / wall, 1e6 * wall / (answers - 1),
+                intervals[(intervals.size() - 1) / 2]);
   }
   dds_delete_qos(state_qos);
   dds_delete_qos(command_qos);
