@@ -123,8 +123,8 @@ if [ $counts = 1 ]; then
   exit 0
 fi
 
-# "test_controller: 1999 steps in 0.701 s: ..., 350.6 us/step (median 301.2 us)" -> 301.2
-per_step() { sed -nE 's/.* us\/step \(median ([0-9.]+) us\)/\1/p'; }
+# "test_controller: 1999 steps in 0.701 s: ..., 350.6 us/step (median 301.2 us)" -> "301.2 350.6"
+per_step() { sed -nE 's/.* ([0-9.]+) us\/step \(median ([0-9.]+) us\)/\2 \1/p'; }
 # "... round trip p50 31.2 us p99 58.0 us" -> "31.2 58.0"
 rtt() { sed -nE 's/.*round trip p50 ([0-9.]+) us p99 ([0-9.]+) us/\1 \2/p'; }
 
@@ -141,7 +141,7 @@ pingpong_case() {  # domain pongs... (each pong: its bodies) -> "p50 p99"
   pids=()
 }
 
-lockstep_case() {  # domain bodies-per-controller... -> us/step of the first controller
+lockstep_case() {  # domain bodies-per-controller... -> "median mean" us/step, first controller
   local domain="$1"; shift
   local b i=0 first=""
   "$node" --scene "$scene" --mode lockstep --domain "$domain" --duration "$duration" \
@@ -162,39 +162,47 @@ lockstep_case() {  # domain bodies-per-controller... -> us/step of the first con
   per_step <"$tmp/controller0.txt"
 }
 
-# the median wall time of one offline step (status.csv's wall_us of every step: output at 20 Hz)
+# the median and the mean wall time of one offline step (Step alone: status.csv's wall_us of
+# every step, output at 20 Hz) -> "median mean"
 offline_case() {
   rm -rf "$tmp/offline"
   "$node" --scene "$scene" --mode offline --duration "$duration" --csv "$tmp/offline" \
     --set time.output_rate=20 --set "script=[{at: 0, body: tow_vehicle, thrust: $thrust}]" \
     >/dev/null
-  tail -n +3 "$tmp/offline/status.csv" | cut -d, -f5 | median
+  echo "$(tail -n +3 "$tmp/offline/status.csv" | cut -d, -f5 | median)" \
+    "$(tail -n +3 "$tmp/offline/status.csv" | awk -F, '{s += $5} END {printf "%.1f", s / NR}')"
 }
 
 tmp="$(mktemp -d)"
 trap 'cleanup; rm -rf "$tmp"' EXIT
-p1=() q1=() p2=() q2=() off=() l1=() l2=()
+p1=() q1=() p2=() q2=() off=() l1=() l2=() offm=() l1m=() l2m=()
 echo "== $runs runs: ping-pong ($rounds round trips), Case 1 offline and lockstep ($duration s, thrust $thrust N)"
 for ((r = 0; r < runs; ++r)); do
   read -r a b < <(pingpong_case 152 "$both")
   p1+=("$a") q1+=("$b")
   read -r a b < <(pingpong_case 153 tow_vehicle towfish)
   p2+=("$a") q2+=("$b")
-  off+=("$(offline_case)")
-  l1+=("$(lockstep_case 154 all)")
-  l2+=("$(lockstep_case 155 tow_vehicle towfish)")
-  echo "run $((r + 1)): round trip p50 ${p1[r]} / ${p2[r]} us, offline ${off[r]} us/step, lockstep ${l1[r]} / ${l2[r]} us/step (1 / 2 controllers)"
+  read -r a b < <(offline_case)
+  off+=("$a") offm+=("$b")
+  read -r a b < <(lockstep_case 154 all)
+  l1+=("$a") l1m+=("$b")
+  read -r a b < <(lockstep_case 155 tow_vehicle towfish)
+  l2+=("$a") l2m+=("$b")
+  echo "run $((r + 1)): round trip p50 ${p1[r]} / ${p2[r]} us; per step, median (mean): offline ${off[r]} (${offm[r]}) us, lockstep ${l1[r]} (${l1m[r]}) / ${l2[r]} (${l2m[r]}) us (1 / 2 controllers)"
 done
 head -1 "$tmp/pingpong.txt" | sed -E 's/; .*//'
 tail -1 "$tmp/pingpong.txt" | sed -E 's/; .*//'
 m() { printf '%s\n' "$@" | median; }
 P1=$(m "${p1[@]}") Q1=$(m "${q1[@]}") P2=$(m "${p2[@]}") Q2=$(m "${q2[@]}")
 OFF=$(m "${off[@]}") L1=$(m "${l1[@]}") L2=$(m "${l2[@]}")
-awk -v p1="$P1" -v q1="$Q1" -v p2="$P2" -v q2="$Q2" -v off="$OFF" -v l1="$L1" -v l2="$L2" 'BEGIN {
+OFFM=$(m "${offm[@]}") L1M=$(m "${l1m[@]}") L2M=$(m "${l2m[@]}")
+awk -v p1="$P1" -v q1="$Q1" -v p2="$P2" -v q2="$Q2" -v off="$OFF" -v l1="$L1" -v l2="$L2" \
+  -v offm="$OFFM" -v l1m="$L1M" -v l2m="$L2M" 'BEGIN {
+  printf "per step: the median step (the mean step in brackets); overhead = lockstep - offline\n"
   printf "| controllers | round trip p50 [us] | p99 [us] | offline [us/step] | lockstep [us/step] | overhead [us/step] | overhead / round trip p50 |\n"
   printf "|---|---|---|---|---|---|---|\n"
-  printf "| 1 | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f |\n", p1, q1, off, l1, l1 - off, (l1 - off) / p1
-  printf "| 2 | %.1f | %.1f | %.1f | %.1f | %.1f | %.2f |\n", p2, q2, off, l2, l2 - off, (l2 - off) / p2
+  printf "| 1 | %.1f | %.1f | %.1f (%.1f) | %.1f (%.1f) | %.1f (%.1f) | %.2f (%.2f) |\n", p1, q1, off, offm, l1, l1m, l1 - off, l1m - offm, (l1 - off) / p1, (l1m - offm) / p1
+  printf "| 2 | %.1f | %.1f | %.1f (%.1f) | %.1f (%.1f) | %.1f (%.1f) | %.2f (%.2f) |\n", p2, q2, off, offm, l2, l2m, l2 - off, l2m - offm, (l2 - off) / p2, (l2m - offm) / p2
   printf "two controllers: lockstep overhead / round trip = %.2f\n", (l2 - off) / p2
   printf "lockstep overhead / round trip = %.2f\n", (l1 - off) / p1
 }'

@@ -131,6 +131,7 @@ dds_qos_t* ReliableQos(int depth, bool transient_local) {
 struct Body {
   std::string name;
   dds_entity_t odom_reader = 0;
+  dds_entity_t odom_waitset = 0;  // --log: the odometry of the step, when not there yet
   std::map<std::pair<int32_t, uint32_t>, nav_msgs_msg_dds__Odometry_> odoms;  // by stamp
 };
 
@@ -212,6 +213,12 @@ int main(int argc, char** argv) {
                                (prefix + b.name + "/odom").c_str(), nullptr, nullptr),
               "odom topic");
     b.odom_reader = Check(dds_create_reader(participant, t, state_qos, nullptr), "odom reader");
+    b.odom_waitset = Check(dds_create_waitset(participant), "waitset");
+    Check(dds_waitset_attach(b.odom_waitset,
+                             Check(dds_create_readcondition(b.odom_reader, DDS_ANY_STATE),
+                                   "read condition"),
+                             0),
+          "waitset attach");
   }
   std::vector<dds_entity_t> writers;
   for (const std::string& name : commanded) {
@@ -307,7 +314,7 @@ int main(int argc, char** argv) {
             if (Seconds(Clock::now() - wait_begin) > 2.0) {
               Fail("no odometry of " + b.name + " for step " + std::to_string(s->step));
             }
-            dds_sleepfor(DDS_USECS(50));
+            dds_waitset_wait(b.odom_waitset, nullptr, 0, DDS_MSECS(100));  // no polling
           }
           const nav_msgs_msg_dds__Odometry_& o = b.odoms[key];
           std::fprintf(log,
