@@ -44,7 +44,10 @@ export CYCLONEDDS_URI="file://$root/config/cyclonedds.xml"
 node="$build/sim_node/app/sim_node"
 controller="$build/tests/integration/test_controller"
 pingpong="$build/bench/lockstep_pingpong"
-for x in "$node" "$controller" "$pingpong"; do
+# TOWSIM_BENCH_BASELINE=FILE: another sim_node binary (an older tree's), run in lockstep beside
+# this one in every run (same controllers), for a before/after comparison in one run
+baseline="${TOWSIM_BENCH_BASELINE:-}"
+for x in "$node" "$controller" "$pingpong" $baseline; do
   [ -x "$x" ] || { echo "build first: ./test.sh (missing $x)" >&2; exit 1; }
 done
 scene=config/scenes/case1_forward.yaml
@@ -141,9 +144,9 @@ pingpong_case() {  # domain pongs... (each pong: its bodies) -> "p50 p99"
   pids=()
 }
 
-lockstep_case() {  # domain bodies-per-controller... -> "median mean" us/step, first controller
-  local domain="$1"; shift
-  local b i=0 first=""
+lockstep_case() {  # node domain bodies-per-controller... -> "median mean" us/step (controller 1)
+  local node="$1" domain="$2"; shift 2
+  local b i=0
   "$node" --scene "$scene" --mode lockstep --domain "$domain" --duration "$duration" \
     --set 'script=[]' >"$tmp/node.txt" &
   pids=($!)
@@ -175,7 +178,7 @@ offline_case() {
 
 tmp="$(mktemp -d)"
 trap 'cleanup; rm -rf "$tmp"' EXIT
-p1=() q1=() p2=() q2=() off=() l1=() l2=() offm=() l1m=() l2m=()
+p1=() q1=() p2=() q2=() off=() l1=() l2=() offm=() l1m=() l2m=() b1=() b2=()
 echo "== $runs runs: ping-pong ($rounds round trips), Case 1 offline and lockstep ($duration s, thrust $thrust N)"
 for ((r = 0; r < runs; ++r)); do
   read -r a b < <(pingpong_case 152 "$both")
@@ -184,11 +187,18 @@ for ((r = 0; r < runs; ++r)); do
   p2+=("$a") q2+=("$b")
   read -r a b < <(offline_case)
   off+=("$a") offm+=("$b")
-  read -r a b < <(lockstep_case 154 all)
+  read -r a b < <(lockstep_case "$node" 154 all)
   l1+=("$a") l1m+=("$b")
-  read -r a b < <(lockstep_case 155 tow_vehicle towfish)
+  read -r a b < <(lockstep_case "$node" 155 tow_vehicle towfish)
   l2+=("$a") l2m+=("$b")
   echo "run $((r + 1)): round trip p50 ${p1[r]} / ${p2[r]} us; per step, median (mean): offline ${off[r]} (${offm[r]}) us, lockstep ${l1[r]} (${l1m[r]}) / ${l2[r]} (${l2m[r]}) us (1 / 2 controllers)"
+  if [ -n "$baseline" ]; then
+    read -r a b < <(lockstep_case "$baseline" 154 all)
+    b1+=("$a")
+    read -r a b < <(lockstep_case "$baseline" 155 tow_vehicle towfish)
+    b2+=("$a")
+    echo "       baseline node $baseline: lockstep median ${b1[r]} / ${b2[r]} us"
+  fi
 done
 head -1 "$tmp/pingpong.txt" | sed -E 's/; .*//'
 tail -1 "$tmp/pingpong.txt" | sed -E 's/; .*//'
@@ -196,13 +206,19 @@ m() { printf '%s\n' "$@" | median; }
 P1=$(m "${p1[@]}") Q1=$(m "${q1[@]}") P2=$(m "${p2[@]}") Q2=$(m "${q2[@]}")
 OFF=$(m "${off[@]}") L1=$(m "${l1[@]}") L2=$(m "${l2[@]}")
 OFFM=$(m "${offm[@]}") L1M=$(m "${l1m[@]}") L2M=$(m "${l2m[@]}")
+B1="" B2=""
+[ -z "$baseline" ] || { B1=$(m "${b1[@]}"); B2=$(m "${b2[@]}"); }
 awk -v p1="$P1" -v q1="$Q1" -v p2="$P2" -v q2="$Q2" -v off="$OFF" -v l1="$L1" -v l2="$L2" \
-  -v offm="$OFFM" -v l1m="$L1M" -v l2m="$L2M" 'BEGIN {
+  -v offm="$OFFM" -v l1m="$L1M" -v l2m="$L2M" -v b1="$B1" -v b2="$B2" 'BEGIN {
   printf "per step: the median step (the mean step in brackets); overhead = lockstep - offline\n"
   printf "| controllers | round trip p50 [us] | p99 [us] | offline [us/step] | lockstep [us/step] | overhead [us/step] | overhead / round trip p50 |\n"
   printf "|---|---|---|---|---|---|---|\n"
   printf "| 1 | %.1f | %.1f | %.1f (%.1f) | %.1f (%.1f) | %.1f (%.1f) | %.2f (%.2f) |\n", p1, q1, off, offm, l1, l1m, l1 - off, l1m - offm, (l1 - off) / p1, (l1m - offm) / p1
   printf "| 2 | %.1f | %.1f | %.1f (%.1f) | %.1f (%.1f) | %.1f (%.1f) | %.2f (%.2f) |\n", p2, q2, off, offm, l2, l2m, l2 - off, l2m - offm, (l2 - off) / p2, (l2m - offm) / p2
+  if (b1 != "") {
+    printf "| 1, baseline node | | | | %.1f | %.1f | %.2f |\n", b1, b1 - off, (b1 - off) / p1
+    printf "| 2, baseline node | | | | %.1f | %.1f | %.2f |\n", b2, b2 - off, (b2 - off) / p2
+  }
   printf "two controllers: lockstep overhead / round trip = %.2f\n", (l2 - off) / p2
   printf "lockstep overhead / round trip = %.2f\n", (l1 - off) / p1
 }'
