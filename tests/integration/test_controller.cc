@@ -9,8 +9,8 @@
 // with one ActuatorCommand stamped k per commanded body: zeros, or the latest --command of
 // that body whose time T has come (t >= T, the script's rule); with --body (repeatable) only
 // the bodies named (and their odometry only), so that several controller processes share a
-// run. With --log it writes, for every
-// step answered, one line per body of the odometry of that step (matched by stamp):
+// run. With --log it writes, for every step answered, one line per body of the odometry of
+// that step (matched by stamp):
 //   step body x y z qx qy qz qw u v w p q r      (%.17g: the doubles exactly)
 // It exits 0 once the node reports step K (--until-step) or the end of its run, 1 when
 // nothing has happened for --timeout seconds (default 30) or on a DDS error. Needs
