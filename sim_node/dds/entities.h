@@ -119,6 +119,9 @@ class Writer {
     if (w < 0) throw DdsError("creating a writer for " + topic_name_, w);
     writer_ = Entity(w);
   }
+  Writer(Writer&&) = default;
+  // (no move assignment: it would free the listener's count before deleting the old writer)
+  Writer& operator=(Writer&&) = delete;
 
   // at least one reader matched: worth building and serializing a sample
   bool matched() const { return match_->current() > 0; }
