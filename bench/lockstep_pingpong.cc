@@ -42,7 +42,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 namespace tdds = towsim::dds;
 
-constexpr double kSilence = 10.0;  // a pong that answers nothing for this long: error [s]
+constexpr double kSilence = 10.0;            // a pong that answers nothing for this long: error [s]
 constexpr int64_t kResend = DDS_MSECS(200);  // warm-up: the status again (discovery races)
 constexpr uint8_t kRunning = towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING;
 constexpr uint8_t kFinished = towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED;
@@ -192,7 +192,8 @@ int Ping(const Args& a) {
   const size_t odom_bytes = size_of(&nav_msgs_msg_dds__Odometry__desc, &bodies[0].odom_msg->msg);
   tdds::ActuatorCommandMsg command_sample{};
   command_sample.header.frame_id = const_cast<char*>(a.bodies[0].c_str());
-  const size_t command_bytes = size_of(&towsim_msgs_msg_dds__ActuatorCommand__desc, &command_sample);
+  const size_t command_bytes =
+      size_of(&towsim_msgs_msg_dds__ActuatorCommand__desc, &command_sample);
 
   std::vector<double> rtt;
   rtt.reserve(static_cast<size_t>(a.rounds));
@@ -243,8 +244,8 @@ int Ping(const Args& a) {
   std::printf(
       "ping-pong: %d pong%s, bodies %s: out %zu x odom %zu B + status %zu B, back %zu x command "
       "%zu B; %ld rounds: round trip p50 %.1f us p99 %.1f us\n",
-      a.pongs, a.pongs == 1 ? "" : "s", list.c_str(), n, odom_bytes, status_bytes, n,
-      command_bytes, a.rounds, Quantile(rtt, 0.50), Quantile(rtt, 0.99));
+      a.pongs, a.pongs == 1 ? "" : "s", list.c_str(), n, odom_bytes, status_bytes, n, command_bytes,
+      a.rounds, Quantile(rtt, 0.50), Quantile(rtt, 0.99));
   return 0;
 }
 
@@ -288,8 +289,9 @@ int Pong(const Args& a) {
     if (step != answered) {
       for (size_t b = 0; b < bodies.size(); ++b) {
         PongBody& p = bodies[b];
-        p.odom->TakeEach(
-            [&](const tdds::OdometryMsg& o, const dds_sample_info_t&) { p.x = o.pose.pose.position.x; });
+        p.odom->TakeEach([&](const tdds::OdometryMsg& o, const dds_sample_info_t&) {
+          p.x = o.pose.pose.position.x;
+        });
         tdds::ActuatorCommandMsg c{};
         c.header.stamp = stamp;
         c.header.frame_id = const_cast<char*>(a.bodies[b].c_str());

@@ -77,7 +77,7 @@ struct LockstepClient::Impl {
   dds_entity_t waitset = 0;  // the status: a new step
   // the odometry, the altitude of the step when it is not there yet (0: no altitude reader)
   dds_entity_t odom_waitset = 0, altitude_waitset = 0;
-  dds_entity_t altitude_reader = 0;  // 0: not subscribed
+  dds_entity_t altitude_reader = 0;          // 0: not subscribed
   std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
   double step_size = 0.05;
   // the latest odometry taken
@@ -262,7 +262,8 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     // one waitset per reader: a sample of the one not waited for must not end the wait
     auto waitset_of = [&m](dds_entity_t reader) {
       const dds_entity_t ws = Check(dds_create_waitset(m.participant), "waitset");
-      const dds_entity_t c = Check(dds_create_readcondition(reader, DDS_ANY_STATE), "read condition");
+      const dds_entity_t c =
+          Check(dds_create_readcondition(reader, DDS_ANY_STATE), "read condition");
       Check(dds_waitset_attach(ws, c, 0), "waitset attach");
       return ws;
     };

@@ -205,10 +205,9 @@ int main(int argc, char** argv) {
               "odom topic");
     b.odom_reader = Check(dds_create_reader(participant, t, state_qos, nullptr), "odom reader");
     b.odom_waitset = Check(dds_create_waitset(participant), "waitset");
-    Check(dds_waitset_attach(b.odom_waitset,
-                             Check(dds_create_readcondition(b.odom_reader, DDS_ANY_STATE),
-                                   "read condition"),
-                             0),
+    Check(dds_waitset_attach(
+              b.odom_waitset,
+              Check(dds_create_readcondition(b.odom_reader, DDS_ANY_STATE), "read condition"), 0),
           "waitset attach");
   }
   std::vector<dds_entity_t> writers;
@@ -353,9 +352,10 @@ int main(int argc, char** argv) {
   if (args.stats && answers > 1) {
     const double wall = Seconds(last_progress - first_answer);
     std::sort(intervals.begin(), intervals.end());
-    std::printf("test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step (median %.1f us)\n",
-                answers - 1, wall, (answers - 1) / wall, 1e6 * wall / (answers - 1),
-                intervals[(intervals.size() - 1) / 2]);
+    std::printf(
+        "test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step (median %.1f us)\n",
+        answers - 1, wall, (answers - 1) / wall, 1e6 * wall / (answers - 1),
+        intervals[(intervals.size() - 1) / 2]);
   }
   dds_delete_qos(state_qos);
   dds_delete_qos(command_qos);
