@@ -9,7 +9,11 @@
 #   bench/run.sh startup [SIM_NODE] [ARGS]
 #                           sim_node offline as a whole process against its stepping loop in
 #                           process (Case 1, 100 s, 10 pairs; ~5 s): both RTFs and their ratio
-#                           (docs/benchmarks.md, "Start-up"); SIM_NODE defaults to the build's
+#                           (docs/benchmarks.md, "Start-up"); SIM_NODE defaults to the build's sim_node
+#   bench/run.sh lockstep [--ddsperf] [BUILD_DIR] [RUNS] [ROUNDS]
+#                           the bare round trip of one lockstep step against the lockstep
+#                           overhead per step (bench/lockstep.sh; ~1 min; last line
+#                           "lockstep overhead / round trip = R")
 # BUILD_DIR=dir selects another build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,6 +35,11 @@ case "${1:-}" in
     sim_node="$build/sim_node/app/sim_node"
     if [[ $# -gt 0 && "$1" != --* ]]; then sim_node="$1"; shift; fi
     exec "$build/bench/startup_cost" "$sim_node" "$@"
+    ;;
+  lockstep)
+    need lockstep_pingpong
+    shift
+    BUILD_DIR="$build" exec bench/lockstep.sh "$@"
     ;;
   *)
     need cable_bench

@@ -2,6 +2,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -73,14 +74,26 @@ struct LockstepClient::Impl {
   ClientOptions opt;
   dds_entity_t participant = 0;
   dds_entity_t status_reader = 0, odom_reader = 0, command_writer = 0;
-  dds_entity_t waitset = 0;
-  dds_entity_t altitude_reader = 0;  // 0: not subscribed
+  dds_entity_t waitset = 0;  // the status: a new step
+  // the odometry, the altitude of the step when it is not there yet (0: no altitude reader)
+  dds_entity_t odom_waitset = 0, altitude_waitset = 0;
+  dds_entity_t altitude_reader = 0;          // 0: not subscribed
   std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
   double step_size = 0.05;
   // the latest odometry taken
   nav_msgs_msg_dds__Odometry_ odom{};
   bool have_odom = false;
   double odom_time = -1.0;
+  // waits on `ws` (samples of its reader: it takes them all each time) up to `budget` [s]
+  // from `begin`, at most 0.1 s at a time (a stop request ends it); no polling. False when the
+  // budget is spent.
+  static bool WaitForSamples(dds_entity_t ws, Clock::time_point begin, double budget) {
+    const double left = budget - Seconds(Clock::now() - begin);
+    if (!(left > 0.0)) return false;
+    dds_waitset_wait(ws, nullptr, 0, static_cast<dds_duration_t>(1e9 * std::min(left, 0.1)));
+    return true;
+  }
+
   // after a RESET (a new run id): the time of the new run's first status; odometry stamped
   // later is the old run's, still queued (the node publishes a step's odometry before its
   // status), and is dropped until a sample of the new run comes; < 0 otherwise
@@ -246,6 +259,16 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     const dds_entity_t cond =
         Check(dds_create_readcondition(m.status_reader, DDS_ANY_STATE), "read condition");
     Check(dds_waitset_attach(m.waitset, cond, 0), "waitset attach");
+    // one waitset per reader: a sample of the one not waited for must not end the wait
+    auto waitset_of = [&m](dds_entity_t reader) {
+      const dds_entity_t ws = Check(dds_create_waitset(m.participant), "waitset");
+      const dds_entity_t c =
+          Check(dds_create_readcondition(reader, DDS_ANY_STATE), "read condition");
+      Check(dds_waitset_attach(ws, c, 0), "waitset attach");
+      return ws;
+    };
+    m.odom_waitset = waitset_of(m.odom_reader);
+    if (m.altitude_reader != 0) m.altitude_waitset = waitset_of(m.altitude_reader);
   } catch (...) {
     dds_delete_qos(state_qos);
     dds_delete_qos(command_qos);
@@ -308,8 +331,7 @@ int LockstepClient::Run(const Law& law) {
         for (;;) {
           m.TakeOdom();
           if (m.have_odom && m.odom_time >= t - 1e-9) break;
-          if (Seconds(Clock::now() - wait_begin) > 0.5 || Stopping(m.opt)) break;
-          dds_sleepfor(DDS_USECS(50));
+          if (Stopping(m.opt) || !Impl::WaitForSamples(m.odom_waitset, wait_begin, 0.5)) break;
         }
         if (m.have_odom) {
           const auto& o = m.odom;
@@ -341,8 +363,10 @@ int LockstepClient::Run(const Law& law) {
             for (;;) {
               m.TakeAltitude(t);
               if (m.altitude_time >= t - 1e-9) break;
-              if (Seconds(Clock::now() - altitude_begin) > 0.5 || Stopping(m.opt)) break;
-              dds_sleepfor(DDS_USECS(50));
+              if (Stopping(m.opt) ||
+                  !Impl::WaitForSamples(m.altitude_waitset, altitude_begin, 0.5)) {
+                break;
+              }
             }
             if (m.altitude_time >= t - 1e-9) b.altitude = m.altitude_range;
           }

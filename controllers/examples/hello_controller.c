@@ -49,12 +49,15 @@ int main(int argc, char** argv) {
       pp, topic(pp, &towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/towsim/tow_vehicle/command"),
       qos, NULL);
   dds_delete_qos(qos);
+  /* sleep until a status comes (a waitset: no polling); the node repeats it while it waits */
+  const dds_entity_t waitset = dds_create_waitset(pp);
+  dds_waitset_attach(waitset, dds_create_readcondition(status, DDS_ANY_STATE), 0);
   for (int done = 0; !done;) {
     void *s[1] = {NULL}, *o[1] = {NULL};
     dds_sample_info_t si, oi;
+    dds_waitset_wait(waitset, NULL, 0, DDS_SECS(1));
     if (dds_take(status, s, &si, 1, 1) < 1 || !si.valid_data || dds_read(odom, o, &oi, 1, 1) < 1) {
-      dds_sleepfor(DDS_USECS(100)); /* (a sample without data: return the loan and retry) */
-      if (s[0]) dds_return_loan(status, s, 1);
+      if (s[0]) dds_return_loan(status, s, 1); /* (a sample without data, no odometry yet) */
       continue;
     }
     const towsim_msgs_msg_dds__SimStatus_* st = s[0]; /* the step to answer */

@@ -9,6 +9,18 @@ namespace towsim::dds {
 DdsError::DdsError(const std::string& action, dds_return_t code)
     : std::runtime_error(action + ": " + dds_strretcode(code)), code_(code) {}
 
+dds_listener_t* MatchCount::NewListener() {
+  dds_listener_t* listener = dds_create_listener(this);
+  dds_lset_publication_matched(listener, &MatchCount::OnMatched);
+  return listener;
+}
+
+void MatchCount::OnMatched(dds_entity_t, const dds_publication_matched_status_t status,
+                           void* self) {
+  static_cast<MatchCount*>(self)->current_.store(static_cast<int>(status.current_count),
+                                                 std::memory_order_relaxed);
+}
+
 void Entity::Reset() {
   if (handle_ > 0) dds_delete(handle_);
   handle_ = 0;

@@ -9,7 +9,9 @@
 //   Writer<nav_msgs_msg_dds__Odometry_> w(p, t, StateQos());
 //   if (w.matched()) w.Write(msg);   // build and serialize only for a subscriber
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -89,24 +91,42 @@ class Topic {
   std::string name_;
 };
 
+// the number of readers matched with a writer, kept by Cyclone's publication-matched listener
+// (called on its discovery thread) so that asking costs one atomic load, not an entity lock:
+// the node asks every writer every step (docs/benchmarks.md, "Lockstep at the speed of the
+// wire")
+class MatchCount {
+ public:
+  // a listener for dds_create_writer (the caller deletes it after the call); it writes to
+  // this object, which must outlive the writer
+  dds_listener_t* NewListener();
+  int current() const { return current_.load(std::memory_order_relaxed); }
+
+ private:
+  static void OnMatched(dds_entity_t writer, const dds_publication_matched_status_t status,
+                        void* self);
+  std::atomic<int> current_{0};
+};
+
 // a writer of samples of the generated C type T (void: of the topic's type, given as a
 // pointer to its C struct, WriteRaw)
 template <class T>
 class Writer {
  public:
   Writer(const Participant& participant, const Topic& topic, const Qos& qos)
-      : topic_name_(topic.name()) {
-    const dds_entity_t w = dds_create_writer(participant.get(), topic.get(), qos.get(), nullptr);
+      : topic_name_(topic.name()), match_(std::make_unique<MatchCount>()) {
+    dds_listener_t* listener = match_->NewListener();
+    const dds_entity_t w = dds_create_writer(participant.get(), topic.get(), qos.get(), listener);
+    dds_delete_listener(listener);
     if (w < 0) throw DdsError("creating a writer for " + topic_name_, w);
     writer_ = Entity(w);
   }
+  Writer(Writer&&) = default;
+  // (no move assignment: it would free the listener's count before deleting the old writer)
+  Writer& operator=(Writer&&) = delete;
 
   // at least one reader matched: worth building and serializing a sample
-  bool matched() const {
-    dds_publication_matched_status_t status{};
-    if (dds_get_publication_matched_status(writer_.get(), &status) < 0) return false;
-    return status.current_count > 0;
-  }
+  bool matched() const { return match_->current() > 0; }
   int matched_count() const {
     dds_publication_matched_status_t status{};
     if (dds_get_publication_matched_status(writer_.get(), &status) < 0) return 0;
@@ -130,7 +150,8 @@ class Writer {
 
  private:
   std::string topic_name_;
-  Entity writer_;
+  std::unique_ptr<MatchCount> match_;  // on the heap: the listener keeps its address
+  Entity writer_;                      // deleted first (members in reverse order)
 };
 
 // a reader of samples of the generated C type T, with a read condition (unread samples) to

@@ -3,19 +3,23 @@
 //
 //   test_controller --domain N [--namespace /towsim] [--until-step K] [--log FILE]
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
-//                   [--security DIR/NAME]
+//                   [--security DIR/NAME] [--body NAME ...]
 //
 // It learns the bodies from rt/<ns>/scene_info, then answers every SimStatus of a new step k
 // with one ActuatorCommand stamped k per commanded body: zeros, or the latest --command of
-// that body whose time T has come (t >= T, the script's rule). With --log it writes, for every
-// step answered, one line per body of the odometry of that step (matched by stamp):
+// that body whose time T has come (t >= T, the script's rule); with --body (repeatable) only
+// the bodies named (and their odometry only), so that several controller processes share a
+// run. With --log it writes, for every step answered, one line per body of the odometry of
+// that step (matched by stamp):
 //   step body x y z qx qy qz qw u v w p q r      (%.17g: the doubles exactly)
 // It exits 0 once the node reports step K (--until-step) or the end of its run, 1 when
 // nothing has happened for --timeout seconds (default 30) or on a DDS error. Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
-// DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout:
-//   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step
+// DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout, the
+// mean and the median wall time between consecutive answers:
+//   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step (median 301.2 us)
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -52,6 +56,7 @@ struct Args {
   double timeout = 30.0;
   bool stats = false;
   std::string security;
+  std::vector<std::string> only;  // --body: the commanded bodies answered; empty: all
 };
 
 [[noreturn]] void Fail(const std::string& message) {
@@ -86,6 +91,8 @@ Args Parse(int argc, char** argv) {
       a.log = value();
     } else if (arg == "--security") {
       a.security = value();
+    } else if (arg == "--body") {
+      a.only.push_back(value());
     } else if (arg == "--stats") {
       a.stats = true;
     } else if (arg == "--timeout") {
@@ -114,6 +121,7 @@ Args Parse(int argc, char** argv) {
 struct Body {
   std::string name;
   dds_entity_t odom_reader = 0;
+  dds_entity_t odom_waitset = 0;  // --log: the odometry of the step, when not there yet
   std::map<std::pair<int32_t, uint32_t>, nav_msgs_msg_dds__Odometry_> odoms;  // by stamp
 };
 
@@ -163,10 +171,23 @@ int main(int argc, char** argv) {
       for (uint32_t i = 0; i < s->bodies._length; ++i) {
         Body b;
         b.name = s->bodies._buffer[i];
-        bodies.push_back(b);
+        // --body: the odometry of those bodies only
+        if (args.only.empty() ||
+            std::find(args.only.begin(), args.only.end(), b.name) != args.only.end()) {
+          bodies.push_back(b);
+        }
       }
       for (uint32_t i = 0; i < s->commanded_bodies._length; ++i) {
-        commanded.push_back(s->commanded_bodies._buffer[i]);
+        const std::string name = s->commanded_bodies._buffer[i];
+        if (args.only.empty() ||
+            std::find(args.only.begin(), args.only.end(), name) != args.only.end()) {
+          commanded.push_back(name);
+        }
+      }
+      for (const std::string& name : args.only) {
+        if (std::find(commanded.begin(), commanded.end(), name) == commanded.end()) {
+          Fail("--body " + name + ": not a commanded body of the node's scene");
+        }
       }
     }
     if (n > 0) dds_return_loan(scene_reader, samples, n);
@@ -183,6 +204,13 @@ int main(int argc, char** argv) {
                                (prefix + b.name + "/odom").c_str(), nullptr, nullptr),
               "odom topic");
     b.odom_reader = Check(dds_create_reader(participant, t, state_qos, nullptr), "odom reader");
+    if (!args.log.empty()) {  // only --log waits for the odometry (a condition costs per sample)
+      b.odom_waitset = Check(dds_create_waitset(participant), "waitset");
+      Check(dds_waitset_attach(
+                b.odom_waitset,
+                Check(dds_create_readcondition(b.odom_reader, DDS_ANY_STATE), "read condition"), 0),
+            "waitset attach");
+    }
   }
   std::vector<dds_entity_t> writers;
   for (const std::string& name : commanded) {
@@ -230,6 +258,8 @@ int main(int argc, char** argv) {
   Clock::time_point last_progress = Clock::now();
   Clock::time_point first_answer;
   long answers = 0;
+  std::vector<double> intervals;  // --stats: between consecutive answers [us]
+  if (args.stats) intervals.reserve(1 << 16);
   int exit_code = -1;
   while (exit_code < 0) {
     dds_waitset_wait(waitset, nullptr, 0, DDS_MSECS(100));
@@ -249,8 +279,10 @@ int main(int argc, char** argv) {
       }
       run_id = s->run_id;
       answered = s->step;
+      const Clock::time_point previous = last_progress;
       last_progress = Clock::now();
       if (answers++ == 0) first_answer = last_progress;
+      if (args.stats && answers > 1) intervals.push_back(1e6 * Seconds(last_progress - previous));
 
       // the odometry of this step, matched by stamp
       if (log != nullptr) {
@@ -274,7 +306,7 @@ int main(int argc, char** argv) {
             if (Seconds(Clock::now() - wait_begin) > 2.0) {
               Fail("no odometry of " + b.name + " for step " + std::to_string(s->step));
             }
-            dds_sleepfor(DDS_USECS(50));
+            dds_waitset_wait(b.odom_waitset, nullptr, 0, DDS_MSECS(100));  // no polling
           }
           const nav_msgs_msg_dds__Odometry_& o = b.odoms[key];
           std::fprintf(log,
@@ -321,8 +353,11 @@ int main(int argc, char** argv) {
   if (log != nullptr) std::fclose(log);
   if (args.stats && answers > 1) {
     const double wall = Seconds(last_progress - first_answer);
-    std::printf("test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step\n", answers - 1,
-                wall, (answers - 1) / wall, 1e6 * wall / (answers - 1));
+    std::sort(intervals.begin(), intervals.end());
+    std::printf(
+        "test_controller: %ld steps in %.3f s: %.0f steps/s, %.1f us/step (median %.1f us)\n",
+        answers - 1, wall, (answers - 1) / wall, 1e6 * wall / (answers - 1),
+        intervals[(intervals.size() - 1) / 2]);
   }
   dds_delete_qos(state_qos);
   dds_delete_qos(command_qos);

@@ -44,6 +44,28 @@ bool WaitFor(Pred pred) {
   return true;
 }
 
+// matched() is the count Cyclone's publication-matched listener keeps (one atomic load per
+// step): it follows a reader that comes and goes, as dds_get_publication_matched_status does
+TEST_F(DdsEntitiesTest, MatchedFollowsReadersThatComeAndGo) {
+  Participant p(kDomain, "");
+  Topic t(p, &nav_msgs_msg_dds__Odometry__desc, "rt/test_match/towfish/odom");
+  Writer<OdometryMsg> w(p, t, StateQos());
+  EXPECT_FALSE(w.matched());
+  for (int round = 0; round < 2; ++round) {
+    {
+      Reader<OdometryMsg> r(p, t, StateQos());
+      ASSERT_TRUE(WaitFor([&] { return w.matched(); }));
+      EXPECT_EQ(w.matched_count(), 1);
+    }
+    ASSERT_TRUE(WaitFor([&] { return !w.matched(); }));
+    EXPECT_EQ(w.matched_count(), 0);
+  }
+  // a moved writer keeps its count (the listener writes to storage that does not move)
+  Reader<OdometryMsg> r(p, t, StateQos());
+  Writer<OdometryMsg> moved = std::move(w);
+  ASSERT_TRUE(WaitFor([&] { return moved.matched(); }));
+}
+
 TEST_F(DdsEntitiesTest, WriterMatchesOnlyWithAReader) {
   Participant p(kDomain, "");
   Topic t(p, &towsim_msgs_msg_dds__ActuatorCommand__desc, "rt/test_match/tow_vehicle/command");
