@@ -41,10 +41,26 @@ core::Vec3 FrdToFlu(const core::Vec3& v) { return core::Vec3(v.x(), -v.y(), -v.z
 
 // the number of markers of sim's scene (so that the vector never reallocates)
 size_t CountMarkers(const core::Simulation& sim) {
-  size_t n = 1 + static_cast<size_t>(sim.num_bodies()) + 2;
+  size_t n = 1 + static_cast<size_t>(sim.num_bodies()) + 2 + 2;
   for (const core::Vehicle& v : sim.model().vehicles) n += v.params.surfaces.size();
   return n;
 }
+
+// the body the sea patches follow: the first vehicle with a propeller, else the first
+// vehicle; -1: none (the cable's start node)
+int TowVehicle(const core::Simulation& sim) {
+  const std::vector<core::Vehicle>& vehicles = sim.model().vehicles;
+  for (size_t v = 0; v < vehicles.size(); ++v) {
+    if (vehicles[v].params.has_propeller) return sim.num_spheres() + static_cast<int>(v);
+  }
+  return vehicles.empty() ? -1 : sim.num_spheres();
+}
+
+// vertex k of the patch's triangle list: cell (i, j) has the triangles (i, j) (i + 1, j)
+// (i + 1, j + 1) and (i, j) (i + 1, j + 1) (i, j + 1), corners counted from the patch's
+// lower-left (x0, y0)
+constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+constexpr size_t kPatchVertices = 6 * kSeaPatchCells * kSeaPatchCells;
 
 bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; }
 
@@ -57,6 +73,12 @@ ColorMsg TensionColor(double tension) {
   const double b = std::max(0.0, 1.0 - 2.0 * s);
   const double g = 1.0 - r - b;
   return Rgba(static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f);
+}
+
+ColorMsg SeaColor(double eta, double eta_max) {
+  const double s = eta_max > 0.0 ? std::clamp(0.5 + eta / (2.0 * eta_max), 0.0, 1.0) : 0.5;
+  return Rgba(static_cast<float>(0.6 * s), static_cast<float>(0.15 + 0.7 * s),
+              static_cast<float>(0.45 + 0.55 * s), kSeaAlpha);
 }
 
 MarkerMsg& SceneMarkers::Add(const std::string& ns, int id, int type, const std::string& frame) {
@@ -165,9 +187,61 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
     arrows_.push_back({markers_.size() - 1, e, e == 0 ? 0 : sim.num_nodes() - 1});
   }
 
+  // the sea patches
+  const core::Environment& env = model.environment;
+  patch_body_ = TowVehicle(sim);
+  if (!env.waves.empty()) {
+    for (const core::WaveComponent& c : env.waves.components()) eta_max_ += std::abs(c.amplitude);
+    sea_points_.resize(kPatchVertices);
+    sea_colors_.resize(kPatchVertices);
+    MarkerMsg& m = Add("sea_surface", 0, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST,
+                       kWorldFrame);
+    const uint32_t k = static_cast<uint32_t>(kPatchVertices);
+    m.points = {k, k, sea_points_.data(), false};
+    m.colors = {k, k, sea_colors_.data(), false};
+    sea_marker_ = static_cast<long>(markers_.size() - 1);
+  }
+  if (env.seabed.present()) {
+    seabed_points_.resize(kPatchVertices);
+    MarkerMsg& m =
+        Add("seabed", 0, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST, kWorldFrame);
+    m.color = Rgba(0.55f, 0.47f, 0.33f, 1.0f);
+    const uint32_t k = static_cast<uint32_t>(kPatchVertices);
+    m.points = {k, k, seabed_points_.data(), false};
+    seabed_marker_ = static_cast<long>(markers_.size() - 1);
+  }
+
   const uint32_t n = static_cast<uint32_t>(markers_.size());
   msg.markers = {n, n, markers_.data(), false};
   Update(sim);
+}
+
+void SceneMarkers::UpdatePatches(const core::Simulation& sim) {
+  if (sea_marker_ < 0 && seabed_marker_ < 0) return;
+  const core::Environment& env = sim.model().environment;
+  // the patch's centre: the grid corner nearest the tow vehicle
+  const core::Vec3 c = patch_body_ >= 0 ? sim.body_position(patch_body_) : sim.node_position(0);
+  const double h = 0.5 * kSeaPatchCells * kSeaPatchCellSize;
+  const double x0 = kSeaPatchCellSize * std::round(c.x() / kSeaPatchCellSize) - h;
+  const double y0 = kSeaPatchCellSize * std::round(c.y() / kSeaPatchCellSize) - h;
+  const double t = sim.time();
+  size_t k = 0;
+  for (int i = 0; i < kSeaPatchCells; ++i) {
+    for (int j = 0; j < kSeaPatchCells; ++j) {
+      for (const auto& corner : kCorner) {
+        const double x = x0 + (i + corner[0]) * kSeaPatchCellSize;
+        const double y = y0 + (j + corner[1]) * kSeaPatchCellSize;
+        if (sea_marker_ >= 0) {
+          const double eta = env.waves.Elevation(x, y, t);
+          SetPoint(core::Vec3(x, y, -eta), &sea_points_[k]);
+          sea_colors_[k] = SeaColor(eta, eta_max_);
+        }
+        if (seabed_marker_ >= 0)
+          SetPoint(core::Vec3(x, y, env.seabed.Depth(x, y)), &seabed_points_[k]);
+        ++k;
+      }
+    }
+  }
 }
 
 void SceneMarkers::Update(const core::Simulation& sim) {
@@ -185,6 +259,7 @@ void SceneMarkers::Update(const core::Simulation& sim) {
     SetPoint(NedToEnu(p + kForceArrowScale * f),
              &arrow_points_[static_cast<size_t>(2 * a.end + 1)]);
   }
+  UpdatePatches(sim);
 }
 
 }  // namespace towsim::dds
