@@ -50,6 +50,21 @@ const MarkerMsg* Find(const MarkerArrayMsg& a, const std::string& ns, int id) {
   return nullptr;
 }
 
+core::Model Load(const char* yaml) {
+  return scene::LoadSceneFromString(yaml, "dds_markers.yaml",
+                                    std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+}
+
+// `steps` steps with the scene's script; false on a solver failure
+bool StepScripted(const core::Model& model, int steps, core::Simulation* sim) {
+  core::ScriptRunner script(model);
+  for (int k = 0; k < steps; ++k) {
+    script.Apply(sim);
+    if (!sim->Step().ok()) return false;
+  }
+  return true;
+}
+
 TEST(TensionColorTest, LegendFromBlueThroughGreenToRed) {
   auto expect = [](double t, float r, float g, float b) {
     const ColorMsg c = TensionColor(t);
@@ -68,15 +83,10 @@ TEST(TensionColorTest, LegendFromBlueThroughGreenToRed) {
 }
 
 TEST(SceneMarkersTest, DrawsTheStateItWasUpdatedFrom) {
-  const core::Model model = scene::LoadSceneFromString(
-      kScene, "dds_markers.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  const core::Model model = Load(kScene);
   core::Simulation sim(model);
   SceneMarkers markers(sim);
-  core::ScriptRunner script(model);
-  for (int k = 0; k < 10; ++k) {
-    script.Apply(&sim);
-    ASSERT_TRUE(sim.Step().ok());
-  }
+  ASSERT_TRUE(StepScripted(model, 10, &sim));
   markers.Update(sim);
   const MarkerArrayMsg& a = markers.msg;
 
@@ -193,15 +203,10 @@ constexpr double kElevationTol = 1e-12;
 constexpr double kDepthTol = 1e-10;
 
 TEST(SceneMarkersTest, SeaSurfaceAndSeabedPatchesAroundTheTowVehicle) {
-  const core::Model model = scene::LoadSceneFromString(
-      kSeaScene, "dds_markers_sea.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  const core::Model model = Load(kSeaScene);
   core::Simulation sim(model);
   SceneMarkers markers(sim);
-  core::ScriptRunner script(model);
-  for (int k = 0; k < 10; ++k) {
-    script.Apply(&sim);
-    ASSERT_TRUE(sim.Step().ok());
-  }
+  ASSERT_TRUE(StepScripted(model, 10, &sim));
   markers.Update(sim);
   const MarkerMsg* sea = Find(markers.msg, "sea_surface", 0);
   const MarkerMsg* bed = Find(markers.msg, "seabed", 0);
@@ -262,8 +267,7 @@ TEST(SceneMarkersTest, SeaSurfaceAndSeabedPatchesAroundTheTowVehicle) {
 }
 
 TEST(SceneMarkersTest, NoSeaPatchesInACalmBottomlessScene) {
-  const core::Model model = scene::LoadSceneFromString(
-      kScene, "dds_markers.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  const core::Model model = Load(kScene);
   core::Simulation sim(model);
   SceneMarkers markers(sim);
   EXPECT_EQ(Find(markers.msg, "sea_surface", 0), nullptr);
