@@ -61,6 +61,7 @@ int TowVehicle(const core::Simulation& sim) {
 // lower-left (x0, y0)
 constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
 constexpr size_t kPatchVertices = 6 * kSeaPatchCells * kSeaPatchCells;
+constexpr size_t kPatchCorners = (kSeaPatchCells + 1) * (kSeaPatchCells + 1);
 
 bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; }
 
@@ -194,6 +195,8 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
     for (const core::WaveComponent& c : env.waves.components()) eta_max_ += std::abs(c.amplitude);
     sea_points_.resize(kPatchVertices);
     sea_colors_.resize(kPatchVertices);
+    corner_eta_.resize(kPatchCorners);
+    wave_work_.resize(4 * (kSeaPatchCells + 1));
     MarkerMsg& m = Add("sea_surface", 0, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST,
                        kWorldFrame);
     const uint32_t k = static_cast<uint32_t>(kPatchVertices);
@@ -203,6 +206,7 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   }
   if (env.seabed.present()) {
     seabed_points_.resize(kPatchVertices);
+    corner_depth_.resize(kPatchCorners);
     MarkerMsg& m =
         Add("seabed", 0, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST, kWorldFrame);
     m.color = Rgba(0.55f, 0.47f, 0.33f, 1.0f);
@@ -224,20 +228,33 @@ void SceneMarkers::UpdatePatches(const core::Simulation& sim) {
   const double h = 0.5 * kSeaPatchCells * kSeaPatchCellSize;
   const double x0 = kSeaPatchCellSize * std::round(c.x() / kSeaPatchCellSize) - h;
   const double y0 = kSeaPatchCellSize * std::round(c.y() / kSeaPatchCellSize) - h;
-  const double t = sim.time();
+  // the surface and the bottom at the (n + 1)^2 corners, once each
+  constexpr int kCorners = kSeaPatchCells + 1;
+  if (sea_marker_ >= 0) {
+    env.waves.ElevationGrid(x0, kSeaPatchCellSize, kCorners, y0, kSeaPatchCellSize, kCorners,
+                            sim.time(), &wave_work_, corner_eta_.data());
+  }
+  if (seabed_marker_ >= 0) {
+    for (int i = 0; i < kCorners; ++i) {
+      for (int j = 0; j < kCorners; ++j) {
+        corner_depth_[static_cast<size_t>(i * kCorners + j)] =
+            env.seabed.Depth(x0 + i * kSeaPatchCellSize, y0 + j * kSeaPatchCellSize);
+      }
+    }
+  }
   size_t k = 0;
   for (int i = 0; i < kSeaPatchCells; ++i) {
     for (int j = 0; j < kSeaPatchCells; ++j) {
       for (const auto& corner : kCorner) {
-        const double x = x0 + (i + corner[0]) * kSeaPatchCellSize;
-        const double y = y0 + (j + corner[1]) * kSeaPatchCellSize;
+        const int ci = i + corner[0], cj = j + corner[1];
+        const size_t n = static_cast<size_t>(ci * kCorners + cj);
+        const double x = x0 + ci * kSeaPatchCellSize;
+        const double y = y0 + cj * kSeaPatchCellSize;
         if (sea_marker_ >= 0) {
-          const double eta = env.waves.Elevation(x, y, t);
-          SetPoint(core::Vec3(x, y, -eta), &sea_points_[k]);
-          sea_colors_[k] = SeaColor(eta, eta_max_);
+          SetPoint(core::Vec3(x, y, -corner_eta_[n]), &sea_points_[k]);
+          sea_colors_[k] = SeaColor(corner_eta_[n], eta_max_);
         }
-        if (seabed_marker_ >= 0)
-          SetPoint(core::Vec3(x, y, env.seabed.Depth(x, y)), &seabed_points_[k]);
+        if (seabed_marker_ >= 0) SetPoint(core::Vec3(x, y, corner_depth_[n]), &seabed_points_[k]);
         ++k;
       }
     }

@@ -43,8 +43,8 @@ inline constexpr double kTensionLegendMax = 5000.0;  // red at and above [N]
 inline constexpr double kCableLineWidth = 0.25;      // drawn width of the cable [m]
 inline constexpr double kFinThickness = 0.03;        // drawn thickness of a fin [m]
 inline constexpr double kForceArrowScale = 1.0e-3;   // arrow length per force [m/N]
-inline constexpr int kSeaPatchCells = 20;            // cells per side of the sea patches
-inline constexpr double kSeaPatchCellSize = 10.0;    // [m]: a 200 m square
+inline constexpr int kSeaPatchCells = 16;            // cells per side of the sea patches
+inline constexpr double kSeaPatchCellSize = 12.5;    // [m]: a 200 m square
 
 // the legend: t / kTensionLegendMax clamped to [0, 1] from blue (0, 0, 1) through green
 // (0, 1, 0) at 0.5 to red (1, 0, 0); a negative tension (compression) is drawn blue
@@ -94,6 +94,7 @@ class SceneMarkers {
   double eta_max_ = 0.0;  // sum of the wave amplitudes [m]
   std::vector<geometry_msgs_msg_dds__Point_> sea_points_, seabed_points_;
   std::vector<ColorMsg> sea_colors_;
+  std::vector<double> corner_eta_, corner_depth_, wave_work_;  // at the (n + 1)^2 corners
 };
 
 }  // namespace towsim::dds
