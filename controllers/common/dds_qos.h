@@ -1,5 +1,5 @@
 #pragma once
-// The QoS of the towsim topics (README "DDS node"), the one definition the node (its C++
+// The QoS of the towsim topics (docs/topics.md), the one definition the node (its C++
 // wrapper sim_node/dds/qos.h), the client library and the tests' participants use:
 //   state, /clock, status   reliable, keep last `depth`, volatile: a reliable writer matches
 //                           both reliable and best-effort ROS 2 subscribers, and keep-last

@@ -29,8 +29,8 @@ using Clock = std::chrono::steady_clock;
 constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
 constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
 constexpr double kLockstepHintAfter = 5.0;  // say what lockstep waits for after [s]
-// lockstep: a vehicle never heard from is waited for this long, then failsafe (README "DDS
-// node"; --wait-for-controllers waits without limit before the first step) [s]
+// lockstep: a vehicle never heard from is waited for this long, then failsafe (docs/topics.md,
+// "Commands and lockstep"; --wait-for-controllers waits without limit before the first step) [s]
 constexpr double kLockstepStartTimeout = 30.0;
 constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
 constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
@@ -137,7 +137,7 @@ int DdsNode::Run() {
     if (realtime()) pacer_.Start(period());
     exit_code = Loop();
   } catch (const io::OutputError& e) {
-    // an output failed (README "Exit codes"): the run ends, FAILED with the reason, and what
+    // an output failed (docs/command_line.md "Exit codes"): the run ends, FAILED with the reason, and what
     // still works (DDS, the other output) ends cleanly
     exit_code = kExitError;
     control_.Fail(std::string("output failed: ") + e.what());
@@ -249,7 +249,7 @@ void DdsNode::PublishStatus(uint8_t state) {
   s.coupling_iterations = n_.sim->coupling_iterations();
   s.substeps = last_status_.substeps;
   if (n_.peers && n_.peers->Poll()) {
-    // one that appeared while this node runs: both go on, warned (README "DDS node")
+    // one that appeared while this node runs: both go on, warned (docs/topics.md)
     n_.peer_note = "warning: another node runs on DDS domain " + std::to_string(opt_.domain) +
                    ", namespace " + opt_.ns + " (" + n_.peers->Names() + ")";
     std::fprintf(stderr, "sim_node: %s\n", n_.peer_note.c_str());

@@ -101,7 +101,7 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     std::vector<std::string> commanded;
     for (int i = 0; i < n.arbiter->size(); ++i) commanded.push_back(n.arbiter->vehicle(i).name);
     n.unknown = std::make_unique<UnknownCommands>(*n.participant, opt.ns, commanded);
-    // another node in this domain and namespace: refused (README "DDS node"); nothing of
+    // another node in this domain and namespace: refused (docs/topics.md); nothing of
     // this node is published yet
     n.peers = std::make_unique<PeerNodes>(*n.participant, dds::TopicNames(opt.ns));
     if (n.peers->WaitForAny(PeerNodes::kStartWindow, [] { return StopRequested() != 0; })) {

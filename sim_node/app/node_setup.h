@@ -1,5 +1,5 @@
 #pragma once
-// Setting up the DDS node (README "DDS node"): the options checked, the vehicles that take
+// Setting up the DDS node (docs/topics.md): the options checked, the vehicles that take
 // commands and those lockstep waits for, the initial state, the participant and the node's
 // endpoints, the second-node check, its ROS 2 graph entry, the recording and the Foxglove
 // server. What the run (app/dds_node.cc) then steps, controls and publishes.

@@ -1,5 +1,5 @@
 #pragma once
-// The run control of the DDS node (README "DDS node", SimControl in msgs/towsim_msgs): what
+// The run control of the DDS node (docs/topics.md, SimControl in msgs/towsim_msgs): what
 // the node does next and the state its status reports, as a pure state machine (no DDS, no
 // clocks; the node's loop in app/dds_node.cc asks it and acts).
 //

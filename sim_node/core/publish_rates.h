@@ -1,5 +1,5 @@
 #pragma once
-// The per-topic publishing rates of a DDS node (the scene's `publish` map, README "DDS node";
+// The per-topic publishing rates of a DDS node (the scene's `publish` map, docs/topics.md;
 // plain scene data, unused offline). One row per rate key: the scene loader reads every key of
 // kPublishRateKeys, the node turns each rate into a stride of whole steps. A new rate is one
 // row here and one enumerator.
