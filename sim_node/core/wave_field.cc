@@ -186,6 +186,36 @@ double WaveField::Elevation(double x, double y, double t) const {
   return Ramp(t) * eta;
 }
 
+void WaveField::ElevationGrid(double x0, double dx, int nx, double y0, double dy, int ny, double t,
+                              std::vector<double>* work, double* out) const {
+  const size_t n = static_cast<size_t>(nx) * static_cast<size_t>(ny);
+  std::fill(out, out + n, 0.0);
+  if (terms_.empty()) return;
+  work->resize(2 * static_cast<size_t>(nx + ny));
+  double* cos_a = work->data();
+  double* sin_a = cos_a + nx;
+  double* cos_b = sin_a + nx;
+  double* sin_b = cos_b + ny;
+  for (const Term& c : terms_) {
+    // a cos(A_i + B_j), A_i = kx x_i - w t + f, B_j = ky y_j
+    for (int i = 0; i < nx; ++i) {
+      const double th = c.kx * (x0 + i * dx) - c.omega * t + c.phase;
+      cos_a[i] = c.a * std::cos(th);
+      sin_a[i] = c.a * std::sin(th);
+    }
+    for (int j = 0; j < ny; ++j) {
+      cos_b[j] = std::cos(c.ky * (y0 + j * dy));
+      sin_b[j] = std::sin(c.ky * (y0 + j * dy));
+    }
+    for (int i = 0; i < nx; ++i) {
+      double* row = out + static_cast<size_t>(i) * static_cast<size_t>(ny);
+      for (int j = 0; j < ny; ++j) row[j] += cos_a[i] * cos_b[j] - sin_a[i] * sin_b[j];
+    }
+  }
+  const double r = Ramp(t);
+  for (size_t k = 0; k < n; ++k) out[k] *= r;
+}
+
 WaveKinematics WaveField::Kinematics(const Vec3& p_W, double t) const {
   WaveKinematics out;
   if (terms_.empty()) {

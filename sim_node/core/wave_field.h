@@ -126,6 +126,13 @@ class WaveField {
 
   // eta(x, y, t) [m], positive up: the surface is at z_NED = -eta
   double Elevation(double x, double y, double t) const;
+  // eta at the nodes of the grid x_i = x0 + i dx (i < nx), y_j = y0 + j dy (j < ny) at t:
+  // out[i ny + j] (nx ny values). The sum of Elevation with cos(A_i + B_j) = cos A_i cos B_j -
+  // sin A_i sin B_j, A_i = kx x_i - w t + f, B_j = ky y_j: 2 (nx + ny) sines and cosines per
+  // component instead of nx ny cosines (equal to Elevation to rounding). `work` is resized to
+  // 2 (nx + ny) (no allocation once it is that large).
+  void ElevationGrid(double x0, double dx, int nx, double y0, double dy, int ny, double t,
+                     std::vector<double>* work, double* out) const;
   // velocity, acceleration and dynamic pressure at p_W (NED) and t; zero above the surface
   WaveKinematics Kinematics(const Vec3& p_W, double t) const;
 

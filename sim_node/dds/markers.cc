@@ -41,10 +41,27 @@ core::Vec3 FrdToFlu(const core::Vec3& v) { return core::Vec3(v.x(), -v.y(), -v.z
 
 // the number of markers of sim's scene (so that the vector never reallocates)
 size_t CountMarkers(const core::Simulation& sim) {
-  size_t n = 1 + static_cast<size_t>(sim.num_bodies()) + 2;
+  size_t n = 1 + static_cast<size_t>(sim.num_bodies()) + 2 + 2;
   for (const core::Vehicle& v : sim.model().vehicles) n += v.params.surfaces.size();
   return n;
 }
+
+// the body the sea patches follow: the first vehicle with a propeller, else the first
+// vehicle; -1: none (the cable's start node)
+int TowVehicle(const core::Simulation& sim) {
+  const std::vector<core::Vehicle>& vehicles = sim.model().vehicles;
+  for (size_t v = 0; v < vehicles.size(); ++v) {
+    if (vehicles[v].params.has_propeller) return sim.num_spheres() + static_cast<int>(v);
+  }
+  return vehicles.empty() ? -1 : sim.num_spheres();
+}
+
+// vertex k of the patch's triangle list: cell (i, j) has the triangles (i, j) (i + 1, j)
+// (i + 1, j + 1) and (i, j) (i + 1, j + 1) (i, j + 1), corners counted from the patch's
+// lower-left (x0, y0)
+constexpr int kCorner[6][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 0}, {1, 1}, {0, 1}};
+constexpr size_t kPatchVertices = 6 * kSeaPatchCells * kSeaPatchCells;
+constexpr size_t kPatchCorners = (kSeaPatchCells + 1) * (kSeaPatchCells + 1);
 
 bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; }
 
@@ -57,6 +74,12 @@ ColorMsg TensionColor(double tension) {
   const double b = std::max(0.0, 1.0 - 2.0 * s);
   const double g = 1.0 - r - b;
   return Rgba(static_cast<float>(r), static_cast<float>(g), static_cast<float>(b), 1.0f);
+}
+
+ColorMsg SeaColor(double eta, double eta_max) {
+  const double s = eta_max > 0.0 ? std::clamp(0.5 + eta / (2.0 * eta_max), 0.0, 1.0) : 0.5;
+  return Rgba(static_cast<float>(0.6 * s), static_cast<float>(0.15 + 0.7 * s),
+              static_cast<float>(0.45 + 0.55 * s), kSeaAlpha);
 }
 
 MarkerMsg& SceneMarkers::Add(const std::string& ns, int id, int type, const std::string& frame) {
@@ -165,9 +188,77 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
     arrows_.push_back({markers_.size() - 1, e, e == 0 ? 0 : sim.num_nodes() - 1});
   }
 
+  // the sea patches
+  const core::Environment& env = model.environment;
+  patch_body_ = TowVehicle(sim);
+  if (!env.waves.empty()) {
+    for (const core::WaveComponent& c : env.waves.components()) eta_max_ += std::abs(c.amplitude);
+    sea_points_.resize(kPatchVertices);
+    sea_colors_.resize(kPatchVertices);
+    corner_eta_.resize(kPatchCorners);
+    wave_work_.resize(4 * (kSeaPatchCells + 1));
+    MarkerMsg& m = Add("sea_surface", 0, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST,
+                       kWorldFrame);
+    const uint32_t k = static_cast<uint32_t>(kPatchVertices);
+    m.points = {k, k, sea_points_.data(), false};
+    m.colors = {k, k, sea_colors_.data(), false};
+    sea_marker_ = static_cast<long>(markers_.size() - 1);
+  }
+  if (env.seabed.present()) {
+    seabed_points_.resize(kPatchVertices);
+    corner_depth_.resize(kPatchCorners);
+    MarkerMsg& m =
+        Add("seabed", 0, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST, kWorldFrame);
+    m.color = Rgba(0.55f, 0.47f, 0.33f, 1.0f);
+    const uint32_t k = static_cast<uint32_t>(kPatchVertices);
+    m.points = {k, k, seabed_points_.data(), false};
+    seabed_marker_ = static_cast<long>(markers_.size() - 1);
+  }
+
   const uint32_t n = static_cast<uint32_t>(markers_.size());
   msg.markers = {n, n, markers_.data(), false};
   Update(sim);
+}
+
+void SceneMarkers::UpdatePatches(const core::Simulation& sim) {
+  if (sea_marker_ < 0 && seabed_marker_ < 0) return;
+  const core::Environment& env = sim.model().environment;
+  // the patch's centre: the grid corner nearest the tow vehicle
+  const core::Vec3 c = patch_body_ >= 0 ? sim.body_position(patch_body_) : sim.node_position(0);
+  const double h = 0.5 * kSeaPatchCells * kSeaPatchCellSize;
+  const double x0 = kSeaPatchCellSize * std::round(c.x() / kSeaPatchCellSize) - h;
+  const double y0 = kSeaPatchCellSize * std::round(c.y() / kSeaPatchCellSize) - h;
+  // the surface and the bottom at the (n + 1)^2 corners, once each
+  constexpr int kCorners = kSeaPatchCells + 1;
+  if (sea_marker_ >= 0) {
+    env.waves.ElevationGrid(x0, kSeaPatchCellSize, kCorners, y0, kSeaPatchCellSize, kCorners,
+                            sim.time(), &wave_work_, corner_eta_.data());
+  }
+  if (seabed_marker_ >= 0) {
+    for (int i = 0; i < kCorners; ++i) {
+      for (int j = 0; j < kCorners; ++j) {
+        corner_depth_[static_cast<size_t>(i * kCorners + j)] =
+            env.seabed.Depth(x0 + i * kSeaPatchCellSize, y0 + j * kSeaPatchCellSize);
+      }
+    }
+  }
+  size_t k = 0;
+  for (int i = 0; i < kSeaPatchCells; ++i) {
+    for (int j = 0; j < kSeaPatchCells; ++j) {
+      for (const auto& corner : kCorner) {
+        const int ci = i + corner[0], cj = j + corner[1];
+        const size_t n = static_cast<size_t>(ci * kCorners + cj);
+        const double x = x0 + ci * kSeaPatchCellSize;
+        const double y = y0 + cj * kSeaPatchCellSize;
+        if (sea_marker_ >= 0) {
+          SetPoint(core::Vec3(x, y, -corner_eta_[n]), &sea_points_[k]);
+          sea_colors_[k] = SeaColor(corner_eta_[n], eta_max_);
+        }
+        if (seabed_marker_ >= 0) SetPoint(core::Vec3(x, y, corner_depth_[n]), &seabed_points_[k]);
+        ++k;
+      }
+    }
+  }
 }
 
 void SceneMarkers::Update(const core::Simulation& sim) {
@@ -185,6 +276,7 @@ void SceneMarkers::Update(const core::Simulation& sim) {
     SetPoint(NedToEnu(p + kForceArrowScale * f),
              &arrow_points_[static_cast<size_t>(2 * a.end + 1)]);
   }
+  UpdatePatches(sim);
 }
 
 }  // namespace towsim::dds

@@ -3,11 +3,13 @@
 // by the axis permutation of REP-103, not by the library's helper), the colours follow the
 // legend, hulls and fins have the vehicle file's dimensions, the force arrows the end forces.
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "core/environment_field.h"
 #include "core/script.h"
 #include "core/simulation.h"
 #include "dds/markers.h"
@@ -48,6 +50,21 @@ const MarkerMsg* Find(const MarkerArrayMsg& a, const std::string& ns, int id) {
   return nullptr;
 }
 
+core::Model Load(const char* yaml) {
+  return scene::LoadSceneFromString(yaml, "dds_markers.yaml",
+                                    std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+}
+
+// `steps` steps with the scene's script; false on a solver failure
+bool StepScripted(const core::Model& model, int steps, core::Simulation* sim) {
+  core::ScriptRunner script(model);
+  for (int k = 0; k < steps; ++k) {
+    script.Apply(sim);
+    if (!sim->Step().ok()) return false;
+  }
+  return true;
+}
+
 TEST(TensionColorTest, LegendFromBlueThroughGreenToRed) {
   auto expect = [](double t, float r, float g, float b) {
     const ColorMsg c = TensionColor(t);
@@ -66,15 +83,10 @@ TEST(TensionColorTest, LegendFromBlueThroughGreenToRed) {
 }
 
 TEST(SceneMarkersTest, DrawsTheStateItWasUpdatedFrom) {
-  const core::Model model = scene::LoadSceneFromString(
-      kScene, "dds_markers.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  const core::Model model = Load(kScene);
   core::Simulation sim(model);
   SceneMarkers markers(sim);
-  core::ScriptRunner script(model);
-  for (int k = 0; k < 10; ++k) {
-    script.Apply(&sim);
-    ASSERT_TRUE(sim.Step().ok());
-  }
+  ASSERT_TRUE(StepScripted(model, 10, &sim));
   markers.Update(sim);
   const MarkerArrayMsg& a = markers.msg;
 
@@ -156,6 +168,110 @@ TEST(SceneMarkersTest, DrawsTheStateItWasUpdatedFrom) {
     EXPECT_NEAR(p1.z - p0.z, -kForceArrowScale * f.z(), kScaledTol);
     EXPECT_GT(f.norm(), 100.0);
   }
+}
+
+// the scene of kScene in a sea: a regular wave and a sloping seabed (deeper toward north-east)
+constexpr const char* kSeaScene = R"(
+name: dds_markers_sea
+time: {step: 0.05, duration: 1, output_rate: 10}
+environment:
+  waves: {regular: {height: 2, period: 8, direction_deg: 30, phase_deg: 40}}
+  seabed: {depth: 260, slope_deg: 2, slope_direction_deg: 45}
+cable:
+  length: 200
+  elements: 10
+  diameter: 0.041
+  density: 1300
+  youngs_modulus: 7.0e8
+  initial: vertical
+  start: {body: tow_vehicle, at: [0, 0, 0.2]}
+  end: {body: towfish, at: [1.65, 0, 0]}
+bodies:
+  tow_vehicle: {model: ../vehicles/tow_vehicle.yaml, position: [33, -17, 3.5], euler_deg: [0, 0, 30]}
+  towfish: {model: ../vehicles/towfish.yaml, position: [31.35, -17, 203.7]}
+script:
+  - {at: 0, body: tow_vehicle, thrust: 4165}
+)";
+
+// Airy elevation of the wave: the scene's H / 2 [m]
+constexpr double kAmplitude = 1.0;
+// the marker's heights against core's EnvironmentField (the loads' own evaluation of the same
+// Airy sum, in another order): rounding of a phase of O(10) rad on a 1 m amplitude, ~1e-14 m
+constexpr double kElevationTol = 1e-12;
+// the seabed's plane d_0 + tan(slope) (x cos c + y sin c), evaluated here: rounding of a
+// depth of O(300) m
+constexpr double kDepthTol = 1e-10;
+
+TEST(SceneMarkersTest, SeaSurfaceAndSeabedPatchesAroundTheTowVehicle) {
+  const core::Model model = Load(kSeaScene);
+  core::Simulation sim(model);
+  SceneMarkers markers(sim);
+  ASSERT_TRUE(StepScripted(model, 10, &sim));
+  markers.Update(sim);
+  const MarkerMsg* sea = Find(markers.msg, "sea_surface", 0);
+  const MarkerMsg* bed = Find(markers.msg, "seabed", 0);
+  ASSERT_NE(sea, nullptr);
+  ASSERT_NE(bed, nullptr);
+  for (const MarkerMsg* m : {sea, bed}) {
+    EXPECT_STREQ(m->header.frame_id, "world_ned");
+    EXPECT_EQ(m->type, visualization_msgs_msg_dds__Marker_Constants_TRIANGLE_LIST);
+    EXPECT_EQ(m->header.stamp.sec, 0);
+    EXPECT_EQ(m->header.stamp.nanosec, 500000000u);  // 10 steps of 0.05 s
+    ASSERT_EQ(m->points._length, 6u * kSeaPatchCells * kSeaPatchCells);
+  }
+  ASSERT_EQ(sea->colors._length, sea->points._length);
+
+  // the tow vehicle is the one with a propeller; the patch's centre is the grid corner
+  // nearest it, and every vertex is a corner of the fixed lattice
+  const int tow = markers.patch_body();
+  ASSERT_GE(tow, 0);
+  EXPECT_EQ(sim.body_name(tow), "tow_vehicle");
+  const core::Vec3 p_tow = sim.body_position(tow);
+  double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300;
+  const core::EnvironmentField field(model.environment);
+  const double t = sim.time();
+  const double slope = 2.0 * M_PI / 180.0, c = 45.0 * M_PI / 180.0;
+  double eta_lo = 1e300, eta_hi = -1e300;
+  for (uint32_t k = 0; k < sea->points._length; ++k) {
+    const auto& p = sea->points._buffer[k];
+    const auto& q = bed->points._buffer[k];
+    EXPECT_EQ(p.x, q.x);
+    EXPECT_EQ(p.y, q.y);
+    x_min = std::min(x_min, p.x), x_max = std::max(x_max, p.x);
+    y_min = std::min(y_min, p.y), y_max = std::max(y_max, p.y);
+    EXPECT_NEAR(p.x / kSeaPatchCellSize, std::round(p.x / kSeaPatchCellSize), 1e-12);
+    EXPECT_NEAR(p.y / kSeaPatchCellSize, std::round(p.y / kSeaPatchCellSize), 1e-12);
+    // NED: the surface at z = -eta, the bottom at z = d
+    const double eta = field.Elevation(p.x, p.y, t);
+    EXPECT_NEAR(p.z, -eta, kElevationTol) << k;
+    EXPECT_NEAR(q.z, 260.0 + std::tan(slope) * (q.x * std::cos(c) + q.y * std::sin(c)), kDepthTol)
+        << k;
+    eta_lo = std::min(eta_lo, eta), eta_hi = std::max(eta_hi, eta);
+    // the legend: s = eta / (2 a) + 1/2, deep blue at a trough, pale blue at a crest
+    const double shade = 0.5 + eta / (2.0 * kAmplitude);
+    const ColorMsg& col = sea->colors._buffer[k];
+    EXPECT_NEAR(col.r, 0.6 * shade, kColorTol);
+    EXPECT_NEAR(col.g, 0.15 + 0.7 * shade, kColorTol);
+    EXPECT_NEAR(col.b, 0.45 + 0.55 * shade, kColorTol);
+    EXPECT_EQ(col.a, kSeaAlpha);
+  }
+  // a 200 m square whose centre is within half a cell of the vehicle in x and y
+  const double side = kSeaPatchCells * kSeaPatchCellSize;
+  EXPECT_NEAR(x_max - x_min, side, 1e-9);
+  EXPECT_NEAR(y_max - y_min, side, 1e-9);
+  EXPECT_LE(std::abs(0.5 * (x_min + x_max) - p_tow.x()), 0.5 * kSeaPatchCellSize + 1e-9);
+  EXPECT_LE(std::abs(0.5 * (y_min + y_max) - p_tow.y()), 0.5 * kSeaPatchCellSize + 1e-9);
+  // the patch spans more than a wavelength (~100 m at 8 s in 260 m of water): crest and trough
+  EXPECT_GT(eta_hi, 0.9 * kAmplitude);
+  EXPECT_LT(eta_lo, -0.9 * kAmplitude);
+}
+
+TEST(SceneMarkersTest, NoSeaPatchesInACalmBottomlessScene) {
+  const core::Model model = Load(kScene);
+  core::Simulation sim(model);
+  SceneMarkers markers(sim);
+  EXPECT_EQ(Find(markers.msg, "sea_surface", 0), nullptr);
+  EXPECT_EQ(Find(markers.msg, "seabed", 0), nullptr);
 }
 
 }  // namespace

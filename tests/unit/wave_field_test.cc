@@ -238,6 +238,38 @@ double PiersonMoskowitz(double hs, double tp, double w) {
          std::exp(-1.25 * std::pow(wp / w, 4));
 }
 
+// ElevationGrid is Elevation at every node of the grid: an irregular sea of 100 components,
+// in the ramp, on a grid that does not start at the origin. cos(A + B) by the addition theorem
+// rounds differently from cos of the summed phase: a few ulps of a phase of O(100) rad on each
+// of 100 amplitudes summing to ~4 m, well inside kGridTol
+TEST(WaveField, ElevationGridIsElevationAtTheNodes) {
+  constexpr double kGridTol = 1e-11;  // [m]
+  WaveSpectrum s;
+  s.hs = 2.0;
+  s.tp = 8.0;
+  s.components = 100;
+  s.seed = 7;
+  WaveField w = WaveField::Irregular(s, 60.0, kG, 1025.0);
+  w.set_ramp(20.0);
+  constexpr int kNx = 7, kNy = 5;
+  const double x0 = -130.0, dx = 10.0, y0 = 45.0, dy = 12.5, t = 13.7;
+  std::vector<double> work, eta(kNx * kNy);
+  w.ElevationGrid(x0, dx, kNx, y0, dy, kNy, t, &work, eta.data());
+  double largest = 0.0;
+  for (int i = 0; i < kNx; ++i) {
+    for (int j = 0; j < kNy; ++j) {
+      const double expected = w.Elevation(x0 + i * dx, y0 + j * dy, t);
+      EXPECT_NEAR(eta[i * kNy + j], expected, kGridTol) << i << " " << j;
+      largest = std::max(largest, std::abs(expected));
+    }
+  }
+  EXPECT_GT(largest, 0.1);  // a sea, not calm water
+  // calm water: zeros
+  const WaveField calm;
+  calm.ElevationGrid(x0, dx, kNx, y0, dy, kNy, t, &work, eta.data());
+  for (double e : eta) EXPECT_EQ(e, 0.0);
+}
+
 TEST(WaveSpectrum, PiersonMoskowitzIsNormalisedInClosedForm) {
   WaveSpectrum s;
   s.kind = WaveSpectrumKind::kPiersonMoskowitz;
