@@ -52,6 +52,11 @@ bool HasSea(const core::Environment& env);
 // a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
 std::string CsvField(const std::string& name);
 
+// one environment.csv row (header kCsvEnvironmentHeader) at time t [s] for `body`: the altitude
+// NaN (no seabed) as an empty field; for CsvWriter and towsim_export, so that both print alike
+void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
+                         double altitude, double depth, double u, double v, double w);
+
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
