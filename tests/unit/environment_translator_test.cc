@@ -11,6 +11,7 @@
 
 #include "core/simulation.h"
 #include "dds/translators.h"
+#include "hanging_sphere_scene.h"
 #include "scene/scene_loader.h"
 #include "wave_number_bisection.h"
 
@@ -22,27 +23,7 @@ constexpr double kPi = 3.14159265358979323846;
 // largest term (1 m of elevation, 1 m/s of velocity, 40 m of depth)
 constexpr double kRoundOffTol = 1e-12;
 
-// a sphere hanging at (3, 4, 20) on a cable from a fixed point above; environment appended
-constexpr const char* kScene = R"(
-name: environment_translator
-time: {step: 0.05, duration: 1, output_rate: 10}
-cable:
-  length: 20
-  elements: 4
-  diameter: 0.041
-  density: 1300
-  youngs_modulus: 7.0e8
-  start: {fixed: [3, 4, 0]}
-  end: {body: ball, at: [0, 0, 0]}
-bodies:
-  ball: {type: sphere, mass: 50, volume: 0.01, position: [3, 4, 20]}
-)";
-
-core::Model Load(const std::string& environment) {
-  return scene::LoadSceneFromString(std::string(kScene) + environment,
-                                    "environment_translator.yaml",
-                                    std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
-}
+core::Model Load(const std::string& environment) { return test::LoadHangingSphere(environment); }
 
 TEST(EnvironmentTranslator, RegularWaveCurrentAndPlaneSeabedAtTheBody) {
   // H 1.5 m, T 6 s travelling toward 30 deg, phase 40 deg; a plane bed 30 m under the origin

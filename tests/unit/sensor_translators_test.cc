@@ -12,6 +12,7 @@
 
 #include "core/simulation.h"
 #include "dds/translators.h"
+#include "hanging_sphere_scene.h"
 #include "scene/scene_loader.h"
 #include "wave_number_bisection.h"
 
@@ -24,26 +25,7 @@ constexpr double kFloatRelTol = 1.0 / (1 << 23);
 // the pressure: a few ulps of 3e5 Pa
 constexpr double kPressureTol = 1e-8;
 
-// a sphere hanging at (3, 4, 20) on a cable from a fixed point above; environment appended
-constexpr const char* kScene = R"(
-name: sensor_translators
-time: {step: 0.05, duration: 1, output_rate: 10}
-cable:
-  length: 20
-  elements: 4
-  diameter: 0.041
-  density: 1300
-  youngs_modulus: 7.0e8
-  start: {fixed: [3, 4, 0]}
-  end: {body: ball, at: [0, 0, 0]}
-bodies:
-  ball: {type: sphere, mass: 50, volume: 0.01, position: [3, 4, 20]}
-)";
-
-core::Model Load(const std::string& environment) {
-  return scene::LoadSceneFromString(std::string(kScene) + environment, "sensor_translators.yaml",
-                                    std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
-}
+core::Model Load(const std::string& environment) { return test::LoadHangingSphere(environment); }
 
 TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
   const core::Model model = Load(
@@ -119,7 +101,7 @@ TEST(SensorTranslators, PressureAboveTheSurfaceIsAtmosphericAndInACrestHydrostat
   // a sphere 0.5 m above the mean surface: under a 4 m crest (phase 0 at x = 3 m shifted to
   // the crest) it is wet, at a trough dry
   auto at = [](double phase_deg) {
-    std::string scene = std::string(kScene) +
+    std::string scene = std::string(test::kHangingSphereScene) +
                         "environment:\n  waves: {regular: {height: 4, period: 8, phase_deg: " +
                         std::to_string(phase_deg) + "}}\n";
     scene.replace(scene.find("position: [3, 4, 20]"), 20, "position: [3, 4, -0.5]");
