@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "io/ros2_schemas.h"
 
@@ -33,16 +34,18 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
   const std::vector<TopicRow>& table = NodeTopicTable();
   for (int b = 0; b < sim.num_bodies(); ++b) {
     for (const TopicRow& row : table) {
-      if (row.per_body && row.make != nullptr) {
-        state_.push_back({row.make(participant, row, row.name(names, body_names_[b]), sim, b), {}});
-      }
+      if (!row.per_body || row.make == nullptr) continue;
+      std::unique_ptr<StateTopic> topic =
+          row.make(participant, row, row.name(names, body_names_[b]), sim, b);
+      if (topic != nullptr) state_.push_back({std::move(topic), {}});  // else not in this scene
     }
   }
   for (bool clock : {false, true}) {
     for (const TopicRow& row : table) {
       if (row.per_body || row.make == nullptr) continue;
       if ((*row.rate == core::PublishRate::kClock) != clock) continue;
-      state_.push_back({row.make(participant, row, row.name(names, ""), sim, -1), {}});
+      std::unique_ptr<StateTopic> topic = row.make(participant, row, row.name(names, ""), sim, -1);
+      if (topic != nullptr) state_.push_back({std::move(topic), {}});
     }
   }
   const int num_spheres = sim.num_spheres();

@@ -21,6 +21,7 @@
 namespace towsim::app {
 namespace {
 
+using io::cdr::BodyEnvironment;
 using io::cdr::CableState;
 using io::cdr::Odometry;
 using io::cdr::WrenchStamped;
@@ -33,6 +34,7 @@ std::int64_t StampNs(const io::cdr::Time& t) {
 struct Frame {
   std::map<std::string, Odometry> odom;         // by body
   std::map<std::string, WrenchStamped> forces;  // by body
+  std::map<std::string, BodyEnvironment> environment;  // by body
   std::optional<CableState> cable;
 };
 
@@ -74,11 +76,12 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
 ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                        const std::string& ns) {
   // the channels of the node under `ns`, by what they carry
-  enum class Kind { kOdom, kForce, kCable, kStatus, kSceneInfo };
+  enum class Kind { kOdom, kForce, kEnvironment, kCable, kStatus, kSceneInfo };
   struct Route {
     Kind kind;
-    std::string body;  // kOdom, kForce
+    std::string body;  // kOdom, kForce, kEnvironment
   };
+  bool sea = false;  // environment topics: environment.csv is written
   std::map<std::uint16_t, Route> routes;
   std::vector<std::string> channel_bodies;  // bodies in channel order (fallback order)
   std::string all_topics;
@@ -113,6 +116,10 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     } else if (slash != std::string::npos && rest.substr(slash) == "/cable_force") {
       expect("geometry_msgs/msg/WrenchStamped");
       routes[id] = {Kind::kForce, rest.substr(0, slash)};
+    } else if (slash != std::string::npos && rest.substr(slash) == "/environment") {
+      expect("towsim_msgs/msg/BodyEnvironment");
+      routes[id] = {Kind::kEnvironment, rest.substr(0, slash)};
+      sea = true;
     }
   }
   if (routes.empty()) {
@@ -143,6 +150,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
         case Kind::kForce: {
           WrenchStamped w = io::cdr::DecodeWrenchStamped(p, n);
           frames[StampNs(w.header.stamp)].forces[route->second.body] = std::move(w);
+          break;
+        }
+        case Kind::kEnvironment: {
+          BodyEnvironment e = io::cdr::DecodeBodyEnvironment(p, n);
+          frames[StampNs(e.header.stamp)].environment[route->second.body] = std::move(e);
           break;
         }
         case Kind::kCable: {
@@ -188,6 +200,8 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   CsvFile cable_csv(d / "cable.csv", io::kCsvCableHeader);
   CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
   CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
+  std::optional<CsvFile> environment_csv;  // as the node: only for a scene with a sea
+  if (sea) environment_csv.emplace(d / "environment.csv", io::kCsvEnvironmentHeader);
   ExportCounts counts;
 
   for (const auto& [stamp, frame] : frames) {
@@ -224,6 +238,14 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                    m.torque.z);
       ++counts.forces_rows;
     }
+    for (const std::string& b : bodies) {
+      const auto e = frame.environment.find(b);
+      if (e == frame.environment.end()) continue;
+      const BodyEnvironment& m = e->second;
+      io::WriteEnvironmentRow(environment_csv->get(), t, b, m.wave_elevation, m.altitude, m.depth,
+                              m.current.x, m.current.y, m.current.z);
+      ++counts.environment_rows;
+    }
   }
   for (const io::cdr::SimStatus& s : statuses) {
     // the node's CSV: wall_us = lround(step wall time * 1e6), the same number it publishes
@@ -236,6 +258,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   cable_csv.Close();
   forces_csv.Close();
   status_csv.Close();
+  if (environment_csv) environment_csv->Close();
   return counts;
 }
 

@@ -10,6 +10,9 @@
 //   NS/cable/state     towsim_msgs/CableState -> cable.csv
 //   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
 //                                                 the end-of-run repeat of a step is dropped)
+//   NS/<b>/environment towsim_msgs/BodyEnvironment -> environment.csv (written, as by the node,
+//                                                 only when the recording has these topics: a
+//                                                 scene with a sea; NaN altitude as an empty field)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).
@@ -26,9 +29,11 @@ namespace towsim::app {
 
 struct ExportCounts {
   std::uint64_t bodies_rows = 0, cable_rows = 0, forces_rows = 0, status_rows = 0;
+  std::uint64_t environment_rows = 0;
 };
 
 // reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files
+// (and environment.csv, above)
 // into `dir` (created if needed). Throws mcap::McapError / cdr::CdrError (bad file: the
 // message names the offset and, for a payload, the topic), std::invalid_argument (no towsim
 // topics under `ns`, a topic with an unexpected type) or std::runtime_error (writing failed).

@@ -99,11 +99,14 @@ int main(int argc, char** argv) {
       const auto n = towsim::app::ExportCsv(reader, csv_dir, ns);
       std::fprintf(stderr,
                    "towsim_export: %s -> %s: bodies %llu rows, cable %llu, forces %llu, status "
-                   "%llu\n",
+                   "%llu%s\n",
                    file.c_str(), csv_dir.c_str(), static_cast<unsigned long long>(n.bodies_rows),
                    static_cast<unsigned long long>(n.cable_rows),
                    static_cast<unsigned long long>(n.forces_rows),
-                   static_cast<unsigned long long>(n.status_rows));
+                   static_cast<unsigned long long>(n.status_rows),
+                   n.environment_rows == 0
+                       ? ""
+                       : (", environment " + std::to_string(n.environment_rows)).c_str());
     }
     if (!reader.skipped().empty()) {
       for (const towsim::io::McapSkipped& skipped : reader.skipped()) {

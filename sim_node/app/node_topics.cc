@@ -2,11 +2,13 @@
 
 #include <utility>
 
+#include "dds/environment_translator.h"
 #include "dds/frames.h"
 #include "dds/markers.h"
 #include "dds/messages.h"
 #include "dds/sensor_translators.h"
 #include "dds/translators.h"
+#include "io/csv_writer.h"
 
 namespace towsim::app {
 namespace {
@@ -52,6 +54,10 @@ void Altitude(const core::Simulation& sim, int b, uint64_t, dds::RangeMessage* m
 void Pressure(const core::Simulation& sim, int b, uint64_t, dds::FluidPressureMessage* m) {
   dds::ToPressure(sim, b, &m->msg);
 }
+void Environment(const core::Simulation& sim, int b, uint64_t step,
+                 dds::BodyEnvironmentMessage* m) {
+  dds::ToBodyEnvironment(sim, b, step, &m->msg);
+}
 void CableState(const core::Simulation& sim, int, uint64_t step, dds::CableStateMessage* m) {
   dds::ToCableState(sim, step, m);
 }
@@ -84,6 +90,9 @@ std::string OdomName(const TopicNames& n, const std::string& b) { return n.odom(
 std::string CableForceName(const TopicNames& n, const std::string& b) { return n.cable_force(b); }
 std::string AltitudeName(const TopicNames& n, const std::string& b) { return n.altitude(b); }
 std::string PressureName(const TopicNames& n, const std::string& b) { return n.pressure(b); }
+std::string EnvironmentName(const TopicNames& n, const std::string& b) {
+  return n.environment(b);
+}
 std::string CommandName(const TopicNames& n, const std::string& b) { return n.command(b); }
 
 std::vector<TopicRow> BuildTable() {
@@ -148,6 +157,15 @@ std::vector<TopicRow> BuildTable() {
        [](P p, const TopicRow& row, N name, S sim, int b) {
          return Make<dds::FluidPressureMessage, Pressure>(
              p, row, name, std::make_unique<dds::FluidPressureMessage>(sim.body_name(b)), b);
+       }},
+      // the sea at each body, as environment.csv: only in a scene with waves, a current or a
+      // seabed (io::HasSea; a calm scene's node has no such topic)
+      {kBody, EnvironmentName, &towsim_msgs_msg_dds__BodyEnvironment__desc, TopicQos::kState, kOut,
+       PublishRate::kSensors,
+       [](P p, const TopicRow& row, N name, S sim, int b) -> std::unique_ptr<StateTopic> {
+         if (!io::HasSea(sim.model().environment)) return nullptr;
+         return Make<dds::BodyEnvironmentMessage, Environment>(
+             p, row, name, std::make_unique<dds::BodyEnvironmentMessage>(dds::kWorldFrame), b);
        }},
       {kBody, CommandName, &towsim_msgs_msg_dds__ActuatorCommand__desc, TopicQos::kCommand, kIn},
   };

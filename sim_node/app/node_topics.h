@@ -56,7 +56,8 @@ struct TopicRow {
   bool outbound;  // the node writes it (else: the node reads it)
   // the per-step state topics: their rate key and their writer with its translator (body: the
   // body index for per-body rows, else -1); the others (scene_info, status, sim_control,
-  // commands, /tf_static) are written or read by the node's run itself
+  // commands, /tf_static) are written or read by the node's run itself. `make` returns
+  // nullptr where the scene has no such topic (the environment of a calm scene)
   std::optional<core::PublishRate> rate = std::nullopt;
   std::unique_ptr<StateTopic> (*make)(const dds::Participant& participant, const TopicRow& row,
                                       const std::string& name, const core::Simulation& sim,

@@ -20,6 +20,7 @@ using OdometryMsg = nav_msgs_msg_dds__Odometry_;
 using WrenchStampedMsg = geometry_msgs_msg_dds__WrenchStamped_;
 using ClockMsg = rosgraph_msgs_msg_dds__Clock_;
 using CableStateMsg = towsim_msgs_msg_dds__CableState_;
+using BodyEnvironmentMsg = towsim_msgs_msg_dds__BodyEnvironment_;
 using ActuatorCommandMsg = towsim_msgs_msg_dds__ActuatorCommand_;
 using SimStatusMsg = towsim_msgs_msg_dds__SimStatus_;
 using SimControlMsg = towsim_msgs_msg_dds__SimControl_;

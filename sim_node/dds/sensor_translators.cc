@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "core/wave_field.h"
 #include "dds/translators.h"
 
 namespace towsim::dds {
@@ -39,8 +40,14 @@ void ToAltitude(const core::Simulation& sim, int body, RangeMsg* msg) {
 void ToPressure(const core::Simulation& sim, int body, FluidPressureMsg* msg) {
   msg->header.stamp = ToTimeMsg(sim.time());
   const core::Environment& sea = sim.model().environment;
-  const double depth = std::max(0.0, sim.body_depth(body));  // above the surface: the air's
-  msg->fluid_pressure = kAtmosphericPressure + sea.water_density * sea.gravity * depth;
+  const core::Vec3 p = sim.body_position(body);
+  // linear theory's total pressure: hydrostatic below the mean surface plus the waves'
+  // dynamic pressure p_d = rho g sum a K(zeta) cos th (core/wave_field.h); dry above the
+  // instantaneous surface (the air's); in a crest p_d(0) = rho g eta, so there p = rho g (z +
+  // eta), zero at the surface
+  const core::WaveKinematics w = sea.waves.Kinematics(p, sim.time());
+  const double gauge = w.wet ? sea.water_density * sea.gravity * p.z() + w.dynamic_pressure : 0.0;
+  msg->fluid_pressure = kAtmosphericPressure + std::max(0.0, gauge);
   msg->variance = 0.0;
 }
 

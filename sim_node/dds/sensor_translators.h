@@ -7,9 +7,11 @@
 //             origin [m]; ULTRASOUND (an acoustic altimeter), field of view kAltimeterFieldOfView,
 //             min_range 0, max_range kAltimeterMaxRange. REP 117: +inf when there is no seabed
 //             or it is beyond max_range (no echo), -inf when the origin is below the bed
-//   pressure  sensor_msgs/FluidPressure: absolute pressure [Pa] = kAtmosphericPressure +
-//             rho g max(0, depth), depth = z + eta below the instantaneous surface (hydrostatic
-//             and the wave's surface elevation, as a pressure sensor's depth is read); variance 0
+//   pressure  sensor_msgs/FluidPressure: absolute pressure [Pa] at the body origin, linear
+//             theory's total pressure: kAtmosphericPressure + rho g z + p_d below the
+//             instantaneous surface, p_d the waves' dynamic pressure
+//             rho g sum a cosh(k(h - z)) / cosh(kh) cos(th) (core/wave_field.h); the
+//             atmosphere above it; variance 0
 //
 // Header: stamp = simulation time, frame_id = the body's name (its body frame).
 

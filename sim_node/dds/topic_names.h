@@ -31,6 +31,9 @@ class TopicNames {
   std::string command(const std::string& body) const { return prefix_ + body + "/command"; }
   std::string altitude(const std::string& body) const { return prefix_ + body + "/altitude"; }
   std::string pressure(const std::string& body) const { return prefix_ + body + "/pressure"; }
+  std::string environment(const std::string& body) const {
+    return prefix_ + body + "/environment";
+  }
   std::string cable_state() const { return prefix_ + "cable/state"; }
   std::string status() const { return prefix_ + "status"; }
   std::string sim_control() const { return prefix_ + "sim_control"; }

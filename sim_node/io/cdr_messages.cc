@@ -93,6 +93,19 @@ CableState DecodeCableState(const std::uint8_t* data, std::size_t size) {
   return m;
 }
 
+BodyEnvironment DecodeBodyEnvironment(const std::uint8_t* data, std::size_t size) {
+  CdrReader r(data, size, "towsim_msgs/msg/BodyEnvironment");
+  BodyEnvironment m;
+  m.header = ReadHeader(r);
+  m.step = r.U64("step");
+  m.wave_elevation = r.F64("wave_elevation");
+  m.current = ReadVector3(r, "current");
+  m.altitude = r.F64("altitude");
+  m.depth = r.F64("depth");
+  r.Finish();
+  return m;
+}
+
 ActuatorCommand DecodeActuatorCommand(const std::uint8_t* data, std::size_t size) {
   CdrReader r(data, size, "towsim_msgs/msg/ActuatorCommand");
   ActuatorCommand m;

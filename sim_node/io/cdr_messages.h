@@ -60,6 +60,15 @@ struct CableState {  // towsim_msgs/CableState
   std::vector<double> tensions;
 };
 
+struct BodyEnvironment {  // towsim_msgs/BodyEnvironment
+  Header header;
+  std::uint64_t step = 0;
+  double wave_elevation = 0.0;
+  Vector3 current;
+  double altitude = 0.0;  // NaN: no seabed
+  double depth = 0.0;
+};
+
 struct ActuatorCommand {  // towsim_msgs/ActuatorCommand
   Header header;
   std::uint64_t step = 0;
@@ -118,6 +127,7 @@ Odometry DecodeOdometry(const std::uint8_t* data, std::size_t size);
 WrenchStamped DecodeWrenchStamped(const std::uint8_t* data, std::size_t size);
 Clock DecodeClock(const std::uint8_t* data, std::size_t size);
 CableState DecodeCableState(const std::uint8_t* data, std::size_t size);
+BodyEnvironment DecodeBodyEnvironment(const std::uint8_t* data, std::size_t size);
 ActuatorCommand DecodeActuatorCommand(const std::uint8_t* data, std::size_t size);
 SimStatus DecodeSimStatus(const std::uint8_t* data, std::size_t size);
 SimControl DecodeSimControl(const std::uint8_t* data, std::size_t size);

@@ -78,6 +78,15 @@ std::string CsvField(const std::string& name) {
   return quoted + "\"";
 }
 
+void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
+                         double altitude, double depth, double u, double v, double w) {
+  // no seabed: the altitude is NaN, written as an empty field (the files never hold NaN)
+  char altitude_field[32] = "";
+  if (!std::isnan(altitude)) std::snprintf(altitude_field, sizeof altitude_field, "%.9g", altitude);
+  std::fprintf(f, "%.9g,%s,%.9g,%s,%.9g,%.9g,%.9g,%.9g\n", t, CsvField(body).c_str(),
+               wave_elevation, altitude_field, depth, u, v, w);
+}
+
 CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
@@ -190,20 +199,12 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   if (environment_.f != nullptr) WriteEnvironment(sim, &line);
 }
 
-void CsvWriter::WriteEnvironment(const core::Simulation& sim, std::string* line) {
+void CsvWriter::WriteEnvironment(const core::Simulation& sim, std::string* /*line*/) {
   const double t = sim.time();
   for (int b = 0; b < sim.num_bodies(); ++b) {
-    // no seabed: the altitude is NaN, written as an empty field (the files never hold NaN)
-    const double altitude = sim.body_altitude(b);
     const core::Vec3 u = sim.water_velocity_at(b);
-    Row row(line);
-    row.Number(t).Text(CsvField(sim.body_name(b))).Number(sim.surface_elevation_at(b));
-    if (std::isnan(altitude)) {
-      row.Text("");
-    } else {
-      row.Number(altitude);
-    }
-    row.Number(sim.body_depth(b)).Number(u.x()).Number(u.y()).Number(u.z()).WriteTo(environment_.f);
+    WriteEnvironmentRow(environment_.f, t, sim.body_name(b), sim.surface_elevation_at(b),
+                        sim.body_altitude(b), sim.body_depth(b), u.x(), u.y(), u.z());
   }
   Check(environment_);
 }

@@ -58,6 +58,10 @@ std::string CsvField(const std::string& name);
 // defines as printf in the "C" locale: the same bytes for a third of the instructions
 // (docs/benchmarks.md, "Start-up")
 void AppendCsvNumber(double x, std::string* line);
+// one environment.csv row (header kCsvEnvironmentHeader) at time t [s] for `body`: the altitude
+// NaN (no seabed) as an empty field; for CsvWriter and towsim_export, so that both print alike
+void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
+                         double altitude, double depth, double u, double v, double w);
 
 class CsvWriter {
  public:

@@ -4,7 +4,8 @@
 // set to the CSV output rate. The only rows that cannot come back are the support reactions
 // of cable ends held by fixed / driven points ("cable.start", "cable.end" in forces.csv): they
 // are not published. --info lists the topics; a damaged recording exits 2 naming the offset.
-// DDS domains 91, 92 and 134.
+// A sea scene's environment topic comes back as the node's environment.csv. DDS domains 91,
+// 92, 134 and 188.
 #include <unistd.h>
 
 #include <cstdlib>
@@ -39,10 +40,11 @@ class ExportRoundTrip : public ::testing::Test {
   ~ExportRoundTrip() override { fs::remove_all(dir_); }
 
   // runs `sim_node` in fast mode with --csv and --record, every topic at the output rate
+  // (`scene` relative to the source tree, or absolute)
   void RecordRun(const std::string& scene, int domain, double duration) {
     Process node({TOWSIM_SIM_NODE,
                   "--scene",
-                  std::string(TOWSIM_SOURCE_DIR) + "/" + scene,
+                  scene.front() == '/' ? scene : std::string(TOWSIM_SOURCE_DIR) + "/" + scene,
                   "--mode",
                   "fast",
                   "--domain",
@@ -60,7 +62,9 @@ class ExportRoundTrip : public ::testing::Test {
                   "--set",
                   "publish.cable_state=10",
                   "--set",
-                  "publish.status=10"},
+                  "publish.status=10",
+                  "--set",
+                  "publish.sensors=10"},
                  (dir_ / "node").string());
     ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
     ASSERT_EQ(node.exit_code(), 0) << node.err();
@@ -135,7 +139,68 @@ TEST_F(ExportRoundTrip, TwoVehiclesRecordedAndExportedEqualsTheNodesCsv) {
   ExpectSameCsv(dir_ / "node", dir_ / "exported", 101);
   EXPECT_EQ(ReadFile((dir_ / "node/forces.csv").string()),
             ReadFile((dir_ / "exported/forces.csv").string()));
+  // calm water: neither the node nor the export writes environment.csv (no such topic)
+  EXPECT_FALSE(fs::exists(dir_ / "node/environment.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "exported/environment.csv"));
 }
+
+// the sea on the wire (docs/environment.md): the steady tow in regular head waves, a sheared
+// current and over a flat seabed; the node's <body>/environment topic, recorded and exported,
+// gives the node's own environment.csv byte for byte (every number to its 9 printed digits).
+// DDS domain 188.
+TEST_F(ExportRoundTrip, SeaSceneEnvironmentTopicExportedEqualsTheNodesEnvironmentCsv) {
+  std::string scene = ReadFile(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/steady_tow.yaml");
+  const std::string calm = "current: [0, 0, 0]}";
+  ASSERT_NE(scene.find(calm), std::string::npos);
+  scene.replace(scene.find(calm), calm.size(),
+                "current: {profile: [[0, [0.6, 0.1, 0]], [250, [0.1, 0, 0]]]},\n"
+                "  waves: {regular: {height: 2, period: 9, direction_deg: 180}},\n"
+                "  seabed: {depth: 250}}");
+  const std::string model = "../vehicles/";
+  ASSERT_NE(scene.find(model), std::string::npos);
+  scene.replace(scene.find(model), model.size(),
+                std::string(TOWSIM_SOURCE_DIR) + "/config/vehicles/");
+  const fs::path scene_file = dir_ / "sea.yaml";
+  std::ofstream(scene_file) << scene;
+  RecordRun(scene_file.string(), 188, 5.0);
+  Process exp = Export(
+      {(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string(), "--info"}, "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  ExpectSameCsv(dir_ / "node", dir_ / "exported", 51);
+  const auto a = Lines((dir_ / "node/environment.csv").string());
+  const auto b = Lines((dir_ / "exported/environment.csv").string());
+  // 5 s at 10 Hz: 51 rows of the towfish (t = 0 included) and the header
+  ASSERT_EQ(a.size(), 52u);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i], b[i]) << "first difference at line " << i + 1;
+  }
+  EXPECT_NE(exp.out().find("Topic: /towsim/towfish/environment | Type: "
+                           "towsim_msgs/msg/BodyEnvironment | Count: 51 | "),
+            std::string::npos)
+      << exp.out();
+  EXPECT_NE(exp.err().find(", environment 51"), std::string::npos) << exp.err();
+  // the values are the sea's, at t = 0 with the towfish at (0, 0, 203.5): eta = a cos(0) = 1 m
+  // (phase 0 at the origin), altitude 250 - 203.5, depth z + eta, the profile's current
+  // 0.6 + (0.1 - 0.6) 203.5 / 250 north and 0.1 (1 - 203.5 / 250) east (the 9 s wave's orbital
+  // velocity at 203.5 m is a w e^{-k z} = 3e-5 m/s); within the 9 printed digits and that
+  constexpr double kOrbitalTol = 1e-4;  // [m/s]
+  std::vector<double> v;
+  std::stringstream row(a[1]);
+  for (std::string field; std::getline(row, field, ',');) {
+    v.push_back(field == "towfish" ? 0.0 : std::stod(field));
+  }
+  ASSERT_EQ(v.size(), 8u) << a[1];
+  EXPECT_EQ(v[0], 0.0);
+  EXPECT_NEAR(v[2], 1.0, 1e-8);
+  EXPECT_NEAR(v[3], 250.0 - 203.5, 1e-6);
+  EXPECT_NEAR(v[4], 203.5 + 1.0, 1e-6);
+  EXPECT_NEAR(v[5], 0.6 - 0.5 * 203.5 / 250.0, kOrbitalTol);
+  EXPECT_NEAR(v[6], 0.1 * (1.0 - 203.5 / 250.0), kOrbitalTol);
+  EXPECT_NEAR(v[7], 0.0, kOrbitalTol);
+}
+
 
 // domain 134 (not 91: ctest -j2 runs it beside the steady tow test, and a second node in a
 // domain and namespace is refused)

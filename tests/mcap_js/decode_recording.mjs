@@ -11,6 +11,8 @@
 //   prints 9 significant digits ("%.9g"), so a decoded value v and its CSV text c agree when
 //   |v - c| <= 5e-9 |c| (half a unit in the 9th digit) + kAbs; Euler angles are computed
 //   here from the quaternion, so they get kAbsAngle on top (float64 rounding of the formulas).
+// - environment.csv of the node (the run has a current profile) compared with the decoded
+//   <body>/environment messages (towsim_msgs/BodyEnvironment), row by row
 // - the frames and markers (docs/frames.md): /tf, /tf_static and /towsim/markers decode with
 //   their OFFICIAL ROS 2 Jazzy definitions (@foxglove/rosmsg-msgs-common, not the recording's
 //   schemas) to the same values; every frame named by the markers and the odometry resolves to
@@ -18,7 +20,7 @@
 //   carries the odometry's pose at the same stamp; the cable marker's points are the cable
 //   state's positions in `world` (x_E = y_N, y_E = x_N, z_E = -z_N) at the same stamp.
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
-import { readFileSync } from "node:fs";
+import { existsSync, readFileSync } from "node:fs";
 import { join } from "node:path";
 import { isDeepStrictEqual } from "node:util";
 
@@ -222,6 +224,31 @@ for (let i = 0; i < Math.min(statusRows.length, status.length); i++) {
   check(Math.round(s.step_wall_time * 1e6) === Number(r.wall_us), `${what} wall_us ${s.step_wall_time}`);
   compared += 1;
 }
+// environment.csv (the run has a current): per body, its rows = its environment messages
+// (towsim_msgs/BodyEnvironment), the altitude NaN where the CSV field is empty (no seabed)
+check(existsSync(join(csvDir, "environment.csv")), "environment.csv written (a scene with a sea)");
+const envRows = existsSync(join(csvDir, "environment.csv")) ? readCsv("environment.csv") : [];
+for (const body of bodies) {
+  const rows = envRows.filter((r) => r.body === body);
+  const env = byTopic.get(`/towsim/${body}/environment`) ?? [];
+  check(rows.length > 0 && rows.length === env.length, `${body}: ${rows.length} environment rows, ${env.length} messages`);
+  for (let i = 0; i < Math.min(rows.length, env.length); i++) {
+    const e = env[i];
+    const r = rows[i];
+    const what = `${body} environment row ${i}`;
+    near(stampSec(e.header.stamp), r.t, `${what} t`, 1e-9);
+    check(e.header.frame_id === "world_ned", `${what} frame_id ${e.header.frame_id}`);
+    near(e.wave_elevation, r.wave_elevation, `${what} wave_elevation`);
+    if (r.altitude === "") check(Number.isNaN(e.altitude), `${what} altitude ${e.altitude} (no seabed: NaN)`);
+    else near(e.altitude, r.altitude, `${what} altitude`);
+    near(e.depth, r.depth, `${what} depth`);
+    near(e.current.x, r.current_u, `${what} current_u`);
+    near(e.current.y, r.current_v, `${what} current_v`);
+    near(e.current.z, r.current_w, `${what} current_w`);
+    compared += 1;
+  }
+}
+
 const last = (byTopic.get("/towsim/status") ?? []).at(-1);
 check(last !== undefined && last.state === 3, `last status state ${last?.state} (3 = finished)`);
 

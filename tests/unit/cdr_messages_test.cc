@@ -128,6 +128,31 @@ TEST_F(CdrMessagesTest, WrenchStampedAndClockFromCycloneBytes) {
   ExpectTruncationsFail(bc, DecodeClock, "rosgraph_msgs/msg/Clock");
 }
 
+TEST_F(CdrMessagesTest, BodyEnvironmentFromCycloneBytes) {
+  std::string frame = "world_ned";  // 10 bytes with the NUL: step needs 2 of padding
+  dds::BodyEnvironmentMsg m{};
+  m.header.stamp.sec = 12;
+  m.header.stamp.nanosec = 500000000u;
+  m.header.frame_id = frame.data();
+  m.step = 250;
+  m.wave_elevation = -0.3125;
+  m.current = {0.4, -1.0 / 3.0, 2.5e-3};
+  m.altitude = std::numeric_limits<double>::quiet_NaN();  // no seabed
+  m.depth = 19.6875;
+  const auto b = Serialize(&towsim_msgs_msg_dds__BodyEnvironment__desc, &m);
+  const BodyEnvironment d = DecodeBodyEnvironment(b.data(), b.size());
+  EXPECT_EQ(d.header.stamp.seconds(), 12.5);
+  EXPECT_EQ(d.header.frame_id, "world_ned");
+  EXPECT_EQ(d.step, 250u);
+  EXPECT_EQ(d.wave_elevation, -0.3125);
+  EXPECT_EQ(d.current.x, 0.4);
+  EXPECT_EQ(d.current.y, -1.0 / 3.0);
+  EXPECT_EQ(d.current.z, 2.5e-3);
+  EXPECT_TRUE(std::isnan(d.altitude));
+  EXPECT_EQ(d.depth, 19.6875);
+  ExpectTruncationsFail(b, DecodeBodyEnvironment, "towsim_msgs/msg/BodyEnvironment");
+}
+
 TEST_F(CdrMessagesTest, CableStateFromCycloneBytes) {
   constexpr int kNodes = 21;
   std::vector<geometry_msgs_msg_dds__Point_> p(kNodes);

@@ -20,7 +20,8 @@ if(NODE_EXECUTABLE)
   set_tests_properties(mcap_js_core_reader PROPERTIES
     FIXTURES_REQUIRED mcap_js_fixture LABELS integration SKIP_RETURN_CODE 77)
 
-  # the recording: 40 s of Case 1, every topic at the CSV output rate (10 Hz)
+  # the recording: 40 s of Case 1 in a sheared current (so that the node publishes the sea at
+  # each body), every topic at the CSV output rate (10 Hz)
   set(_js_run ${CMAKE_CURRENT_BINARY_DIR}/mcap_js_run)
   set(_dds_uri "file://${PROJECT_SOURCE_DIR}/config/cyclonedds.xml")
   add_test(NAME mcap_js_record_run
@@ -29,7 +30,8 @@ if(NODE_EXECUTABLE)
       --mode fast --domain 93 --duration 40 --csv ${_js_run}/csv --record ${_js_run}/run.mcap
       --overwrite
       --set publish.odom=10 --set publish.cable_force=10 --set publish.cable_state=10
-      --set publish.status=10 --set publish.markers=10)
+      --set publish.status=10 --set publish.markers=10 --set publish.sensors=10
+      "--set=environment.current={profile: [[0, [0.3, 0, 0]], [200, [0, 0.2, 0]]]}")
   set_tests_properties(mcap_js_record_run PROPERTIES
     FIXTURES_SETUP mcap_js_run LABELS integration ENVIRONMENT "CYCLONEDDS_URI=${_dds_uri}")
   add_test(NAME mcap_js_decode_recording

@@ -12,7 +12,9 @@
 
 #include "core/simulation.h"
 #include "dds/translators.h"
+#include "hanging_sphere_scene.h"
 #include "scene/scene_loader.h"
+#include "wave_number_bisection.h"
 
 namespace towsim::dds {
 namespace {
@@ -23,26 +25,7 @@ constexpr double kFloatRelTol = 1.0 / (1 << 23);
 // the pressure: a few ulps of 3e5 Pa
 constexpr double kPressureTol = 1e-8;
 
-// a sphere hanging at (3, 4, 20) on a cable from a fixed point above; environment appended
-constexpr const char* kScene = R"(
-name: sensor_translators
-time: {step: 0.05, duration: 1, output_rate: 10}
-cable:
-  length: 20
-  elements: 4
-  diameter: 0.041
-  density: 1300
-  youngs_modulus: 7.0e8
-  start: {fixed: [3, 4, 0]}
-  end: {body: ball, at: [0, 0, 0]}
-bodies:
-  ball: {type: sphere, mass: 50, volume: 0.01, position: [3, 4, 20]}
-)";
-
-core::Model Load(const std::string& environment) {
-  return scene::LoadSceneFromString(std::string(kScene) + environment, "sensor_translators.yaml",
-                                    std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
-}
+core::Model Load(const std::string& environment) { return test::LoadHangingSphere(environment); }
 
 TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
   const core::Model model = Load(
@@ -73,8 +56,18 @@ TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
   const double eta = sim.surface_elevation_at(0);
   const double k_deep = std::pow(2.0 * kPi / 8.0, 2) / 9.81;
   EXPECT_NEAR(eta, 0.75 * std::cos(k_deep * 3.0 + kPi / 3.0), 0.75 * 0.01);
-  EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * (20.0 + eta),
+  // linear theory's total pressure at z = 20 m under the one regular wave, in closed form:
+  // p_atm + rho g z + rho g a cosh(k (h - z)) / cosh(k h) cos(k x + phase), h = 40 m (the
+  // plane's depth under the origin), k by bisection of w^2 = g k tanh(k h) (not the core's
+  // Newton iteration)
+  const double k = test::BisectWaveNumber(2.0 * kPi / 8.0, 40.0, 9.81);
+  const double p_dynamic = 1025.0 * 9.81 * 0.75 * std::cosh(k * (40.0 - 20.0)) /
+                           std::cosh(k * 40.0) * std::cos(k * 3.0 + kPi / 3.0);
+  EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * 20.0 + p_dynamic,
               kPressureTol * 3e5);
+  // the dynamic pressure is 30 % of the hydrostatic head of eta at this depth: the sensor does
+  // not read the instantaneous depth z + eta (that would be 2 kPa more here)
+  EXPECT_GT(std::abs(1025.0 * 9.81 * eta - p_dynamic), 1000.0);
   EXPECT_EQ(pressure.msg.variance, 0.0);
   EXPECT_EQ(range.msg.variance, 0.0f);
   EXPECT_STREQ(pressure.msg.header.frame_id, "ball");
@@ -98,10 +91,35 @@ TEST(SensorTranslators, NoEchoIsPlusInfinity) {
   const core::Simulation deep(Load("environment: {seabed: {depth: 500}}\n"));
   ToAltitude(deep, 0, &range.msg);
   EXPECT_EQ(range.msg.range, std::numeric_limits<float>::infinity());
-  // calm water without a seabed: the pressure is still atmospheric + rho g z
+  // calm water without a seabed: the pressure is atmospheric + rho g z
   FluidPressureMessage pressure("ball");
   ToPressure(bottomless, 0, &pressure.msg);
   EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * 20.0, kPressureTol * 3e5);
+}
+
+TEST(SensorTranslators, PressureAboveTheSurfaceIsAtmosphericAndInACrestHydrostatic) {
+  // a sphere 0.5 m above the mean surface: under a 4 m crest (phase 0 at x = 3 m shifted to
+  // the crest) it is wet, at a trough dry
+  auto at = [](double phase_deg) {
+    std::string scene = std::string(test::kHangingSphereScene) +
+                        "environment:\n  waves: {regular: {height: 4, period: 8, phase_deg: " +
+                        std::to_string(phase_deg) + "}}\n";
+    scene.replace(scene.find("position: [3, 4, 20]"), 20, "position: [3, 4, -0.5]");
+    scene.replace(scene.find("fixed: [3, 4, 0]"), 16, "fixed: [3, 4, -20.5]");
+    return scene::LoadSceneFromString(scene, "sensor_translators.yaml",
+                                      std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  };
+  const double k_deep = std::pow(2.0 * kPi / 8.0, 2) / 9.81;  // no seabed: deep water
+  const double crest_phase_deg = -k_deep * 3.0 * 180.0 / kPi;  // k x + phase = 0 at x = 3
+  FluidPressureMessage pressure("ball");
+  const core::Simulation crest(at(crest_phase_deg));
+  ToPressure(crest, 0, &pressure.msg);
+  // in the crest (vertical stretching: the kinematics at z = 0, p_d = rho g eta): the head
+  // below the instantaneous surface, rho g (z + eta) = rho g (2 - 0.5)
+  EXPECT_NEAR(pressure.msg.fluid_pressure, 101325.0 + 1025.0 * 9.81 * 1.5, kPressureTol * 3e5);
+  const core::Simulation trough(at(crest_phase_deg + 180.0));
+  ToPressure(trough, 0, &pressure.msg);
+  EXPECT_EQ(pressure.msg.fluid_pressure, 101325.0);  // dry: the atmosphere
 }
 
 }  // namespace
