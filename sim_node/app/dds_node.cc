@@ -120,7 +120,11 @@ class DdsNode {
   uint8_t RunningState() const;
   void Output(const core::StepStatus& status, long wall_us);
   void Summary(double wall) const;
-  void NoteCommand(const dds::CheckedCommand& c, int i);
+  // a rejected or clamped command on stderr (dds::CheckedCommand, dds::CheckedWinchCommand)
+  template <class Checked>
+  void NoteCommand(const Checked& c, int i);
+  // arbiter entries 0 .. num_command_vehicles() - 1 are the vehicles, then the winch's
+  int num_command_vehicles() const { return static_cast<int>(command_vehicles_.size()); }
 
   const core::Model& model_;
   DdsNodeOptions opt_;
@@ -128,6 +132,7 @@ class DdsNode {
   double rate_;
 
   std::vector<int> command_vehicles_;  // vehicle index of arbiter entry i
+  int winch_entry_ = -1;               // the winch's arbiter entry; < 0: no winch
   std::optional<dds::CommandArbiter> arbiter_;
   std::optional<core::Simulation> sim_;
   std::optional<core::ScriptRunner> script_;
@@ -208,11 +213,29 @@ int DdsNode::Setup() {
     vehicles.push_back({vehicle.name, dds::LimitsOf(vehicle.params), lockstep() && waited});
     has_lockstep_vehicles_ = has_lockstep_vehicles_ || (lockstep() && waited);
   }
+  // the winch: one more entry, after the vehicles (docs/winch_dds.md)
+  if (model_.cable.winch) {
+    for (const auto& v : vehicles) {
+      if (v.name == dds::kWinchName) {
+        return bad("body winch: the name is taken by the winch's topic rt/<ns>/winch/command "
+                   "(rename the vehicle)");
+      }
+    }
+    const bool waited = opt_.lockstep_bodies.empty() ||
+                        std::find(opt_.lockstep_bodies.begin(), opt_.lockstep_bodies.end(),
+                                  dds::kWinchName) != opt_.lockstep_bodies.end();
+    winch_entry_ = static_cast<int>(vehicles.size());
+    vehicles.push_back({dds::kWinchName, {}, lockstep() && waited, /*winch=*/true,
+                        *model_.cable.winch});
+    has_lockstep_vehicles_ = has_lockstep_vehicles_ || (lockstep() && waited);
+  }
   for (const std::string& name : opt_.lockstep_bodies) {
     bool found = false;
     for (const auto& v : vehicles) found = found || v.name == name;
-    if (!found)
-      return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands");
+    if (!found) {
+      return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands" +
+                 (model_.cable.winch ? " nor the winch" : ""));
+    }
   }
   arbiter_.emplace(std::move(vehicles), opt_.command_timeout);
 
@@ -243,7 +266,9 @@ int DdsNode::Setup() {
     endpoints_ = std::make_unique<NodeEndpoints>(*participant_, dds::TopicNames(opt_.ns), *sim_,
                                                  command_vehicles_);
     std::vector<std::string> commanded;
-    for (int i = 0; i < arbiter_->size(); ++i) commanded.push_back(arbiter_->vehicle(i).name);
+    for (int i = 0; i < num_command_vehicles(); ++i) {
+      commanded.push_back(arbiter_->vehicle(i).name);
+    }
     unknown_ = std::make_unique<UnknownCommands>(*participant_, opt_.ns, commanded);
     // another node in this domain and namespace: refused (README "DDS node"); nothing of
     // this node is published yet
@@ -311,7 +336,7 @@ int DdsNode::Setup() {
   output_stride_ = Stride(model_.time.output_rate, h_);
   if (std::isfinite(opt_.duration)) steps_to_run_ = std::max(0L, std::lround(opt_.duration / h_));
   paused_ = opt_.start_paused;
-  waiting_for_controllers_ = opt_.wait_for_controllers && arbiter_->size() > 0;
+  waiting_for_controllers_ = opt_.wait_for_controllers && num_command_vehicles() > 0;
   run_id_ = NewRunId(model_.name);
   return kExitOk;
 }
@@ -410,10 +435,17 @@ void DdsNode::PublishInitial() {
   info.duration = steps_to_run_ < 0 ? -1.0 : static_cast<double>(steps_to_run_) * h_;
   info.command_timeout = opt_.command_timeout;
   for (int b = 0; b < sim_->num_bodies(); ++b) info.bodies.push_back(sim_->body_name(b));
-  for (int i = 0; i < arbiter_->size(); ++i) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
     info.commanded_bodies.push_back(arbiter_->vehicle(i).name);
   }
   info.cable_nodes = sim_->num_nodes();
+  if (const std::optional<core::WinchParams>& w = model_.cable.winch) {
+    info.has_winch = true;
+    info.winch_min_length = w->min_length;
+    info.winch_max_length = w->max_length;
+    info.winch_max_speed = w->max_speed;
+    info.winch_max_acceleration = w->max_acceleration;
+  }
   endpoints_->PublishSceneInfo(info);
 
   last_status_ = core::StepStatus{};
@@ -530,7 +562,8 @@ bool DdsNode::HandleControl() {
   return changed;
 }
 
-void DdsNode::NoteCommand(const dds::CheckedCommand& c, int i) {
+template <class Checked>
+void DdsNode::NoteCommand(const Checked& c, int i) {
   if (c.verdict == dds::CheckedCommand::kAccepted) return;
   if (command_notes_ >= kMaxCommandNotes) return;
   ++command_notes_;
@@ -553,6 +586,12 @@ void DdsNode::TakeCommands() {
     endpoints_->command_reader(i).TakeEach(
         [&](const dds::ActuatorCommandMsg& msg, const dds_sample_info_t&) {
           NoteCommand(arbiter_->Receive(i, msg, t), i);
+        });
+  }
+  if (winch_entry_ >= 0) {
+    endpoints_->winch_reader()->TakeEach(
+        [&](const dds::WinchCommandMsg& msg, const dds_sample_info_t&) {
+          NoteCommand(arbiter_->Receive(winch_entry_, msg, t), winch_entry_);
         });
   }
 }
@@ -612,7 +651,7 @@ void DdsNode::Idle() {
 }
 
 bool DdsNode::AllCommanded() const {
-  for (int i = 0; i < arbiter_->size(); ++i) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
     if (!arbiter_->commanded(i)) return false;
   }
   return true;
@@ -623,9 +662,12 @@ bool DdsNode::DoStep() {
   arbiter_->CheckTimeouts(sim.time());
   // the script entries due first, then the controllers' commands (and failsafes) over them
   if (opt_.use_script) script_->Apply(&sim);
-  for (int i = 0; i < arbiter_->size(); ++i) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
     core::VehicleCommand command;
     if (arbiter_->Take(i, &command)) sim.SetVehicleCommand(command_vehicles_[i], command);
+  }
+  if (core::WinchCommand winch; winch_entry_ >= 0 && arbiter_->Take(winch_entry_, &winch)) {
+    sim.SetWinchCommand(winch);
   }
 
   const Clock::time_point t0 = Clock::now();

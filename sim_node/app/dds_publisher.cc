@@ -48,7 +48,8 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
       markers_(participant, markers_topic_, dds::StateQos()),
       control_reader_(participant, control_topic_, dds::ControlQos()),
       waitset_(participant),
-      cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes())),
+      cable_msg_(std::make_unique<dds::CableStateMessage>(dds::kWorldFrame,
+                                                          dds::MaxCableNodes(sim))),
       tf_msg_(dds::BodyTransforms(sim)),
       tf_static_msg_(dds::StaticTransforms(sim)),
       markers_msg_(std::make_unique<dds::SceneMarkers>(sim)),
@@ -76,6 +77,13 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
     command_readers_.push_back(std::make_unique<dds::Reader<dds::ActuatorCommandMsg>>(
         participant, command_topics_.back(), dds::CommandQos()));
     waitset_.Attach(command_readers_.back()->condition());
+  }
+  if (sim.has_winch()) {
+    winch_topic_ = std::make_unique<dds::Topic>(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
+                                                names.winch_command());
+    winch_reader_ = std::make_unique<dds::Reader<dds::WinchCommandMsg>>(participant, *winch_topic_,
+                                                                        dds::CommandQos());
+    waitset_.Attach(winch_reader_->condition());
   }
   waitset_.Attach(control_reader_.condition());
 }
@@ -160,6 +168,10 @@ void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveS
     for (const dds::Topic& t : command_topics_) {
       server->AddChannel(RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
     }
+  }
+  if (winch_topic_) {
+    const char* type = "towsim_msgs/msg/WinchCommand";
+    server->AddChannel(RosTopicName(winch_topic_->name()), type, io::Ros2MsgSchema(type));
   }
   // clients publish through writers of the node's participant: its own readers take them
   fox_commands_ =
@@ -277,6 +289,7 @@ void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
 std::vector<dds_entity_t> NodeEndpoints::readers() const {
   std::vector<dds_entity_t> out;
   for (const auto& r : command_readers_) out.push_back(r->get());
+  if (winch_reader_) out.push_back(winch_reader_->get());
   out.push_back(control_reader_.get());
   return out;
 }

@@ -13,6 +13,7 @@ const std::vector<const dds_topic_descriptor_t*>& ContractTypes() {
       &geometry_msgs_msg_dds__WrenchStamped__desc, &towsim_msgs_msg_dds__CableState__desc,
       &towsim_msgs_msg_dds__SimStatus__desc,       &towsim_msgs_msg_dds__SceneInfo__desc,
       &towsim_msgs_msg_dds__ActuatorCommand__desc, &towsim_msgs_msg_dds__SimControl__desc,
+      &towsim_msgs_msg_dds__WinchCommand__desc,
       &sensor_msgs_msg_dds__Range__desc,           &sensor_msgs_msg_dds__FluidPressure__desc,
       &tf2_msgs_msg_dds__TFMessage__desc,          &visualization_msgs_msg_dds__MarkerArray__desc};
   return types;
@@ -39,6 +40,7 @@ std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
                             {names.status(), &towsim_msgs_msg_dds__SimStatus__desc},
                             {names.cable_state(), &towsim_msgs_msg_dds__CableState__desc},
                             {names.sim_control(), &towsim_msgs_msg_dds__SimControl__desc},
+                            {names.winch_command(), &towsim_msgs_msg_dds__WinchCommand__desc},
                             {names.tf(), &tf2_msgs_msg_dds__TFMessage__desc},
                             {names.tf_static(), &tf2_msgs_msg_dds__TFMessage__desc, true},
                             {names.markers(), &visualization_msgs_msg_dds__MarkerArray__desc},

@@ -26,8 +26,8 @@ struct NodeTopic {
 };
 
 // every topic of a towsim node of namespace `names` with these bodies (DESIGN §3,
-// docs/frames.md): /clock, status, cable/state, sim_control, /tf, /tf_static, markers, and per
-// body odom, cable_force and command; scene_info first when `with_scene_info`
+// docs/frames.md): /clock, status, cable/state, sim_control, winch/command, /tf, /tf_static,
+// markers, and per body odom, cable_force and command; scene_info first when `with_scene_info`
 std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
                                   const std::vector<std::string>& bodies,
                                   bool with_scene_info = false);
