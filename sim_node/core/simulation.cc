@@ -1,5 +1,6 @@
 #include "core/simulation.h"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -21,6 +22,7 @@ struct Simulation::Impl {
   VehicleCoupling coupling;
   State state;
   std::vector<VehicleCommand> commands;
+  WinchCommand winch_command;
   int coupling_iterations = 0;
 };
 
@@ -29,6 +31,8 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
+  s.winch.length = model.cable.length;
+  s.winch.speed = 0.0;
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
@@ -218,6 +222,20 @@ const VehicleCommand& Simulation::vehicle_command(int v) const { return impl_->c
 void Simulation::SetVehicleCommand(int v, const VehicleCommand& command) {
   impl_->commands[v] = command;
 }
+
+bool Simulation::has_winch() const { return model().cable.winch.has_value(); }
+
+void Simulation::SetWinchCommand(const WinchCommand& command) {
+  if (!has_winch() || !std::isfinite(command.value)) return;
+  WinchCommand c = command;
+  ClampWinchCommand(*model().cable.winch, &c);
+  impl_->winch_command = c;
+}
+
+const WinchCommand& Simulation::winch_command() const { return impl_->winch_command; }
+double Simulation::cable_length() const { return impl_->state.winch.length; }
+double Simulation::winch_speed() const { return impl_->state.winch.speed; }
+double Simulation::drum_tension() const { return node_tension(0); }
 
 Vec3 Simulation::end_force(int end) const {
   const System& sys = impl_->system;

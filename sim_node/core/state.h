@@ -55,6 +55,13 @@ struct NewtonPoint {
   int theta_age = 0;   // steps since theta was measured
 };
 
+// the winch (winch.h): the paid-out unstretched length and its rate; without a winch the
+// length stays cable.length and the speed 0
+struct WinchState {
+  double length = 0.0;  // L [m]
+  double speed = 0.0;   // dL/dt [m/s], + pays out
+};
+
 struct State {
   double t = 0.0;           // [s]
   long step = 0;            // steps taken
@@ -67,6 +74,7 @@ struct State {
   SupportMotion supports[2];           // vehicle attachment points (start end, end end)
   CouplingHistory coupling;
   NewtonPoint newton;
+  WinchState winch;
 };
 
 }  // namespace towsim::core
