@@ -109,6 +109,9 @@ struct WinchDemand {
 };
 
 struct Actuation {
+  Actuation() = default;
+  Actuation(double thrust_n, double rudder_rad, double elevator_rad)
+      : thrust(thrust_n), rudder(rudder_rad), elevator(elevator_rad) {}
   double thrust = 0.0;    // [N]
   double rudder = 0.0;    // [rad]
   double elevator = 0.0;  // [rad]

@@ -14,6 +14,7 @@
 
 #include <vector>
 
+#include "common/laws.h"
 #include "maneuver_runner/uturn.h"
 
 namespace towsim::controllers {

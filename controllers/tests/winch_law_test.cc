@@ -12,19 +12,19 @@
 namespace towsim::controllers {
 namespace {
 
-struct Run {
+struct PlantRun {
   double final_depth = 0.0, final_length = 0.0;
   double max_speed = 0.0, max_acceleration = 0.0;
 };
 
 // the plant: dL/dt = v (the commanded speed, as the drum does within its limits);
 // z' = (z0 + slope (L - L0) - z) / lag
-Run Simulate(const WinchDepthParams& p, double target, double seconds, double slope = 0.3,
+PlantRun Simulate(const WinchDepthParams& p, double target, double seconds, double slope = 0.3,
              double lag = 8.0) {
   WinchDepthState s;
   const double dt = 0.05, z0 = 30.0, l0 = 150.0;
   double z = z0, length = l0, last_v = 0.0;
-  Run r;
+  PlantRun r;
   for (double t = 0.0; t < seconds; t += dt) {
     const double v = WinchDepthStep(p, s, target, z, dt);
     r.max_speed = std::max(r.max_speed, std::abs(v));
@@ -40,7 +40,7 @@ Run Simulate(const WinchDepthParams& p, double target, double seconds, double sl
 
 TEST(WinchDepthLaw, PaysOutToGoDeeperAndSettlesInTheDeadband) {
   WinchDepthParams p;
-  const Run r = Simulate(p, 45.0, 600.0);
+  const PlantRun r = Simulate(p, 45.0, 600.0);
   // 15 m deeper at dz/dL = 0.3 needs 50 m more cable; the law stops within its deadband, and
   // after 600 s (75 lags) the depth is the steady one of the length reached
   constexpr double kSettledTol = 1e-3;  // [m]
@@ -53,7 +53,7 @@ TEST(WinchDepthLaw, PaysOutToGoDeeperAndSettlesInTheDeadband) {
 
 TEST(WinchDepthLaw, ReelsInToComeUp) {
   WinchDepthParams p;
-  const Run r = Simulate(p, 20.0, 600.0);
+  const PlantRun r = Simulate(p, 20.0, 600.0);
   EXPECT_NEAR(r.final_depth, 20.0, p.deadband);
   EXPECT_LT(r.final_length, 150.0);
 }
@@ -62,7 +62,7 @@ TEST(WinchDepthLaw, SpeedAndAccelerationLimitsHoldOnALargeStep) {
   WinchDepthParams p;
   p.max_speed = 0.5;
   p.max_acceleration = 0.05;
-  const Run r = Simulate(p, 90.0, 60.0);  // a 60 m step: saturated all along
+  const PlantRun r = Simulate(p, 90.0, 60.0);  // a 60 m step: saturated all along
   EXPECT_NEAR(r.max_speed, 0.5, 1e-12);
   EXPECT_LE(r.max_acceleration, 0.05 * (1.0 + 1e-9));
 }

@@ -225,8 +225,8 @@ int DdsNode::Setup() {
                         std::find(opt_.lockstep_bodies.begin(), opt_.lockstep_bodies.end(),
                                   dds::kWinchName) != opt_.lockstep_bodies.end();
     winch_entry_ = static_cast<int>(vehicles.size());
-    vehicles.push_back({dds::kWinchName, {}, lockstep() && waited, /*winch=*/true,
-                        *model_.cable.winch});
+    vehicles.push_back(
+        dds::CommandArbiter::Vehicle::Winch(*model_.cable.winch, lockstep() && waited));
     has_lockstep_vehicles_ = has_lockstep_vehicles_ || (lockstep() && waited);
   }
   for (const std::string& name : opt_.lockstep_bodies) {

@@ -126,6 +126,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   std::map<std::int64_t, double> sim_time_of_stamp;  // from the status messages
   std::vector<io::cdr::SimStatus> statuses;
   std::optional<std::vector<std::string>> scene_bodies;
+  bool has_winch = false;  // the scene info says so: winch.csv, as the node writes it
   std::uint64_t index = 0;
   reader.ForEachMessage([&](const io::McapMessage& m) {
     ++index;
@@ -163,7 +164,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           break;
         }
         case Kind::kSceneInfo:
-          if (!scene_bodies) scene_bodies = io::cdr::DecodeSceneInfo(p, n).bodies;
+          if (!scene_bodies) {
+            io::cdr::SceneInfo info = io::cdr::DecodeSceneInfo(p, n);
+            scene_bodies = std::move(info.bodies);
+            has_winch = info.has_winch;
+          }
           break;
       }
     } catch (const io::cdr::CdrError& e) {
@@ -188,6 +193,8 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   CsvFile cable_csv(d / "cable.csv", io::kCsvCableHeader);
   CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
   CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
+  std::optional<CsvFile> winch_csv;
+  if (has_winch) winch_csv.emplace(d / "winch.csv", io::kCsvWinchHeader);
   ExportCounts counts;
 
   for (const auto& [stamp, frame] : frames) {
@@ -214,6 +221,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                      c.positions[i].y, c.positions[i].z, tension);
         ++counts.cable_rows;
       }
+      if (winch_csv) {
+        std::fprintf(winch_csv->get(), "%.9g,%.9g,%.9g,%.9g,%u\n", t, c.paid_out_length,
+                     c.winch_speed, c.drum_tension, static_cast<unsigned>(c.node_count));
+        ++counts.winch_rows;
+      }
     }
     for (const std::string& b : bodies) {
       const auto w = frame.forces.find(b);
@@ -236,6 +248,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   cable_csv.Close();
   forces_csv.Close();
   status_csv.Close();
+  if (winch_csv) winch_csv->Close();
   return counts;
 }
 

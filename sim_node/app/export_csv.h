@@ -7,7 +7,9 @@
 //   NS/<b>/odom        nav_msgs/Odometry      -> bodies.csv  (Euler ZYX from the quaternion,
 //                                                 by the core's own EulerZYX)
 //   NS/<b>/cable_force geometry_msgs/WrenchStamped -> forces.csv
-//   NS/cable/state     towsim_msgs/CableState -> cable.csv
+//   NS/cable/state     towsim_msgs/CableState -> cable.csv, and winch.csv (paid_out_length,
+//                                                 winch_speed, drum_tension, node_count) when
+//                                                 the scene info says the scene has a winch
 //   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
 //                                                 the end-of-run repeat of a step is dropped)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
@@ -26,6 +28,7 @@ namespace towsim::app {
 
 struct ExportCounts {
   std::uint64_t bodies_rows = 0, cable_rows = 0, forces_rows = 0, status_rows = 0;
+  std::uint64_t winch_rows = 0;  // a scene with a winch
 };
 
 // reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files

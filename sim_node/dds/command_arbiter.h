@@ -22,6 +22,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vehicle_model.h"
@@ -36,6 +37,15 @@ inline constexpr double kCommandTimeTolerance = 1e-9;
 class CommandArbiter {
  public:
   struct Vehicle {
+    Vehicle(std::string vehicle_name, CommandLimits command_limits, bool waited = true)
+        : name(std::move(vehicle_name)), limits(command_limits), lockstep(waited) {}
+    // the winch's entry (named kWinchName)
+    static Vehicle Winch(const core::WinchParams& params, bool waited) {
+      Vehicle w(kWinchName, {}, waited);
+      w.winch = true;
+      w.winch_params = params;
+      return w;
+    }
     std::string name;
     CommandLimits limits;
     bool lockstep = true;  // lockstep mode waits for its commands

@@ -108,7 +108,7 @@ int MaxCableNodes(const core::Simulation& sim) {
   const double length = sim.cable_length();
   if (!winch || !(length > 0.0)) return now;
   const double elements = static_cast<double>(now - 1) * winch->max_length / length;
-  return std::max(now, static_cast<int>(std::ceil(elements)) + 2);
+  return std::max(now, static_cast<int>(std::ceil(elements)) + 3);
 }
 
 void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg) {

@@ -84,8 +84,9 @@ void ToClock(double t, ClockMsg* msg);
 // length, speed, drum tension and the node count
 void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* msg);
 // the storage a CableStateMessage of `sim` needs for the whole run: num_nodes() now, or with a
-// winch the nodes at its max_length at the element length of the start (max_length / length
-// times the elements now, + 1; a bound grown past only once, by CableStateMessage::Resize)
+// winch the bound of docs/winch.md on the nodes at its max_length, max_length / (length /
+// elements) + 3 at the element length of the start (should a run go past it, Resize grows the
+// storage once)
 int MaxCableNodes(const core::Simulation& sim);
 
 // what the node reports in SimStatus (field meanings: msgs/towsim_msgs/msg/SimStatus.msg)

@@ -34,7 +34,7 @@ std::string CsvField(const std::string& name) {
   return quoted + "\"";
 }
 
-CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
+CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -46,8 +46,9 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
     Open(forces_, "forces.csv", kCsvForcesHeader);
     Open(status_, "status.csv", kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
+    if (winch) Open(winch_, "winch.csv", kCsvWinchHeader);
   } catch (...) {
-    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
+    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_}) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
     }
@@ -56,7 +57,7 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
 }
 
 CsvWriter::~CsvWriter() {
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
 }
@@ -119,6 +120,11 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
   if (environment_.f != nullptr) WriteEnvironment(sim);
+  if (winch_.f != nullptr) {
+    std::fprintf(winch_.f, "%.9g,%.9g,%.9g,%.9g,%d\n", t, sim.cable_length(), sim.winch_speed(),
+                 sim.drum_tension(), sim.num_nodes());
+    Check(winch_);
+  }
 }
 
 void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
@@ -139,7 +145,7 @@ void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
 
 void CsvWriter::Close() {
   std::string error;
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_}) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

@@ -25,6 +25,13 @@
 //               wave orbital velocity, world NED) [m/s] (Simulation::body_altitude, body_depth,
 //               surface_elevation_at, water_velocity_at; docs/environment.md)
 //
+//   winch.csv   t,paid_out_length,winch_speed,drum_tension,node_count
+//               one row per Write, only when the scene has a winch (cable.winch; a scene without
+//               one writes none): the paid-out unstretched length [m], dL/dt (+ pays out)
+//               [m/s], the axial tension at the cable's start (the drum) [N] and the nodes in
+//               use (the rows of cable.csv at that time) (Simulation::cable_length,
+//               winch_speed, drum_tension, num_nodes; docs/winch_dds.md)
+//
 // Spheres: their frame stays aligned with the world, so roll = pitch = yaw = 0, p = q = r = 0,
 // (u, v, w) is the world velocity and the moment is 0.
 //
@@ -45,6 +52,7 @@ inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
 inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
 inline constexpr char kCsvEnvironmentHeader[] =
     "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
+inline constexpr char kCsvWinchHeader[] = "t,paid_out_length,winch_speed,drum_tension,node_count";
 
 // whether a run in `env` writes environment.csv: it has waves, a (non-zero) current or a seabed
 bool HasSea(const core::Environment& env);
@@ -55,9 +63,10 @@ std::string CsvField(const std::string& name);
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
-  // when `sea`, i.e. HasSea of the scene) and writes their headers; throws
-  // std::runtime_error naming the path if a file cannot be opened
-  explicit CsvWriter(const std::string& dir, bool sea = false);
+  // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has cable.winch)
+  // and writes their headers; throws std::runtime_error naming the path if a file cannot be
+  // opened
+  explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false);
   ~CsvWriter();  // closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -90,6 +99,7 @@ class CsvWriter {
   File forces_;
   File status_;
   File environment_;  // f == nullptr: not written (a calm scene)
+  File winch_;        // f == nullptr: not written (no winch)
 };
 
 }  // namespace towsim::io

@@ -16,6 +16,10 @@ towsim_add_test(sensor_translators_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensor_translators_test.cc
   LIBS towsim::dds towsim::scene)
 
+towsim_add_test(dds_winch_command_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_winch_command_test.cc
+  LIBS towsim::dds)
+
 towsim_add_test(dds_command_arbiter_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_command_arbiter_test.cc
   LIBS towsim::dds)
