@@ -6,12 +6,38 @@
 //   min_length <= L <= max_length,  |dL/dt| <= max_speed,  |d2L/dt2| <= max_acceleration;
 // a speed command V drives dL/dt to V, a length command drives L to the target and stops there.
 // Above brake_tension the drum slips and pays out.
+//
+// The drum's motion over a step h (AdvanceWinch): L_{n+1} = L_n + h (V_n + V_{n+1}) / 2 (constant
+// acceleration), V_{n+1} = V_n + clamp(V_des - V_n, -a h, a h), a = max_acceleration, with the
+// desired speed V_des the command's, limited so that the drum can still stop exactly at every
+// stop point ahead (min_length, max_length, a length target) by braking at a. Braking from u to
+// 0 at a over whole steps covers u^2 / (2 a) with this update, so the largest speed u at the
+// step's end from which the point at distance d can be reached (d - h (V_n + u) / 2 left) is
+//   u^2 + a h u = 2 a d - a h V_n,   u = (-a h + sqrt(a^2 h^2 + 4 (2 a d - a h V_n))) / 2.
+// A step that reaches a stop point at a speed <= a h ends there at rest (exact stop); L stays
+// within [min_length, max_length] always.
+// Brake: when the tension at the drum T exceeds brake_tension the drum slips, paying out at
+// least the speed that relieves the excess stretch of the drum element within the step,
+//   V_slip = (T - brake_tension) l_0 / (E A h)     (dT/dl_0 = -E A / l_0 at small strain),
+// unlimited by max_speed and max_acceleration (the brake, not the motor, sets it).
+//
+// The cable's side (system.h, docs/winch.md): element 0 at the drum has the variable rest length
+// l_0 = L - (nodes - 2) l_e; it is split when l_0 would exceed kSplitLength l_e and merged
+// with its neighbour when it would fall below kMergeLength l_e.
 
 #include <limits>
 
 #include "core/actuator.h"
 
 namespace towsim::core {
+
+struct CableParams;  // model.h
+
+// the drum element's bounds, in nominal element lengths l_e = cable.length / cable.elements:
+// split beyond the first (leaving kSplitLength - 1), merge below the second (giving
+// kMergeLength + 1); the gap between them keeps a reversal from splitting and merging again
+inline constexpr double kSplitLength = 1.6;
+inline constexpr double kMergeLength = 0.4;
 
 struct WinchParams {               // Model::cable.winch (std::optional<WinchParams>)
   double min_length = 0.0;         // [m]
@@ -37,5 +63,19 @@ Actuator WinchCommandRange(const WinchParams& p, WinchCommand::Mode mode);
 // clamps command->value into its mode's range; returns whether it had to (NaN is the caller's
 // to reject: it is returned unchanged and counts as clamped)
 bool ClampWinchCommand(const WinchParams& p, WinchCommand* command);
+
+// the most cable nodes a run with cable.winch can have: ceil(max_length / l_e) + 2
+int WinchMaxNodes(const CableParams& cable);
+
+struct WinchStep {
+  double length = 0.0;    // L_{n+1} [m]
+  double speed = 0.0;     // V_{n+1} [m/s]
+  bool slipping = false;  // the brake slipped
+};
+
+// the drum's step h (above) from L_n = length, V_n = speed under `command` (clamped into its
+// range), with the drum tension T and slip_compliance = l_0 / (E A) [m/N]
+WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double length,
+                       double speed, double tension, double slip_compliance, double h);
 
 }  // namespace towsim::core
