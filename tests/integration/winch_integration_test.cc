@@ -27,10 +27,10 @@ namespace {
 
 const std::string kSource = TOWSIM_SOURCE_DIR;
 // a driven tow point, a sphere, the drum between 40 m and 100 m at 1 m/s (its script: pay
-// out at 1 m/s from 1 s, drive to 75 m from 8 s, reel in at 0.5 m/s from 12 s)
+// out at 1 m/s from 1 s, drive to 70 m from 6 s, reel in at 0.5 m/s from 13 s)
 const std::string kDriven = kSource + "/tests/integration/scenes/winch_driven.yaml";
 // the winch commands of that script, for the test controller
-const std::vector<std::string> kDrivenWinch = {"1=speed:1", "8=length:75", "12=speed:-0.5"};
+const std::vector<std::string> kDrivenWinch = {"1=speed:1", "6=length:70", "13=speed:-0.5"};
 constexpr double kProcessTimeout = 120.0;  // [s] of wall time: a run that takes longer hung
 constexpr double kH = 0.05;                // the scenes' step [s]
 
@@ -126,13 +126,14 @@ TEST_F(WinchDdsTest, LockstepRunsWithTheWinchMovingAreBitIdentical) {
     min_nodes = std::min(min_nodes, r.nodes);
     max_nodes = std::max(max_nodes, r.nodes);
   }
-  // paid out to the 75 m target (1 m/s for 7 s gives 60 + 7 - 1 = 66 m at 0.5 m/s^2, then the
-  // length command drives on to 75 m), then reeled in at 0.5 m/s: the run did move the drum
+  // paid out to the 70 m target (1 m/s from 1 s, 0.5 m/s^2: 64 m at 6 s, then the length
+  // command drives on to 70 m and stops there), then reeled in at 0.5 m/s: the drum moved
   constexpr double kLengthTol = 1e-6;  // [m] the drum stops exactly at a length target
-  EXPECT_NEAR(max_length, 75.0, kLengthTol);
-  EXPECT_NEAR(max_speed, 1.0, 1e-12);
-  EXPECT_NEAR(min_speed, -0.5, 1e-12);
-  EXPECT_GT(max_nodes, min_nodes);  // elements split (10 m elements from 60 m to 75 m)
+  constexpr double kSpeedTol = 1e-12;  // [m/s] the speed limit, to rounding
+  EXPECT_NEAR(max_length, 70.0, kLengthTol);
+  EXPECT_NEAR(max_speed, 1.0, kSpeedTol);
+  EXPECT_NEAR(min_speed, -0.5, kSpeedTol);
+  EXPECT_GT(max_nodes, min_nodes);  // an element split (10 m elements from 60 m to 70 m)
 }
 
 // domain 159: the scene's script offline, and the same commands over DDS in lockstep (the node
@@ -157,7 +158,7 @@ TEST_F(WinchDdsTest, LockstepOverDdsEqualsTheOfflineScript) {
   EXPECT_GT(std::max_element(rows.begin(), rows.end(),
                              [](const WinchRow& x, const WinchRow& y) { return x.length < y.length; })
                 ->length,
-            70.0);
+            69.0);
 }
 
 constexpr uint8_t kSpeed = towsim_msgs_msg_dds__WinchCommand_Constants_SPEED;
@@ -217,15 +218,17 @@ TEST_F(WinchDdsTest, LockstepFailsafeHoldsTheWinchAtZeroSpeed) {
   EXPECT_NE(out.find("lockstep timeouts 1"), std::string::npos) << out;
   const std::vector<WinchRow> rows = WinchRows(dir);
   ASSERT_EQ(rows.size(), static_cast<size_t>(std::lround(kDuration * 10)) + 1);
+  constexpr double kSpeedTol = 1e-12;  // [m/s] the drum's speed, to rounding
+  constexpr double kHeldTol = 1e-9;    // [m] a held length, to the CSV's 9 digits
   double held = -1.0;
   for (const WinchRow& r : rows) {
     if (r.t > 2.0 && r.t < kSilentFrom - 1e-9) {
-      EXPECT_EQ(r.speed, 1.0) << "t = " << r.t;
+      EXPECT_NEAR(r.speed, 1.0, kSpeedTol) << "t = " << r.t;
     }
     if (r.t < kSilentFrom + kBrake + kH - 1e-9) continue;
-    EXPECT_EQ(r.speed, 0.0) << "t = " << r.t;
+    EXPECT_NEAR(r.speed, 0.0, kSpeedTol) << "t = " << r.t;
     if (held < 0.0) held = r.length;
-    EXPECT_EQ(r.length, held) << "t = " << r.t;
+    EXPECT_NEAR(r.length, held, kHeldTol * held) << "t = " << r.t;
   }
   // it paid out before: 60 m + about 1 m/s over 4 s less the ramps
   EXPECT_GT(held, 62.0);
