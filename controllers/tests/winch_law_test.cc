@@ -26,7 +26,7 @@ PlantRun Simulate(const WinchDepthParams& p, double target, double seconds, doub
   double z = z0, length = l0, last_v = 0.0;
   PlantRun r;
   for (double t = 0.0; t < seconds; t += dt) {
-    const double v = WinchDepthStep(p, s, target, z, dt);
+    const double v = WinchDepthStep(p, s, target, z, 0.0, dt);
     r.max_speed = std::max(r.max_speed, std::abs(v));
     r.max_acceleration = std::max(r.max_acceleration, std::abs(v - last_v) / dt);
     last_v = v;
@@ -70,7 +70,21 @@ TEST(WinchDepthLaw, SpeedAndAccelerationLimitsHoldOnALargeStep) {
 TEST(WinchDepthLaw, StandsStillInsideTheDeadband) {
   WinchDepthParams p;
   WinchDepthState s;
-  for (int k = 0; k < 100; ++k) EXPECT_EQ(WinchDepthStep(p, s, 30.3, 30.0, 0.05), 0.0);
+  for (int k = 0; k < 100; ++k) EXPECT_EQ(WinchDepthStep(p, s, 30.3, 30.0, 0.0, 0.05), 0.0);
+}
+
+TEST(WinchDepthLaw, OffloadsTheElevatorsSteadyDemand) {
+  // at the commanded depth with the elevators pushing down 0.1 rad: the drum pays out, at
+  // k (elevator_depth d - deadband) once the filter has settled (10 filter constants)
+  WinchDepthParams p;
+  WinchDepthState s;
+  double v = 0.0;
+  for (int k = 0; k < 2000; ++k) v = WinchDepthStep(p, s, 30.0, 30.0, 0.1, 0.05);
+  EXPECT_NEAR(v, p.gain * (p.elevator_depth * 0.1 - p.deadband), 1e-9);
+  // pulling up: it reels in
+  WinchDepthState up;
+  for (int k = 0; k < 2000; ++k) v = WinchDepthStep(p, up, 30.0, 30.0, -0.1, 0.05);
+  EXPECT_LT(v, 0.0);
 }
 
 }  // namespace

@@ -6,7 +6,8 @@
 //                 [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20] [--max-pitch-deg 30]
 //                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30]
 //                 [--security DIR/NAME] [--winch [--winch-gain 0.1] [--winch-deadband 0.5]
-//                 [--winch-filter 10] [--winch-max-speed V] [--winch-max-acceleration A]]
+//                 [--winch-filter 10] [--winch-elevator-depth 25] [--winch-max-speed V]
+//                 [--winch-max-acceleration A]]
 //                 [--log FILE]
 // Altitude mode: the commanded depth is z + range - A, range the sim's own altimeter
 // (<ns>/<body>/altitude, sensor_msgs/Range, docs/sensors.md) of the step answered; while it
@@ -18,7 +19,8 @@
 // --elevator-sign 1 for a body that dives on positive elevator (-1: it rises, the towfish);
 // --hold commands zero elevator (the uncontrolled reference).
 // Winch mode (--winch; towfish_depth/winch_law.h): the commanded depth (or altitude) is held
-// with the winch at the cable's start for the slow part and the elevators for the fast part:
+// with the winch at the cable's start for the slow part (the depth error the elevators leave
+// and their steady deflection) and the elevators for the fast part:
 // each step also publishes a WinchCommand (SPEED) on <ns>/winch/command, within the winch's
 // max_speed and max_acceleration (from the node's scene_info, or less with --winch-max-speed,
 // --winch-max-acceleration); the node clamps the length to [min_length, max_length].
@@ -49,6 +51,9 @@ constexpr char kUsage[] =
     "                     [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20]\n"
     "                     [--max-pitch-deg 30] [--elevator-sign -1] [--domain 0]\n"
     "                     [--namespace /towsim] [--timeout 30] [--security DIR/NAME] [--log FILE]\n"
+    "                     [--winch [--winch-gain 0.1] [--winch-deadband 0.5] [--winch-filter 10]\n"
+    "                     [--winch-elevator-depth 25] [--winch-max-speed V]\n"
+    "                     [--winch-max-acceleration A]]\n"
     "  --depth D          hold the depth D [m] below the surface\n"
     "  --altitude A       hold A [m] above the seabed, measured by the sim's own altimeter\n"
     "                     (<ns>/<body>/altitude, sensor_msgs/Range); while it sees no seabed\n"
@@ -59,7 +64,8 @@ constexpr char kUsage[] =
     "                     seabed depth d [m] against the distance run s [m]\n"
     "  --hold             zero elevator (the uncontrolled reference)\n"
     "  --winch            also drive the winch (<ns>/winch/command): the slow part of the\n"
-    "                     depth change, within the winch's limits; --winch-gain K [1/s],\n"
+    "                     depth change and the elevators' steady demand, within the winch's\n"
+    "                     limits; --winch-gain K [1/s], --winch-elevator-depth G [m/rad],\n"
     "                     --winch-deadband D [m], --winch-filter T [s], --winch-max-speed V\n"
     "                     [m/s], --winch-max-acceleration A [m/s^2] (towfish_depth/winch_law.h)\n"
     "  --log FILE         writes \"t z elevator target_depth\" per step (--winch: and the\n"
@@ -83,7 +89,8 @@ int main(int argc, char** argv) {
                   {"body", "depth", "kp", "ki", "kd", "max-elevator-deg", "rate-deg",
                    "max-pitch-deg", "elevator-sign", "domain", "namespace", "timeout", "log",
                    "altitude", "seabed-depth", "seabed-profile", "winch-gain", "winch-deadband",
-                   "winch-filter", "winch-max-speed", "winch-max-acceleration", kSecurityFlag},
+                   "winch-filter", "winch-max-speed", "winch-max-acceleration", "winch-elevator-depth",
+                   kSecurityFlag},
                   {"hold", "help", "winch"});
     if (f.Has("help")) {
       std::printf("%s", kUsage);
@@ -144,13 +151,14 @@ int main(int argc, char** argv) {
     log_path = f.String("log", "");
     opt.winch = f.Has("winch");
     for (const char* w : {"winch-gain", "winch-deadband", "winch-filter", "winch-max-speed",
-                          "winch-max-acceleration"}) {
+                          "winch-max-acceleration", "winch-elevator-depth"}) {
       if (!opt.winch && f.Has(w)) throw std::runtime_error(std::string("--") + w + " needs --winch");
     }
     if (opt.winch && p.hold) throw std::runtime_error("--winch and --hold: give one of them");
     winch.gain = f.Number("winch-gain", winch.gain, 0.0, kNoLimit, /*lo_open=*/true);
     winch.deadband = f.Number("winch-deadband", winch.deadband, 0.0, kNoLimit);
     winch.filter = f.Number("winch-filter", winch.filter, 0.0, kNoLimit, /*lo_open=*/true);
+    winch.elevator_depth = f.Number("winch-elevator-depth", winch.elevator_depth, 0.0, kNoLimit);
     winch_max_speed = f.Number("winch-max-speed", 0.0, 0.0, kNoLimit, /*lo_open=*/true);
     winch_max_acceleration =
         f.Number("winch-max-acceleration", 0.0, 0.0, kNoLimit, /*lo_open=*/true);
@@ -202,7 +210,11 @@ int main(int argc, char** argv) {
       }
       const double elevator = DepthStep(p, state, b.z, b.z_dot, b.pitch, b.dt);
       Actuation a{0.0, 0.0, elevator};
-      if (opt.winch) a.winch.value = WinchDepthStep(winch, winch_state, p.depth, b.z, b.dt);
+      if (opt.winch) {
+        // the elevators' "deeper" demand: sign * elevator (towfish_depth/depth_law.h)
+        const double deeper = p.sign >= 0.0 ? elevator : -elevator;
+        a.winch.value = WinchDepthStep(winch, winch_state, p.depth, b.z, deeper, b.dt);
+      }
       if (log != nullptr && opt.winch) {
         std::fprintf(log, "%.6f %.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth,
                      a.winch.value);

@@ -6,14 +6,14 @@
 namespace towsim::controllers {
 
 double WinchDepthStep(const WinchDepthParams& p, WinchDepthState& s, double target, double z,
-                      double dt) {
-  const double e = target - z;
+                      double deeper, double dt) {
+  const double e = target - z + p.elevator_depth * deeper;
   if (!s.initialized) {
     s.initialized = true;
     s.error = e;
     s.speed = 0.0;
   }
-  // e_f' = (e - e_f) / T_f, exact for e held over the step
+  // s_f' = (s - s_f) / T_f, exact for s held over the step
   s.error += (e - s.error) * (1.0 - std::exp(-dt / p.filter));
   double v = 0.0;
   if (s.error > p.deadband) v = p.gain * (s.error - p.deadband);

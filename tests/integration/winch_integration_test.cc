@@ -20,6 +20,7 @@
 #include "dds_observer.h"
 #include "testing/csv_file.h"
 #include "testing/process.h"
+#include "towed_cable_steady.h"
 #include "towsim_msgs.h"
 
 namespace towsim::testing {
@@ -232,6 +233,152 @@ TEST_F(WinchDdsTest, LockstepFailsafeHoldsTheWinchAtZeroSpeed) {
   }
   // it paid out before: 60 m + about 1 m/s over 4 s less the ramps
   EXPECT_GT(held, 62.0);
+}
+
+// towfish_depth's log: t z elevator target_depth winch_speed
+struct DepthLogLine {
+  double t = 0, z = 0, elevator = 0, target = 0, winch_speed = 0;
+};
+std::vector<DepthLogLine> ReadDepthLog(const std::string& path) {
+  std::vector<DepthLogLine> lines;
+  std::stringstream in(ReadFile(path));
+  DepthLogLine l;
+  while (in >> l.t >> l.z >> l.elevator >> l.target >> l.winch_speed) lines.push_back(l);
+  return lines;
+}
+
+// domain 165: towfish_depth --winch takes the towfish from its steady 23.5 m (150 m paid out,
+// about 2.9 m/s) to 35 m: the elevators do the fast part, the winch pays out until the
+// elevators are back near neutral, within the drum's speed and acceleration limits. The towing
+// vehicle's constant thrust comes from the manoeuvre runner (case1), as lockstep waits for
+// every commanded body.
+TEST_F(WinchDdsTest, TowfishDepthWinchModeReachesACommandedDepthWithinTheWinchsLimits) {
+  const std::string scene = kSource + "/tests/integration/scenes/winch_towfish.yaml";
+  constexpr double kDuration = 300.0, kTarget = 35.0;
+  const std::string dir = LogPrefix("csv"), log = LogPrefix("depth.log");
+  Process node(Node(scene, "lockstep", 165,
+                    {"--duration", std::to_string(kDuration), "--set", "script=[]", "--csv", dir}),
+               LogPrefix("node"));
+  Process tow({TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--thrust", "1050", "--start", "0",
+               "--domain", "165"},
+              LogPrefix("tow"));
+  Process depth({TOWSIM_TOWFISH_DEPTH, "--depth", "35", "--winch", "--domain", "165", "--log",
+                 log},
+                LogPrefix("depth"));
+  ASSERT_TRUE(depth.Wait(kProcessTimeout)) << depth.command_line();
+  EXPECT_EQ(depth.exit_code(), 0) << depth.err();
+  ASSERT_TRUE(tow.Wait(kProcessTimeout));
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();
+
+  const std::vector<DepthLogLine> lines = ReadDepthLog(log);
+  ASSERT_EQ(lines.size(), static_cast<size_t>(std::lround(kDuration / kH)) + 1);
+  EXPECT_GT(std::abs(lines.front().z - kTarget), 4.0);  // a real change of depth
+  // the last 100 s: at the commanded depth, the elevators near neutral (the winch rests once
+  // |deeper demand| < deadband / elevator_depth = 0.5 m / 25 m/rad = 0.02 rad; the integral of
+  // the elevator loop approaches it from outside)
+  constexpr double kDepthTol = 0.3;       // [m] the deadband plus the slow residual swing
+  constexpr double kNeutralTol = 0.03;    // [rad] 1.5 x the winch's resting band
+  for (const DepthLogLine& l : lines) {
+    if (l.t < kDuration - 100.0) continue;
+    EXPECT_NEAR(l.z, kTarget, kDepthTol) << "t = " << l.t;
+    EXPECT_LT(std::abs(l.elevator), kNeutralTol) << "t = " << l.t;
+  }
+  // the drum did the slow part within its limits (scene: 1 m/s, 0.2 m/s^2, 100 m .. 300 m)
+  const std::vector<WinchRow> rows = WinchRows(dir);
+  ASSERT_FALSE(rows.empty());
+  constexpr double kLimitTol = 1e-9;  // the drum's limits, to rounding and the CSV's digits
+  double max_speed = 0.0, max_acceleration = 0.0;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    max_speed = std::max(max_speed, std::abs(rows[i].speed));
+    if (i > 0) {
+      max_acceleration =
+          std::max(max_acceleration, std::abs(rows[i].speed - rows[i - 1].speed) /
+                                         (rows[i].t - rows[i - 1].t));
+    }
+    EXPECT_GE(rows[i].length, 100.0);
+    EXPECT_LE(rows[i].length, 300.0);
+  }
+  EXPECT_LE(max_speed, 1.0 + kLimitTol);
+  EXPECT_LE(max_acceleration, 0.2 * (1.0 + 1e-6));
+  EXPECT_GT(max_speed, 0.5);                 // it did pay out, at a good fraction of its limit
+  EXPECT_GT(rows.back().length, 180.0);      // 11.5 m deeper takes tens of metres more cable
+  std::printf("towfish_depth --winch: z %.3f m, elevator %.4f rad, length %.3f m at t = %g s\n",
+              lines.back().z, lines.back().elevator, rows.back().length, rows.back().t);
+}
+
+// "key: value" lines of a flat YAML results file
+std::map<std::string, double> ReadSheet(const std::string& path) {
+  std::map<std::string, double> m;
+  std::stringstream in(ReadFile(path));
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto colon = line.find(": ");
+    if (colon == std::string::npos) continue;
+    char* end = nullptr;
+    const std::string value = line.substr(colon + 2);
+    const double x = std::strtod(value.c_str(), &end);
+    if (end != value.c_str()) m[line.substr(0, colon)] = x;
+  }
+  return m;
+}
+
+// the steady towed-cable solution (tests/reference/towed_cable_steady.h) of the winch_tow
+// scene's cable and sphere at `length`, towed at `speed`: the sphere's depth below the tow point
+double SteadyDepth(double length, double speed) {
+  reference::TowedCableProblem p;  // Park & Kim's cable, the 416 kg sphere (the defaults)
+  p.length = length;
+  p.tow_velocity = Eigen::Vector3d(speed, 0.0, 0.0);
+  return reference::SolveTowedCableSteady(p).depth;
+}
+
+// domain 166: the payout trial (150 m -> 250 m at 1 m/s towing at 3 m/s, hold 100 s, reel in)
+// on config/scenes/winch_tow.yaml: the sheet's lengths are the trial's, and its depths at the
+// end of the approach (150 m), of the hold (250 m) and of the run (150 m again) are the steady
+// solution's at those lengths and the measured speed
+TEST_F(WinchDdsTest, PayoutManoeuvreSheetAgreesWithTheSteadySolution) {
+  const std::string scene = kSource + "/config/scenes/winch_tow.yaml";
+  const std::string results = LogPrefix("sheet.yaml"), plot = LogPrefix("sheet.svg");
+  Process node(Node(scene, "lockstep", 166, {"--duration", "450"}), LogPrefix("node"));
+  Process runner({TOWSIM_MANEUVER_RUNNER, "--maneuver", "payout", "--domain", "166", "--results",
+                  results, "--plot", plot},
+                 LogPrefix("runner"));
+  ASSERT_TRUE(runner.Wait(kProcessTimeout)) << runner.command_line();
+  EXPECT_EQ(runner.exit_code(), 0) << runner.err();
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  EXPECT_NE(runner.out().find("payout 150 m -> 250 m at 1 m/s"), std::string::npos)
+      << runner.out();
+  EXPECT_NE(ReadFile(plot).find("<polyline"), std::string::npos);
+
+  const std::map<std::string, double> sheet = ReadSheet(results);
+  for (const char* key : {"approach_length", "hold_length", "final_length", "approach_depth",
+                          "hold_depth", "final_depth", "hold_speed", "max_length"}) {
+    ASSERT_EQ(sheet.count(key), 1u) << key << " missing from " << results;
+  }
+  // the lengths: exact stops at the length targets (the drum's length command)
+  constexpr double kLengthTol = 1e-3;  // [m] the sheet's 6 decimals of the CSV-free length
+  EXPECT_NEAR(sheet.at("approach_length"), 150.0, kLengthTol);
+  EXPECT_NEAR(sheet.at("hold_length"), 250.0, kLengthTol);
+  EXPECT_NEAR(sheet.at("max_length"), 250.0, kLengthTol);
+  EXPECT_NEAR(sheet.at("final_length"), 150.0, kLengthTol);
+  EXPECT_NEAR(sheet.at("hold_speed"), 3.0, 0.05);  // the speed hold
+
+  // the depths against the steady solution: the drum sits 0.2 m below the vehicle's origin
+  // (the scene's start.at); the hold's 100 s and the 50 s after the reel-in leave the sphere
+  // still settling (the cable's slow mode, tens of seconds at 3 m/s), and the tow vehicle's
+  // speed varies by a few mm/s: a few percent of the depth
+  constexpr double kSteadyRelTol = 0.05;
+  for (const char* phase : {"approach", "hold", "final"}) {
+    const std::string p = phase;
+    const double below = sheet.at(p + "_depth") - (sheet.at(p + "_tow_depth") + 0.2);
+    const double steady = SteadyDepth(sheet.at(p + "_length"), sheet.at(p + "_speed"));
+    EXPECT_NEAR(below, steady, kSteadyRelTol * steady) << phase;
+    std::printf("payout sheet, end of %s: length %.3f m, depth below the drum %.3f m, steady %.3f "
+                "m (%.2f %%)\n",
+                phase, sheet.at(p + "_length"), below, steady, 100.0 * (below / steady - 1.0));
+  }
 }
 
 }  // namespace
