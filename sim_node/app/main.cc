@@ -79,8 +79,8 @@ int Run(const towsim::app::Options& options) {
   std::unique_ptr<towsim::io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {
     try {
-      csv = std::make_unique<towsim::io::CsvWriter>(options.csv_dir,
-                                                    towsim::io::HasSea(model.environment));
+      csv = std::make_unique<towsim::io::CsvWriter>(
+          options.csv_dir, towsim::io::HasSea(model.environment), model.cable.winch.has_value());
     } catch (const towsim::io::OutputError& e) {  // opened, not written: disk full
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitError;

@@ -34,7 +34,7 @@ std::string CsvField(const std::string& name) {
   return quoted + "\"";
 }
 
-CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
+CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), winch_(winch) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -44,7 +44,7 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
     Open(bodies_, "bodies.csv", kCsvBodiesHeader);
     Open(cable_, "cable.csv", kCsvCableHeader);
     Open(forces_, "forces.csv", kCsvForcesHeader);
-    Open(status_, "status.csv", kCsvStatusHeader);
+    Open(status_, "status.csv", winch_ ? kCsvStatusWinchHeader : kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
   } catch (...) {
     for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
@@ -114,8 +114,10 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t, end_names[e], f.x(), f.y(), f.z());
   }
 
-  std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld\n", t, sim.step_count(), status.iterations,
+  std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld", t, sim.step_count(), status.iterations,
                status.residual, wall_us);
+  if (winch_) std::fprintf(status_.f, ",%.9g", sim.cable_length());
+  std::fprintf(status_.f, "\n");
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
   if (environment_.f != nullptr) WriteEnvironment(sim);
