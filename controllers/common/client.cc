@@ -241,32 +241,29 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
       readers.push_back(m.altitude_reader);
     }
     writers[0] = m.command_writer;
+    // the optional endpoints: a reader or writer of `type` on prefix + `name`
+    auto endpoint = [&](bool writer, const dds_topic_descriptor_t* type, const std::string& name,
+                        const dds_qos_t* qos) {
+      const dds_entity_t topic = Check(
+          dds_create_topic(m.participant, type, (prefix + name).c_str(), nullptr, nullptr),
+          name + " topic");
+      const dds_entity_t e = writer ? dds_create_writer(m.participant, topic, qos, nullptr)
+                                    : dds_create_reader(m.participant, topic, qos, nullptr);
+      Check(e, name + (writer ? " writer" : " reader"));
+      (writer ? writers : readers).push_back(e);
+      return e;
+    };
     if (options.winch) {
-      const dds_entity_t winch_topic =
-          Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__WinchCommand__desc,
-                                 (prefix + "winch/command").c_str(), nullptr, nullptr),
-                "winch command topic");
-      m.winch_writer = Check(dds_create_writer(m.participant, winch_topic, command_qos, nullptr),
-                             "winch command writer");
-      writers.push_back(m.winch_writer);
+      m.winch_writer =
+          endpoint(true, &towsim_msgs_msg_dds__WinchCommand__desc, "winch/command", command_qos);
     }
     if (options.cable) {
-      const dds_entity_t cable_topic =
-          Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__CableState__desc,
-                                 (prefix + "cable/state").c_str(), nullptr, nullptr),
-                "cable state topic");
-      m.cable_reader = Check(dds_create_reader(m.participant, cable_topic, cable_qos, nullptr),
-                             "cable state reader");
-      readers.push_back(m.cable_reader);
+      m.cable_reader =
+          endpoint(false, &towsim_msgs_msg_dds__CableState__desc, "cable/state", cable_qos);
     }
     if (!options.observe.empty()) {
-      const dds_entity_t observed_topic =
-          Check(dds_create_topic(m.participant, &nav_msgs_msg_dds__Odometry__desc,
-                                 (prefix + options.observe + "/odom").c_str(), nullptr, nullptr),
-                "odom topic of " + options.observe);
-      m.observed.reader = Check(
-          dds_create_reader(m.participant, observed_topic, state_qos, nullptr), "odom reader");
-      readers.push_back(m.observed.reader);
+      m.observed.reader = endpoint(false, &nav_msgs_msg_dds__Odometry__desc,
+                                   options.observe + "/odom", state_qos);
     }
     // the controller as a ROS 2 node <ns>/<name> with these endpoints (ros2 node list)
     m.graph = std::make_unique<dds::RosGraphNode>(m.participant, options.ns, options.name,

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -192,7 +193,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   CsvFile bodies_csv(d / "bodies.csv", io::kCsvBodiesHeader);
   CsvFile cable_csv(d / "cable.csv", io::kCsvCableHeader);
   CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
-  CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
+  CsvFile status_csv(d / "status.csv", has_winch ? io::kCsvStatusWinchHeader : io::kCsvStatusHeader);
   std::optional<CsvFile> winch_csv;
   if (has_winch) winch_csv.emplace(d / "winch.csv", io::kCsvWinchHeader);
   ExportCounts counts;
@@ -239,9 +240,23 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   }
   for (const io::cdr::SimStatus& s : statuses) {
     // the node's CSV: wall_us = lround(step wall time * 1e6), the same number it publishes
-    std::fprintf(status_csv.get(), "%.9g,%llu,%d,%.9g,%ld\n", s.sim_time,
+    std::fprintf(status_csv.get(), "%.9g,%llu,%d,%.9g,%ld", s.sim_time,
                  static_cast<unsigned long long>(s.step), s.newton_iterations, s.residual,
                  std::lround(s.step_wall_time * 1e6));
+    if (has_winch) {
+      // cable_length: the paid-out length of the newest cable state at or before this stamp
+      // (the cable state comes at its own rate)
+      double length = std::numeric_limits<double>::quiet_NaN();
+      for (auto f = frames.upper_bound(StampNs(s.header.stamp)); f != frames.begin();) {
+        --f;
+        if (f->second.cable) {
+          length = f->second.cable->paid_out_length;
+          break;
+        }
+      }
+      std::fprintf(status_csv.get(), ",%.9g", length);
+    }
+    std::fprintf(status_csv.get(), "\n");
     ++counts.status_rows;
   }
   bodies_csv.Close();

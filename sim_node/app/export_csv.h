@@ -11,7 +11,9 @@
 //                                                 winch_speed, drum_tension, node_count) when
 //                                                 the scene info says the scene has a winch
 //   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
-//                                                 the end-of-run repeat of a step is dropped)
+//                                                 the end-of-run repeat of a step is dropped;
+//                                                 a winch scene's cable_length from the newest
+//                                                 cable state at or before the status)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).

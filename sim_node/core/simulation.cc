@@ -70,7 +70,8 @@ void Simulation::Impl::PrepareWinch(double h) {
   const double tension =
       system.end_lambda_count(0) > 0 ? state.lambda.segment<3>(system.end_lambda(0)).norm() : 0.0;
   const double ea = c.youngs_modulus * c.area();
-  winch_step = AdvanceWinch(*c.winch, winch_command, w.length, w.speed, tension, l0 / ea, h);
+  winch_step = AdvanceWinch(*c.winch, winch_command, w.length, w.drive_speed, w.slip_speed,
+                            tension, l0 / ea, h);
   const double dl = winch_step.length - w.length;
   // keep l_0 at the step's end within [kMergeLength, kSplitLength] l_e (drum_element.h)
   const double le = system.element_length();
@@ -104,6 +105,8 @@ StepStatus Simulation::StepBy(double h) {
       WinchState& w = impl_->state.winch;
       w.length = impl_->winch_step.length;
       w.speed = impl_->winch_step.speed;
+      w.drive_speed = impl_->winch_step.drive_speed;
+      w.slip_speed = impl_->winch_step.slip_speed;
       w.slipping = impl_->winch_step.slipping;
       impl_->system.SetLayout(w.nodes, w.length);
     }
@@ -135,6 +138,16 @@ void CheckSize(const char* what, long n, long m, const std::string& why) {
 
 void Simulation::CheckStateShape(const State& s) const {
   const System& sys = impl_->system;
+  std::ostringstream why;
+  why << "3 per sphere body and 6 per cable node: " << sys.num_bodies() << " bodies, "
+      << sys.max_nodes() << " nodes";
+  const long n = sys.num_q();
+  CheckSize("q", s.q.size(), n, why.str());
+  CheckSize("v", s.v.size(), n, why.str());
+  CheckSize("a", s.a.size(), n, why.str());
+  CheckSize("a_alpha", s.a_alpha.size(), n, why.str());
+  CheckSize("lambda", s.lambda.size(), sys.num_lambda(),
+            "3 per held cable end, 2 more per clamped end");
   // the cable's nodes in use are part of the shape (with a winch the arrays hold max_nodes)
   if (s.winch.nodes < 2 || s.winch.nodes > sys.max_nodes() ||
       (!sys.has_winch() && s.winch.nodes != sys.max_nodes())) {
@@ -147,16 +160,6 @@ void Simulation::CheckStateShape(const State& s) const {
       msg << sys.max_nodes() << " (cable.elements + 1; the scene has no winch)";
     throw std::invalid_argument(msg.str());
   }
-  std::ostringstream why;
-  why << "3 per sphere body and 6 per cable node: " << sys.num_bodies() << " bodies, "
-      << sys.max_nodes() << " nodes";
-  const long n = sys.num_q();
-  CheckSize("q", s.q.size(), n, why.str());
-  CheckSize("v", s.v.size(), n, why.str());
-  CheckSize("a", s.a.size(), n, why.str());
-  CheckSize("a_alpha", s.a_alpha.size(), n, why.str());
-  CheckSize("lambda", s.lambda.size(), sys.num_lambda(),
-            "3 per held cable end, 2 more per clamped end");
   const long nv = num_vehicles();
   CheckSize("vehicles", static_cast<long>(s.vehicles.size()), nv, "one per scene vehicle");
   CheckSize("coupling.f_previous", static_cast<long>(s.coupling.f_previous.size()), nv,

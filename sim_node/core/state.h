@@ -75,6 +75,8 @@ struct DrumMotion {
 struct WinchState {
   double length = 0.0;  // L [m]
   double speed = 0.0;   // dL/dt [m/s], + pays out
+  double drive_speed = 0.0;  // the drive's own speed, without the brake's slip (winch.h)
+  double slip_speed = 0.0;   // the brake's slip (winch.h)
   int nodes = 0;        // cable nodes in use (part of the state's shape)
   bool slipping = false;  // the brake slipped in the last step
   DrumMotion drum;        // element 0's rest length over the last (or current) step

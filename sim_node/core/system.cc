@@ -239,7 +239,11 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     drum_rate = drum_motion->RateAt(t);
   }
   std::optional<AncfElement> drum;  // on the stack: Evaluate does not allocate
-  if (winch_) drum.emplace(DrumElement(drum_l));
+  Vec12 drum_weight = weight_load_;
+  if (winch_) {
+    drum.emplace(DrumElement(drum_l));
+    drum_weight = UniformLoad(loads_.weight_per_length, drum_l);
+  }
 
   // cable elements: M e_ddot + F_int + R_load (Eq. 25)
   Vec12 force;
@@ -265,8 +269,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     element.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
-      const Vec12 qw =
-          at_drum ? UniformLoad(loads_.weight_per_length, drum_l) : Vec12(weight_load_);
+      const Vec12& qw = at_drum ? drum_weight : weight_load_;
       residual->segment<12>(o) += element.MassTimes(ea) + force - load_scale * qw;
       if (jac) {
         j = cf.c_a * mass + cf.c_q * k;
@@ -379,9 +382,13 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
 void System::ToBlocks(const VectorXd& r, const VectorXd& phi, VectorXd* x) const {
   x->resize(num_q_ + num_lambda_);
   const std::vector<int>& offsets = block_offsets_;
-  for (int i = 0; i < num_q_; ++i) {
-    if (q_index_[i].block < 0) continue;  // a parked node (winch)
-    (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+  if (first_node_ == 0) {  // no parked nodes
+    for (int i = 0; i < num_q_; ++i) (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+  } else {
+    for (int i = 0; i < num_q_; ++i) {
+      if (q_index_[i].block < 0) continue;  // a parked node (winch)
+      (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+    }
   }
   for (int i = 0; i < num_lambda_; ++i)
     (*x)(offsets[lambda_index_[i].block] + lambda_index_[i].local) = phi(i);
@@ -391,9 +398,13 @@ void System::FromBlocks(const VectorXd& x, VectorXd* dq, VectorXd* dlambda) cons
   dq->resize(num_q_);
   dlambda->resize(num_lambda_);
   const std::vector<int>& offsets = block_offsets_;
-  for (int i = 0; i < num_q_; ++i) {
-    const BlockIndex bi = q_index_[i];
-    (*dq)(i) = bi.block < 0 ? 0.0 : x(offsets[bi.block] + bi.local);  // parked: no change
+  if (first_node_ == 0) {  // no parked nodes
+    for (int i = 0; i < num_q_; ++i) (*dq)(i) = x(offsets[q_index_[i].block] + q_index_[i].local);
+  } else {
+    for (int i = 0; i < num_q_; ++i) {
+      const BlockIndex bi = q_index_[i];
+      (*dq)(i) = bi.block < 0 ? 0.0 : x(offsets[bi.block] + bi.local);  // parked: no change
+    }
   }
   for (int i = 0; i < num_lambda_; ++i)
     (*dlambda)(i) = x(offsets[lambda_index_[i].block] + lambda_index_[i].local);

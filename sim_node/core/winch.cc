@@ -49,7 +49,9 @@ double StoppingSpeed(double a, double h, double d, double v) {
 }  // namespace
 
 WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double length,
-                       double speed, double tension, double slip_compliance, double h) {
+                       double speed, double slip_speed, double tension, double slip_compliance,
+                       double h) {
+  // `speed`: the drive's (winch.h)
   WinchCommand c = command;
   ClampWinchCommand(p, &c);
   const double a = p.max_acceleration;
@@ -76,22 +78,22 @@ WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double
     }
   };
   if (c.mode == WinchCommand::Mode::kLength) land(c.value);
-  // the brake slips above its tension, paying out at least what relieves the excess
-  if (tension > p.brake_tension) {
-    const double slip = (tension - p.brake_tension) * slip_compliance / h;
-    if (slip > s.speed) {
-      s.speed = slip;
-      s.length = L + h * slip;
-      s.slipping = true;
-    }
+  s.drive_speed = s.speed;
+  // the brake: the slip integrates the tension's excess over it (winch.h)
+  if (std::isfinite(p.brake_tension)) {
+    s.slip_speed =
+        std::max(0.0, slip_speed + (tension - p.brake_tension) * slip_compliance / h);
+    s.slipping = s.slip_speed > 0.0;
+    s.speed += s.slip_speed;
+    s.length += h * s.slip_speed;
   }
   // the drum's ends: the cable is fully reeled in or paid out
   if (s.length >= p.max_length) {
     s.length = p.max_length;
-    s.speed = 0.0;
+    s.speed = s.drive_speed = s.slip_speed = 0.0;
   } else if (s.length <= p.min_length) {
     s.length = p.min_length;
-    s.speed = 0.0;
+    s.speed = s.drive_speed = s.slip_speed = 0.0;
   }
   return s;
 }

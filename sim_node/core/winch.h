@@ -16,10 +16,15 @@
 //   u^2 + a h u = 2 a d - a h V_n,   u = (-a h + sqrt(a^2 h^2 + 4 (2 a d - a h V_n))) / 2.
 // A step that reaches a stop point at a speed <= a h ends there at rest (exact stop); L stays
 // within [min_length, max_length] always.
-// Brake: when the tension at the drum T exceeds brake_tension the drum slips, paying out at
-// least the speed that relieves the excess stretch of the drum element within the step,
-//   V_slip = (T - brake_tension) l_0 / (E A h)     (dT/dl_0 = -E A / l_0 at small strain),
-// unlimited by max_speed and max_acceleration (the brake, not the motor, sets it).
+// Brake: a slipping friction brake holds its tension, T = brake_tension, while the drum pays
+// out. Explicitly, per step, the slip speed s >= 0 (on top of the drive's, kept apart) grows by
+// the speed that would relieve the tension excess of the drum element within the step,
+//   s_{n+1} = max(0, s_n + (T - brake_tension) l_0 / (E A h))   (dT/dl_0 = -E A / l_0),
+// and falls likewise once the tension is below the brake's, until the drum grips (s = 0). This
+// integral law drives T to brake_tension while slipping (a constant slip speed would leave the
+// load falling steadily at its full weight: a damper, not a brake); it is not bound by
+// max_speed or max_acceleration (the brake, not the motor, sets it). T is the tension at the
+// step's start.
 //
 // The cable's side (system.h, docs/winch.md): element 0 at the drum has the variable rest length
 // l_0 = L - (nodes - 2) l_e; it is split when l_0 would exceed kSplitLength l_e and merged
@@ -68,14 +73,18 @@ bool ClampWinchCommand(const WinchParams& p, WinchCommand* command);
 int WinchMaxNodes(const CableParams& cable);
 
 struct WinchStep {
-  double length = 0.0;    // L_{n+1} [m]
-  double speed = 0.0;     // V_{n+1} [m/s]
-  bool slipping = false;  // the brake slipped
+  double length = 0.0;       // L_{n+1} [m]
+  double speed = 0.0;        // dL/dt at the step's end [m/s]: drive_speed + slip_speed
+  double drive_speed = 0.0;  // V_{n+1}, the drive's (limited) speed [m/s]
+  double slip_speed = 0.0;   // s_{n+1}, the brake's slip [m/s]
+  bool slipping = false;     // the brake slips (s_{n+1} > 0)
 };
 
-// the drum's step h (above) from L_n = length, V_n = speed under `command` (clamped into its
-// range), with the drum tension T and slip_compliance = l_0 / (E A) [m/N]
+// the drum's step h (above) from L_n = length, the drive's V_n = drive_speed and the slip
+// s_n = slip_speed under `command` (clamped into its range), with the drum tension T and
+// slip_compliance = l_0 / (E A) [m/N]
 WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double length,
-                       double speed, double tension, double slip_compliance, double h);
+                       double drive_speed, double slip_speed, double tension,
+                       double slip_compliance, double h);
 
 }  // namespace towsim::core

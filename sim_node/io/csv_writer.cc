@@ -34,7 +34,7 @@ std::string CsvField(const std::string& name) {
   return quoted + "\"";
 }
 
-CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir) {
+CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), winch_(winch) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -44,11 +44,11 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir) {
     Open(bodies_, "bodies.csv", kCsvBodiesHeader);
     Open(cable_, "cable.csv", kCsvCableHeader);
     Open(forces_, "forces.csv", kCsvForcesHeader);
-    Open(status_, "status.csv", kCsvStatusHeader);
+    Open(status_, "status.csv", winch_ ? kCsvStatusWinchHeader : kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
-    if (winch) Open(winch_, "winch.csv", kCsvWinchHeader);
+    if (winch) Open(winch_file_, "winch.csv", kCsvWinchHeader);
   } catch (...) {
-    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_}) {
+    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
     }
@@ -57,7 +57,7 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir) {
 }
 
 CsvWriter::~CsvWriter() {
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
 }
@@ -115,15 +115,17 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     std::fprintf(forces_.f, "%.9g,%s,%.9g,%.9g,%.9g,0,0,0\n", t, end_names[e], f.x(), f.y(), f.z());
   }
 
-  std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld\n", t, sim.step_count(), status.iterations,
+  std::fprintf(status_.f, "%.9g,%ld,%d,%.9g,%ld", t, sim.step_count(), status.iterations,
                status.residual, wall_us);
+  if (winch_) std::fprintf(status_.f, ",%.9g", sim.cable_length());
+  std::fprintf(status_.f, "\n");
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
   if (environment_.f != nullptr) WriteEnvironment(sim);
-  if (winch_.f != nullptr) {
-    std::fprintf(winch_.f, "%.9g,%.9g,%.9g,%.9g,%d\n", t, sim.cable_length(), sim.winch_speed(),
+  if (winch_file_.f != nullptr) {
+    std::fprintf(winch_file_.f, "%.9g,%.9g,%.9g,%.9g,%d\n", t, sim.cable_length(), sim.winch_speed(),
                  sim.drum_tension(), sim.num_nodes());
-    Check(winch_);
+    Check(winch_file_);
   }
 }
 
@@ -145,7 +147,7 @@ void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
 
 void CsvWriter::Close() {
   std::string error;
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

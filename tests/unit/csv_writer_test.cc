@@ -187,6 +187,33 @@ core::Model VehicleModel() {
   return model;
 }
 
+// a scene with a winch: status.csv ends in the paid-out length (docs/winch.md)
+TEST(CsvWriterTest, WinchSceneWritesTheCableLength) {
+  TempDir tmp;
+  core::Model model = TinyModel();
+  core::WinchParams w;
+  w.min_length = 5.0;
+  w.max_length = 20.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 10.0;
+  model.cable.winch = w;
+  core::Simulation sim(model);
+  sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 1.0});
+  CsvWriter csv(tmp.path().string(), false, true);
+  csv.Write(sim, core::StepStatus{}, 0);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+  csv.Write(sim, core::StepStatus{}, 0);
+  csv.Close();
+  std::string header;
+  const Rows rows = ReadCsv(tmp.path() / "status.csv", &header);
+  EXPECT_EQ(header, "t,step,newton_iterations,residual,wall_us,cable_length");
+  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows[1].size(), 6u);
+  EXPECT_EQ(std::stod(rows[0][5]), 10.0);
+  ExpectNear(rows[1][5], sim.cable_length(), "cable_length");
+  EXPECT_GT(sim.cable_length(), 10.0);  // it paid out
+}
+
 TEST(CsvWriterTest, VehicleRowsFollowTheSpheres) {
   TempDir tmp;
   const core::Model model = VehicleModel();
