@@ -48,10 +48,29 @@ void CalmBottomless(towsim::core::Model* m) {
   m->environment.seabed = towsim::core::Seabed();
 }
 void WavesPerIteration(towsim::core::Model* m) { m->integrator.waves_per_iteration = true; }
+// a winch at the steady tow's driven top (docs/winch.md): 150 m to 300 m, 1 m/s, 0.2 m/s^2
+void Winch(towsim::core::Model* m) {
+  towsim::core::WinchParams w;
+  w.min_length = 150.0;
+  w.max_length = 300.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 0.2;
+  m->cable.winch = w;
+}
+// and paying out at 1 m/s from t = 0 (20 s: two element splits)
+void WinchPayout(towsim::core::Model* m) {
+  Winch(m);
+  towsim::core::ScriptEntry e;
+  e.set_winch = true;
+  e.winch = {towsim::core::WinchCommand::Mode::kSpeed, 1.0};
+  m->script.push_back(e);
+}
 
 const std::vector<Variant>& Variants() {
   static const std::vector<Variant> v = {
       {"all_loads", "steady_tow.yaml", {}, "steady tow, all five loads (baseline)"},
+      {"winch_held", "steady_tow.yaml", {}, "with a winch, held", Winch},
+      {"winch_payout", "steady_tow.yaml", {}, "with a winch paying out at 1 m/s", WinchPayout},
       {"no_gravity",
        "steady_tow.yaml",
        {"cable.loads=[buoyancy, drag, added_mass, bending]"},

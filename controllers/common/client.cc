@@ -2,7 +2,6 @@
 
 #include <signal.h>
 
-#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -70,39 +69,45 @@ namespace {
 bool Stopping(const ClientOptions& o) { return StopRequested() || (o.stop && o.stop->load()); }
 }  // namespace
 
-struct LockstepClient::Impl {
-  ClientOptions opt;
-  dds_entity_t participant = 0;
-  dds_entity_t status_reader = 0, odom_reader = 0, command_writer = 0;
-  dds_entity_t waitset = 0;  // the status: a new step
-  // the odometry, the altitude of the step when it is not there yet (0: no altitude reader)
-  dds_entity_t odom_waitset = 0, altitude_waitset = 0;
-  dds_entity_t altitude_reader = 0;          // 0: not subscribed
-  std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
-  double step_size = 0.05;
-  // the latest odometry taken
-  nav_msgs_msg_dds__Odometry_ odom{};
-  bool have_odom = false;
-  double odom_time = -1.0;
-  // waits on `ws` (samples of its reader: it takes them all each time) up to `budget` [s]
-  // from `begin`, at most 0.1 s at a time (a stop request ends it); no polling. False when the
-  // budget is spent.
-  static bool WaitForSamples(dds_entity_t ws, Clock::time_point begin, double budget) {
-    const double left = budget - Seconds(Clock::now() - begin);
-    if (!(left > 0.0)) return false;
-    dds_waitset_wait(ws, nullptr, 0, static_cast<dds_duration_t>(1e9 * std::min(left, 0.1)));
-    return true;
-  }
+// waits on `ws` (samples of its one reader) up to `budget` [s] from `begin`, at most 0.1 s at a
+// time (a stop request ends it); no polling. False when the budget is spent.
+static bool WaitForSamples(dds_entity_t ws, Clock::time_point begin, double budget) {
+  const double left = budget - Seconds(Clock::now() - begin);
+  if (!(left > 0.0)) return false;
+  dds_waitset_wait(ws, nullptr, 0, static_cast<dds_duration_t>(1e9 * std::min(left, 0.1)));
+  return true;
+}
 
+// a waitset on `reader`'s samples alone: a sample of another reader must not end its wait
+static dds_entity_t WaitsetOf(dds_entity_t participant, dds_entity_t reader) {
+  const dds_entity_t ws = Check(dds_create_waitset(participant), "waitset");
+  const dds_entity_t c = Check(dds_create_readcondition(reader, DDS_ANY_STATE), "read condition");
+  Check(dds_waitset_attach(ws, c, 0), "waitset attach");
+  return ws;
+}
+
+// the newest odometry of one body taken from its reader
+struct OdomTrack {
+  dds_entity_t reader = 0;
+  dds_entity_t waitset = 0;  // on `reader`
+  nav_msgs_msg_dds__Odometry_ odom{};
+  bool have = false;
+  double time = -1.0;
   // after a RESET (a new run id): the time of the new run's first status; odometry stamped
   // later is the old run's, still queued (the node publishes a step's odometry before its
   // status), and is dropped until a sample of the new run comes; < 0 otherwise
   double reset_time = -1.0;
 
-  void TakeOdom() {
+  void NewRun(bool reset, double t) {
+    time = -1.0;
+    have = false;
+    if (reset) reset_time = t;
+  }
+
+  void Take() {
     void* os[16] = {};
     dds_sample_info_t oi[16];
-    const dds_return_t k = dds_take(odom_reader, os, oi, 16, 16);
+    const dds_return_t k = dds_take(reader, os, oi, 16, 16);
     for (int j = 0; j < k; ++j) {
       if (!oi[j].valid_data) continue;
       const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(os[j]);
@@ -111,15 +116,63 @@ struct LockstepClient::Impl {
         if (t > reset_time + 1e-9) continue;  // the old run's
         reset_time = -1.0;
       }
-      if (t >= odom_time || !have_odom) {  // a RESET goes back in time: see below
+      if (t >= time || !have) {  // a RESET goes back in time: see below
         odom = *o;
         odom.header.frame_id = nullptr;
         odom.child_frame_id = nullptr;
-        odom_time = t;
-        have_odom = true;
+        time = t;
+        have = true;
       }
     }
-    if (k > 0) dds_return_loan(odom_reader, os, k);
+    if (k > 0) dds_return_loan(reader, os, k);
+  }
+
+  // takes until the odometry of time t came, or 0.5 s of wall time (then the latest)
+  void WaitFor(double t, const ClientOptions& opt) {
+    const Clock::time_point wait_begin = Clock::now();
+    for (;;) {
+      Take();
+      if (have && time >= t - 1e-9) break;
+      if (Stopping(opt) || !WaitForSamples(waitset, wait_begin, 0.5)) break;
+    }
+  }
+};
+
+struct LockstepClient::Impl {
+  ClientOptions opt;
+  dds_entity_t participant = 0;
+  dds_entity_t status_reader = 0, command_writer = 0;
+  dds_entity_t waitset = 0;
+  dds_entity_t altitude_reader = 0;  // 0: not subscribed
+  dds_entity_t altitude_waitset = 0;  // on altitude_reader
+  dds_entity_t winch_writer = 0;     // 0: no winch commands
+  dds_entity_t cable_reader = 0;     // 0: not subscribed
+  std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
+  double step_size = 0.05;
+  WinchInfo winch;
+  OdomTrack own, observed;  // the commanded body's odometry, ClientOptions::observe's
+
+  // the newest cable state stamped at most t (a RESET's old run has later stamps)
+  CableSample cable;
+  void TakeCable(double t) {
+    void* cs[4] = {};
+    dds_sample_info_t ci[4];
+    for (;;) {
+      const dds_return_t k = dds_take(cable_reader, cs, ci, 4, 4);
+      for (int j = 0; j < k; ++j) {
+        if (!ci[j].valid_data) continue;
+        const auto* c = static_cast<const towsim_msgs_msg_dds__CableState_*>(cs[j]);
+        const double stamp = StampSeconds(c->header.stamp.sec, c->header.stamp.nanosec);
+        if (stamp > t + 1e-9 || stamp < cable.t) continue;
+        cable.t = stamp;
+        cable.paid_out_length = c->paid_out_length;
+        cable.winch_speed = c->winch_speed;
+        cable.drum_tension = c->drum_tension;
+        cable.node_count = c->node_count;
+      }
+      if (k > 0) dds_return_loan(cable_reader, cs, k);
+      if (k < 4) break;
+    }
   }
 
   // the newest altimeter range stamped at most t (a RESET's old run has later stamps)
@@ -166,6 +219,7 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   }
   dds_delete_qos(participant_qos);
   dds_qos_t* state_qos = ReliableQos(16, false);
+  dds_qos_t* cable_qos = ReliableQos(4, false);
   dds_qos_t* command_qos = ReliableQos(kCommandDepth, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);
   try {
@@ -185,8 +239,10 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
         Check(dds_create_topic(m.participant, &nav_msgs_msg_dds__Odometry__desc,
                                (prefix + options.body + "/odom").c_str(), nullptr, nullptr),
               "odom topic");
-    m.odom_reader =
+    m.own.reader =
         Check(dds_create_reader(m.participant, odom_topic, state_qos, nullptr), "odom reader");
+    std::vector<dds_entity_t> readers{scene_reader, m.status_reader, m.own.reader};
+    std::vector<dds_entity_t> writers{0};  // the command writer, below
     const dds_entity_t command_topic =
         Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__ActuatorCommand__desc,
                                (prefix + options.body + "/command").c_str(), nullptr, nullptr),
@@ -200,15 +256,36 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
                 "altitude topic");
       m.altitude_reader = Check(
           dds_create_reader(m.participant, altitude_topic, state_qos, nullptr), "altitude reader");
+      readers.push_back(m.altitude_reader);
+    }
+    writers[0] = m.command_writer;
+    // the optional endpoints: a reader or writer of `type` on prefix + `name`
+    auto endpoint = [&](bool writer, const dds_topic_descriptor_t* type, const std::string& name,
+                        const dds_qos_t* qos) {
+      const dds_entity_t topic = Check(
+          dds_create_topic(m.participant, type, (prefix + name).c_str(), nullptr, nullptr),
+          name + " topic");
+      const dds_entity_t e = writer ? dds_create_writer(m.participant, topic, qos, nullptr)
+                                    : dds_create_reader(m.participant, topic, qos, nullptr);
+      Check(e, name + (writer ? " writer" : " reader"));
+      (writer ? writers : readers).push_back(e);
+      return e;
+    };
+    if (options.winch) {
+      m.winch_writer =
+          endpoint(true, &towsim_msgs_msg_dds__WinchCommand__desc, "winch/command", command_qos);
+    }
+    if (options.cable) {
+      m.cable_reader =
+          endpoint(false, &towsim_msgs_msg_dds__CableState__desc, "cable/state", cable_qos);
+    }
+    if (!options.observe.empty()) {
+      m.observed.reader = endpoint(false, &nav_msgs_msg_dds__Odometry__desc,
+                                   options.observe + "/odom", state_qos);
     }
     // the controller as a ROS 2 node <ns>/<name> with these endpoints (ros2 node list)
-    m.graph = std::make_unique<dds::RosGraphNode>(
-        m.participant, options.ns, options.name,
-        m.altitude_reader != 0
-            ? std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader,
-                                        m.altitude_reader}
-            : std::vector<dds_entity_t>{scene_reader, m.status_reader, m.odom_reader},
-        std::vector<dds_entity_t>{m.command_writer});
+    m.graph = std::make_unique<dds::RosGraphNode>(m.participant, options.ns, options.name,
+                                                  readers, writers);
 
     // the node's scene: the body must take commands
     const Clock::time_point begin = Clock::now();
@@ -221,6 +298,11 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
       if (n > 0 && info.valid_data) {
         const auto* s = static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]);
         m.step_size = s->step_size;
+        m.winch.present = s->has_winch;
+        m.winch.min_length = s->winch_min_length;
+        m.winch.max_length = s->winch_max_length;
+        m.winch.max_speed = s->winch_max_speed;
+        m.winch.max_acceleration = s->winch_max_acceleration;
         std::string names;
         for (uint32_t i = 0; i < s->commanded_bodies._length; ++i) {
           names += std::string(i ? ", " : "") + s->commanded_bodies._buffer[i];
@@ -231,6 +313,12 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
           dds_return_loan(scene_reader, samples, n);
           throw std::runtime_error("body " + options.body + " takes no commands in scene " + scene +
                                    " (commanded bodies: " + names + ")");
+        }
+        if (options.winch && !m.winch.present) {
+          const std::string scene = s->scene;
+          dds_return_loan(scene_reader, samples, n);
+          throw std::runtime_error("scene " + scene +
+                                   " has no winch (cable.winch) to command on winch/command");
         }
       }
       if (n > 0) dds_return_loan(scene_reader, samples, n);
@@ -248,8 +336,13 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
       dds_publication_matched_status_t pm;
       dds_subscription_matched_status_t sm;
       dds_get_publication_matched_status(m.command_writer, &pm);
-      dds_get_subscription_matched_status(m.odom_reader, &sm);
-      if (pm.current_count > 0 && sm.current_count > 0) break;
+      dds_get_subscription_matched_status(m.own.reader, &sm);
+      bool matched = pm.current_count > 0 && sm.current_count > 0;
+      if (m.winch_writer != 0) {
+        dds_get_publication_matched_status(m.winch_writer, &pm);
+        matched = matched && pm.current_count > 0;
+      }
+      if (matched) break;
       if (Seconds(Clock::now() - begin) > options.timeout) {
         throw std::runtime_error("the node's command reader / odometry writer did not match");
       }
@@ -259,18 +352,12 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     const dds_entity_t cond =
         Check(dds_create_readcondition(m.status_reader, DDS_ANY_STATE), "read condition");
     Check(dds_waitset_attach(m.waitset, cond, 0), "waitset attach");
-    // one waitset per reader: a sample of the one not waited for must not end the wait
-    auto waitset_of = [&m](dds_entity_t reader) {
-      const dds_entity_t ws = Check(dds_create_waitset(m.participant), "waitset");
-      const dds_entity_t c =
-          Check(dds_create_readcondition(reader, DDS_ANY_STATE), "read condition");
-      Check(dds_waitset_attach(ws, c, 0), "waitset attach");
-      return ws;
-    };
-    m.odom_waitset = waitset_of(m.odom_reader);
-    if (m.altitude_reader != 0) m.altitude_waitset = waitset_of(m.altitude_reader);
+    m.own.waitset = WaitsetOf(m.participant, m.own.reader);
+    if (m.observed.reader != 0) m.observed.waitset = WaitsetOf(m.participant, m.observed.reader);
+    if (m.altitude_reader != 0) m.altitude_waitset = WaitsetOf(m.participant, m.altitude_reader);
   } catch (...) {
     dds_delete_qos(state_qos);
+    dds_delete_qos(cable_qos);
     dds_delete_qos(command_qos);
     dds_delete_qos(scene_qos);
     dds_delete(m.participant);
@@ -278,9 +365,12 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     throw;
   }
   dds_delete_qos(state_qos);
+  dds_delete_qos(cable_qos);
   dds_delete_qos(command_qos);
   dds_delete_qos(scene_qos);
 }
+
+const WinchInfo& LockstepClient::winch() const { return impl_->winch; }
 
 LockstepClient::~LockstepClient() {
   dds_delete(impl_->participant);
@@ -320,21 +410,17 @@ int LockstepClient::Run(const Law& law) {
       } else if (fresh) {
         const double t = s->sim_time;
         if (new_run) {
-          m.odom_time = -1.0;
-          m.have_odom = false;
+          // a RESET, not the first run seen: the old run's samples still queued are dropped
+          m.own.NewRun(!run_id.empty(), t);
+          m.observed.NewRun(!run_id.empty(), t);
           m.altitude_time = -1.0;
-          if (!run_id.empty()) m.reset_time = t;  // a RESET, not the first run seen
+          m.cable = CableSample{};
         }
         // the odometry of this step (published before the status); the latest one after a
         // short wait otherwise
-        const Clock::time_point wait_begin = Clock::now();
-        for (;;) {
-          m.TakeOdom();
-          if (m.have_odom && m.odom_time >= t - 1e-9) break;
-          if (Stopping(m.opt) || !Impl::WaitForSamples(m.odom_waitset, wait_begin, 0.5)) break;
-        }
-        if (m.have_odom) {
-          const auto& o = m.odom;
+        m.own.WaitFor(t, m.opt);
+        if (m.own.have) {
+          const auto& o = m.own.odom;
           const auto& pq = o.pose.pose.orientation;
           BodyState b;
           b.step = s->step;
@@ -363,12 +449,25 @@ int LockstepClient::Run(const Law& law) {
             for (;;) {
               m.TakeAltitude(t);
               if (m.altitude_time >= t - 1e-9) break;
-              if (Stopping(m.opt) ||
-                  !Impl::WaitForSamples(m.altitude_waitset, altitude_begin, 0.5)) {
+              if (Stopping(m.opt) || !WaitForSamples(m.altitude_waitset, altitude_begin, 0.5)) {
                 break;
               }
             }
             if (m.altitude_time >= t - 1e-9) b.altitude = m.altitude_range;
+          }
+          if (m.observed.reader != 0) {
+            m.observed.WaitFor(t, m.opt);
+            if (m.observed.have && m.observed.time >= t - 1e-9) {
+              const auto& op = m.observed.odom.pose.pose;
+              const Euler oe = EulerFromQuaternion(op.orientation.x, op.orientation.y,
+                                                   op.orientation.z, op.orientation.w);
+              b.observed = {true,     op.position.x, op.position.y, op.position.z,
+                            oe.roll, oe.pitch,      oe.yaw};
+            }
+          }
+          if (m.cable_reader != 0) {
+            m.TakeCable(t);
+            b.cable = m.cable;
           }
           const Actuation a = law(b);
           towsim_msgs_msg_dds__ActuatorCommand_ cmd{};
@@ -378,7 +477,18 @@ int LockstepClient::Run(const Law& law) {
           cmd.thrust = a.thrust;
           cmd.rudder = a.rudder;
           cmd.elevator = a.elevator;
-          const dds_return_t rc = dds_write(m.command_writer, &cmd);
+          dds_return_t rc = dds_write(m.command_writer, &cmd);
+          if (rc >= 0 && m.winch_writer != 0) {
+            towsim_msgs_msg_dds__WinchCommand_ w{};
+            w.header = cmd.header;
+            w.header.frame_id = const_cast<char*>("");
+            w.step = s->step;
+            w.mode = a.winch.mode == WinchDemand::Mode::kLength
+                         ? towsim_msgs_msg_dds__WinchCommand_Constants_LENGTH
+                         : towsim_msgs_msg_dds__WinchCommand_Constants_SPEED;
+            w.value = a.winch.value;
+            rc = dds_write(m.winch_writer, &w);
+          }
           if (rc < 0) {
             std::fprintf(stderr, "%s: error: writing a command: %s\n", who.c_str(),
                          dds_strretcode(rc));

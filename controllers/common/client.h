@@ -4,7 +4,10 @@
 //   - subscribes to rt/<ns>/<body>/odom and rt/<ns>/status (and, with `altitude`, to
 //     rt/<ns>/<body>/altitude),
 //   - publishes towsim_msgs ActuatorCommand on rt/<ns>/<body>/command, stamped with the step
-//     (and sim time) of the state it answers,
+//     (and sim time) of the state it answers, and with `winch` a towsim_msgs WinchCommand on
+//     rt/<ns>/winch/command stamped alike (docs/winch_dds.md),
+//   - optionally reads rt/<ns>/cable/state (`cable`: paid-out length, winch speed, drum
+//     tension) and the odometry of one more body (`observe`), for what the law reports,
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
@@ -46,6 +49,39 @@ struct ClientOptions {
   // also subscribe to rt/<ns>/<body>/altitude (sensor_msgs/Range, docs/sensors.md) and pass
   // the newest range of the step answered in BodyState::altitude
   bool altitude = false;
+  // also publish the winch's command (Actuation::winch) with each answer; the node's scene
+  // must have a winch (SceneInfo.has_winch), else the constructor throws
+  bool winch = false;
+  // also subscribe to rt/<ns>/cable/state and pass the newest sample stamped at most the
+  // step's time in BodyState::cable
+  bool cable = false;
+  // another body whose odometry of the step answered is passed in BodyState::observed ("":
+  // none)
+  std::string observe;
+};
+
+// the winch of the node's scene (SceneInfo), zeros without one
+struct WinchInfo {
+  bool present = false;
+  double min_length = 0.0, max_length = 0.0;  // [m]
+  double max_speed = 0.0;                     // [m/s]
+  double max_acceleration = 0.0;              // [m/s^2]
+};
+
+// the newest cable state (ClientOptions::cable); t < 0: none yet
+struct CableSample {
+  double t = -1.0;                // its sim time [s]
+  double paid_out_length = 0.0;   // [m]
+  double winch_speed = 0.0;       // [m/s], + pays out
+  double drum_tension = 0.0;      // [N]
+  unsigned node_count = 0;
+};
+
+// another body's pose at the step answered (ClientOptions::observe); valid = false: none came
+struct ObservedBody {
+  bool valid = false;
+  double x = 0, y = 0, z = 0;           // world NED [m]
+  double roll = 0, pitch = 0, yaw = 0;  // ZYX [rad]
 };
 
 // the state of the body at one step, from its odometry
@@ -61,12 +97,25 @@ struct BodyState {
   // with ClientOptions::altitude: the altimeter's range of this step [m] (+inf: no seabed in
   // range, REP 117); NaN when none came for this step (or not subscribed)
   double altitude = std::numeric_limits<double>::quiet_NaN();
+  CableSample cable;      // with ClientOptions::cable
+  ObservedBody observed;  // with ClientOptions::observe
+};
+
+// what the law wants of the winch (sent with ClientOptions::winch)
+struct WinchDemand {
+  enum class Mode { kSpeed, kLength };
+  Mode mode = Mode::kSpeed;
+  double value = 0.0;  // kSpeed: dL/dt [m/s], + pays out; kLength: the length to drive to [m]
 };
 
 struct Actuation {
+  Actuation() = default;
+  Actuation(double thrust_n, double rudder_rad, double elevator_rad)
+      : thrust(thrust_n), rudder(rudder_rad), elevator(elevator_rad) {}
   double thrust = 0.0;    // [N]
   double rudder = 0.0;    // [rad]
   double elevator = 0.0;  // [rad]
+  WinchDemand winch;      // published only with ClientOptions::winch
 };
 
 // "rt/" + ns without its leading slash + "/" ("/" -> "rt/")
@@ -93,6 +142,8 @@ class LockstepClient {
   int Run(const Law& law);
 
   uint64_t steps_answered() const { return answered_; }
+  // the node's winch, from its scene_info
+  const WinchInfo& winch() const;
 
  private:
   struct Impl;

@@ -1,9 +1,11 @@
 // maneuver_runner: plays a manoeuvre on a vehicle of a running sim_node, against its live
 // state, and prints the trials sheet at the end:
-//   maneuver_runner [--maneuver case1|uturn|zigzag|turning_circle] [--config FILE.yaml]
+//   maneuver_runner [--maneuver case1|uturn|zigzag|turning_circle|payout] [--config FILE.yaml]
 //                   [--body tow_vehicle] [--thrust 4165] [--start 55] [--rudder-deg D]
 //                   [--heading-deg P] [--reversals 4] [--port-first] [--until-yaw-deg 170]
-//                   [--until-turn-deg 0] [--results FILE.yaml]
+//                   [--until-turn-deg 0] [--tow-speed 3] [--from-length 150]
+//                   [--to-length 250] [--payout-rate 1] [--hold 100] [--towfish towfish]
+//                   [--sample-period 10] [--results FILE.yaml] [--plot FILE.svg]
 //                   [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]
 //   case1           thrust T, rudder 0 (the paper's Case 1)
 //   uturn           from `start` the rudder at D until the yaw reaches --until-yaw-deg, then 0
@@ -12,6 +14,11 @@
 //                   overshoot angles, initial turning time and period
 //   turning_circle  rudder D held from `start` (maneuver_runner/turning_circle.h): advance,
 //                   transfer, tactical and steady turning diameters
+//   payout          towing at --tow-speed (thrust: a PI on the surge, up to --thrust), the
+//                   winch pays out from --from-length to --to-length at --payout-rate from
+//                   `start`, holds --hold s, reels back in (maneuver_runner/payout.h): sheet
+//                   with the towfish's depth against the paid-out length and time, --plot
+//                   draws it (the scene needs cable.winch; commands on <ns>/winch/command)
 // Parameters from --config (config/maneuvers/*.yaml) and flags (flags win), see
 // maneuver_runner/maneuver_config.h. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's
 // run or on SIGINT/SIGTERM (the sheet printed either way), 1 on an error or a timeout, 2 on a
@@ -30,6 +37,7 @@
 #include "common/flags.h"
 #include "common/laws.h"
 #include "maneuver_runner/maneuver_config.h"
+#include "maneuver_runner/payout.h"
 #include "maneuver_runner/results_sheet.h"
 #include "maneuver_runner/turning_circle.h"
 #include "maneuver_runner/uturn.h"
@@ -49,6 +57,11 @@ int main(int argc, char** argv) {
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0);
     opt.security = f.String(kSecurityFlag, "");
+    if (c.kind == ManeuverKind::kPayout) {
+      opt.winch = true;          // the drum's commands with each answer
+      opt.cable = true;          // the paid-out length, for the sheet
+      opt.observe = c.towfish;   // its depth, for the sheet
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
     return 2;
@@ -71,6 +84,14 @@ int main(int argc, char** argv) {
   circle.rudder = sign * Rad(c.rudder_deg);
   circle.start = c.start;
   circle.until_turn = Rad(c.until_turn_deg);
+  PayoutParams payout;
+  payout.tow_speed = c.tow_speed;
+  payout.max_thrust = c.thrust;
+  payout.start = c.start;
+  payout.from_length = c.from_length;
+  payout.to_length = c.to_length;
+  payout.rate = c.payout_rate;
+  payout.hold = c.hold;
 
   try {
     RequireDdsUri();
@@ -79,6 +100,8 @@ int main(int argc, char** argv) {
     UTurnState uturn_state;
     ZigZagState zigzag_state;
     TurningCircleState circle_state;
+    PayoutState payout_state;
+    PayoutSheet payout_sheet(payout, c.sample_period);
     std::vector<TrackSample> track;
     RunSummary summary;
     bool executed = false;
@@ -107,6 +130,18 @@ int main(int argc, char** argv) {
         case ManeuverKind::kTurningCircle:
           m = TurningCircleStep(circle, circle_state, b.t, b.yaw);
           break;
+        case ManeuverKind::kPayout: {
+          const PayoutCommand p = PayoutStep(payout, payout_state, b.t, b.u, b.dt);
+          // the sheet: the steps whose cable state came (the node's cable/state rate)
+          if (b.observed.valid && std::abs(b.cable.t - b.t) < 1e-9) {
+            payout_sheet.Add({b.t, b.cable.paid_out_length, b.observed.z, b.z, b.u});
+          }
+          Actuation a{p.vehicle.thrust, p.vehicle.rudder, p.vehicle.elevator};
+          a.winch.mode = p.winch_length_mode ? WinchDemand::Mode::kLength
+                                             : WinchDemand::Mode::kSpeed;
+          a.winch.value = p.winch_value;
+          return a;
+        }
       }
       return Actuation{m.thrust, m.rudder, m.elevator};
     });
@@ -134,9 +169,22 @@ int main(int argc, char** argv) {
         yaml = TurningCircleYaml(c, summary, r);
         break;
       }
+      case ManeuverKind::kPayout:
+        std::printf(", %zu sheet samples\n", payout_sheet.results().samples.size());
+        text = PayoutText(c, payout_sheet.results());
+        yaml = PayoutYaml(c, payout_sheet.results());
+        break;
     }
     std::fputs(text.c_str(), stdout);
     std::fflush(stdout);
+    if (!c.plot.empty()) {
+      const std::string svg = PayoutPlotSvg(c, payout_sheet.results());
+      std::FILE* out = std::fopen(c.plot.c_str(), "w");
+      if (out == nullptr || std::fputs(svg.c_str(), out) < 0 || std::fclose(out) != 0) {
+        std::fprintf(stderr, "maneuver_runner: error: cannot write --plot %s\n", c.plot.c_str());
+        return 1;
+      }
+    }
     if (!c.results.empty()) {
       std::FILE* out = std::fopen(c.results.c_str(), "w");
       if (out == nullptr || std::fputs(yaml.c_str(), out) < 0 || std::fclose(out) != 0) {

@@ -11,14 +11,18 @@ namespace {
 
 const std::vector<std::string> kFileKeys = {
     "maneuver",    "body",          "thrust",         "start",     "rudder_deg",
-    "heading_deg", "until_yaw_deg", "until_turn_deg", "reversals", "port_first"};
+    "heading_deg", "until_yaw_deg", "until_turn_deg", "reversals", "port_first",
+    "tow_speed",   "from_length",   "to_length",      "payout_rate", "hold",
+    "towfish",     "sample_period"};
+
+constexpr const char* kKinds = "must be one of case1, uturn, zigzag, turning_circle, payout";
 
 ManeuverKind KindOf(const std::string& name, const std::string& where) {
   for (ManeuverKind k : {ManeuverKind::kCase1, ManeuverKind::kUTurn, ManeuverKind::kZigZag,
-                         ManeuverKind::kTurningCircle}) {
+                         ManeuverKind::kTurningCircle, ManeuverKind::kPayout}) {
     if (name == ManeuverName(k)) return k;
   }
-  throw ConfigError(where + ": must be one of case1, uturn, zigzag, turning_circle");
+  throw ConfigError(where + ": " + kKinds);
 }
 
 void SetDefaults(ManeuverConfig& c) {
@@ -36,6 +40,10 @@ void SetDefaults(ManeuverConfig& c) {
     case ManeuverKind::kTurningCircle:
       c.rudder_deg = 20.0;
       break;
+    case ManeuverKind::kPayout:
+      c.rudder_deg = 0.0;
+      c.start = 100.0;
+      break;
   }
 }
 
@@ -45,7 +53,8 @@ std::vector<std::string> ManeuverFlagNames() {
   return {"maneuver",   "config",      "body",          "thrust",         "start",
           "rudder-deg", "heading-deg", "until-yaw-deg", "until-turn-deg", "reversals",
           "results",    "domain",      "namespace",     "timeout",
-          "security"};
+          "security",   "tow-speed",   "from-length",   "to-length",      "payout-rate",
+          "hold",       "towfish",     "sample-period", "plot"};
 }
 std::vector<std::string> ManeuverSwitchNames() { return {"port-first"}; }
 
@@ -59,6 +68,8 @@ const char* ManeuverName(ManeuverKind kind) {
       return "zigzag";
     case ManeuverKind::kTurningCircle:
       return "turning_circle";
+    case ManeuverKind::kPayout:
+      return "payout";
   }
   return "?";
 }
@@ -76,7 +87,7 @@ ManeuverConfig ResolveManeuver(const Flags& f) {
     try {
       c.kind = KindOf(m, "");
     } catch (const ConfigError&) {
-      throw file->Error("maneuver", "must be one of case1, uturn, zigzag, turning_circle");
+      throw file->Error("maneuver", kKinds);
     }
   }
   SetDefaults(c);
@@ -117,7 +128,22 @@ ManeuverConfig ResolveManeuver(const Flags& f) {
   } else if (file && file->Has("port_first")) {
     c.port_first = file->Bool("port_first");
   }
+  const std::string tow_speed = number("tow_speed", "tow-speed", &c.tow_speed);
+  const std::string from_length = number("from_length", "from-length", &c.from_length);
+  const std::string to_length = number("to_length", "to-length", &c.to_length);
+  const std::string payout_rate = number("payout_rate", "payout-rate", &c.payout_rate);
+  const std::string hold = number("hold", "hold", &c.hold);
+  const std::string sample_period = number("sample_period", "sample-period", &c.sample_period);
+  if (f.Has("towfish")) {
+    c.towfish = f.String("towfish", c.towfish);
+  } else if (file && file->Has("towfish")) {
+    c.towfish = file->String("towfish");
+  }
   c.results = f.String("results", "");
+  c.plot = f.String("plot", "");
+  if (!c.plot.empty() && c.kind != ManeuverKind::kPayout) {
+    throw ConfigError("--plot " + c.plot + ": only the payout manoeuvre draws a plot");
+  }
 
   switch (c.kind) {
     case ManeuverKind::kCase1:
@@ -148,6 +174,30 @@ ManeuverConfig ResolveManeuver(const Flags& f) {
       }
       if (!(c.until_turn_deg >= 0.0)) {
         fail("until_turn_deg", until_turn, "must be >= 0 (0: rudder held to the end)");
+      }
+      break;
+    case ManeuverKind::kPayout:
+      if (c.rudder_deg != 0.0) fail("rudder_deg", rudder, "must be 0 for payout (no rudder)");
+      if (!(c.thrust > 0.0)) fail("thrust", thrust, "must be > 0 [N] (the speed hold's limit)");
+      if (!(c.tow_speed > 0.0 && std::isfinite(c.tow_speed))) {
+        fail("tow_speed", tow_speed, "must be a number > 0 [m/s]");
+      }
+      if (!(c.from_length > 0.0 && std::isfinite(c.from_length))) {
+        fail("from_length", from_length, "must be a number > 0 [m]");
+      }
+      if (!(c.to_length > 0.0 && std::isfinite(c.to_length)) || c.to_length == c.from_length) {
+        fail("to_length", to_length, "must be a number > 0 [m], not from_length");
+      }
+      if (!(c.payout_rate > 0.0 && std::isfinite(c.payout_rate))) {
+        fail("payout_rate", payout_rate, "must be a number > 0 [m/s]");
+      }
+      if (!(c.hold >= 0.0 && std::isfinite(c.hold))) fail("hold", hold, "must be >= 0 [s]");
+      if (!(c.sample_period > 0.0 && std::isfinite(c.sample_period))) {
+        fail("sample_period", sample_period, "must be a number > 0 [s]");
+      }
+      if (c.towfish.empty() || c.towfish == c.body) {
+        throw ConfigError("towfish " + c.towfish + ": must name the towed body (not " + c.body +
+                          ")");
       }
       break;
   }

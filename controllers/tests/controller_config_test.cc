@@ -94,7 +94,8 @@ TEST(ManeuverConfig, ErrorsNameTheKeyValueLineAndRule) {
             }),
             "rudder_dg = 10 (towsim_ctlcfg_typo.yaml:2): unknown key (allowed: maneuver, body, "
             "thrust, start, rudder_deg, heading_deg, until_yaw_deg, until_turn_deg, reversals, "
-            "port_first)");
+            "port_first, tow_speed, from_length, to_length, payout_rate, hold, towfish, "
+            "sample_period)");
   const std::string bad = WriteTemp("bad.yaml", "maneuver: zigzag\nheading_deg: -5\n");
   EXPECT_EQ(ErrorOf([&] {
               Maneuver({"--config", bad});
@@ -113,7 +114,7 @@ TEST(ManeuverConfig, ErrorsNameTheKeyValueLineAndRule) {
   EXPECT_EQ(ErrorOf([&] {
               Maneuver({"--maneuver", "spiral"});
             }),
-            "--maneuver spiral: must be one of case1, uturn, zigzag, turning_circle");
+            "--maneuver spiral: must be one of case1, uturn, zigzag, turning_circle, payout");
   EXPECT_NE(ErrorOf([&] {
               Maneuver({"--config", "/nonexistent.yaml"});
             }).find("cannot read"),

@@ -2,12 +2,14 @@
 // against hand-computed sequences, the turning circle's decision and sheet against a circle
 // of known geometry, Kasa's circle fit.
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "common/laws.h"
+#include "maneuver_runner/payout.h"
 #include "maneuver_runner/turning_circle.h"
 #include "maneuver_runner/zigzag.h"
 
@@ -178,6 +180,72 @@ TEST(TurningCircle, FitCircleOfNoisyArcAndDegenerateInput) {
   EXPECT_NEAR(radius, 10, 0.02);
   EXPECT_FALSE(FitCircle({0, 1, 2}, {0, 1, 2}, &cx, &cy, &radius));  // collinear
   EXPECT_FALSE(FitCircle({0, 1}, {0, 1}, &cx, &cy, &radius));
+}
+
+}  // namespace
+}  // namespace towsim::controllers
+
+namespace towsim::controllers {
+namespace {
+
+// the payout manoeuvre (maneuver_runner/payout.h): its schedule on time alone, its commands,
+// its sheet
+TEST(PayoutManoeuvre, ScheduleAndWinchCommandsByPhase) {
+  PayoutParams p;  // 150 -> 250 m at 1 m/s from 100 s, hold 100 s
+  const PayoutTimes t = PayoutSchedule(p);
+  EXPECT_EQ(t.payout, 100.0);
+  EXPECT_EQ(t.hold, 200.0);
+  EXPECT_EQ(t.reel_in, 300.0);
+  EXPECT_EQ(t.done, 400.0);
+  PayoutState s;
+  const PayoutCommand approach = PayoutStep(p, s, 50.0, 3.0, 0.05);
+  EXPECT_FALSE(approach.winch_length_mode);
+  EXPECT_EQ(approach.winch_value, 0.0);
+  const PayoutCommand out = PayoutStep(p, s, 100.0 - 1e-10, 3.0, 0.05);  // the script's rule
+  EXPECT_FALSE(out.winch_length_mode);
+  EXPECT_EQ(out.winch_value, 1.0);
+  const PayoutCommand hold = PayoutStep(p, s, 250.0, 3.0, 0.05);
+  EXPECT_TRUE(hold.winch_length_mode);
+  EXPECT_EQ(hold.winch_value, 250.0);
+  EXPECT_EQ(PayoutStep(p, s, 350.0, 3.0, 0.05).winch_value, -1.0);
+  const PayoutCommand done = PayoutStep(p, s, 420.0, 3.0, 0.05);
+  EXPECT_TRUE(done.winch_length_mode);
+  EXPECT_EQ(done.winch_value, 150.0);
+  // reeling in first (to < from): the signs turn
+  PayoutParams in = p;
+  in.to_length = 120.0;
+  EXPECT_EQ(PayoutStep(in, s, 110.0, 3.0, 0.05).winch_value, -1.0);
+}
+
+TEST(PayoutManoeuvre, ThrustHoldsTheTowingSpeedWithinItsLimit) {
+  PayoutParams p;
+  PayoutState s;
+  // too slow: thrust up to the limit; too fast for long: down to 0
+  double thrust = 0.0;
+  for (int k = 0; k < 200; ++k) thrust = PayoutStep(p, s, k * 0.05, 1.0, 0.05).vehicle.thrust;
+  EXPECT_EQ(thrust, p.max_thrust);
+  for (int k = 0; k < 2000; ++k) thrust = PayoutStep(p, s, k * 0.05, 5.0, 0.05).vehicle.thrust;
+  EXPECT_EQ(thrust, 0.0);
+}
+
+TEST(PayoutManoeuvre, SheetSamplesAndPhaseEnds) {
+  PayoutParams p;
+  PayoutSheet sheet(p, 10.0);
+  for (int k = 0; k <= 4500; ++k) {  // every 0.1 s to 450 s
+    const double t = 0.1 * k;
+    sheet.Add({t, 150.0 + std::min(100.0, std::max(0.0, t - 100.0)), 40.0 + 0.1 * t, 3.5, 3.0});
+  }
+  const PayoutResults& r = sheet.results();
+  ASSERT_EQ(r.samples.size(), 46u);  // 0, 10, ..., 450 s
+  EXPECT_NEAR(r.samples[1].t, 10.0, 1e-9);
+  ASSERT_TRUE(r.approach.valid && r.payout.valid && r.hold.valid && r.reel_in.valid);
+  EXPECT_NEAR(r.approach.at.t, 99.9, 1e-9);
+  EXPECT_NEAR(r.payout.at.t, 199.9, 1e-9);
+  EXPECT_NEAR(r.hold.at.t, 299.9, 1e-9);
+  EXPECT_NEAR(r.reel_in.at.t, 399.9, 1e-9);
+  EXPECT_NEAR(r.final.at.t, 450.0, 1e-9);
+  EXPECT_NEAR(r.max_length, 250.0, 1e-12);
+  EXPECT_NEAR(r.max_depth, 85.0, 1e-9);
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 //                 --seabed-profile s0:d0,s1:d1,...] | --hold) [--kp 0.15] [--ki 0.01]
 //                 [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20] [--max-pitch-deg 30]
 //                 [--elevator-sign -1] [--domain 0] [--namespace /towsim] [--timeout 30]
-//                 [--security DIR/NAME]
+//                 [--security DIR/NAME] [--winch [--winch-gain 0.1] [--winch-deadband 0.5]
+//                 [--winch-filter 10] [--winch-elevator-depth 25] [--winch-max-speed V]
+//                 [--winch-max-acceleration A]]
 //                 [--log FILE]
 // Altitude mode: the commanded depth is z + range - A, range the sim's own altimeter
 // (<ns>/<body>/altitude, sensor_msgs/Range, docs/sensors.md) of the step answered; while it
@@ -15,8 +17,14 @@
 // seabed(s) - A, s the horizontal distance the body has run since the first step (flat at B, or
 // piecewise linear through the profile).
 // --elevator-sign 1 for a body that dives on positive elevator (-1: it rises, the towfish);
-// --hold commands zero elevator (the uncontrolled reference). --log writes
-// "t z elevator target_depth" per step. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run
+// --hold commands zero elevator (the uncontrolled reference).
+// Winch mode (--winch; towfish_depth/winch_law.h): the commanded depth (or altitude) is held
+// with the winch at the cable's start for the slow part (the depth error the elevators leave
+// and their steady deflection) and the elevators for the fast part:
+// each step also publishes a WinchCommand (SPEED) on <ns>/winch/command, within the winch's
+// max_speed and max_acceleration (from the node's scene_info, or less with --winch-max-speed,
+// --winch-max-acceleration); the node clamps the length to [min_length, max_length].
+// --log writes "t z elevator target_depth" per step (winch mode: and the drum speed commanded). Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run
 // or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line.
 
 #include <algorithm>
@@ -32,6 +40,7 @@
 #include "common/laws.h"
 #include "towfish_depth/depth_law.h"
 #include "towfish_depth/seabed.h"
+#include "towfish_depth/winch_law.h"
 
 using namespace towsim::controllers;
 
@@ -42,6 +51,9 @@ constexpr char kUsage[] =
     "                     [--kd 0.5] [--max-elevator-deg 25] [--rate-deg 20]\n"
     "                     [--max-pitch-deg 30] [--elevator-sign -1] [--domain 0]\n"
     "                     [--namespace /towsim] [--timeout 30] [--security DIR/NAME] [--log FILE]\n"
+    "                     [--winch [--winch-gain 0.1] [--winch-deadband 0.5] [--winch-filter 10]\n"
+    "                     [--winch-elevator-depth 25] [--winch-max-speed V]\n"
+    "                     [--winch-max-acceleration A]]\n"
     "  --depth D          hold the depth D [m] below the surface\n"
     "  --altitude A       hold A [m] above the seabed, measured by the sim's own altimeter\n"
     "                     (<ns>/<body>/altitude, sensor_msgs/Range); while it sees no seabed\n"
@@ -51,7 +63,13 @@ constexpr char kUsage[] =
     "  --seabed-profile s0:d0,...  fallback for a scene without a seabed: piecewise-linear\n"
     "                     seabed depth d [m] against the distance run s [m]\n"
     "  --hold             zero elevator (the uncontrolled reference)\n"
-    "  --log FILE         writes \"t z elevator target_depth\" per step\n"
+    "  --winch            also drive the winch (<ns>/winch/command): the slow part of the\n"
+    "                     depth change and the elevators' steady demand, within the winch's\n"
+    "                     limits; --winch-gain K [1/s], --winch-elevator-depth G [m/rad],\n"
+    "                     --winch-deadband D [m], --winch-filter T [s], --winch-max-speed V\n"
+    "                     [m/s], --winch-max-acceleration A [m/s^2] (towfish_depth/winch_law.h)\n"
+    "  --log FILE         writes \"t z elevator target_depth\" per step (--winch: and the\n"
+    "                     drum speed)\n"
     "Exit 0 at the end of the node's run or on SIGINT/SIGTERM, 1 error or timeout, 2 bad "
     "command line.\n";
 }  // namespace
@@ -64,12 +82,16 @@ int main(int argc, char** argv) {
   bool altitude_mode = false;
   double altitude = 0.0;
   SeabedProfile seabed;
+  WinchDepthParams winch;
+  double winch_max_speed = 0.0, winch_max_acceleration = 0.0;  // <= 0: the winch's own
   try {
     const Flags f(argc, argv,
                   {"body", "depth", "kp", "ki", "kd", "max-elevator-deg", "rate-deg",
                    "max-pitch-deg", "elevator-sign", "domain", "namespace", "timeout", "log",
-                   "altitude", "seabed-depth", "seabed-profile", kSecurityFlag},
-                  {"hold", "help"});
+                   "altitude", "seabed-depth", "seabed-profile", "winch-gain", "winch-deadband",
+                   "winch-filter", "winch-max-speed", "winch-max-acceleration", "winch-elevator-depth",
+                   kSecurityFlag},
+                  {"hold", "help", "winch"});
     if (f.Has("help")) {
       std::printf("%s", kUsage);
       return 0;
@@ -127,6 +149,19 @@ int main(int argc, char** argv) {
     p.max_pitch = Rad(f.Number("max-pitch-deg", Deg(p.max_pitch), 0.0, 90.0, /*lo_open=*/true));
     p.hold = f.Has("hold");
     log_path = f.String("log", "");
+    opt.winch = f.Has("winch");
+    for (const char* w : {"winch-gain", "winch-deadband", "winch-filter", "winch-max-speed",
+                          "winch-max-acceleration", "winch-elevator-depth"}) {
+      if (!opt.winch && f.Has(w)) throw std::runtime_error(std::string("--") + w + " needs --winch");
+    }
+    if (opt.winch && p.hold) throw std::runtime_error("--winch and --hold: give one of them");
+    winch.gain = f.Number("winch-gain", winch.gain, 0.0, kNoLimit, /*lo_open=*/true);
+    winch.deadband = f.Number("winch-deadband", winch.deadband, 0.0, kNoLimit);
+    winch.filter = f.Number("winch-filter", winch.filter, 0.0, kNoLimit, /*lo_open=*/true);
+    winch.elevator_depth = f.Number("winch-elevator-depth", winch.elevator_depth, 0.0, kNoLimit);
+    winch_max_speed = f.Number("winch-max-speed", 0.0, 0.0, kNoLimit, /*lo_open=*/true);
+    winch_max_acceleration =
+        f.Number("winch-max-acceleration", 0.0, 0.0, kNoLimit, /*lo_open=*/true);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "towfish_depth: error: %s\n", e.what());
     return 2;
@@ -140,6 +175,16 @@ int main(int argc, char** argv) {
       if (log == nullptr) throw std::runtime_error("cannot write " + log_path);
     }
     LockstepClient client(opt);
+    if (opt.winch) {
+      // within the winch's limits (SceneInfo), or the tighter ones asked for
+      const WinchInfo& w = client.winch();
+      winch.max_speed = winch_max_speed > 0.0 ? std::min(winch_max_speed, w.max_speed)
+                                              : w.max_speed;
+      winch.max_acceleration = winch_max_acceleration > 0.0
+                                   ? std::min(winch_max_acceleration, w.max_acceleration)
+                                   : w.max_acceleration;
+    }
+    WinchDepthState winch_state;
     PidState state;
     AlongTrack track;
     bool have_target = false, warned = false;
@@ -164,10 +209,19 @@ int main(int argc, char** argv) {
         p.depth = AltitudeTargetDepth(seabed, track.Update(b.x, b.y), altitude);
       }
       const double elevator = DepthStep(p, state, b.z, b.z_dot, b.pitch, b.dt);
-      if (log != nullptr) {
+      Actuation a{0.0, 0.0, elevator};
+      if (opt.winch) {
+        // the elevators' "deeper" demand: sign * elevator (towfish_depth/depth_law.h)
+        const double deeper = p.sign >= 0.0 ? elevator : -elevator;
+        a.winch.value = WinchDepthStep(winch, winch_state, p.depth, b.z, deeper, b.dt);
+      }
+      if (log != nullptr && opt.winch) {
+        std::fprintf(log, "%.6f %.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth,
+                     a.winch.value);
+      } else if (log != nullptr) {
         std::fprintf(log, "%.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth);
       }
-      return Actuation{0.0, 0.0, elevator};
+      return a;
     });
     if (log != nullptr) std::fclose(log);
     std::printf("towfish_depth: %llu steps answered\n",

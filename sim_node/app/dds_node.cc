@@ -88,7 +88,11 @@ class DdsNode {
   uint8_t RunningState() const;
   void Output(const core::StepStatus& status, long wall_us);
   void Summary(double wall) const;
-  void NoteCommand(const dds::CheckedCommand& c, int i);
+  // a rejected or clamped command on stderr (dds::CheckedCommand, dds::CheckedWinchCommand)
+  template <class Checked>
+  void NoteCommand(const Checked& c, int i);
+  // arbiter entries 0 .. num_command_vehicles() - 1 are the vehicles, then the winch's
+  int num_command_vehicles() const { return static_cast<int>(n_.command_vehicles.size()); }
 
   const core::Model& model_;
   DdsNodeOptions opt_;
@@ -126,7 +130,7 @@ int DdsNode::Run() {
     return rc == kExitStoppedInSetup ? kExitOk : rc;
   }
   control_ = RunControl(RunControl::Options{opt_.start_paused,
-                                            opt_.wait_for_controllers && n_.arbiter->size() > 0,
+                                            opt_.wait_for_controllers && num_command_vehicles() > 0,
                                             n_.steps_to_run, opt_.rate});
   run_id_ = NewRunId(model_.name);
 
@@ -214,10 +218,17 @@ void DdsNode::PublishInitial() {
       control_.steps_to_run() < 0 ? -1.0 : static_cast<double>(control_.steps_to_run()) * h_;
   info.command_timeout = opt_.command_timeout;
   for (int b = 0; b < n_.sim->num_bodies(); ++b) info.bodies.push_back(n_.sim->body_name(b));
-  for (int i = 0; i < n_.arbiter->size(); ++i) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
     info.commanded_bodies.push_back(n_.arbiter->vehicle(i).name);
   }
   info.cable_nodes = n_.sim->num_nodes();
+  if (const std::optional<core::WinchParams>& w = model_.cable.winch) {
+    info.has_winch = true;
+    info.winch_min_length = w->min_length;
+    info.winch_max_length = w->max_length;
+    info.winch_max_speed = w->max_speed;
+    info.winch_max_acceleration = w->max_acceleration;
+  }
   n_.endpoints->PublishSceneInfo(info);
 
   last_status_ = core::StepStatus{};
@@ -282,7 +293,8 @@ bool DdsNode::HandleControl() {
   return changed;
 }
 
-void DdsNode::NoteCommand(const dds::CheckedCommand& c, int i) {
+template <class Checked>
+void DdsNode::NoteCommand(const Checked& c, int i) {
   if (c.verdict == dds::CheckedCommand::kAccepted) return;
   if (command_notes_ >= kMaxCommandNotes) return;
   ++command_notes_;
@@ -305,6 +317,12 @@ void DdsNode::TakeCommands() {
     n_.endpoints->command_reader(i).TakeEach(
         [&](const dds::ActuatorCommandMsg& msg, const dds_sample_info_t&) {
           NoteCommand(n_.arbiter->Receive(i, msg, t), i);
+        });
+  }
+  if (const int w = n_.winch_entry; w >= 0) {
+    n_.endpoints->winch_reader()->TakeEach(
+        [&](const dds::WinchCommandMsg& msg, const dds_sample_info_t&) {
+          NoteCommand(n_.arbiter->Receive(w, msg, t), w);
         });
   }
 }
@@ -368,7 +386,7 @@ void DdsNode::Idle() {
 }
 
 bool DdsNode::AllCommanded() const {
-  for (int i = 0; i < n_.arbiter->size(); ++i) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
     if (!n_.arbiter->commanded(i)) return false;
   }
   return true;
@@ -377,11 +395,15 @@ bool DdsNode::AllCommanded() const {
 bool DdsNode::DoStep() {
   core::Simulation& sim = *n_.sim;
   n_.arbiter->CheckTimeouts(sim.time());
-  // the script entries due first, then the controllers' commands (and failsafes) over them
+  // the script entries due first, then the controllers' commands (and failsafes) over them:
+  // the vehicles', then the winch's (docs/winch_dds.md)
   if (opt_.use_script) n_.script->Apply(&sim);
-  for (int i = 0; i < n_.arbiter->size(); ++i) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
     core::VehicleCommand command;
     if (n_.arbiter->Take(i, &command)) sim.SetVehicleCommand(n_.command_vehicles[i], command);
+  }
+  if (core::WinchCommand winch; n_.winch_entry >= 0 && n_.arbiter->Take(n_.winch_entry, &winch)) {
+    sim.SetWinchCommand(winch);
   }
 
   const Clock::time_point t0 = Clock::now();

@@ -16,7 +16,9 @@
 //
 // Commands: dds/command_arbiter.h (last writer wins, NaN rejected, out of range clamped,
 // failsafe after `command_timeout` of simulation time). Each step: the scene's script entries
-// due fire first, then the commands taken. SimControl (app/run_control.h): PAUSE, RESUME,
+// due fire first, then the commands taken: the vehicles', then the winch's (a scene with
+// cable.winch: rt/<ns>/winch/command, an arbiter entry named "winch", waited for in lockstep
+// like a vehicle; docs/winch_dds.md). SimControl (app/run_control.h): PAUSE, RESUME,
 // STEP n (while paused), RESET (a new core::Simulation from the same Model, a new run id),
 // SET_RATE. The pieces (docs/app_layer.md): app/node_setup.h builds the node, app/run_control.h
 // decides, app/dds_publisher.h publishes the topics of app/node_topics.h.
@@ -53,7 +55,8 @@ struct DdsNodeOptions {
   bool open_outputs = false;      // with security: readers without a certificate see the outputs
   double command_timeout = 0.5;   // failsafe after this much simulation time without command [s]
   double lockstep_timeout = 1.0;  // lockstep: wall time to wait for a step's commands [s]
-  // lockstep: the vehicles waited for; empty: every vehicle that takes commands
+  // lockstep: the vehicles (and "winch") waited for; empty: every vehicle that takes commands
+  // and the winch
   std::vector<std::string> lockstep_bodies;
   core::PublishRates rates;  // the scene's publish.* (core/publish_rates.h)
   bool use_script = true;     // the scene's script drives the vehicles between commands

@@ -56,6 +56,13 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
         participant, command_topics_.back(), dds::CommandQos()));
     waitset_.Attach(command_readers_.back()->condition());
   }
+  if (sim.has_winch()) {
+    winch_topic_ = std::make_unique<dds::Topic>(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
+                                                names.winch_command());
+    winch_reader_ = std::make_unique<dds::Reader<dds::WinchCommandMsg>>(participant, *winch_topic_,
+                                                                        dds::CommandQos());
+    waitset_.Attach(winch_reader_->condition());
+  }
   waitset_.Attach(control_reader_.condition());
 }
 
@@ -135,6 +142,10 @@ void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveS
       server->AddChannel(RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
     }
   }
+  if (winch_topic_) {
+    const char* type = "towsim_msgs/msg/WinchCommand";
+    server->AddChannel(RosTopicName(winch_topic_->name()), type, io::Ros2MsgSchema(type));
+  }
   // clients publish through writers of the node's participant: its own readers take them
   fox_commands_ =
       std::make_unique<FoxgloveCommands>(participant, names_, body_names_, "sim_node", false);
@@ -203,6 +214,7 @@ void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
 std::vector<dds_entity_t> NodeEndpoints::readers() const {
   std::vector<dds_entity_t> out;
   for (const auto& r : command_readers_) out.push_back(r->get());
+  if (winch_reader_) out.push_back(winch_reader_->get());
   out.push_back(control_reader_.get());
   return out;
 }

@@ -59,6 +59,9 @@ class NodeEndpoints {
   dds::Reader<dds::ActuatorCommandMsg>& command_reader(int i) { return *command_readers_[i]; }
   int num_command_readers() const { return static_cast<int>(command_readers_.size()); }
   dds::Reader<dds::SimControlMsg>& control_reader() { return control_reader_; }
+  // the winch's command reader (rt/<ns>/winch/command, docs/winch_dds.md); nullptr when the
+  // scene has no winch
+  dds::Reader<dds::WinchCommandMsg>* winch_reader() { return winch_reader_.get(); }
   // blocks until a command or a control request is available, or `timeout` [s]
   void WaitForInput(double timeout);
 
@@ -106,6 +109,8 @@ class NodeEndpoints {
   std::vector<dds::Topic> command_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
   dds::Reader<dds::SimControlMsg> control_reader_;
+  std::unique_ptr<dds::Topic> winch_topic_;
+  std::unique_ptr<dds::Reader<dds::WinchCommandMsg>> winch_reader_;
   dds::WaitSet waitset_;
 
   dds::SimStatusMessage status_msg_;

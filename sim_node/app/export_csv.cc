@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <optional>
 #include <stdexcept>
@@ -133,6 +134,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   std::map<std::int64_t, double> sim_time_of_stamp;  // from the status messages
   std::vector<io::cdr::SimStatus> statuses;
   std::optional<std::vector<std::string>> scene_bodies;
+  bool has_winch = false;  // the scene info says so: winch.csv, as the node writes it
   std::uint64_t index = 0;
   reader.ForEachMessage([&](const io::McapMessage& m) {
     ++index;
@@ -175,7 +177,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           break;
         }
         case Kind::kSceneInfo:
-          if (!scene_bodies) scene_bodies = io::cdr::DecodeSceneInfo(p, n).bodies;
+          if (!scene_bodies) {
+            io::cdr::SceneInfo info = io::cdr::DecodeSceneInfo(p, n);
+            scene_bodies = std::move(info.bodies);
+            has_winch = info.has_winch;
+          }
           break;
       }
     } catch (const io::cdr::CdrError& e) {
@@ -199,9 +205,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   CsvFile bodies_csv(d / "bodies.csv", io::kCsvBodiesHeader);
   CsvFile cable_csv(d / "cable.csv", io::kCsvCableHeader);
   CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
-  CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
   std::optional<CsvFile> environment_csv;  // as the node: only for a scene with a sea
   if (sea) environment_csv.emplace(d / "environment.csv", io::kCsvEnvironmentHeader);
+  CsvFile status_csv(d / "status.csv", has_winch ? io::kCsvStatusWinchHeader : io::kCsvStatusHeader);
+  std::optional<CsvFile> winch_csv;
+  if (has_winch) winch_csv.emplace(d / "winch.csv", io::kCsvWinchHeader);
   ExportCounts counts;
 
   for (const auto& [stamp, frame] : frames) {
@@ -228,6 +236,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                      c.positions[i].y, c.positions[i].z, tension);
         ++counts.cable_rows;
       }
+      if (winch_csv) {
+        std::fprintf(winch_csv->get(), "%.9g,%.9g,%.9g,%.9g,%u\n", t, c.paid_out_length,
+                     c.winch_speed, c.drum_tension, static_cast<unsigned>(c.node_count));
+        ++counts.winch_rows;
+      }
     }
     for (const std::string& b : bodies) {
       const auto w = frame.forces.find(b);
@@ -249,9 +262,23 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   }
   for (const io::cdr::SimStatus& s : statuses) {
     // the node's CSV: wall_us = lround(step wall time * 1e6), the same number it publishes
-    std::fprintf(status_csv.get(), "%.9g,%llu,%d,%.9g,%ld\n", s.sim_time,
+    std::fprintf(status_csv.get(), "%.9g,%llu,%d,%.9g,%ld", s.sim_time,
                  static_cast<unsigned long long>(s.step), s.newton_iterations, s.residual,
                  std::lround(s.step_wall_time * 1e6));
+    if (has_winch) {
+      // cable_length: the paid-out length of the newest cable state at or before this stamp
+      // (the cable state comes at its own rate)
+      double length = std::numeric_limits<double>::quiet_NaN();
+      for (auto f = frames.upper_bound(StampNs(s.header.stamp)); f != frames.begin();) {
+        --f;
+        if (f->second.cable) {
+          length = f->second.cable->paid_out_length;
+          break;
+        }
+      }
+      std::fprintf(status_csv.get(), ",%.9g", length);
+    }
+    std::fprintf(status_csv.get(), "\n");
     ++counts.status_rows;
   }
   bodies_csv.Close();
@@ -259,6 +286,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   forces_csv.Close();
   status_csv.Close();
   if (environment_csv) environment_csv->Close();
+  if (winch_csv) winch_csv->Close();
   return counts;
 }
 

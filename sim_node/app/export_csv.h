@@ -7,12 +7,17 @@
 //   NS/<b>/odom        nav_msgs/Odometry      -> bodies.csv  (Euler ZYX from the quaternion,
 //                                                 by the core's own EulerZYX)
 //   NS/<b>/cable_force geometry_msgs/WrenchStamped -> forces.csv
-//   NS/cable/state     towsim_msgs/CableState -> cable.csv
+//   NS/cable/state     towsim_msgs/CableState -> cable.csv, and winch.csv (paid_out_length,
+//                                                 winch_speed, drum_tension, node_count) when
+//                                                 the scene info says the scene has a winch
 //   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
 //                                                 the end-of-run repeat of a step is dropped)
 //   NS/<b>/environment towsim_msgs/BodyEnvironment -> environment.csv (written, as by the node,
 //                                                 only when the recording has these topics: a
 //                                                 scene with a sea; NaN altitude as an empty field)
+//                                                 the end-of-run repeat of a step is dropped;
+//                                                 a winch scene's cable_length from the newest
+//                                                 cable state at or before the status)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).
@@ -30,6 +35,7 @@ namespace towsim::app {
 struct ExportCounts {
   std::uint64_t bodies_rows = 0, cable_rows = 0, forces_rows = 0, status_rows = 0;
   std::uint64_t environment_rows = 0;
+  std::uint64_t winch_rows = 0;  // a scene with a winch
 };
 
 // reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files

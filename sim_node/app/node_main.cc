@@ -73,7 +73,8 @@ int Run(const Options& options, DdsModeRunner run_dds) {
   std::unique_ptr<io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {
     try {
-      csv = std::make_unique<io::CsvWriter>(options.csv_dir, io::HasSea(model.environment));
+      csv = std::make_unique<io::CsvWriter>(options.csv_dir, io::HasSea(model.environment),
+                                            model.cable.winch.has_value());
     } catch (const io::OutputError& e) {  // opened, not written: disk full
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitError;

@@ -64,11 +64,29 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     vehicles.push_back({vehicle.name, dds::LimitsOf(vehicle.params), lockstep && waited});
     n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
   }
+  // the winch (docs/winch_dds.md): one more entry, after the vehicles, waited for in lockstep
+  // like a commanded body
+  if (model.cable.winch) {
+    for (const auto& v : vehicles) {
+      if (v.name == dds::kWinchName) {
+        return bad("body winch: the name is taken by the winch's topic rt/<ns>/winch/command "
+                   "(rename the vehicle)");
+      }
+    }
+    const bool waited = opt.lockstep_bodies.empty() ||
+                        std::find(opt.lockstep_bodies.begin(), opt.lockstep_bodies.end(),
+                                  dds::kWinchName) != opt.lockstep_bodies.end();
+    n.winch_entry = static_cast<int>(vehicles.size());
+    vehicles.push_back(dds::CommandArbiter::Vehicle::Winch(*model.cable.winch, lockstep && waited));
+    n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
+  }
   for (const std::string& name : opt.lockstep_bodies) {
     bool found = false;
     for (const auto& v : vehicles) found = found || v.name == name;
-    if (!found)
-      return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands");
+    if (!found) {
+      return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands" +
+                 (model.cable.winch ? " nor the winch" : ""));
+    }
   }
   n.arbiter.emplace(std::move(vehicles), opt.command_timeout);
 
@@ -99,7 +117,10 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     n.endpoints = std::make_unique<NodeEndpoints>(*n.participant, dds::TopicNames(opt.ns), *n.sim,
                                                   n.command_vehicles);
     std::vector<std::string> commanded;
-    for (int i = 0; i < n.arbiter->size(); ++i) commanded.push_back(n.arbiter->vehicle(i).name);
+    // the vehicles' names (the winch's topic carries another type)
+    for (size_t i = 0; i < n.command_vehicles.size(); ++i) {
+      commanded.push_back(n.arbiter->vehicle(static_cast<int>(i)).name);
+    }
     n.unknown = std::make_unique<UnknownCommands>(*n.participant, opt.ns, commanded);
     // another node in this domain and namespace: refused (docs/topics.md); nothing of
     // this node is published yet

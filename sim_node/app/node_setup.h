@@ -35,6 +35,7 @@ inline constexpr int kExitStoppedInSetup = -1;  // a signal stopped the setup (t
 // the node's parts, in the order they are built (and destroyed in reverse)
 struct NodeParts {
   std::vector<int> command_vehicles;  // vehicle index of arbiter entry i
+  int winch_entry = -1;  // the winch's arbiter entry, after the vehicles'; < 0: no winch
   bool has_lockstep_vehicles = false;
   std::optional<dds::CommandArbiter> arbiter;
   std::optional<core::Simulation> sim;

@@ -82,6 +82,9 @@ std::string ClockName(const TopicNames& n, const std::string&) { return n.clock(
 std::string StatusName(const TopicNames& n, const std::string&) { return n.status(); }
 std::string CableStateName(const TopicNames& n, const std::string&) { return n.cable_state(); }
 std::string SimControlName(const TopicNames& n, const std::string&) { return n.sim_control(); }
+std::string WinchCommandName(const TopicNames& n, const std::string&) {
+  return n.winch_command();
+}
 std::string SceneInfoName(const TopicNames& n, const std::string&) { return n.scene_info(); }
 std::string TfName(const TopicNames& n, const std::string&) { return n.tf(); }
 std::string TfStaticName(const TopicNames& n, const std::string&) { return n.tf_static(); }
@@ -113,9 +116,12 @@ std::vector<TopicRow> BuildTable() {
        [](P p, const TopicRow& row, N name, S sim, int) {
          return Make<dds::CableStateMessage, CableState>(
              p, row, name,
-             std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, sim.num_nodes()), -1);
+             std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim)),
+             -1);
        }},
       {kNode, SimControlName, &towsim_msgs_msg_dds__SimControl__desc, TopicQos::kControl, kIn},
+      // the winch's command (docs/winch_dds.md); the node reads it only for a scene with a winch
+      {kNode, WinchCommandName, &towsim_msgs_msg_dds__WinchCommand__desc, TopicQos::kCommand, kIn},
       // /tf: the same state as the odometry, at its rate
       {kNode, TfName, &tf2_msgs_msg_dds__TFMessage__desc, TopicQos::kState, kOut,
        PublishRate::kOdom,

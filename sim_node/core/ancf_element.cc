@@ -75,6 +75,12 @@ AncfElement::AncfElement(const ElementProperties& props) : props_(props) {
       -13 * l, -3 * l * l, -22 * l, 4 * l * l;
   m *= props_.mass_per_length * l / 420.0;
   mass4_ = m;
+  Eigen::Matrix4d dm;
+  dm << 156, 44 * l, 54, -26 * l,                 //
+      44 * l, 12 * l * l, 26 * l, -9 * l * l,     //
+      54, 26 * l, 156, -44 * l,                   //
+      -26 * l, -9 * l * l, -44 * l, 12 * l * l;
+  dmass4_ = dm * (props_.mass_per_length / 420.0);
   mass_.setZero();
   for (int i = 0; i < 4; ++i)
     for (int j = 0; j < 4; ++j) mass_.block<3, 3>(3 * i, 3 * j) = m(i, j) * Mat3::Identity();
@@ -98,6 +104,21 @@ Vec12 AncfElement::MassTimes(const Vec12& e_ddot) const {
     f.segment<3>(3 * i) = mass4_(i, 0) * e_ddot.segment<3>(0) +
                           mass4_(i, 1) * e_ddot.segment<3>(3) +
                           mass4_(i, 2) * e_ddot.segment<3>(6) + mass4_(i, 3) * e_ddot.segment<3>(9);
+  return f;
+}
+
+Mat12 AncfElement::MassLengthDerivative() const {
+  Mat12 d = Mat12::Zero();
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) d.block<3, 3>(3 * i, 3 * j) = dmass4_(i, j) * Mat3::Identity();
+  return d;
+}
+
+Vec12 AncfElement::MassLengthDerivativeTimes(const Vec12& e_dot) const {
+  Vec12 f;
+  for (int i = 0; i < 4; ++i)
+    f.segment<3>(3 * i) = dmass4_(i, 0) * e_dot.segment<3>(0) + dmass4_(i, 1) * e_dot.segment<3>(3) +
+                          dmass4_(i, 2) * e_dot.segment<3>(6) + dmass4_(i, 3) * e_dot.segment<3>(9);
   return f;
 }
 

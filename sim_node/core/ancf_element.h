@@ -55,6 +55,12 @@ class AncfElement {
 
   // M e_ddot, with M = m4 (x) I3 applied block-wise (48 multiply-adds instead of 144)
   Vec12 MassTimes(const Vec12& e_ddot) const;
+  // dM/dl (the consistent mass's derivative in the element length; a winch's drum element,
+  // system.h) and dM/dl e_dot:
+  //   dM/dl = rho A / 420 [156, 44l, 54, -26l; 44l, 12l^2, 26l, -9l^2;
+  //                        54, 26l, 156, -44l; -26l, -9l^2, -44l, 12l^2] (x) I3
+  Mat12 MassLengthDerivative() const;
+  Vec12 MassLengthDerivativeTimes(const Vec12& e_dot) const;
 
   // internal force F = dU/de + damping force, and optionally its Jacobians
   //   K = dF/de (12 x 12), C = dF/de_dot (12 x 12).
@@ -71,6 +77,7 @@ class AncfElement {
   ElementProperties props_;
   Mat12 mass_;
   Eigen::Matrix4d mass4_;  // M = mass4_ (x) I3
+  Eigen::Matrix4d dmass4_;  // dM/dl = dmass4_ (x) I3
   std::array<ShapeAtPoint, 5> points_;
   std::array<ShapeAtPoint, 2> ends_;
 };

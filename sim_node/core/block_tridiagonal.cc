@@ -1,56 +1,81 @@
 #include "core/block_tridiagonal.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace towsim::core {
 
-BlockTridiagonal::BlockTridiagonal(const std::vector<int>& block_sizes) : sizes_(block_sizes) {
+BlockTridiagonal::BlockTridiagonal(const std::vector<int>& block_sizes, int max_first)
+    : base_sizes_(block_sizes), sizes_(block_sizes), max_first_(max_first) {
   const int n = num_blocks();
-  offsets_.resize(n);
+  // the largest size each block can take: the head's for the blocks that may become first
+  std::vector<int> cap(block_sizes);
+  for (int i = 1; i <= max_first_ && i < n; ++i) cap[i] = std::max(cap[i], block_sizes[0]);
+  offsets_.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    diag_.emplace_back(Eigen::VectorXd::Zero(cap[i] * cap[i]));
+    lu_.emplace_back(base_sizes_[i]);
+    lu6_.emplace_back();
+    tmp_.emplace_back(Eigen::VectorXd::Zero(cap[i]));
+  }
+  if (max_first_ > 0) lu_head_ = Eigen::PartialPivLU<Eigen::MatrixXd>(base_sizes_[0]);
+  for (int i = 0; i + 1 < n; ++i) {
+    upper_.emplace_back(Eigen::VectorXd::Zero(cap[i] * cap[i + 1]));
+    lower_.emplace_back(Eigen::VectorXd::Zero(cap[i] * cap[i + 1]));
+    x_.emplace_back(Eigen::VectorXd::Zero(cap[i] * cap[i + 1]));
+  }
+  SetFirstBlock(0);
+}
+
+void BlockTridiagonal::SetFirstBlock(int first) {
+  first_ = first;
+  const int n = num_blocks();
+  for (int i = 0; i < n; ++i) {
+    sizes_[i] = i < first ? 0 : base_sizes_[i];
+  }
+  if (first > 0) sizes_[first] = base_sizes_[0];
+  size_ = 0;
   for (int i = 0; i < n; ++i) {
     offsets_[i] = size_;
     size_ += sizes_[i];
-    diag_.emplace_back(Eigen::MatrixXd::Zero(sizes_[i], sizes_[i]));
-    lu_.emplace_back(sizes_[i]);
-    lu6_.emplace_back();
-    tmp_.emplace_back(Eigen::VectorXd::Zero(sizes_[i]));
-  }
-  for (int i = 0; i + 1 < n; ++i) {
-    upper_.emplace_back(Eigen::MatrixXd::Zero(sizes_[i], sizes_[i + 1]));
-    lower_.emplace_back(Eigen::MatrixXd::Zero(sizes_[i + 1], sizes_[i]));
-    x_.emplace_back(Eigen::MatrixXd::Zero(sizes_[i], sizes_[i + 1]));
   }
 }
 
 void BlockTridiagonal::SetZero() {
-  for (auto& m : diag_) m.setZero();
-  for (auto& m : upper_) m.setZero();
-  for (auto& m : lower_) m.setZero();
+  for (int i = first_; i < num_blocks(); ++i) {
+    diag(i).setZero();
+    if (i + 1 < num_blocks()) {
+      upper(i).setZero();
+      lower(i).setZero();
+    }
+  }
 }
 
 bool BlockTridiagonal::Solve(Eigen::VectorXd* b) { return Factor() && SolveFactored(b); }
 
 bool BlockTridiagonal::Factor() {
   const int n = num_blocks();
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < n; ++i) {
+    Map d = diag(i);
     // D^_i = D_i - L_{i-1} X_{i-1}
-    if (i > 0) diag_[i].noalias() -= lower_[i - 1] * x_[i - 1];
+    if (i > first_) d.noalias() -= lower(i - 1) * x(i - 1);
     double det;
     if (sizes_[i] == 6) {
-      lu6_[i].compute(Eigen::Map<const Eigen::Matrix<double, 6, 6>>(diag_[i].data()));
+      lu6_[i].compute(Eigen::Map<const Eigen::Matrix<double, 6, 6>>(d.data()));
       det = lu6_[i].matrixLU().diagonal().cwiseAbs().minCoeff();
     } else {
-      lu_[i].compute(diag_[i]);
-      det = lu_[i].matrixLU().diagonal().cwiseAbs().minCoeff();
+      lu(i).compute(d);
+      det = lu(i).matrixLU().diagonal().cwiseAbs().minCoeff();
     }
     // a zero or non-finite pivot shows in the determinant of the triangular factor
     if (!(det > 0.0) || !std::isfinite(det)) return false;
     if (i + 1 < n) {
       // X_i = D^_i^-1 U_i
+      Map xi = x(i);
       if (sizes_[i] == 6)
-        x_[i] = lu6_[i].solve(upper_[i]);
+        xi = lu6_[i].solve(upper(i));
       else
-        x_[i] = lu_[i].solve(upper_[i]);
+        xi = lu(i).solve(upper(i));
     }
   }
   return true;
@@ -63,7 +88,7 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using ConstMap6 = Eigen::Map<const Mat6>;
 
 // y -= A x (A rows(y) x rows(x)), fixed size when both are 6
-void SubtractProduct(const Eigen::MatrixXd& a, const Eigen::VectorXd& x,
+void SubtractProduct(const BlockTridiagonal::Map& a, const Eigen::Map<Eigen::VectorXd>& x,
                      Eigen::Ref<Eigen::VectorXd> y) {
   if (a.rows() == 6 && a.cols() == 6) {
     Eigen::Map<Vec6>(y.data()).noalias() -= ConstMap6(a.data()) * Eigen::Map<const Vec6>(x.data());
@@ -76,27 +101,27 @@ void SubtractProduct(const Eigen::MatrixXd& a, const Eigen::VectorXd& x,
 
 bool BlockTridiagonal::SolveFactored(Eigen::VectorXd* b) {
   const int n = num_blocks();
-  for (int i = 0; i < n; ++i) {
+  for (int i = first_; i < n; ++i) {
     // y_i = b_i - L_{i-1} z_{i-1};  z_i = D^_i^-1 y_i
     auto bi = b->segment(offsets_[i], sizes_[i]);
-    if (i > 0) SubtractProduct(lower_[i - 1], tmp_[i - 1], bi);
+    if (i > first_) SubtractProduct(lower(i - 1), tmp(i - 1), bi);
     if (sizes_[i] == 6)
       Eigen::Map<Vec6>(tmp_[i].data()) = lu6_[i].solve(Eigen::Map<const Vec6>(bi.data()));
     else
-      tmp_[i] = lu_[i].solve(bi);
+      tmp(i) = lu(i).solve(bi);
   }
   // back substitution: x_i = z_i - X_i x_{i+1}
-  b->segment(offsets_[n - 1], sizes_[n - 1]) = tmp_[n - 1];
-  for (int i = n - 2; i >= 0; --i) {
+  b->segment(offsets_[n - 1], sizes_[n - 1]) = tmp(n - 1);
+  for (int i = n - 2; i >= first_; --i) {
     const auto next = b->segment(offsets_[i + 1], sizes_[i + 1]);
-    if (x_[i].rows() == 6 && x_[i].cols() == 6)
+    if (sizes_[i] == 6 && sizes_[i + 1] == 6)
       Eigen::Map<Vec6>(tmp_[i].data()).noalias() -=
           ConstMap6(x_[i].data()) * Eigen::Map<const Vec6>(next.data());
     else
-      tmp_[i].noalias() -= x_[i] * next;
-    b->segment(offsets_[i], sizes_[i]) = tmp_[i];
+      tmp(i).noalias() -= x(i) * next;
+    b->segment(offsets_[i], sizes_[i]) = tmp(i);
   }
-  return std::isfinite(b->squaredNorm());
+  return std::isfinite(b->segment(0, size_).squaredNorm());
 }
 
 }  // namespace towsim::core

@@ -49,7 +49,7 @@ bool Integrator::InitializeAcceleration(State* s) {
   if (waves_) system_.SampleWaves(s->q, s->t, &wave_samples_);
   wave_time_ = -1.0;
   system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr, s->supports);
+                   waves_ ? &wave_samples_ : nullptr, s->supports, &s->winch.drum);
   // acceleration-level constraints: Phi_q a = 0 (linear joints, constant driven velocity)
   phi_.setZero();
   system_.ToBlocks(-r_, phi_, &rhs_);
@@ -104,7 +104,7 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     // residual always; the Newton matrix only when it is refreshed
     if (waves_each_iteration) system_.SampleWaves(st.q, t1, &wave_samples_);
     system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_,
-                     refresh ? &jac_ : nullptr, waves, st.supports);
+                     refresh ? &jac_ : nullptr, waves, st.supports, &st.winch.drum);
     if (!r_.allFinite() || !phi_.allFinite()) {
       at.non_finite = true;
       return at;
@@ -125,6 +125,8 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.q = st.q;
       kept.v = st.v;
       kept.a = st.a;
+      kept.drum_length = st.winch.drum.LengthAt(t1);
+      kept.drum_rate = st.winch.drum.RateAt(t1);
       if (waves_) kept.wave_q = waves_each_iteration ? st.q : wave_q_;
       kept.theta = 0.0;
       kept.theta_age = kMaxThetaAge + 1;  // the new matrix's rate is not known yet
@@ -218,8 +220,13 @@ bool Integrator::RestoreNewtonMatrix(const State& s) {
   const double a_fac = (1.0 - ap_.alpha_m) / (1.0 - ap_.alpha_f);
   const JacobianCoefficients cf{1.0, ap_.gamma / (ap_.beta * h), a_fac / (ap_.beta * h2)};
   if (waves_) system_.SampleWaves(kept.wave_q, kept.t, &wave_samples_);
+  // the drum element as it was then (a constant motion at its length and rate)
+  DrumMotion drum;
+  drum.t0 = kept.t;
+  drum.length = kept.drum_length;
+  drum.rate = kept.drum_rate;
   system_.Evaluate(kept.q, kept.v, kept.a, s.lambda, kept.t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr, s.supports);
+                   waves_ ? &wave_samples_ : nullptr, s.supports, &drum);
   return jac_.Factor();
 }
 

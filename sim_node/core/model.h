@@ -2,6 +2,7 @@
 // The immutable description of a scene, as the core sees it. Built and validated by
 // scene/ (yaml -> Model); the core trusts it. SI units, world frame NED (z down).
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@
 #include "core/seabed.h"
 #include "core/vehicle_model.h"
 #include "core/wave_field.h"
+#include "core/winch.h"
 
 namespace towsim::core {
 
@@ -72,7 +74,8 @@ enum class InitialShape {
 };
 
 struct CableParams {
-  double length = 200.0;                // unstretched length L [m]
+  // unstretched length L [m]; with a winch the initial paid-out length
+  double length = 200.0;
   int elements = 20;                    // number of ANCF elements
   double diameter = 0.041;              // d [m]
   double density = 1300.0;              // rho_c [kg/m^3]
@@ -86,6 +89,8 @@ struct CableParams {
   Vec3 initial_velocity = Vec3::Zero();
   CableEnd start;
   CableEnd end;
+  // the winch at the start (winch.h, docs/winch.md); absent: the length is fixed
+  std::optional<WinchParams> winch;
 
   double area() const { return 0.25 * kPi * diameter * diameter; }
   double second_moment() const { return kPi * diameter * diameter * diameter * diameter / 64.0; }
@@ -154,7 +159,7 @@ struct ScriptCondition {
 
 // Scripted command (offline; controllers replace it on DDS). Fires once: at time `at`, or, when
 // has_condition, the first step at which the condition holds (and t >= at). Only the given
-// fields change the vehicle's command.
+// fields change the vehicle's command; set_winch replaces the winch's command.
 struct ScriptEntry {
   double at = 0.0;  // [s]
   bool has_condition = false;
@@ -165,6 +170,8 @@ struct ScriptEntry {
   double thrust = 0.0;    // [N]
   double rudder = 0.0;    // [rad]
   double elevator = 0.0;  // [rad]
+  bool set_winch = false;  // winch_speed or winch_length given (vehicle = -1 without a body)
+  WinchCommand winch;
 };
 
 // What a DDS node publishes and when (DESIGN §3-4); plain scene data, unused offline.

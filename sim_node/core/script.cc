@@ -63,11 +63,14 @@ int ScriptRunner::Apply(Simulation* sim) {
       continue;
     }
     // the given fields replace those of the command held so far
-    VehicleCommand command = sim->vehicle_command(e.vehicle);
-    if (e.set_thrust) command.thrust = e.thrust;
-    if (e.set_rudder) command.rudder = e.rudder;
-    if (e.set_elevator) command.elevator = e.elevator;
-    sim->SetVehicleCommand(e.vehicle, command);
+    if (e.vehicle >= 0) {
+      VehicleCommand command = sim->vehicle_command(e.vehicle);
+      if (e.set_thrust) command.thrust = e.thrust;
+      if (e.set_rudder) command.rudder = e.rudder;
+      if (e.set_elevator) command.elevator = e.elevator;
+      sim->SetVehicleCommand(e.vehicle, command);
+    }
+    if (e.set_winch) sim->SetWinchCommand(e.winch);
     fired_[i] = true;
     --remaining_;
     ++fired;

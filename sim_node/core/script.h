@@ -1,7 +1,8 @@
 #pragma once
 // The offline script (Model::script): commands that fire once each, at a time and optionally
 // when a condition on a vehicle's state holds, e.g.
-//   {at: 55, when: "tow_vehicle.yaw_deg >= 170", body: tow_vehicle, rudder_deg: 0}.
+//   {at: 55, when: "tow_vehicle.yaw_deg >= 170", body: tow_vehicle, rudder_deg: 0},
+//   {at: 10, winch_speed: 1.0}, {at: 200, winch_length: 150} (the winch: winch.h).
 //
 //   ScriptRunner script(model);
 //   script.Apply(&sim);                          // at t = 0
@@ -35,7 +36,8 @@ class ScriptRunner {
   // Fires, in script order, every entry not yet fired whose time has come (sim->time() >= at)
   // and whose condition (if any) holds on the current vehicle states: its given fields
   // (thrust, rudder, elevator) replace those of the vehicle's command, through
-  // Simulation::SetVehicleCommand. Returns the number of entries fired.
+  // Simulation::SetVehicleCommand; a winch_speed or winch_length replaces the winch's command
+  // (Simulation::SetWinchCommand). Returns the number of entries fired.
   int Apply(Simulation* sim);
 
   // every entry has fired

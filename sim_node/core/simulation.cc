@@ -1,9 +1,11 @@
 #include "core/simulation.h"
 
+#include <cmath>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
 
+#include "core/drum_element.h"
 #include "core/environment_field.h"
 #include "core/initial_shape.h"
 #include "core/integrator.h"
@@ -21,7 +23,12 @@ struct Simulation::Impl {
   VehicleCoupling coupling;
   State state;
   std::vector<VehicleCommand> commands;
+  WinchCommand winch_command;
+  WinchStep winch_step;  // the drum's motion over the step being taken
   int coupling_iterations = 0;
+  // the drum's motion for the step h from the current state, with the split or merge of the
+  // drum element it needs (winch.h, drum_element.h)
+  void PrepareWinch(double h);
 };
 
 Simulation::Simulation(const Model& model, const std::function<bool()>& stop_requested)
@@ -29,6 +36,10 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
+  s.winch.length = model.cable.length;
+  s.winch.speed = 0.0;
+  s.winch.nodes = sys.num_nodes();
+  s.winch.drum.length = sys.drum_length();
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
@@ -51,8 +62,36 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); }
 
+void Simulation::Impl::PrepareWinch(double h) {
+  WinchState& w = state.winch;
+  const CableParams& c = system.model().cable;
+  const double l0 = system.drum_length();
+  // the tension at the drum (the start's joint force) and the drum element's compliance
+  const double tension =
+      system.end_lambda_count(0) > 0 ? state.lambda.segment<3>(system.end_lambda(0)).norm() : 0.0;
+  const double ea = c.youngs_modulus * c.area();
+  winch_step = AdvanceWinch(*c.winch, winch_command, w.length, w.drive_speed, w.slip_speed,
+                            tension, l0 / ea, h);
+  const double dl = winch_step.length - w.length;
+  // keep l_0 at the step's end within [kMergeLength, kSplitLength] l_e (drum_element.h)
+  const double le = system.element_length();
+  if (l0 + dl > kSplitLength * le) {
+    SplitDrumElement(&system, &state);
+  } else if (l0 + dl < kMergeLength * le) {
+    MergeDrumElement(&system, &state);
+  }
+
+  // l_0(t) over the step: from l_0 at rate V_n, reaching l_0 + dL at t + h
+  w.drum.t0 = state.t;
+  w.drum.length = system.drum_length();
+  w.drum.rate = w.speed;
+  w.drum.accel = 2.0 * (dl - w.speed * h) / (h * h);
+}
+
 StepStatus Simulation::StepBy(double h) {
   StepStatus s;
+  const bool winch = has_winch();
+  if (winch) impl_->PrepareWinch(h);
   if (impl_->system.model().vehicles.empty()) {
     s = impl_->integrator.Step(&impl_->state, h);
     impl_->coupling_iterations = 0;
@@ -60,7 +99,18 @@ StepStatus Simulation::StepBy(double h) {
     s = impl_->coupling.Step(&impl_->state, impl_->commands, h);
     impl_->coupling_iterations = impl_->coupling.last_iterations();
   }
-  if (s.ok()) ++impl_->state.step;
+  if (s.ok()) {
+    ++impl_->state.step;
+    if (winch) {
+      WinchState& w = impl_->state.winch;
+      w.length = impl_->winch_step.length;
+      w.speed = impl_->winch_step.speed;
+      w.drive_speed = impl_->winch_step.drive_speed;
+      w.slip_speed = impl_->winch_step.slip_speed;
+      w.slipping = impl_->winch_step.slipping;
+      impl_->system.SetLayout(w.nodes, w.length);
+    }
+  }
   return s;
 }
 
@@ -90,7 +140,7 @@ void Simulation::CheckStateShape(const State& s) const {
   const System& sys = impl_->system;
   std::ostringstream why;
   why << "3 per sphere body and 6 per cable node: " << sys.num_bodies() << " bodies, "
-      << sys.num_nodes() << " nodes";
+      << sys.max_nodes() << " nodes";
   const long n = sys.num_q();
   CheckSize("q", s.q.size(), n, why.str());
   CheckSize("v", s.v.size(), n, why.str());
@@ -98,6 +148,18 @@ void Simulation::CheckStateShape(const State& s) const {
   CheckSize("a_alpha", s.a_alpha.size(), n, why.str());
   CheckSize("lambda", s.lambda.size(), sys.num_lambda(),
             "3 per held cable end, 2 more per clamped end");
+  // the cable's nodes in use are part of the shape (with a winch the arrays hold max_nodes)
+  if (s.winch.nodes < 2 || s.winch.nodes > sys.max_nodes() ||
+      (!sys.has_winch() && s.winch.nodes != sys.max_nodes())) {
+    std::ostringstream msg;
+    msg << "SetState: winch.nodes = " << s.winch.nodes << ", this model needs ";
+    if (sys.has_winch())
+      msg << "2 to " << sys.max_nodes()
+          << " (cable nodes in use; the winch's max_length holds at most that many)";
+    else
+      msg << sys.max_nodes() << " (cable.elements + 1; the scene has no winch)";
+    throw std::invalid_argument(msg.str());
+  }
   const long nv = num_vehicles();
   CheckSize("vehicles", static_cast<long>(s.vehicles.size()), nv, "one per scene vehicle");
   CheckSize("coupling.f_previous", static_cast<long>(s.coupling.f_previous.size()), nv,
@@ -115,6 +177,7 @@ void Simulation::CheckStateShape(const State& s) const {
 void Simulation::SetState(const State& state) {
   CheckStateShape(state);
   impl_->state = state;
+  impl_->system.SetLayout(state.winch.nodes, state.winch.length);
   impl_->coupling.SizeWorkSpace(impl_->state);
   if (!impl_->integrator.RestoreNewtonMatrix(impl_->state))
     throw SolverError("SetState: the kept Newton matrix of the state cannot be factored");
@@ -130,6 +193,7 @@ void Simulation::StartFrom(const State& state) {
   s.coupling.flow_end.assign(num_vehicles(), VehicleFlow());
   CheckStateShape(s);
   impl_->state = s;
+  impl_->system.SetLayout(s.winch.nodes, s.winch.length);
   impl_->coupling.HoldSupports(&impl_->state);
   if (!impl_->integrator.InitializeAcceleration(&impl_->state))
     throw SolverError("StartFrom: accelerations could not be computed for the given state");
@@ -218,6 +282,20 @@ const VehicleCommand& Simulation::vehicle_command(int v) const { return impl_->c
 void Simulation::SetVehicleCommand(int v, const VehicleCommand& command) {
   impl_->commands[v] = command;
 }
+
+bool Simulation::has_winch() const { return model().cable.winch.has_value(); }
+
+void Simulation::SetWinchCommand(const WinchCommand& command) {
+  if (!has_winch() || !std::isfinite(command.value)) return;
+  WinchCommand c = command;
+  ClampWinchCommand(*model().cable.winch, &c);
+  impl_->winch_command = c;
+}
+
+const WinchCommand& Simulation::winch_command() const { return impl_->winch_command; }
+double Simulation::cable_length() const { return impl_->state.winch.length; }
+double Simulation::winch_speed() const { return impl_->state.winch.speed; }
+double Simulation::drum_tension() const { return node_tension(0); }
 
 Vec3 Simulation::end_force(int end) const {
   const System& sys = impl_->system;

@@ -15,6 +15,7 @@
 
 #include "core/model.h"
 #include "core/vehicle_model.h"
+#include "core/winch.h"
 
 namespace towsim::core {
 
@@ -77,7 +78,9 @@ class Simulation {
   long step_count() const;
 
   // --- outputs (world NED, SI) ---
-  int num_nodes() const;            // elements + 1
+  // nodes in use now (elements in use + 1; with a winch it changes as the drum pays out and
+  // reels in); node 0 is at the cable's start (the drum)
+  int num_nodes() const;
   Vec3 node_position(int i) const;  // r at node i [m]
   Vec3 node_velocity(int i) const;  // dr/dt at node i [m/s]
   double node_tension(
@@ -104,6 +107,16 @@ class Simulation {
   // the command held from now on (thrust, rudder and elevator go through the actuator
   // dynamics and limits of the vehicle model)
   void SetVehicleCommand(int v, const VehicleCommand& command);
+
+  // --- the winch at the cable's start (winch.h, docs/winch.md) ---
+  bool has_winch() const;  // the scene has cable.winch
+  // the command held from now on, clamped into the limits (WinchCommandRange); a non-finite
+  // value is ignored (the command held so far stays). Without a winch: ignored.
+  void SetWinchCommand(const WinchCommand& command);
+  const WinchCommand& winch_command() const;
+  double cable_length() const;  // paid-out unstretched length now [m] (no winch: cable.length)
+  double winch_speed() const;   // dL/dt now [m/s], + pays out (no winch: 0)
+  double drum_tension() const;  // axial tension at the cable's start (the drum) [N]
 
   // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end

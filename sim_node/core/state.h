@@ -51,8 +51,35 @@ struct NewtonPoint {
   Eigen::VectorXd q, v, a;  // the iterate it was evaluated at
   // the waves it was evaluated with: sampled at wave_q at t (only with waves)
   Eigen::VectorXd wave_q;
+  double drum_length = 0.0, drum_rate = 0.0;  // element 0's l_0 and dl_0/dt then (winch)
   double theta = 0.0;  // its measured contraction rate
   int theta_age = 0;   // steps since theta was measured
+};
+
+// the rest length of the cable's element 0 at the drum over a step (system.h): from `length`
+// at t0, its rate and a constant second derivative (the winch's motion, winch.h)
+struct DrumMotion {
+  double t0 = 0.0;      // [s]
+  double length = 0.0;  // l_0(t0) [m]
+  double rate = 0.0;    // dl_0/dt at t0 [m/s]
+  double accel = 0.0;   // d2l_0/dt2 [m/s^2]
+  double LengthAt(double t) const {
+    const double s = t - t0;
+    return length + s * (rate + 0.5 * accel * s);
+  }
+  double RateAt(double t) const { return rate + accel * (t - t0); }
+};
+
+// the winch (winch.h): the paid-out unstretched length, its rate and the nodes in use; without
+// a winch the length stays cable.length, the speed 0 and the nodes cable.elements + 1
+struct WinchState {
+  double length = 0.0;  // L [m]
+  double speed = 0.0;   // dL/dt [m/s], + pays out
+  double drive_speed = 0.0;  // the drive's own speed, without the brake's slip (winch.h)
+  double slip_speed = 0.0;   // the brake's slip (winch.h)
+  int nodes = 0;        // cable nodes in use (part of the state's shape)
+  bool slipping = false;  // the brake slipped in the last step
+  DrumMotion drum;        // element 0's rest length over the last (or current) step
 };
 
 struct State {
@@ -67,6 +94,7 @@ struct State {
   SupportMotion supports[2];           // vehicle attachment points (start end, end end)
   CouplingHistory coupling;
   NewtonPoint newton;
+  WinchState winch;
 };
 
 }  // namespace towsim::core

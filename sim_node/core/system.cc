@@ -1,6 +1,8 @@
 #include "core/system.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include <Eigen/Geometry>
@@ -63,9 +65,13 @@ System::System(const Model& model)
                            sea_.has_seabed();
   weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
   const int nb = num_bodies();
-  const int nn = num_nodes();
+  winch_ = model_.cable.winch.has_value();
+  num_nodes_ = model_.cable.elements + 1;
+  max_nodes_ = winch_ ? std::max(num_nodes_, WinchMaxNodes(model_.cable)) : num_nodes_;
+  first_node_ = max_nodes_ - num_nodes_;
+  drum_length_ = element_.props().length;
   cable_offset_ = 3 * nb;
-  num_q_ = cable_offset_ + 6 * nn;
+  num_q_ = cable_offset_ + 6 * max_nodes_;
   const CableEnd* ends[2] = {&model_.cable.start, &model_.cable.end};
   for (int k = 0; k < 2; ++k) {
     const CableEnd& end = *ends[k];
@@ -81,10 +87,24 @@ System::System(const Model& model)
     body_drag_k_.push_back(0.5 * rho * b.drag_coefficient * CableParams::kPi * radius * radius);
     body_radius_.push_back(radius);
   }
-
-  // block layout
   q_index_.assign(num_q_, {-1, -1});
   lambda_index_.assign(num_lambda_, {-1, -1});
+  // the block sizes with node 0 at array node 0 (MakeMatrix), then the layout in use
+  const int saved_first = first_node_, saved_nodes = num_nodes_;
+  first_node_ = 0;
+  num_nodes_ = max_nodes_;
+  BuildLayout();
+  base_block_sizes_ = block_sizes_;
+  first_node_ = saved_first;
+  num_nodes_ = saved_nodes;
+  BuildLayout();
+}
+
+void System::BuildLayout() {
+  // block k = array node k; the parked nodes' blocks are empty
+  const int nb = num_bodies();
+  const CableEnd* ends[2] = {&model_.cable.start, &model_.cable.end};
+  std::fill(q_index_.begin(), q_index_.end(), BlockIndex{-1, -1});
   const int body_at[2] = {ends[0]->kind == EndKind::kBody ? ends[0]->body : -1,
                           ends[1]->kind == EndKind::kBody ? ends[1]->body : -1};
   auto place_body = [&](int b, int block, int* local) {
@@ -97,23 +117,27 @@ System::System(const Model& model)
   auto place_node = [&](int node, int block, int* local) {
     for (int i = 0; i < 6; ++i) q_index_[cable_dof(node) + i] = {block, (*local)++};
   };
+  const int nn = num_nodes_;
+  block_sizes_.assign(max_nodes_, 0);  // same size after the first call: no allocation
   for (int node = 0; node < nn; ++node) {
     int local = 0;
+    const int block = first_node_ + node;
     if (node == 0) {
-      if (body_at[0] >= 0) place_body(body_at[0], node, &local);
-      place_lambda(0, node, &local);
+      if (body_at[0] >= 0) place_body(body_at[0], block, &local);
+      place_lambda(0, block, &local);
     }
-    place_node(node, node, &local);
+    place_node(node, block, &local);
     if (node == nn - 1) {
-      place_lambda(1, node, &local);
-      if (body_at[1] >= 0) place_body(body_at[1], node, &local);
+      place_lambda(1, block, &local);
+      if (body_at[1] >= 0) place_body(body_at[1], block, &local);
     }
-    block_sizes_.push_back(local);
+    block_sizes_[block] = local;
   }
   for (int b = 0; b < nb; ++b) {
     if (b == body_at[0] || b == body_at[1]) continue;
     int local = 0;
-    place_body(b, static_cast<int>(block_sizes_.size()), &local);
+    const int block = static_cast<int>(block_sizes_.size());
+    place_body(b, block, &local);
     block_sizes_.push_back(local);
   }
   block_offsets_.assign(block_sizes_.size(), 0);
@@ -121,7 +145,25 @@ System::System(const Model& model)
     block_offsets_[i] = block_offsets_[i - 1] + block_sizes_[i - 1];
 }
 
-BlockTridiagonal System::MakeMatrix() const { return BlockTridiagonal(block_sizes_); }
+void System::SetLayout(int nodes, double length) {
+  drum_length_ = length - (nodes - 2) * element_length();
+  if (nodes == num_nodes_) return;
+  num_nodes_ = nodes;
+  first_node_ = max_nodes_ - nodes;
+  BuildLayout();
+}
+
+AncfElement System::DrumElement(double length) const {
+  ElementProperties p = element_.props();
+  p.length = length;
+  return AncfElement(p);
+}
+
+BlockTridiagonal System::MakeMatrix() const {
+  BlockTridiagonal m(base_block_sizes_, winch_ ? max_nodes_ - 2 : 0);
+  m.SetFirstBlock(first_node_);
+  return m;
+}
 
 void System::Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m) const {
   const BlockIndex bi = q_index_[i], bj = q_index_[j];
@@ -137,7 +179,7 @@ void System::Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m)
 void System::AddQL(BlockTridiagonal* jac, int qi, int li, const Vec3& col) const {
   // a multiplier sits in the block of the node / body it constrains
   const BlockIndex bq = q_index_[qi], bl = lambda_index_[li];
-  Eigen::MatrixXd& d = jac->diag(bq.block);
+  BlockTridiagonal::Map d = jac->diag(bq.block);
   d.block<3, 1>(bq.local, bl.local) += col;
   d.block<1, 3>(bl.local, bq.local) += col.transpose();
 }
@@ -165,7 +207,7 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
 }
 
 void System::ResizeWaveSamples(WaveSamples* out) const {
-  out->nodes.assign(num_nodes(), WaveSample());
+  out->nodes.assign(max_nodes_, WaveSample());
   out->bodies.assign(num_bodies(), WaveSample());
 }
 
@@ -183,11 +225,25 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
                       const VectorXd& lambda, double t, double load_scale,
                       const JacobianCoefficients& cf, VectorXd* residual, VectorXd* phi,
                       BlockTridiagonal* jac, const WaveSamples* waves,
-                      const SupportMotion* supports) const {
+                      const SupportMotion* supports, const DrumMotion* drum_motion) const {
   residual->setZero(num_q_);
   phi->setZero(num_lambda_);
-  if (jac) jac->SetZero();
-  const Mat12& mass = element_.mass();
+  if (jac) {
+    if (jac->first_block() != first_node_) jac->SetFirstBlock(first_node_);
+    jac->SetZero();
+  }
+  // the drum element's rest length and its rate at t (winch; system.h)
+  double drum_rate = 0.0, drum_l = drum_length_;
+  if (winch_ && drum_motion) {
+    drum_l = drum_motion->LengthAt(t);
+    drum_rate = drum_motion->RateAt(t);
+  }
+  std::optional<AncfElement> drum;  // on the stack: Evaluate does not allocate
+  Vec12 drum_weight = weight_load_;
+  if (winch_) {
+    drum.emplace(DrumElement(drum_l));
+    drum_weight = UniformLoad(loads_.weight_per_length, drum_l);
+  }
 
   // cable elements: M e_ddot + F_int + R_load (Eq. 25)
   Vec12 force;
@@ -196,6 +252,9 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   ElementWaves ew;
   for (int e = 0; e < num_elements(); ++e) {
     const int o = cable_dof(e);
+    const bool at_drum = winch_ && e == 0;
+    const AncfElement& element = at_drum ? *drum : element_;
+    const Mat12& mass = element.mass();
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
     if (waves) {
       // [w, dw/dx] at the element's two nodes, in the layout of e (cable_loads.h)
@@ -207,22 +266,38 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
         ew.acceleration.segment<3>(6 * k + 3) = ws.d_acceleration;
       }
     }
-    element_.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
+    element.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
-      residual->segment<12>(o) += element_.MassTimes(ea) + force - load_scale * weight_load_;
-      if (!jac) continue;
-      j = cf.c_a * mass + cf.c_q * k;
-      if (cf.c_v != 0.0) j += cf.c_v * c;
+      const Vec12& qw = at_drum ? drum_weight : weight_load_;
+      residual->segment<12>(o) += element.MassTimes(ea) + force - load_scale * qw;
+      if (jac) {
+        j = cf.c_a * mass + cf.c_q * k;
+        if (cf.c_v != 0.0) j += cf.c_v * c;
+      }
     } else {
-      const Vec12 rl = ElementLoadResidual(element_, loads_, sea_, t, waves ? &ew : nullptr, ee, ed,
+      const Vec12 rl = ElementLoadResidual(element, loads_, sea_, t, waves ? &ew : nullptr, ee, ed,
                                            ea, load_scale, jac ? &lj : nullptr);
-      residual->segment<12>(o) += element_.MassTimes(ea) + force + rl;
-      if (!jac) continue;
-      // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
-      j = cf.c_a * (mass + lj.added_mass) + cf.c_q * (k + lj.d_de);
-      if (cf.c_v != 0.0) j += cf.c_v * (c + lj.d_dedot);
+      residual->segment<12>(o) += element.MassTimes(ea) + force + rl;
+      if (jac) {
+        // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
+        j = cf.c_a * (mass + lj.added_mass) + cf.c_q * (k + lj.d_de);
+        if (cf.c_v != 0.0) j += cf.c_v * (c + lj.d_dedot);
+      }
     }
+    if (at_drum && drum_rate != 0.0) {
+      // material entering / leaving at the drum with the drum's velocity (system.h):
+      // dl_0/dt (dM/dl) e_dot - rho_c A dl_0/dt v_0
+      const double m_dot = element.props().mass_per_length * drum_rate;
+      Vec12 flux = drum_rate * element.MassLengthDerivativeTimes(ed);
+      flux.segment<3>(0) -= m_dot * ed.segment<3>(0);
+      residual->segment<12>(o) += flux;
+      if (jac && cf.c_v != 0.0) {
+        j += (cf.c_v * drum_rate) * element.MassLengthDerivative();
+        j.block<3, 3>(0, 0) -= (cf.c_v * m_dot) * Mat3::Identity();
+      }
+    }
+    if (!jac) continue;
     for (int r = 0; r < 4; ++r)
       for (int s = 0; s < 4; ++s) Add3(jac, o + 3 * r, o + 3 * s, j.block<3, 3>(3 * r, 3 * s));
   }
@@ -307,7 +382,14 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
 void System::ToBlocks(const VectorXd& r, const VectorXd& phi, VectorXd* x) const {
   x->resize(num_q_ + num_lambda_);
   const std::vector<int>& offsets = block_offsets_;
-  for (int i = 0; i < num_q_; ++i) (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+  if (first_node_ == 0) {  // no parked nodes
+    for (int i = 0; i < num_q_; ++i) (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+  } else {
+    for (int i = 0; i < num_q_; ++i) {
+      if (q_index_[i].block < 0) continue;  // a parked node (winch)
+      (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
+    }
+  }
   for (int i = 0; i < num_lambda_; ++i)
     (*x)(offsets[lambda_index_[i].block] + lambda_index_[i].local) = phi(i);
 }
@@ -316,7 +398,14 @@ void System::FromBlocks(const VectorXd& x, VectorXd* dq, VectorXd* dlambda) cons
   dq->resize(num_q_);
   dlambda->resize(num_lambda_);
   const std::vector<int>& offsets = block_offsets_;
-  for (int i = 0; i < num_q_; ++i) (*dq)(i) = x(offsets[q_index_[i].block] + q_index_[i].local);
+  if (first_node_ == 0) {  // no parked nodes
+    for (int i = 0; i < num_q_; ++i) (*dq)(i) = x(offsets[q_index_[i].block] + q_index_[i].local);
+  } else {
+    for (int i = 0; i < num_q_; ++i) {
+      const BlockIndex bi = q_index_[i];
+      (*dq)(i) = bi.block < 0 ? 0.0 : x(offsets[bi.block] + bi.local);  // parked: no change
+    }
+  }
   for (int i = 0; i < num_lambda_; ++i)
     (*dlambda)(i) = x(offsets[lambda_index_[i].block] + lambda_index_[i].local);
 }
@@ -328,12 +417,15 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
   am_only.drag = false;
   am_only.fluid_inertia_per_length = 0.0;
   am_only.weight_per_length.setZero();
+  std::optional<AncfElement> drum;
+  if (winch_) drum.emplace(DrumElement(drum_length_));
   for (int e = 0; e < num_elements(); ++e) {
     const int o = cable_dof(e);
+    const AncfElement& element = winch_ && e == 0 ? *drum : element_;
     const Vec12 ed = v.segment<12>(o);
-    Mat12 m = element_.mass();
+    Mat12 m = element.mass();
     if (loads_.added_mass_per_length > 0.0) {
-      ElementLoadResidual(element_, am_only, sea_, 0.0, nullptr, q.segment<12>(o), ed,
+      ElementLoadResidual(element, am_only, sea_, 0.0, nullptr, q.segment<12>(o), ed,
                           Vec12::Zero(), 1.0, &lj);
       m += lj.added_mass;
     }
@@ -348,7 +440,11 @@ double System::PotentialEnergy(const VectorXd& q) const {
   // V = - int w . r dx (uniform load) - sum (m - rho V) g z_b
   double pe = 0.0;
   const Vec12 qw = UniformLoad(loads_.weight_per_length, element_.props().length);
-  for (int e = 0; e < num_elements(); ++e) pe -= qw.dot(q.segment<12>(cable_dof(e)));
+  for (int e = 0; e < num_elements(); ++e) {
+    const Vec12 qe =
+        winch_ && e == 0 ? UniformLoad(loads_.weight_per_length, drum_length_) : Vec12(qw);
+    pe -= qe.dot(q.segment<12>(cable_dof(e)));
+  }
   const Environment& env = model_.environment;
   for (int b = 0; b < num_bodies(); ++b) {
     const SphereBody& body = model_.bodies[b];
@@ -359,7 +455,12 @@ double System::PotentialEnergy(const VectorXd& q) const {
 
 double System::StrainEnergy(const VectorXd& q) const {
   double u = 0.0;
-  for (int e = 0; e < num_elements(); ++e) u += element_.StrainEnergy(q.segment<12>(cable_dof(e)));
+  std::optional<AncfElement> drum;
+  if (winch_) drum.emplace(DrumElement(drum_length_));
+  for (int e = 0; e < num_elements(); ++e) {
+    const AncfElement& element = winch_ && e == 0 ? *drum : element_;
+    u += element.StrainEnergy(q.segment<12>(cable_dof(e)));
+  }
   return u;
 }
 
@@ -367,14 +468,18 @@ double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const
   // average of the adjacent elements' end values
   double sum = 0.0;
   int n = 0;
+  std::optional<AncfElement> drum;
+  if (winch_) drum.emplace(DrumElement(drum_length_));
   if (node > 0) {
     const int o = cable_dof(node - 1);
-    sum += element_.AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
+    const AncfElement& element = winch_ && node == 1 ? *drum : element_;
+    sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
     ++n;
   }
   if (node < num_elements()) {
     const int o = cable_dof(node);
-    sum += element_.AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
+    const AncfElement& element = winch_ && node == 0 ? *drum : element_;
+    sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
     ++n;
   }
   return sum / n;
@@ -386,7 +491,7 @@ std::string System::DescribeDof(int i, const VectorXd& q) const {
     s << "body '" << model_.bodies[i / 3].name << "'";
     return s.str();
   }
-  const int node = (i - cable_offset_) / 6;
+  const int node = (i - cable_offset_) / 6 - first_node_;
   const Vec3 r = q.segment<3>(cable_dof(node));
   s << "cable node " << node << " (s = " << node * element_.props().length << " m, at [" << r.x()
     << ", " << r.y() << ", " << r.z() << "])";

@@ -12,6 +12,17 @@
 //
 // Block ordering for the linear solve: [start body | start multipliers | node 0], node 1, ...,
 // node N-1, [node N | end multipliers | end body], then one block per unattached body.
+//
+// With a winch (docs/winch.md) the cable's arrays are preallocated for the most nodes a run
+// can have (max_nodes()); the nodes not in use are parked at the start of the arrays, so the
+// node i in use (0 = the drum) sits at array node first_node() + i, and the solve runs over the
+// blocks in use (BlockTridiagonal::SetFirstBlock). Every element keeps the nominal rest
+// length cable.length / cable.elements except element 0 at the drum, whose rest length l_0(t)
+// follows the winch (DrumMotion, state.h). With dl_0/dt != 0 element 0 carries the momentum
+// of the material entering or leaving at the drum with the drum's velocity v_0 (the cable's
+// momentum balance d/dt (M e_dot) = Q + m_dot v_0, m_dot = rho_c A dl_0/dt):
+//   R_0 += dl_0/dt (dM/dl) e_dot - rho_c A dl_0/dt [v_0, 0, 0, 0]        (12 x 1)
+// (added mass and the fluid carry no such term: their momentum is the water's).
 
 #include <string>
 #include <vector>
@@ -48,10 +59,26 @@ class System {
   const Model& model() const { return model_; }
   int num_q() const { return num_q_; }
   int num_lambda() const { return num_lambda_; }
-  int num_nodes() const { return model_.cable.elements + 1; }
-  int num_elements() const { return model_.cable.elements; }
+  // the nodes and elements in use (node 0 at the cable's start)
+  int num_nodes() const { return num_nodes_; }
+  int num_elements() const { return num_nodes_ - 1; }
   int num_bodies() const { return static_cast<int>(model_.bodies.size()); }
-  int cable_dof(int node) const { return cable_offset_ + 6 * node; }
+  // node i in use -> its coordinates in q (the array node first_node() + i)
+  int cable_dof(int node) const { return cable_offset_ + 6 * (first_node_ + node); }
+  // the preallocated nodes (elements + 1 without a winch) and the array index of node 0
+  int max_nodes() const { return max_nodes_; }
+  int first_node() const { return first_node_; }
+  // q offset of array node k (in use or parked)
+  int array_dof(int k) const { return cable_offset_ + 6 * k; }
+  // the nominal element rest length cable.length / cable.elements [m]
+  double element_length() const { return element_.props().length; }
+  // with a winch: `nodes` in use and the paid-out length L, so the drum element's rest length
+  // is L - (nodes - 2) element_length(); rebuilds the block layout (does not allocate)
+  void SetLayout(int nodes, double length);
+  double drum_length() const { return drum_length_; }
+  bool has_winch() const { return winch_; }
+  // the element e in use with rest length l (drum element) or the shared one
+  AncfElement DrumElement(double length) const;
   int body_dof(int body) const { return 3 * body; }
   // multiplier offset and count of a cable end (0 = start, 1 = end)
   int end_lambda(int end) const { return end == 0 ? 0 : lambda_count_[0]; }
@@ -66,7 +93,7 @@ class System {
                 const Eigen::VectorXd& lambda, double t, double load_scale,
                 const JacobianCoefficients& coeffs, Eigen::VectorXd* residual, Eigen::VectorXd* phi,
                 BlockTridiagonal* jac, const WaveSamples* waves = nullptr,
-                const SupportMotion* supports = nullptr) const;
+                const SupportMotion* supports = nullptr, const DrumMotion* drum = nullptr) const;
 
   // the sea every load reads (environment_field.h)
   const EnvironmentField& sea() const { return sea_; }
@@ -107,6 +134,8 @@ class System {
   // adds a 3 x 3 block at global q indices (i, j) into the Newton matrix
   void Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m) const;
   void AddQL(BlockTridiagonal* jac, int qi, int li, const Eigen::Vector3d& col) const;
+  // the block of each DOF and multiplier for the nodes in use (SetLayout)
+  void BuildLayout();
 
   Model model_;
   EnvironmentField sea_;
@@ -118,6 +147,10 @@ class System {
   bool state_dependent_loads_ = false;
   Vec12 weight_load_ = Vec12::Zero();  // UniformLoad(weight_per_length, l)
   int num_q_ = 0, num_lambda_ = 0, cable_offset_ = 0;
+  bool winch_ = false;
+  int max_nodes_ = 0, num_nodes_ = 0, first_node_ = 0;
+  double drum_length_ = 0.0;  // element 0's rest length now (winch)
+  std::vector<int> base_block_sizes_;  // the block sizes with first_node_ = 0
   int lambda_count_[2] = {0, 0};
   Eigen::Vector3d clamp_dirs_[2][2];  // two normals to the slope of a clamped end
   std::vector<int> block_sizes_, block_offsets_;

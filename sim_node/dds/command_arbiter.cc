@@ -8,27 +8,40 @@ namespace towsim::dds {
 CommandArbiter::CommandArbiter(std::vector<Vehicle> vehicles, double command_timeout)
     : vehicles_(std::move(vehicles)), state_(vehicles_.size()), command_timeout_(command_timeout) {}
 
-CheckedCommand CommandArbiter::Receive(int v, const ActuatorCommandMsg& msg, double t) {
-  CheckedCommand checked = FromActuatorCommand(msg, vehicles_[v].limits);
+bool CommandArbiter::Count(int v, CheckedCommand::Verdict verdict, const std::string& reason,
+                           uint64_t step, double t) {
   ++received_;
   state_[v].heard = true;
-  if (checked.verdict == CheckedCommand::kRejected) {
+  if (verdict == CheckedCommand::kRejected) {
     ++rejected_;
-    last_event_ = vehicles_[v].name + ": command rejected (" + checked.reason + ")";
-    return checked;
+    last_event_ = vehicles_[v].name + ": command rejected (" + reason + ")";
+    return false;
   }
-  if (checked.verdict == CheckedCommand::kClamped) {
+  if (verdict == CheckedCommand::kClamped) {
     ++clamped_;
-    last_event_ = vehicles_[v].name + ": " + checked.reason;
+    last_event_ = vehicles_[v].name + ": " + reason;
   }
   State& s = state_[v];
   s.has_command = true;
-  s.held = checked.command;
-  s.held_step = checked.step;
+  s.held_step = step;
   s.last_time = t;
   s.failsafe = false;  // commands resumed
   s.waited_for = true;
   s.fresh = true;
+  return true;
+}
+
+CheckedCommand CommandArbiter::Receive(int v, const ActuatorCommandMsg& msg, double t) {
+  CheckedCommand checked = FromActuatorCommand(msg, vehicles_[v].limits);
+  if (Count(v, checked.verdict, checked.reason, checked.step, t)) state_[v].held = checked.command;
+  return checked;
+}
+
+CheckedWinchCommand CommandArbiter::Receive(int v, const WinchCommandMsg& msg, double t) {
+  CheckedWinchCommand checked = FromWinchCommand(msg, vehicles_[v].winch_params);
+  if (Count(v, checked.verdict, checked.reason, checked.step, t)) {
+    state_[v].held_winch = checked.command;
+  }
   return checked;
 }
 
@@ -99,6 +112,18 @@ bool CommandArbiter::Take(int v, core::VehicleCommand* command) {
   if (!s.fresh) return false;
   s.fresh = false;
   *command = s.held;
+  return true;
+}
+
+bool CommandArbiter::Take(int v, core::WinchCommand* command) {
+  State& s = state_[v];
+  if (s.failsafe) {
+    *command = core::WinchCommand{};  // speed 0: the drum held
+    return true;
+  }
+  if (!s.fresh) return false;
+  s.fresh = false;
+  *command = s.held_winch;
   return true;
 }
 

@@ -15,13 +15,19 @@
 //   - lockstep: step k (from state k to k + 1) may start once every lockstep vehicle holds a
 //     command answering step k. A vehicle that timed out is not waited for until its
 //     commands resume.
+// The winch (docs/winch_dds.md) is one more entry, named kWinchName, with the same rules: its
+// WinchCommand samples are checked against its limits (dds/winch_command.h), counted with the
+// vehicles' commands, held; its failsafe holds the drum at speed 0; lockstep waits for it
+// like for a vehicle.
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vehicle_model.h"
 #include "dds/translators.h"
+#include "dds/winch_command.h"
 
 namespace towsim::dds {
 
@@ -31,9 +37,20 @@ inline constexpr double kCommandTimeTolerance = 1e-9;
 class CommandArbiter {
  public:
   struct Vehicle {
+    Vehicle(std::string vehicle_name, CommandLimits command_limits, bool waited = true)
+        : name(std::move(vehicle_name)), limits(command_limits), lockstep(waited) {}
+    // the winch's entry (named kWinchName)
+    static Vehicle Winch(const core::WinchParams& params, bool waited) {
+      Vehicle w(kWinchName, {}, waited);
+      w.winch = true;
+      w.winch_params = params;
+      return w;
+    }
     std::string name;
     CommandLimits limits;
     bool lockstep = true;  // lockstep mode waits for its commands
+    bool winch = false;    // the winch's entry: WinchCommand within winch_params' limits
+    core::WinchParams winch_params;
   };
 
   // command_timeout [s] of simulation time, > 0
@@ -41,6 +58,8 @@ class CommandArbiter {
 
   // a sample for vehicle v taken at simulation time t [s]; returns the verdict (counted)
   CheckedCommand Receive(int v, const ActuatorCommandMsg& msg, double t);
+  // a sample for the winch entry v (Vehicle::winch) taken at simulation time t [s] (counted)
+  CheckedWinchCommand Receive(int v, const WinchCommandMsg& msg, double t);
 
   // enters failsafe every vehicle whose last valid command is `command_timeout` or more
   // before t; call at the start of every step
@@ -60,6 +79,8 @@ class CommandArbiter {
   // on every step of a failsafe (so that no script overrides it), a newly received command
   // once. Returns false if nothing is to be set.
   bool Take(int v, core::VehicleCommand* command);
+  // the same for the winch entry v: speed 0 on every step of a failsafe
+  bool Take(int v, core::WinchCommand* command);
 
   // back to the start: no command held, nothing in failsafe, counters zero
   void Reset();
@@ -84,6 +105,7 @@ class CommandArbiter {
     bool has_command = false;  // a valid command came since the start (or reset)
     bool heard = false;        // any command came, valid or rejected
     core::VehicleCommand held;
+    core::WinchCommand held_winch;  // the winch's entry
     uint64_t held_step = 0;  // the step the held command answers
     double last_time = 0.0;  // simulation time it came [s]
     bool failsafe = false;
@@ -91,6 +113,9 @@ class CommandArbiter {
     bool fresh = false;      // held not yet given to the simulation
   };
   void EnterFailsafe(int v, const std::string& why);
+  // counts a checked sample of entry v; true if it is to be held
+  bool Count(int v, CheckedCommand::Verdict verdict, const std::string& reason, uint64_t step,
+             double t);
 
   std::vector<Vehicle> vehicles_;
   std::vector<State> state_;

@@ -115,7 +115,8 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   const core::Model& model = sim.model();
 
   // the cable
-  cable_points_.resize(static_cast<size_t>(sim.num_nodes()));
+  // storage for the most nodes of the run (a winch changes the count: Update sets it)
+  cable_points_.resize(static_cast<size_t>(MaxCableNodes(sim)));
   cable_colors_.resize(cable_points_.size());
   {
     MarkerMsg& m =
@@ -185,7 +186,7 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
     m.scale.z = 0.6;   // head length [m]
     m.color = Rgba(0.9f, 0.1f, 0.9f, 1.0f);
     m.points = {2, 2, &arrow_points_[static_cast<size_t>(2 * e)], false};
-    arrows_.push_back({markers_.size() - 1, e, e == 0 ? 0 : sim.num_nodes() - 1});
+    arrows_.push_back({markers_.size() - 1, e});
   }
 
   // the sea patches
@@ -264,13 +265,21 @@ void SceneMarkers::UpdatePatches(const core::Simulation& sim) {
 void SceneMarkers::Update(const core::Simulation& sim) {
   const TimeMsg stamp = ToTimeMsg(sim.time());
   for (MarkerMsg& m : markers_) m.header.stamp = stamp;
-  const size_t n = std::min(cable_points_.size(), static_cast<size_t>(sim.num_nodes()));
+  const size_t n = static_cast<size_t>(sim.num_nodes());
+  if (n > cable_points_.size()) {  // past the bound of the start: grown once
+    cable_points_.resize(n);
+    cable_colors_.resize(n);
+  }
+  MarkerMsg& cable = markers_[static_cast<size_t>(cable_marker())];
+  const uint32_t capacity = static_cast<uint32_t>(cable_points_.size());
+  cable.points = {capacity, static_cast<uint32_t>(n), cable_points_.data(), false};
+  cable.colors = {capacity, static_cast<uint32_t>(n), cable_colors_.data(), false};
   for (size_t i = 0; i < n; ++i) {
     SetPoint(NedToEnu(sim.node_position(static_cast<int>(i))), &cable_points_[i]);
     cable_colors_[i] = TensionColor(sim.node_tension(static_cast<int>(i)));
   }
   for (const Arrow& a : arrows_) {
-    const core::Vec3 p = sim.node_position(a.node);
+    const core::Vec3 p = sim.node_position(a.end == 0 ? 0 : sim.num_nodes() - 1);
     const core::Vec3 f = sim.end_force(a.end);
     SetPoint(NedToEnu(p), &arrow_points_[static_cast<size_t>(2 * a.end)]);
     SetPoint(NedToEnu(p + kForceArrowScale * f),

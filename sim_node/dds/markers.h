@@ -79,11 +79,11 @@ class SceneMarkers {
   std::vector<MarkerMsg> markers_;
   std::vector<geometry_msgs_msg_dds__Point_> cable_points_;
   std::vector<ColorMsg> cable_colors_;
-  // force arrows: marker index, cable end (0 start, 1 end), node index; two points each
+  // force arrows: marker index, cable end (0 start: node 0, 1 end: the last node in use); two
+  // points each
   struct Arrow {
     size_t marker;
     int end;
-    int node;
   };
   std::vector<Arrow> arrows_;
   std::vector<geometry_msgs_msg_dds__Point_> arrow_points_;

@@ -35,6 +35,8 @@ class TopicNames {
     return prefix_ + body + "/environment";
   }
   std::string cable_state() const { return prefix_ + "cable/state"; }
+  // the winch at the cable's start (towsim_msgs/WinchCommand, docs/winch_dds.md)
+  std::string winch_command() const { return prefix_ + "winch/command"; }
   std::string status() const { return prefix_ + "status"; }
   std::string sim_control() const { return prefix_ + "sim_control"; }
   std::string scene_info() const { return prefix_ + "scene_info"; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <utility>
 
 #include "core/actuator.h"
@@ -82,16 +83,33 @@ WrenchStampedMessage::WrenchStampedMessage(std::string frame_id)
 }
 
 CableStateMessage::CableStateMessage(std::string frame_id, int nodes)
-    : msg{},
-      frame_id_(std::move(frame_id)),
-      positions_(static_cast<size_t>(std::max(0, nodes))),
-      velocities_(static_cast<size_t>(std::max(0, nodes))),
-      tensions_(static_cast<size_t>(std::max(0, nodes))) {
+    : msg{}, frame_id_(std::move(frame_id)) {
   msg.header.frame_id = Chars(frame_id_);
-  const uint32_t n = static_cast<uint32_t>(positions_.size());
-  msg.positions = {n, n, positions_.data(), false};
-  msg.velocities = {n, n, velocities_.data(), false};
-  msg.tensions = {n, n, tensions_.data(), false};
+  Resize(nodes);
+}
+
+void CableStateMessage::Resize(int nodes) {
+  const size_t n = static_cast<size_t>(std::max(0, nodes));
+  if (n > positions_.size()) {
+    positions_.resize(n);
+    velocities_.resize(n);
+    tensions_.resize(n);
+  }
+  const uint32_t length = static_cast<uint32_t>(n);
+  const uint32_t capacity = static_cast<uint32_t>(positions_.size());
+  msg.positions = {capacity, length, positions_.data(), false};
+  msg.velocities = {capacity, length, velocities_.data(), false};
+  msg.tensions = {capacity, length, tensions_.data(), false};
+  msg.node_count = length;
+}
+
+int MaxCableNodes(const core::Simulation& sim) {
+  const int now = sim.num_nodes();
+  const std::optional<core::WinchParams>& winch = sim.model().cable.winch;
+  const double length = sim.cable_length();
+  if (!winch || !(length > 0.0)) return now;
+  const double elements = static_cast<double>(now - 1) * winch->max_length / length;
+  return std::max(now, static_cast<int>(std::ceil(elements)) + 3);
 }
 
 void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg) {
@@ -123,13 +141,16 @@ void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage*
   CableStateMsg& m = out->msg;
   m.header.stamp = ToTimeMsg(sim.time());
   m.step = step;
-  const uint32_t n =
-      std::min<uint32_t>(m.positions._length, static_cast<uint32_t>(sim.num_nodes()));
+  out->Resize(sim.num_nodes());
+  const uint32_t n = m.node_count;
   for (uint32_t i = 0; i < n; ++i) {
     Set(sim.node_position(static_cast<int>(i)), &m.positions._buffer[i]);
     Set(sim.node_velocity(static_cast<int>(i)), &m.velocities._buffer[i]);
     m.tensions._buffer[i] = sim.node_tension(static_cast<int>(i));
   }
+  m.paid_out_length = sim.cable_length();
+  m.winch_speed = sim.winch_speed();
+  m.drum_tension = sim.drum_tension();
 }
 
 SimStatusMessage::SimStatusMessage() : msg{} { ToSimStatus(StatusSample{}, this); }
@@ -182,6 +203,11 @@ void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out) {
   PointAt(s.bodies, &out->bodies_, &m.bodies);
   PointAt(s.commanded_bodies, &out->commanded_bodies_, &m.commanded_bodies);
   m.cable_nodes = static_cast<uint32_t>(std::max(0, s.cable_nodes));
+  m.has_winch = s.has_winch;
+  m.winch_min_length = s.winch_min_length;
+  m.winch_max_length = s.winch_max_length;
+  m.winch_max_speed = s.winch_max_speed;
+  m.winch_max_acceleration = s.winch_max_acceleration;
 }
 
 CommandLimits LimitsOf(const core::VehicleParams& params) {

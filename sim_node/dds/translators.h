@@ -61,10 +61,13 @@ class WrenchStampedMessage {
 
 class CableStateMessage {
  public:
-  // frame_id: the world frame; nodes: elements + 1 (sequences sized once)
+  // frame_id: the world frame; nodes: the most nodes expected (the sequences' storage, sized
+  // once; a winch scene: MaxCableNodes)
   CableStateMessage(std::string frame_id, int nodes);
   CableStateMessage(const CableStateMessage&) = delete;
   CableStateMessage& operator=(const CableStateMessage&) = delete;
+  // the sequences hold `nodes` entries; the storage grows only past its size so far
+  void Resize(int nodes);
   CableStateMsg msg;
 
  private:
@@ -79,8 +82,14 @@ void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg);
 // the cable's force and moment on body b, in B; zero when the cable is not attached to it
 void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg);
 void ToClock(double t, ClockMsg* msg);
-// every node; msg must be sized for sim.num_nodes()
+// every node in use (sim.num_nodes(), which a winch changes), and the winch's paid-out
+// length, speed, drum tension and the node count
 void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* msg);
+// the storage a CableStateMessage of `sim` needs for the whole run: num_nodes() now, or with a
+// winch the bound of docs/winch.md on the nodes at its max_length, max_length / (length /
+// elements) + 3 at the element length of the start (should a run go past it, Resize grows the
+// storage once)
+int MaxCableNodes(const core::Simulation& sim);
 
 // what the node reports in SimStatus (field meanings: msgs/towsim_msgs/msg/SimStatus.msg)
 struct StatusSample {
@@ -154,6 +163,9 @@ struct SceneInfoSample {
   std::vector<std::string> bodies;
   std::vector<std::string> commanded_bodies;
   int cable_nodes = 0;
+  bool has_winch = false;  // the winch's limits, zero without one
+  double winch_min_length = 0.0, winch_max_length = 0.0;         // [m]
+  double winch_max_speed = 0.0, winch_max_acceleration = 0.0;    // [m/s, m/s^2]
 };
 
 class SceneInfoMessage {

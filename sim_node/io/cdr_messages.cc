@@ -89,6 +89,10 @@ CableState DecodeCableState(const std::uint8_t* data, std::size_t size) {
   for (Vector3& v : m.velocities) v = ReadVector3(r, "velocities");
   m.tensions.resize(r.SequenceLength("tensions", 8));
   for (double& t : m.tensions) t = r.F64("tensions");
+  m.paid_out_length = r.F64("paid_out_length");
+  m.winch_speed = r.F64("winch_speed");
+  m.drum_tension = r.F64("drum_tension");
+  m.node_count = r.U32("node_count");
   r.Finish();
   return m;
 }
@@ -114,6 +118,17 @@ ActuatorCommand DecodeActuatorCommand(const std::uint8_t* data, std::size_t size
   m.thrust = r.F64("thrust");
   m.rudder = r.F64("rudder");
   m.elevator = r.F64("elevator");
+  r.Finish();
+  return m;
+}
+
+WinchCommand DecodeWinchCommand(const std::uint8_t* data, std::size_t size) {
+  CdrReader r(data, size, "towsim_msgs/msg/WinchCommand");
+  WinchCommand m;
+  m.header = ReadHeader(r);
+  m.step = r.U64("step");
+  m.mode = r.U8("mode");
+  m.value = r.F64("value");
   r.Finish();
   return m;
 }
@@ -173,6 +188,11 @@ SceneInfo DecodeSceneInfo(const std::uint8_t* data, std::size_t size) {
   m.bodies = ReadStrings(r, "bodies");
   m.commanded_bodies = ReadStrings(r, "commanded_bodies");
   m.cable_nodes = r.U32("cable_nodes");
+  m.has_winch = r.U8("has_winch") != 0;
+  m.winch_min_length = r.F64("winch_min_length");
+  m.winch_max_length = r.F64("winch_max_length");
+  m.winch_max_speed = r.F64("winch_max_speed");
+  m.winch_max_acceleration = r.F64("winch_max_acceleration");
   r.Finish();
   return m;
 }

@@ -58,6 +58,10 @@ struct CableState {  // towsim_msgs/CableState
   std::vector<Vector3> positions;
   std::vector<Vector3> velocities;
   std::vector<double> tensions;
+  double paid_out_length = 0.0;  // [m]
+  double winch_speed = 0.0;      // [m/s]
+  double drum_tension = 0.0;     // [N]
+  std::uint32_t node_count = 0;
 };
 
 struct BodyEnvironment {  // towsim_msgs/BodyEnvironment
@@ -73,6 +77,13 @@ struct ActuatorCommand {  // towsim_msgs/ActuatorCommand
   Header header;
   std::uint64_t step = 0;
   double thrust = 0.0, rudder = 0.0, elevator = 0.0;
+};
+
+struct WinchCommand {  // towsim_msgs/WinchCommand
+  Header header;
+  std::uint64_t step = 0;
+  std::uint8_t mode = 0;
+  double value = 0.0;
 };
 
 struct SimStatus {  // towsim_msgs/SimStatus
@@ -120,6 +131,9 @@ struct SceneInfo {  // towsim_msgs/SceneInfo
   std::vector<std::string> bodies;
   std::vector<std::string> commanded_bodies;
   std::uint32_t cable_nodes = 0;
+  bool has_winch = false;
+  double winch_min_length = 0.0, winch_max_length = 0.0;
+  double winch_max_speed = 0.0, winch_max_acceleration = 0.0;
 };
 
 // payload = the serialized sample with its 4-byte encapsulation header
@@ -129,6 +143,7 @@ Clock DecodeClock(const std::uint8_t* data, std::size_t size);
 CableState DecodeCableState(const std::uint8_t* data, std::size_t size);
 BodyEnvironment DecodeBodyEnvironment(const std::uint8_t* data, std::size_t size);
 ActuatorCommand DecodeActuatorCommand(const std::uint8_t* data, std::size_t size);
+WinchCommand DecodeWinchCommand(const std::uint8_t* data, std::size_t size);
 SimStatus DecodeSimStatus(const std::uint8_t* data, std::size_t size);
 SimControl DecodeSimControl(const std::uint8_t* data, std::size_t size);
 SceneInfo DecodeSceneInfo(const std::uint8_t* data, std::size_t size);

@@ -87,7 +87,7 @@ void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double
                wave_elevation, altitude_field, depth, u, v, w);
 }
 
-CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
+CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), winch_(winch) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -97,10 +97,11 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
     Open(bodies_, "bodies.csv", kCsvBodiesHeader);
     Open(cable_, "cable.csv", kCsvCableHeader);
     Open(forces_, "forces.csv", kCsvForcesHeader);
-    Open(status_, "status.csv", kCsvStatusHeader);
+    Open(status_, "status.csv", winch_ ? kCsvStatusWinchHeader : kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
+    if (winch) Open(winch_file_, "winch.csv", kCsvWinchHeader);
   } catch (...) {
-    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
+    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
     }
@@ -109,7 +110,7 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea) : dir_(dir) {
 }
 
 CsvWriter::~CsvWriter() {
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
 }
@@ -187,16 +188,27 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
         .WriteTo(forces_.f);
   }
 
-  Row(&line)
-      .Number(t)
+  Row row(&line);
+  row.Number(t)
       .Integer(sim.step_count())
       .Integer(status.iterations)
       .Number(status.residual)
-      .Integer(wall_us)
-      .WriteTo(status_.f);
+      .Integer(wall_us);
+  if (winch_) row.Number(sim.cable_length());
+  row.WriteTo(status_.f);
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
   if (environment_.f != nullptr) WriteEnvironment(sim, &line);
+  if (winch_file_.f != nullptr) {
+    Row(&line)
+        .Number(t)
+        .Number(sim.cable_length())
+        .Number(sim.winch_speed())
+        .Number(sim.drum_tension())
+        .Integer(sim.num_nodes())
+        .WriteTo(winch_file_.f);
+    Check(winch_file_);
+  }
 }
 
 void CsvWriter::WriteEnvironment(const core::Simulation& sim, std::string* /*line*/) {
@@ -211,7 +223,7 @@ void CsvWriter::WriteEnvironment(const core::Simulation& sim, std::string* /*lin
 
 void CsvWriter::Close() {
   std::string error;
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_}) {
+  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

@@ -13,9 +13,11 @@
 //               frame [N, N m] (Simulation::body_cable_wrench); plus
 //               rows "cable.start" / "cable.end" for a cable end held by a fixed or driven
 //               support (not a body): the force the cable exerts on the support, world frame
-//   status.csv  t,step,newton_iterations,residual,wall_us
-//               Newton iterations and final residual [N] of the step that led here, and its
-//               wall time [us] as measured by the caller
+//   status.csv  t,step,newton_iterations,residual,wall_us[,cable_length]
+//               Newton iterations and final residual [N] of the step that led here, its
+//               wall time [us] as measured by the caller, and, only for a scene with a winch
+//               (cable.winch; docs/winch.md), the paid-out unstretched cable length [m]
+//               (Simulation::cable_length)
 //   environment.csv  t,body,wave_elevation,altitude,depth,current_u,current_v,current_w
 //               one row per body, only when HasSea(model.environment) (a calm scene writes
 //               exactly the four files above): the surface elevation eta at the body origin
@@ -24,6 +26,13 @@
 //               instantaneous surface z + eta [m], and the water's velocity there (current +
 //               wave orbital velocity, world NED) [m/s] (Simulation::body_altitude, body_depth,
 //               surface_elevation_at, water_velocity_at; docs/environment.md)
+//
+//   winch.csv   t,paid_out_length,winch_speed,drum_tension,node_count
+//               one row per Write, only when the scene has a winch (cable.winch; a scene without
+//               one writes none): the paid-out unstretched length [m], dL/dt (+ pays out)
+//               [m/s], the axial tension at the cable's start (the drum) [N] and the nodes in
+//               use (the rows of cable.csv at that time) (Simulation::cable_length,
+//               winch_speed, drum_tension, num_nodes; docs/winch_dds.md)
 //
 // Spheres: their frame stays aligned with the world, so roll = pitch = yaw = 0, p = q = r = 0,
 // (u, v, w) is the world velocity and the moment is 0.
@@ -44,8 +53,12 @@ inline constexpr char kCsvBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,
 inline constexpr char kCsvCableHeader[] = "t,node,x,y,z,tension";
 inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
 inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+// status.csv of a scene with a winch (cable.winch): one more column
+inline constexpr char kCsvStatusWinchHeader[] =
+    "t,step,newton_iterations,residual,wall_us,cable_length";
 inline constexpr char kCsvEnvironmentHeader[] =
     "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
+inline constexpr char kCsvWinchHeader[] = "t,paid_out_length,winch_speed,drum_tension,node_count";
 
 // whether a run in `env` writes environment.csv: it has waves, a (non-zero) current or a seabed
 bool HasSea(const core::Environment& env);
@@ -66,9 +79,10 @@ void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
-  // when `sea`, i.e. HasSea of the scene) and writes their headers; throws
-  // std::runtime_error naming the path if a file cannot be opened
-  explicit CsvWriter(const std::string& dir, bool sea = false);
+  // when `sea`, i.e. HasSea of the scene; winch.csv and status.csv's cable_length column when
+  // `winch`, the scene has cable.winch) and writes their headers; throws std::runtime_error
+  // naming the path if a file cannot be opened
+  explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false);
   ~CsvWriter();  // closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -96,11 +110,13 @@ class CsvWriter {
   void WriteEnvironment(const core::Simulation& sim, std::string* line);
 
   std::string dir_;
+  bool winch_ = false;
   File bodies_;
   File cable_;
   File forces_;
   File status_;
   File environment_;  // f == nullptr: not written (a calm scene)
+  File winch_file_;   // f == nullptr: not written (no winch)
 };
 
 }  // namespace towsim::io

@@ -191,6 +191,43 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
   }
 }
 
+// cable.winch: the limits, each positive; min_length <= cable.length <= max_length; the start
+// (the drum) held
+core::WinchParams ReadWinch(const MapReader& cable, const core::CableParams& c,
+                            const EndInput& start) {
+  const MapReader map(cable.Get("winch"), MapKind::kWinch);
+  if (!map.field().node().IsMap()) {
+    map.field().Fail(
+        "must be a map {min_length, max_length, max_speed, max_acceleration, brake_tension}");
+  }
+  core::WinchParams w;
+  w.min_length = map.Number("min_length", Range::Above(0.0));
+  if (w.min_length > c.length) {
+    map.Get("min_length").Fail("must be <= cable.length = " + FormatNumber(c.length));
+  }
+  w.max_length = map.Number("max_length", Range::Above(0.0));
+  if (w.max_length < c.length) {
+    map.Get("max_length").Fail("must be >= cable.length = " + FormatNumber(c.length));
+  }
+  w.max_speed = map.Number("max_speed", Range::Above(0.0));
+  w.max_acceleration = map.Number("max_acceleration", Range::Above(0.0));
+  w.brake_tension = map.Number("brake_tension", Range::Above(0.0), w.brake_tension);
+  if (start.end.kind == core::EndKind::kFree) {
+    map.field().Fail(
+        "the winch sits at the cable's start, so cable.start must be held (fixed, driven or a "
+        "body)");
+  }
+  // the elements the drum pays out keep the initial element length; a run holds at most
+  // max_length / (length / elements) + 2 of them (docs/winch.md)
+  const double per_element = c.length / c.elements;
+  if (w.max_length / per_element > 10000.0) {
+    map.Get("max_length").Fail("needs more than 10000 elements of the initial length " +
+                               FormatNumber(per_element) +
+                               " m (cable.length / cable.elements); use fewer, longer elements");
+  }
+  return w;
+}
+
 }  // namespace
 
 core::CableParams ReadCable(const Field& field, const core::Model& model) {
@@ -229,6 +266,7 @@ core::CableParams ReadCable(const Field& field, const core::Model& model) {
   c.end = end.end;
   CheckEnds(start, end, model);
   CheckInitialShape(c, start, end, model);
+  if (cable.Has("winch")) c.winch = ReadWinch(cable, c, start);
 
   // initial velocity: given, else that of a driven end, else zero
   core::Vec3 velocity = core::Vec3::Zero();

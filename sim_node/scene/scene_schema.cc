@@ -73,7 +73,9 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
         "friction_lateral"}},
       {MapKind::kCable,
        {"length", "elements", "diameter", "density", "youngs_modulus", "loads", "axial_damping",
-        "added_mass_coefficient", "initial", "initial_velocity", "start", "end"}},
+        "added_mass_coefficient", "initial", "initial_velocity", "start", "end", "winch"}},
+      {MapKind::kWinch,
+       {"min_length", "max_length", "max_speed", "max_acceleration", "brake_tension"}},
       {MapKind::kEnd, {"fixed", "slope", "driven", "free", "body", "at"}},
       {MapKind::kDriven, {"position", "velocity"}},
       {MapKind::kBodies, {}},
@@ -100,7 +102,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
        {"scheme", "rho_inf", "coupling", "tolerance", "max_iterations", "max_substep_level",
         "max_coupling_iterations"}},
       {MapKind::kScriptEntry,
-       {"at", "when", "body", "thrust", "rudder", "rudder_deg", "elevator", "elevator_deg"}},
+       {"at", "when", "body", "thrust", "rudder", "rudder_deg", "elevator", "elevator_deg",
+        "winch_speed", "winch_length"}},
   };
   return kKeys.at(kind);
 }
@@ -131,6 +134,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       return std::nullopt;
     case MapKind::kCable:
       if (key == "start" || key == "end") return MapKind::kEnd;
+      if (key == "winch") return MapKind::kWinch;
       return std::nullopt;
     case MapKind::kEnd:
       if (key == "driven") return MapKind::kDriven;

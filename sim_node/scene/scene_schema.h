@@ -23,6 +23,7 @@ enum class MapKind {
   kCable,        // cable
   kEnd,          // cable.start, cable.end
   kDriven,       // cable.<end>.driven
+  kWinch,        // cable.winch
   kBodies,       // bodies: user-chosen names -> kBody
   kBody,         // bodies.<name>: a sphere's or a vehicle's keys, plus its initial state
   kModelFile,    // the file named by bodies.<name>.model, type: sphere

@@ -108,6 +108,37 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field, const core::Model&
       entry.condition = ReadCondition(map.Get("when"), model);
     }
 
+    // the winch: a speed or a length, not both, within the scene's cable.winch limits
+    if (map.Has("winch_speed") || map.Has("winch_length")) {
+      if (map.Has("winch_speed") && map.Has("winch_length")) {
+        map.Get("winch_length").Fail("give winch_speed or winch_length, not both");
+      }
+      const bool speed = map.Has("winch_speed");
+      const Field f = map.Get(speed ? "winch_speed" : "winch_length");
+      if (!model.cable.winch) f.Fail("the scene has no cable.winch");
+      const core::WinchParams& w = *model.cable.winch;
+      entry.set_winch = true;
+      if (speed) {
+        entry.winch.mode = core::WinchCommand::Mode::kSpeed;
+        entry.winch.value = f.Number();
+        if (std::abs(entry.winch.value) > w.max_speed) {
+          f.Fail("must be within +-cable.winch.max_speed = " + FormatNumber(w.max_speed));
+        }
+      } else {
+        entry.winch.mode = core::WinchCommand::Mode::kLength;
+        entry.winch.value = f.Number();
+        if (entry.winch.value < w.min_length || entry.winch.value > w.max_length) {
+          f.Fail("must be within cable.winch [min_length, max_length] = [" +
+                 FormatNumber(w.min_length) + ", " + FormatNumber(w.max_length) + "]");
+        }
+      }
+      if (!map.Has("body")) {
+        if (map.Has("when")) map.Get("when").Fail("a winch entry without a body has no condition");
+        script.push_back(entry);
+        continue;
+      }
+    }
+
     // the body must exist and take commands: a vehicle
     const Field body = map.Require("body");
     entry.body = body.String();
@@ -123,10 +154,10 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field, const core::Model&
     // the commands given, each one the vehicle can carry out
     core::VehicleCommand command;
     const CommandFields given = ReadCommand(map, model.vehicles[ref.index], &command);
-    if (!given.any()) {
+    if (!given.any() && !entry.set_winch) {
       item.Fail(
           "gives no command; give at least one of thrust, rudder, rudder_deg, elevator, "
-          "elevator_deg");
+          "elevator_deg, winch_speed, winch_length");
     }
     entry.set_thrust = given.thrust;
     entry.set_rudder = given.rudder;

@@ -2,6 +2,9 @@
 // script: offline commands for the vehicles, each fired once, at a time and optionally when a
 // condition on a vehicle's state holds:
 //   - {at: 55, when: "tow_vehicle.yaw_deg >= 170", body: tow_vehicle, rudder_deg: 0}
+// and the winch (cable.winch; docs/winch.md), with or without a body:
+//   - {at: 10, winch_speed: 1.0}     dL/dt [m/s], + pays out, |V| <= max_speed
+//   - {at: 200, winch_length: 150}   drive to L [m], min_length <= L <= max_length
 
 #include <string>
 #include <vector>

@@ -1,6 +1,7 @@
 #pragma once
 // The integration tests as a DDS participant (tests/integration/README.md): the node's status
-// (every sample, oldest first), SimControl requests and raw ActuatorCommands on any topic.
+// (every sample, oldest first), SimControl requests and raw ActuatorCommands on any topic (and
+// raw WinchCommands).
 // Needs CYCLONEDDS_URI (the tests set it to config/cyclonedds.xml).
 
 #include <chrono>
@@ -114,6 +115,26 @@ class Observer {
     ASSERT_EQ(dds_write(w, &m), 0);
   }
 
+  // a raw WinchCommand on rt/<ns>/winch/command (mode: towsim_msgs WinchCommand SPEED / LENGTH
+  // or any other number)
+  void WinchCommand(uint64_t step, uint8_t mode, double value) {
+    if (winch_writer_ == 0) {
+      dds_qos_t* qos = ReliableQos(1);
+      const dds_entity_t t =
+          dds_create_topic(participant_, &towsim_msgs_msg_dds__WinchCommand__desc,
+                           (prefix_ + "winch/command").c_str(), nullptr, nullptr);
+      winch_writer_ = dds_create_writer(participant_, t, qos, nullptr);
+      dds_delete_qos(qos);
+    }
+    ASSERT_TRUE(Matched(winch_writer_)) << "the node's winch command reader did not match";
+    towsim_msgs_msg_dds__WinchCommand_ m{};
+    m.header.frame_id = const_cast<char*>("");
+    m.step = step;
+    m.mode = mode;
+    m.value = value;
+    ASSERT_EQ(dds_write(winch_writer_, &m), 0);
+  }
+
   dds_entity_t participant() const { return participant_; }
   const std::string& prefix() const { return prefix_; }
 
@@ -166,6 +187,7 @@ class Observer {
   std::string prefix_;
   dds_entity_t participant_ = 0, status_reader_ = 0, control_writer_ = 0;
   std::map<std::string, dds_entity_t> command_writers_;
+  dds_entity_t winch_writer_ = 0;
   std::vector<Status> statuses_;
 };
 

@@ -4,6 +4,8 @@
 //   test_controller --domain N [--namespace /towsim] [--until-step K] [--log FILE]
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
 //                   [--security DIR/NAME] [--body NAME ...]
+//                   [--winch T=speed:V | T=length:L | T=mode:M:V ...]
+//                   [--winch-until T]
 //
 // It learns the bodies from rt/<ns>/scene_info, then answers every SimStatus of a new step k
 // with one ActuatorCommand stamped k per commanded body: zeros, or the latest --command of
@@ -13,7 +15,11 @@
 // that step (matched by stamp):
 //   step body x y z qx qy qz qw u v w p q r      (%.17g: the doubles exactly)
 // It exits 0 once the node reports step K (--until-step) or the end of its run, 1 when
-// nothing has happened for --timeout seconds (default 30) or on a DDS error. Needs
+// nothing has happened for --timeout seconds (default 30) or on a DDS error. A scene with a
+// winch (SceneInfo.has_winch): every step answered also gets one WinchCommand stamped k on
+// rt/<ns>/winch/command, speed 0 or the latest --winch whose time has come (mode:M:V sends the
+// raw mode number M, and V may be nan or inf, for the tests of rejected commands), until the
+// simulation time --winch-until (then the winch is no longer answered). Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
 // DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout, the
 // mean and the median wall time between consecutive answers:
@@ -47,6 +53,13 @@ struct ScheduledCommand {
   bool fired = false;
 };
 
+struct ScheduledWinch {
+  double at = 0.0;  // [s]
+  uint8_t mode = 0;
+  double value = 0.0;
+  bool fired = false;
+};
+
 struct Args {
   uint32_t domain = 0;
   std::string ns = "/towsim";
@@ -57,6 +70,8 @@ struct Args {
   bool stats = false;
   std::string security;
   std::vector<std::string> only;  // --body: the commanded bodies answered; empty: all
+  std::vector<ScheduledWinch> winch;
+  double winch_until = HUGE_VAL;  // [s]
 };
 
 [[noreturn]] void Fail(const std::string& message) {
@@ -97,6 +112,32 @@ Args Parse(int argc, char** argv) {
       a.stats = true;
     } else if (arg == "--timeout") {
       a.timeout = std::strtod(value().c_str(), nullptr);
+    } else if (arg == "--winch") {
+      // T=speed:V, T=length:L or T=mode:M:V
+      const std::string v = value();
+      ScheduledWinch w;
+      const auto eq = v.find('=');
+      const std::string usage = "--winch " + v + ": must be T=speed:V, T=length:L or T=mode:M:V";
+      if (eq == std::string::npos) Fail(usage);
+      w.at = std::strtod(v.substr(0, eq).c_str(), nullptr);
+      const std::string rest = v.substr(eq + 1);
+      if (rest.rfind("speed:", 0) == 0) {
+        w.mode = towsim_msgs_msg_dds__WinchCommand_Constants_SPEED;
+        w.value = std::strtod(rest.c_str() + 6, nullptr);
+      } else if (rest.rfind("length:", 0) == 0) {
+        w.mode = towsim_msgs_msg_dds__WinchCommand_Constants_LENGTH;
+        w.value = std::strtod(rest.c_str() + 7, nullptr);
+      } else if (rest.rfind("mode:", 0) == 0) {
+        char* end = nullptr;
+        w.mode = static_cast<uint8_t>(std::strtoul(rest.c_str() + 5, &end, 10));
+        if (end == nullptr || *end != ':') Fail(usage);
+        w.value = std::strtod(end + 1, nullptr);
+      } else {
+        Fail(usage);
+      }
+      a.winch.push_back(w);
+    } else if (arg == "--winch-until") {
+      a.winch_until = std::strtod(value().c_str(), nullptr);
     } else if (arg == "--command") {
       // BODY@T=THRUST,RUDDER,ELEVATOR
       const std::string v = value();
@@ -161,6 +202,7 @@ int main(int argc, char** argv) {
 
   std::vector<Body> bodies;
   std::vector<std::string> commanded;
+  bool has_winch = false;
   const Clock::time_point t_begin = Clock::now();
   while (bodies.empty()) {
     void* samples[1] = {nullptr};
@@ -189,6 +231,7 @@ int main(int argc, char** argv) {
           Fail("--body " + name + ": not a commanded body of the node's scene");
         }
       }
+      has_winch = s->has_winch;
     }
     if (n > 0) dds_return_loan(scene_reader, samples, n);
     if (bodies.empty()) {
@@ -221,10 +264,20 @@ int main(int argc, char** argv) {
     writers.push_back(
         Check(dds_create_writer(participant, t, command_qos, nullptr), "command writer"));
   }
+  dds_entity_t winch_writer = 0;
+  if (has_winch) {
+    const dds_entity_t t =
+        Check(dds_create_topic(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
+                               (prefix + "winch/command").c_str(), nullptr, nullptr),
+              "winch command topic");
+    winch_writer = Check(dds_create_writer(participant, t, command_qos, nullptr), "winch writer");
+  }
   // the node must hear the first command: wait until every writer and reader matched
   for (;;) {
     bool all = true;
-    for (dds_entity_t w : writers) {
+    std::vector<dds_entity_t> all_writers = writers;
+    if (winch_writer != 0) all_writers.push_back(winch_writer);
+    for (dds_entity_t w : all_writers) {
       dds_publication_matched_status_t m;
       dds_get_publication_matched_status(w, &m);
       all = all && m.current_count > 0;
@@ -252,6 +305,8 @@ int main(int argc, char** argv) {
   std::vector<ScheduledCommand> schedule = args.commands;
   std::map<std::string, towsim_msgs_msg_dds__ActuatorCommand_> held;
   for (const std::string& name : commanded) held[name] = towsim_msgs_msg_dds__ActuatorCommand_{};
+  std::vector<ScheduledWinch> winch_schedule = args.winch;
+  towsim_msgs_msg_dds__WinchCommand_ winch_held{};  // speed 0
 
   std::string run_id;
   unsigned long long answered = ~0ULL;
@@ -343,6 +398,22 @@ int main(int argc, char** argv) {
         cmd.step = s->step;
         const dds_return_t rc = dds_write(writers[w], &cmd);
         if (rc < 0) Fail(std::string("writing a command: ") + dds_strretcode(rc));
+      }
+      for (ScheduledWinch& c : winch_schedule) {
+        if (c.fired || s->sim_time < c.at - 1e-9) continue;
+        c.fired = true;
+        winch_held.mode = c.mode;
+        winch_held.value = c.value;
+      }
+      if (winch_writer != 0 && s->sim_time < args.winch_until - 1e-9) {
+        towsim_msgs_msg_dds__WinchCommand_ cmd = winch_held;
+        cmd.header.stamp = s->header.stamp;
+        cmd.header.frame_id = const_cast<char*>("");
+        cmd.step = s->step;
+        const dds_return_t rc = dds_write(winch_writer, &cmd);
+        if (rc < 0) Fail(std::string("writing a winch command: ") + dds_strretcode(rc));
+      } else if (winch_writer == 0 && !winch_schedule.empty()) {
+        Fail("--winch: the node's scene has no winch");
       }
     }
     if (n > 0) dds_return_loan(status_reader, samples, n);

@@ -171,6 +171,10 @@ TEST_F(CdrMessagesTest, CableStateFromCycloneBytes) {
   m.positions = {kNodes, kNodes, p.data(), false};
   m.velocities = {kNodes, kNodes, v.data(), false};
   m.tensions = {kNodes, kNodes, t.data(), false};
+  m.paid_out_length = 212.25;
+  m.winch_speed = -0.75;
+  m.drum_tension = 5123.5;
+  m.node_count = kNodes;
   const auto b = Serialize(&towsim_msgs_msg_dds__CableState__desc, &m);
   const CableState d = DecodeCableState(b.data(), b.size());
   EXPECT_EQ(d.header.stamp.sec, 100);
@@ -187,6 +191,10 @@ TEST_F(CdrMessagesTest, CableStateFromCycloneBytes) {
     EXPECT_EQ(d.velocities[i].z, v[i].z);
     EXPECT_EQ(d.tensions[i], t[i]);
   }
+  EXPECT_EQ(d.paid_out_length, 212.25);
+  EXPECT_EQ(d.winch_speed, -0.75);
+  EXPECT_EQ(d.drum_tension, 5123.5);
+  EXPECT_EQ(d.node_count, static_cast<std::uint32_t>(kNodes));
   ExpectTruncationsFail(b, DecodeCableState, "towsim_msgs/msg/CableState");
 
   // a corrupt element count is refused before anything is allocated: the positions count
@@ -288,6 +296,18 @@ TEST_F(CdrMessagesTest, CommandControlAndSceneInfoFromCycloneBytes) {
   EXPECT_EQ(da.elevator, 0.05);
   ExpectTruncationsFail(ba, DecodeActuatorCommand, "towsim_msgs/msg/ActuatorCommand");
 
+  dds::WinchCommandMsg w{};
+  w.header.frame_id = frame.data();
+  w.step = 77;
+  w.mode = towsim_msgs_msg_dds__WinchCommand_Constants_LENGTH;
+  w.value = 250.5;
+  const auto bw = Serialize(&towsim_msgs_msg_dds__WinchCommand__desc, &w);
+  const WinchCommand dw = DecodeWinchCommand(bw.data(), bw.size());
+  EXPECT_EQ(dw.step, 77u);
+  EXPECT_EQ(dw.mode, 1);
+  EXPECT_EQ(dw.value, 250.5);
+  ExpectTruncationsFail(bw, DecodeWinchCommand, "towsim_msgs/msg/WinchCommand");
+
   dds::SimControlMsg c{};
   c.header.frame_id = frame.data();
   c.command = 5;
@@ -313,6 +333,11 @@ TEST_F(CdrMessagesTest, CommandControlAndSceneInfoFromCycloneBytes) {
   s.bodies = {2, 2, bodies, false};
   s.commanded_bodies = {1, 1, bodies, false};
   s.cable_nodes = 21;
+  s.has_winch = true;
+  s.winch_min_length = 100.0;
+  s.winch_max_length = 300.0;
+  s.winch_max_speed = 1.5;
+  s.winch_max_acceleration = 0.25;
   const auto bs = Serialize(&towsim_msgs_msg_dds__SceneInfo__desc, &s);
   const SceneInfo ds = DecodeSceneInfo(bs.data(), bs.size());
   EXPECT_EQ(ds.scene, "case2_uturn");
@@ -323,6 +348,11 @@ TEST_F(CdrMessagesTest, CommandControlAndSceneInfoFromCycloneBytes) {
   EXPECT_EQ(ds.bodies, (std::vector<std::string>{"tow_vehicle", "towfish"}));
   EXPECT_EQ(ds.commanded_bodies, (std::vector<std::string>{"tow_vehicle"}));
   EXPECT_EQ(ds.cable_nodes, 21u);
+  EXPECT_TRUE(ds.has_winch);
+  EXPECT_EQ(ds.winch_min_length, 100.0);
+  EXPECT_EQ(ds.winch_max_length, 300.0);
+  EXPECT_EQ(ds.winch_max_speed, 1.5);
+  EXPECT_EQ(ds.winch_max_acceleration, 0.25);
   ExpectTruncationsFail(bs, DecodeSceneInfo, "towsim_msgs/msg/SceneInfo");
 }
 

@@ -5,6 +5,7 @@ if(TARGET towsim::controller_laws)
             ${PROJECT_SOURCE_DIR}/controllers/tests/maneuver_laws_test.cc
             ${PROJECT_SOURCE_DIR}/controllers/tests/autopilot_laws_test.cc
             ${PROJECT_SOURCE_DIR}/controllers/tests/seabed_test.cc
+            ${PROJECT_SOURCE_DIR}/controllers/tests/winch_law_test.cc
     LIBS towsim::controller_laws)
   towsim_add_test(controller_config_test LABEL unit
     SOURCES ${PROJECT_SOURCE_DIR}/controllers/tests/controller_config_test.cc

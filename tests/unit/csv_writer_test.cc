@@ -192,6 +192,33 @@ core::Model VehicleModel() {
   return model;
 }
 
+// a scene with a winch: status.csv ends in the paid-out length (docs/winch.md)
+TEST(CsvWriterTest, WinchSceneWritesTheCableLength) {
+  TempDir tmp;
+  core::Model model = TinyModel();
+  core::WinchParams w;
+  w.min_length = 5.0;
+  w.max_length = 20.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 10.0;
+  model.cable.winch = w;
+  core::Simulation sim(model);
+  sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 1.0});
+  CsvWriter csv(tmp.path().string(), false, true);
+  csv.Write(sim, core::StepStatus{}, 0);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+  csv.Write(sim, core::StepStatus{}, 0);
+  csv.Close();
+  std::string header;
+  const Rows rows = ReadCsv(tmp.path() / "status.csv", &header);
+  EXPECT_EQ(header, "t,step,newton_iterations,residual,wall_us,cable_length");
+  ASSERT_EQ(rows.size(), 2u);
+  ASSERT_EQ(rows[1].size(), 6u);
+  EXPECT_EQ(std::stod(rows[0][5]), 10.0);
+  ExpectNear(rows[1][5], sim.cable_length(), "cable_length");
+  EXPECT_GT(sim.cable_length(), 10.0);  // it paid out
+}
+
 TEST(CsvWriterTest, VehicleRowsFollowTheSpheres) {
   TempDir tmp;
   const core::Model model = VehicleModel();
@@ -408,6 +435,60 @@ TEST(AppendCsvNumber, SameBytesAsPrintf) {
     const double y = std::pow(10.0, exponent(random)) * ((random() & 1) ? 1.0 : -1.0);
     check(y);
   }
+}
+
+}  // namespace
+}  // namespace towsim::io
+
+namespace towsim::io {
+namespace {
+
+TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
+  TempDir tmp;
+  core::Model model = TinyModel();
+  core::WinchParams w;
+  w.min_length = 5.0;
+  w.max_length = 20.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 0.5;
+  model.cable.winch = w;
+  core::Simulation sim(model);
+  ASSERT_TRUE(sim.has_winch());
+  sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 0.5});
+  CsvWriter csv(tmp.path().string(), false, /*winch=*/true);
+  std::vector<std::vector<double>> expected;
+  auto write = [&](const core::StepStatus& status) {
+    csv.Write(sim, status, 0);
+    expected.push_back({sim.time(), sim.cable_length(), sim.winch_speed(), sim.drum_tension(),
+                        static_cast<double>(sim.num_nodes())});
+  };
+  write(core::StepStatus{});
+  for (int k = 0; k < 4; ++k) {
+    const core::StepStatus status = sim.Step();
+    ASSERT_TRUE(status.ok()) << status.message;
+    write(status);
+  }
+  csv.Close();
+  std::string header;
+  const Rows rows = ReadCsv(tmp.path() / "winch.csv", &header);
+  EXPECT_EQ(header, "t,paid_out_length,winch_speed,drum_tension,node_count");
+  ASSERT_EQ(rows.size(), expected.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 5u) << "row " << i;
+    for (int c = 0; c < 4; ++c) ExpectNear(rows[i][c], expected[i][c], "column " + std::to_string(c));
+    EXPECT_EQ(std::stoi(rows[i][4]), static_cast<int>(expected[i][4])) << "node_count, row " << i;
+  }
+  // the drum's tension is the tension at node 0 (the accessors agree), the cable's weight
+  // below it in this hanging cable: > 0
+  EXPECT_GT(expected.back()[3], 0.0);
+
+  // without a winch: no winch.csv
+  TempDir plain;
+  core::Simulation fixed(TinyModel());
+  CsvWriter csv_plain(plain.path().string());
+  csv_plain.Write(fixed, core::StepStatus{}, 0);
+  csv_plain.Close();
+  EXPECT_FALSE(std::filesystem::exists(plain.path() / "winch.csv"));
 }
 
 }  // namespace

@@ -159,3 +159,81 @@ TEST(CommandArbiterTest, ResetForgetsEverything) {
 
 }  // namespace
 }  // namespace towsim::dds
+
+namespace towsim::dds {
+namespace {
+
+// a vehicle and the winch (entry 1), as the node builds them for a scene with cable.winch
+CommandArbiter VehicleAndWinch() {
+  core::WinchParams w;
+  w.min_length = 100.0;
+  w.max_length = 300.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 0.1;
+  return CommandArbiter({{"tow_vehicle", Limits(), true}, CommandArbiter::Vehicle::Winch(w, true)},
+                        kTimeout);
+}
+
+WinchCommandMsg WinchSpeed(double speed, uint64_t step) {
+  WinchCommandMsg m{};
+  m.step = step;
+  m.mode = towsim_msgs_msg_dds__WinchCommand_Constants_SPEED;
+  m.value = speed;
+  return m;
+}
+
+TEST(CommandArbiterWinchTest, CheckedCountedAndHeldLikeAVehiclesCommand) {
+  CommandArbiter a = VehicleAndWinch();
+  EXPECT_EQ(a.vehicle(1).name, "winch");
+  core::WinchCommand w;
+  EXPECT_FALSE(a.Take(1, &w));  // nothing held: the scene's script drives the winch
+  a.Receive(1, WinchSpeed(0.5, 0), 0.0);
+  ASSERT_TRUE(a.Take(1, &w));
+  EXPECT_EQ(w.mode, core::WinchCommand::Mode::kSpeed);
+  EXPECT_EQ(w.value, 0.5);
+  EXPECT_FALSE(a.Take(1, &w));  // given once
+  // out of range: clamped; NaN: rejected, the held command stays; both counted with the
+  // vehicles' commands
+  a.Receive(1, WinchSpeed(3.0, 1), kH);
+  a.Receive(1, WinchSpeed(std::numeric_limits<double>::quiet_NaN(), 2), 2 * kH);
+  a.Receive(0, Command(1000.0, 2), 2 * kH);
+  EXPECT_EQ(a.received(), 4u);
+  EXPECT_EQ(a.clamped(), 1u);
+  EXPECT_EQ(a.rejected(), 1u);
+  EXPECT_EQ(a.last_event(), "winch: command rejected (speed is NaN)");
+  ASSERT_TRUE(a.Take(1, &w));
+  EXPECT_EQ(w.value, 1.0);
+}
+
+TEST(CommandArbiterWinchTest, FailsafeHoldsTheDrumAtSpeedZero) {
+  CommandArbiter a = VehicleAndWinch();
+  a.Receive(1, WinchSpeed(-0.8, 0), 0.0);
+  core::WinchCommand w;
+  ASSERT_TRUE(a.Take(1, &w));
+  a.CheckTimeouts(kTimeout);
+  EXPECT_TRUE(a.failsafe(1));
+  EXPECT_EQ(a.failsafe_names(), std::vector<std::string>{"winch"});
+  for (int k = 0; k < 2; ++k) {  // on every step of the failsafe
+    ASSERT_TRUE(a.Take(1, &w));
+    EXPECT_EQ(w.mode, core::WinchCommand::Mode::kSpeed);
+    EXPECT_EQ(w.value, 0.0);
+  }
+}
+
+TEST(CommandArbiterWinchTest, LockstepWaitsForTheWinchLikeForAVehicle) {
+  CommandArbiter a = VehicleAndWinch();
+  a.Receive(0, Command(0.0, 0), 0.0);
+  EXPECT_FALSE(a.ReadyFor(0));
+  EXPECT_EQ(a.Missing(0), std::vector<int>{1});
+  a.Receive(1, WinchSpeed(0.0, 0), 0.0);
+  EXPECT_TRUE(a.ReadyFor(0));
+  // the winch's controller stops: after the lockstep timeout, failsafe and no longer waited for
+  a.Receive(0, Command(0.0, 1), kH);
+  EXPECT_EQ(a.TimeOut(1), 1);
+  EXPECT_TRUE(a.failsafe(1));
+  EXPECT_TRUE(a.ReadyFor(1));
+  EXPECT_EQ(a.lockstep_timeouts(), 1u);
+}
+
+}  // namespace
+}  // namespace towsim::dds

@@ -236,6 +236,12 @@ TEST_F(DdsEntitiesTest, CableStateSequencesAreCdrSequences) {
   for (double v : {4.0, 5.0, 6.0, 14.0, 15.0, 16.0}) e.F64(v);
   e.U32(2);
   for (double v : {7.0, 17.0}) e.F64(v);
+  // the winch's appended fields: paid_out_length, winch_speed, drum_tension, node_count
+  m.msg.paid_out_length = 150.5;
+  m.msg.winch_speed = -0.25;
+  m.msg.drum_tension = 4321.0;
+  for (double v : {150.5, -0.25, 4321.0}) e.F64(v);
+  e.U32(2);
   const std::vector<unsigned char> wire =
       Serialized(p, &towsim_msgs_msg_dds__CableState__desc, "rt/test_cdr/cable", m.msg);
   ASSERT_GE(wire.size(), 4u);

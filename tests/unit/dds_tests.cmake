@@ -19,6 +19,9 @@ towsim_add_test(sensor_translators_test LABEL unit
 towsim_add_test(environment_translator_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/environment_translator_test.cc
   LIBS towsim::dds towsim::scene)
+towsim_add_test(dds_winch_command_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_winch_command_test.cc
+  LIBS towsim::dds)
 
 towsim_add_test(dds_command_arbiter_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_command_arbiter_test.cc

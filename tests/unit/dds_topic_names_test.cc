@@ -15,6 +15,7 @@ TEST(TopicNamesTest, DefaultNamespace) {
   EXPECT_EQ(n.cable_state(), "rt/towsim/cable/state");
   EXPECT_EQ(n.status(), "rt/towsim/status");
   EXPECT_EQ(n.sim_control(), "rt/towsim/sim_control");
+  EXPECT_EQ(n.winch_command(), "rt/towsim/winch/command");
   EXPECT_EQ(n.scene_info(), "rt/towsim/scene_info");
   EXPECT_EQ(n.clock(), "rt/clock");  // /clock stays at the root
 }

@@ -179,6 +179,41 @@ TEST_F(StateTranslation, CableStateHasEveryNode) {
   EXPECT_NEAR(m.msg.positions._buffer[0].z, 3.7, 0.5);
 }
 
+TEST_F(StateTranslation, CableStateCarriesTheWinchFieldsAndTheNodeCount) {
+  // sized for more nodes than in use (a winch scene's bound): the sequences carry those in use
+  CableStateMessage m(kWorldFrame, sim_->num_nodes() + 7);
+  ToCableState(*sim_, 20, &m);
+  EXPECT_EQ(m.msg.node_count, static_cast<uint32_t>(sim_->num_nodes()));
+  EXPECT_EQ(m.msg.positions._length, m.msg.node_count);
+  EXPECT_EQ(m.msg.tensions._length, m.msg.node_count);
+  EXPECT_EQ(m.msg.paid_out_length, sim_->cable_length());
+  EXPECT_EQ(m.msg.winch_speed, sim_->winch_speed());
+  EXPECT_EQ(m.msg.drum_tension, sim_->drum_tension());
+  // no winch in this scene: the fixed length, speed 0, and the storage is the node count
+  EXPECT_EQ(m.msg.paid_out_length, 50.0);
+  EXPECT_EQ(m.msg.winch_speed, 0.0);
+  EXPECT_EQ(MaxCableNodes(*sim_), sim_->num_nodes());
+  // fewer storage than nodes: grown
+  CableStateMessage small(kWorldFrame, 1);
+  ToCableState(*sim_, 20, &small);
+  ASSERT_EQ(small.msg.positions._length, 5u);
+  EXPECT_EQ(small.msg.positions._buffer[4].z, sim_->node_position(4).z());
+}
+
+TEST(MaxCableNodesTest, BoundsTheNodesAtTheWinchsMaxLength) {
+  core::Model model = scene::LoadSceneFromString(
+      kScene, "winch.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  core::WinchParams w;
+  w.min_length = 20.0;
+  w.max_length = 125.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 0.1;
+  model.cable.winch = w;
+  const core::Simulation sim(model);
+  // 4 elements of 12.5 m: 125 m hold 10 of them, + 3 (docs/winch.md)
+  EXPECT_EQ(MaxCableNodes(sim), 13);
+}
+
 TEST(ClockTest, CarriesTheSimulationTime) {
   ClockMsg c{};
   ToClock(1.5, &c);
@@ -288,8 +323,18 @@ TEST(SceneInfoTest, ListsBodies) {
   s.bodies = {"tow_vehicle", "towfish"};
   s.commanded_bodies = {"tow_vehicle"};
   s.cable_nodes = 21;
+  s.has_winch = true;
+  s.winch_min_length = 100.0;
+  s.winch_max_length = 300.0;
+  s.winch_max_speed = 1.5;
+  s.winch_max_acceleration = 0.2;
   SceneInfoMessage m;
   ToSceneInfo(s, &m);
+  EXPECT_TRUE(m.msg.has_winch);
+  EXPECT_EQ(m.msg.winch_min_length, 100.0);
+  EXPECT_EQ(m.msg.winch_max_length, 300.0);
+  EXPECT_EQ(m.msg.winch_max_speed, 1.5);
+  EXPECT_EQ(m.msg.winch_max_acceleration, 0.2);
   EXPECT_STREQ(m.msg.scene, "case1_forward");
   ASSERT_EQ(m.msg.bodies._length, 2u);
   EXPECT_STREQ(m.msg.bodies._buffer[1], "towfish");

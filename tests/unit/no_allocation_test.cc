@@ -5,6 +5,7 @@
 // a step of the cable alone, of a sphere-ended tow and of vehicles with either coupling must
 // not allocate at all, also after a state was restored with SetState.
 
+#include <algorithm>
 #include <cstdlib>
 
 #include <Eigen/Core>
@@ -58,6 +59,31 @@ TEST(NoAllocation, VehicleInASeaAfterSetState) {
 }
 
 TEST(NoAllocation, CableWithASphereInASea) { ExpectStepsDoNotAllocate(InASea(SteadyTowModel())); }
+// the winch paying out across element splits, then reeling in across merges (docs/winch.md)
+TEST(NoAllocation, WinchPayoutAndReelIn) {
+  Simulation sim(test::SteadyTowWithWinch());
+  sim.SetWinchCommand({WinchCommand::Mode::kSpeed, 5.0});
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(sim.Step().ok());  // warm-up: work space sized
+  const int nodes = sim.num_nodes();
+  Eigen::internal::set_is_malloc_allowed(false);
+  g_news = 0;
+  g_counting = true;
+  bool ok = true;
+  int most = nodes;
+  for (int k = 0; k < 100 && ok; ++k) {
+    ok = sim.Step().ok();
+    most = std::max(most, sim.num_nodes());
+  }
+  sim.SetWinchCommand({WinchCommand::Mode::kLength, 150.0});
+  for (int k = 0; k < 200 && ok; ++k) ok = sim.Step().ok();
+  g_counting = false;
+  Eigen::internal::set_is_malloc_allowed(true);
+  ASSERT_TRUE(ok);
+  EXPECT_GE(most, nodes + 2);              // split at least twice
+  EXPECT_LE(sim.num_nodes(), nodes - 1);  // and merged back below the start
+  EXPECT_EQ(g_news.load(), 0) << "operator new called during Step";
+}
+
 TEST(NoAllocation, VehicleInASea) {
   ExpectStepsDoNotAllocate(InASea(SteadyTowWithVehicle(Coupling::kStrong)));
 }

@@ -202,7 +202,7 @@ TEST(Ros2Schemas, DependenciesDepthFirstSortedOnceEachAsRosbag2) {
 
 TEST(Ros2Schemas, TowsimMessagesAreTheMsgFilesVerbatim) {
   for (const char* name :
-       {"ActuatorCommand", "CableState", "SceneInfo", "SimControl", "SimStatus"}) {
+       {"ActuatorCommand", "CableState", "SceneInfo", "SimControl", "SimStatus", "WinchCommand"}) {
     const auto path = std::filesystem::path(TOWSIM_SOURCE_DIR) / "msgs/towsim_msgs/msg" /
                       (std::string(name) + ".msg");
     const std::string text = Slurp(path);

@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -728,6 +729,70 @@ TEST_F(SceneLoaderTest, VehicleAttitudeVelocityAndCommand) {
   EXPECT_EQ(boat.command.thrust, -100.0);
   EXPECT_DOUBLE_EQ(boat.command.rudder, -30 * kDeg);
   EXPECT_EQ(boat.command.elevator, 0.0);
+}
+
+// the winch (docs/winch.md): cable.winch and the winch script entries
+const std::string kWinchLine =
+    "  end: {body: fish}\n  winch: {min_length: 50, max_length: 150, max_speed: 1, "
+    "max_acceleration: 0.2}\n";
+
+TEST_F(SceneLoaderTest, WinchKeysAndScriptEntries) {
+  const Model m = Load(Edit("  end: {body: fish}\n", kWinchLine) +
+                       "script:\n  - {at: 10, winch_speed: -0.5}\n  - {at: 20, winch_length: 120}\n");
+  ASSERT_TRUE(m.cable.winch.has_value());
+  EXPECT_EQ(m.cable.winch->min_length, 50.0);
+  EXPECT_EQ(m.cable.winch->max_length, 150.0);
+  EXPECT_EQ(m.cable.winch->max_speed, 1.0);
+  EXPECT_EQ(m.cable.winch->max_acceleration, 0.2);
+  EXPECT_TRUE(std::isinf(m.cable.winch->brake_tension));  // optional: never slips
+  ASSERT_EQ(m.script.size(), 2u);
+  EXPECT_TRUE(m.script[0].set_winch);
+  EXPECT_EQ(m.script[0].vehicle, -1);
+  EXPECT_EQ(m.script[0].winch.mode, core::WinchCommand::Mode::kSpeed);
+  EXPECT_EQ(m.script[0].winch.value, -0.5);
+  EXPECT_EQ(m.script[1].winch.mode, core::WinchCommand::Mode::kLength);
+  EXPECT_EQ(m.script[1].winch.value, 120.0);
+  EXPECT_FALSE(Load(kScene).cable.winch.has_value());
+}
+
+TEST_F(SceneLoaderTest, WinchErrorsNameKeyValueAndRule) {
+  const std::string winch = Edit("  end: {body: fish}\n", kWinchLine);
+  auto error = [&](const std::string& yaml) -> std::string {
+    try {
+      Load(yaml);
+    } catch (const ConfigError& e) {
+      return e.what();
+    }
+    return "(accepted)";
+  };
+  EXPECT_EQ(error(Replace(winch, "min_length: 50", "min_length: 120")),
+            "cable.winch.min_length = 120 (t.yaml:13): must be <= cable.length = 100");
+  EXPECT_EQ(error(Replace(winch, "max_length: 150", "max_length: 90")),
+            "cable.winch.max_length = 90 (t.yaml:13): must be >= cable.length = 100");
+  EXPECT_EQ(error(Replace(winch, "max_speed: 1", "max_speed: 0")),
+            "cable.winch.max_speed = 0 (t.yaml:13): must be > 0");
+  EXPECT_EQ(error(Replace(winch, "max_acceleration: 0.2", "max_acceleration: -1")),
+            "cable.winch.max_acceleration = -1 (t.yaml:13): must be > 0");
+  EXPECT_EQ(error(Replace(winch, "max_acceleration: 0.2", "max_acceleration: 0.2, brake: 5")),
+            "cable.winch.brake = 5 (t.yaml:13): unknown key; did you mean brake_tension? "
+            "(allowed: min_length, max_length, max_speed, max_acceleration, brake_tension)");
+  EXPECT_EQ(error(winch + "script:\n  - {at: 1, winch_speed: 2}\n"),
+            "script[0].winch_speed = 2 (t.yaml:18): must be within +-cable.winch.max_speed = 1");
+  EXPECT_EQ(error(winch + "script:\n  - {at: 1, winch_length: 200}\n"),
+            "script[0].winch_length = 200 (t.yaml:18): must be within cable.winch [min_length, "
+            "max_length] = [50, 150]");
+  EXPECT_EQ(error(kScene + std::string("script:\n  - {at: 1, winch_speed: 0.5}\n")),
+            "script[0].winch_speed = 0.5 (t.yaml:17): the scene has no cable.winch");
+}
+
+TEST_F(SceneLoaderTest, ShippedWinchPayoutScene) {
+  const Model m = LoadScene(kConfigDir + "/scenes/winch_payout.yaml");
+  ASSERT_TRUE(m.cable.winch.has_value());
+  EXPECT_EQ(m.cable.length, 150.0);
+  EXPECT_EQ(m.cable.winch->max_speed, 1.0);
+  ASSERT_EQ(m.script.size(), 2u);
+  EXPECT_EQ(m.script[0].winch.value, 250.0);
+  EXPECT_EQ(m.script[1].winch.value, 150.0);
 }
 
 TEST_F(SceneLoaderTest, ScriptEntriesAndConditions) {

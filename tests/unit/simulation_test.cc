@@ -95,6 +95,42 @@ TEST(SimulationState, HistoryIsPartOfTheState) {
   EXPECT_NE((straight.state().q - restarted.state().q).lpNorm<Eigen::Infinity>(), 0.0);
 }
 
+// the winch moving (docs/winch.md): the state taken mid-payout, 5 steps before an element split,
+// continues bit for bit, in a fresh Simulation (given the same winch command: an input) and in
+// the one that ran on past the split and then reels in past a merge
+TEST(SimulationState, RoundTripWinchMovingAcrossASplit) {
+  const Model model = test::SteadyTowWithWinch();
+  const WinchCommand payout{WinchCommand::Mode::kSpeed, 5.0};
+  Simulation straight(model);
+  straight.SetWinchCommand(payout);
+  StepN(&straight, 20);
+  const int nodes_before = straight.num_nodes();
+  const State taken = straight.GetState();
+  StepN(&straight, kAfter);
+  ASSERT_GT(straight.num_nodes(), nodes_before);  // the continuation splits the drum element
+
+  Simulation fresh(model);
+  fresh.SetWinchCommand(payout);
+  fresh.SetState(taken);
+  StepN(&fresh, kAfter);
+  ExpectBitIdentical(straight, fresh);
+  EXPECT_EQ(fresh.cable_length(), straight.cable_length());
+  EXPECT_EQ(fresh.winch_speed(), straight.winch_speed());
+  EXPECT_EQ(fresh.num_nodes(), straight.num_nodes());
+
+  // the run that went on and reeled in past a merge, set back to the state before the split
+  Simulation first(model);
+  first.SetWinchCommand(payout);
+  StepN(&first, 20 + kAfter);
+  first.SetWinchCommand({WinchCommand::Mode::kLength, 150.0});
+  StepN(&first, 120);
+  ASSERT_LT(first.num_nodes(), straight.num_nodes());  // merged
+  first.SetWinchCommand(payout);
+  first.SetState(taken);
+  StepN(&first, kAfter);
+  ExpectBitIdentical(straight, first);
+}
+
 std::string SetStateError(const Model& model, const State& s) {
   Simulation sim(model);
   try {
@@ -122,6 +158,18 @@ TEST(SimulationState, WrongShapeIsRejected) {
   EXPECT_EQ(SetStateError(model, s),
             "SetState: lambda has 5 entries, this model needs 6 (3 per held cable end, 2 more "
             "per clamped end)");
+  // the nodes in use are part of the shape
+  s = Simulation(model).GetState();
+  s.winch.nodes = 30;
+  EXPECT_EQ(SetStateError(model, s),
+            "SetState: winch.nodes = 30, this model needs 21 (cable.elements + 1; the scene has "
+            "no winch)");
+  const Model winch = test::SteadyTowWithWinch(model);
+  s = Simulation(winch).GetState();
+  s.winch.nodes = 1;
+  EXPECT_EQ(SetStateError(winch, s),
+            "SetState: winch.nodes = 1, this model needs 2 to 28 (cable nodes in use; the "
+            "winch's max_length holds at most that many)");
 }
 
 }  // namespace

@@ -55,6 +55,19 @@ inline core::Model SteadyTowWithVehicle(core::Coupling coupling) {
   return m;
 }
 
+// the steady tow with a fast winch at the driven top (10 m elements; 150 m to 260 m at up to
+// 5 m/s and 5 m/s^2), so that a few dozen steps pay out or reel in across an element split or
+// merge (docs/winch.md)
+inline core::Model SteadyTowWithWinch(core::Model m = SteadyTowModel()) {
+  core::WinchParams w;
+  w.min_length = 150;
+  w.max_length = 260;
+  w.max_speed = 5;
+  w.max_acceleration = 5;
+  m.cable.winch = w;
+  return m;
+}
+
 // the whole sea around a scene: an irregular sea, a sheared current and a seabed
 inline core::Model InASea(core::Model m) {
   core::Environment& env = m.environment;

@@ -120,7 +120,7 @@ TEST_P(TowsimMsgsTest, IdlMatchesTheRos2MsgFile) {
 
 INSTANTIATE_TEST_SUITE_P(AllMessages, TowsimMsgsTest,
                          ::testing::Values("CableState", "ActuatorCommand", "SimStatus",
-                                           "SimControl", "SceneInfo"));
+                                           "SimControl", "SceneInfo", "WinchCommand"));
 
 TEST(MsgTypeNamesTest, AreTheRos2DdsNames) {
   const std::map<std::string, const dds_topic_descriptor_t*> types = {
@@ -144,6 +144,7 @@ TEST(MsgTypeNamesTest, AreTheRos2DdsNames) {
       {"towsim_msgs::msg::dds_::SimStatus_", &towsim_msgs_msg_dds__SimStatus__desc},
       {"towsim_msgs::msg::dds_::SimControl_", &towsim_msgs_msg_dds__SimControl__desc},
       {"towsim_msgs::msg::dds_::SceneInfo_", &towsim_msgs_msg_dds__SceneInfo__desc},
+      {"towsim_msgs::msg::dds_::WinchCommand_", &towsim_msgs_msg_dds__WinchCommand__desc},
   };
   for (const auto& [name, desc] : types) {
     EXPECT_EQ(std::string(desc->m_typename), name);

@@ -1,0 +1,279 @@
+// The winch (docs/winch.md) held to independent references while it pays out and reels in:
+//   - the outboard cable's mass is rho_c A L at every step (the elements' consistent masses);
+//   - a weight hanging from a fixed drum, paid out and reeled in slowly: the drum tension is the
+//     submerged weight of the hanging length plus the weight's, the quasi-static balance;
+//   - the shipped payout scene (config/scenes/winch_payout.yaml): after paying out from 150 m
+//     to 250 m the steady tow matches the steady towed-cable solution at 250 m
+//     (towed_cable_steady.h) as closely as a run started with 250 m does, and the drum tension
+//     has no jump at the element splits and merges;
+//   - the brake: above brake_tension the drum slips, and the tension it holds is the brake's.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "core/model.h"
+#include "core/script.h"
+#include "core/simulation.h"
+#include "core/system.h"
+#include "scene/scene_loader.h"
+#include "towed_cable_steady_core.h"
+
+namespace towsim::reference {
+namespace {
+
+using core::Vec3;
+using core::WinchCommand;
+
+const std::string kScene = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/winch_payout.yaml";
+
+// a 416 kg sphere (0.2 m^3) hanging from a fixed drum on 100 m of the paper's cable in 10 m
+// elements, in its static equilibrium; the winch slow (0.1 m/s, 0.0025 m/s^2)
+core::Model HangingWeight() {
+  core::Model m;
+  m.time.step = 0.05;
+  m.cable.length = 100;
+  m.cable.elements = 10;
+  m.cable.initial = core::InitialShape::kStatic;
+  m.cable.start.kind = core::EndKind::kFixed;
+  m.cable.end.kind = core::EndKind::kBody;
+  m.cable.end.body = 0;
+  core::SphereBody b;
+  b.name = "weight";
+  b.mass = 416;
+  b.volume = 0.2;
+  b.position = Vec3(0, 0, 100);
+  m.bodies.push_back(b);
+  core::WinchParams w;
+  w.min_length = 50;
+  w.max_length = 150;
+  w.max_speed = 0.1;
+  w.max_acceleration = 0.0025;
+  m.cable.winch = w;
+  return m;
+}
+
+// the mass of the cable's elements in use: sum of 1^T M 1 over the translational coordinates
+// of each element's consistent mass matrix (paper Eq. 7)
+double CableMass(const core::Simulation& sim) {
+  const core::System& sys = sim.system();
+  double mass = 0.0;
+  for (int e = 0; e < sys.num_elements(); ++e) {
+    const core::AncfElement element =
+        e == 0 ? sys.DrumElement(sys.drum_length()) : sys.DrumElement(sys.element_length());
+    const core::Mat12& m = element.mass();
+    for (int i : {0, 6})
+      for (int j : {0, 6}) mass += m(i, j);
+  }
+  return mass;
+}
+
+TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
+  const core::Model m = HangingWeight();
+  const core::CableParams& c = m.cable;
+  const double g = m.environment.gravity, rho = m.environment.water_density;
+  // submerged weights: the cable per unstretched metre, the sphere
+  const double w_cable = (c.density - rho) * c.area() * g;
+  const double w_body = (m.bodies[0].mass - rho * m.bodies[0].volume) * g;
+  // issue requirement; the slow drum's drag (0.1 m/s: under 3 N) and inertia (0.0025 m/s^2 on
+  // about 700 kg: 1.8 N) are each under 0.1 % of the 2400 N, and so is the bounce of the weight on
+  // the elastic cable (period 1.6 s) that the start and stop of the drum excite
+  constexpr double kTensionRelTol = 5e-3;
+  // the mass: a sum of 4 mass-matrix entries per element against rho A L
+  constexpr double kMassRelTol = 1e-13;
+
+  core::Simulation sim(m);
+  sim.SetWinchCommand({WinchCommand::Mode::kLength, 120.0});
+  int most_nodes = sim.num_nodes(), fewest_nodes = sim.num_nodes();
+  double worst = 0.0, worst_at = 0.0, worst_mass = 0.0;
+  for (int i = 1; i <= 12200; ++i) {
+    ASSERT_TRUE(sim.Step().ok()) << "step " << i;
+    if (i == 5200) sim.SetWinchCommand({WinchCommand::Mode::kLength, 90.0});
+    most_nodes = std::max(most_nodes, sim.num_nodes());
+    fewest_nodes = std::min(fewest_nodes, sim.num_nodes());
+    const double expected = w_cable * sim.cable_length() + w_body;
+    const double err = std::abs(sim.drum_tension() / expected - 1.0);
+    if (err > worst) {
+      worst = err;
+      worst_at = sim.time();
+    }
+    const double rho_a_l = c.density * c.area() * sim.cable_length();
+    worst_mass = std::max(worst_mass, std::abs(CableMass(sim) / rho_a_l - 1.0));
+  }
+  std::printf(
+      "hanging weight: worst drum tension error %.3e (t = %.2f s), mass error %.3e, nodes "
+      "%d..%d\n",
+      worst, worst_at, worst_mass, fewest_nodes, most_nodes);
+  EXPECT_EQ(sim.cable_length(), 90.0);
+  // paid out past two splits (100 -> 120 m: 11 -> 13 nodes) and reeled in to 90 m past three merges
+  EXPECT_EQ(most_nodes, 13);
+  EXPECT_EQ(fewest_nodes, 10);
+  EXPECT_LE(worst, kTensionRelTol);
+  EXPECT_LE(worst_mass, kMassRelTol);
+}
+
+// relative errors of layback, depth and top tension of `sim` against the steady solution of
+// `model` with `length` paid out
+struct TowErrors {
+  double layback, depth, tension;
+};
+
+TowErrors SteadyTowErrors(const core::Model& model, double length, const core::Simulation& sim) {
+  TowedCableProblem p = SteadyTowProblem(model);
+  p.length = length;
+  const TowedCableSolution ref = SolveTowedCableSteady(p);
+  const SteadyTowSample s = MeasureSteadyTow(sim);
+  return {s.layback / ref.layback - 1.0, s.depth / ref.depth - 1.0,
+          s.tension / ref.top_tension - 1.0};
+}
+
+// the shipped scene without its reel-in entry: 150 m paid out to 250 m from t = 20 s
+core::Model PayoutScene() {
+  core::Model m = scene::LoadScene(kScene);
+  m.script.resize(1);
+  return m;
+}
+
+TEST(WinchCore, SteadyTowAfterPayoutMatchesTheSteadySolutionAtTheNewLength) {
+  const core::Model model = PayoutScene();
+  ASSERT_EQ(model.script[0].winch.value, 250.0);
+  // the same tow started with 250 m (25 elements of the same 10 m) in its steady shape
+  core::Model started = model;
+  started.cable.length = 250.0;
+  started.cable.elements = 25;
+  started.bodies[0].position.z() = 253.5;
+  started.script.clear();
+  // payout from 20 s to about 125 s, then settled: the payout leaves the sphere deeper
+  // (+29 % at the end of the payout), and its depth relaxes with a time constant of about
+  // 38 s (measured: the excess falls by 0.59 every 20 s), so 355 s after the payout it is
+  // e^-9 ~ 1e-4 of what it was: below 1e-4 relative
+  constexpr double kRunTime = 480.0;
+  const int steps = static_cast<int>(std::lround(kRunTime / model.time.step));
+  core::Simulation paid_out(model), reference_run(started);
+  core::ScriptRunner script(model);
+  script.Apply(&paid_out);
+  for (int i = 0; i < steps; ++i) {
+    ASSERT_TRUE(paid_out.Step().ok()) << "payout run, step " << i;
+    script.Apply(&paid_out);
+    ASSERT_TRUE(reference_run.Step().ok()) << "run started at 250 m, step " << i;
+    if (i % 400 == 0) {
+      const TowErrors a = SteadyTowErrors(model, paid_out.cable_length(), paid_out);
+      const TowErrors b = SteadyTowErrors(started, 250.0, reference_run);
+      std::printf("t %.0f L %.2f depth %+.3e %+.3e tension %+.3e %+.3e\n", paid_out.time(),
+                  paid_out.cable_length(), a.depth, b.depth, a.tension, b.tension);
+    }
+  }
+  ASSERT_EQ(paid_out.cable_length(), 250.0);
+  ASSERT_EQ(paid_out.num_nodes(), reference_run.num_nodes());
+  const TowErrors a = SteadyTowErrors(model, 250.0, paid_out);
+  const TowErrors b = SteadyTowErrors(started, 250.0, reference_run);
+  std::printf("after payout: layback %+.3e depth %+.3e tension %+.3e\n", a.layback, a.depth,
+              a.tension);
+  std::printf("started at 250 m: layback %+.3e depth %+.3e tension %+.3e\n", b.layback, b.depth,
+              b.tension);
+  // as tightly as the run started at that length: the two runs end on the same mesh (25
+  // elements of 10 m, the drum element back at 10 m) and differ only by what the payout left;
+  // a difference an order below the mesh's own error to the steady solution
+  constexpr double kSameAsStartedRelTol = 1e-3;
+  EXPECT_NEAR(a.layback, b.layback, kSameAsStartedRelTol);
+  EXPECT_NEAR(a.depth, b.depth, kSameAsStartedRelTol);
+  EXPECT_NEAR(a.tension, b.tension, kSameAsStartedRelTol);
+  // and both within the steady-tow test's tolerances (steady_tow_core_test.cc)
+  for (const TowErrors& e : {a, b}) {
+    EXPECT_LE(std::abs(e.layback), 1e-2);
+    EXPECT_LE(std::abs(e.depth), 1e-2);
+    EXPECT_LE(std::abs(e.tension), 2e-2);
+  }
+}
+
+TEST(WinchCore, DrumTensionSmoothAcrossSplitsAndMerges) {
+  // the shipped scene: pay out 150 -> 250 m at 1 m/s, hold, reel in to 150 m
+  const core::Model model = scene::LoadScene(kScene);
+  core::Simulation sim(model);
+  core::ScriptRunner script(model);
+  script.Apply(&sim);
+  const int steps = static_cast<int>(std::lround(330.0 / model.time.step));
+  double previous = sim.drum_tension(), steady_since = 0.0;
+  // the largest step-to-step change within 3 steps of a split or merge, and elsewhere
+  double worst_jump = 0.0, worst_at = 0.0, worst_other = 0.0;
+  int splits = 0, merges = 0, nodes = sim.num_nodes(), since_event = 1000;
+  for (int i = 0; i < steps; ++i) {
+    ASSERT_TRUE(sim.Step().ok()) << "step " << i;
+    script.Apply(&sim);
+    splits += sim.num_nodes() > nodes;
+    merges += sim.num_nodes() < nodes;
+    since_event = sim.num_nodes() != nodes ? 0 : since_event + 1;
+    nodes = sim.num_nodes();
+    const double t = sim.drum_tension();
+    // only while the drum has run at constant speed for kSettle (its accelerations change the
+    // tension by design: 0.2 m/s^2 on some 700 kg is 5 % of it), jumps relative to the tension
+    // itself (the quasi-static tension, within 2 %)
+    constexpr double kSettle = 5.0;  // [s]
+    if (std::abs(std::abs(sim.winch_speed()) - 1.0) >= 1e-12) steady_since = sim.time();
+    if (sim.time() - steady_since > kSettle) {
+      const double jump = std::abs(t - previous) / t;
+      if (since_event > 3) {
+        worst_other = std::max(worst_other, jump);
+      } else if (jump > worst_jump) {
+        worst_jump = jump;
+        worst_at = sim.time();
+      }
+    }
+    previous = t;
+  }
+  std::printf(
+      "drum tension: worst step-to-step change %.3e at a split or merge (t = %.2f s), %.3e "
+      "elsewhere; %d splits, %d merges\n",
+      worst_jump, worst_at, worst_other, splits, merges);
+  EXPECT_EQ(splits, 10);  // 15 -> 25 elements
+  EXPECT_EQ(merges, 10);
+  // no spurious jump: at a split or merge the drum tension changes from one step to the next
+  // by no more than 0.5 % of itself (measured 0.2 %, against 0.05 % at constant speed away from
+  // them); a split with the velocity interpolated instead of the material's (docs/winch.md)
+  // rang by +-2 %
+  constexpr double kJumpRelTol = 5e-3;
+  EXPECT_LE(worst_jump, kJumpRelTol);
+}
+
+TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
+  // the hanging weight of 2426 N at 100 m; a brake of 2000 N cannot hold it
+  core::Model m = HangingWeight();
+  m.cable.winch->brake_tension = 2000.0;
+  core::Simulation sim(m);
+  // after the first 5 s (the slip building up), over 15 s
+  double max_tension = 0.0, sum = 0.0, v_start = 0.0;
+  int n = 0;
+  for (int i = 1; i <= 400; ++i) {
+    ASSERT_TRUE(sim.Step().ok()) << "step " << i;
+    if (i == 100) v_start = sim.winch_speed();
+    if (i <= 100) continue;
+    max_tension = std::max(max_tension, sim.drum_tension());
+    sum += sim.drum_tension();
+    ++n;
+  }
+  const double mean = sum / n;
+  std::printf("slipping: L %.3f m, V %.3f m/s (from %.3f), drum tension mean %.1f N, up to %.1f N\n",
+              sim.cable_length(), sim.winch_speed(), v_start, mean, max_tension);
+  EXPECT_GT(sim.cable_length(), 105.0);  // paid out under the load
+  EXPECT_GT(sim.winch_speed(), v_start);  // the load accelerates: a brake, not a damper
+  EXPECT_TRUE(sim.state().winch.slipping);
+  // while slipping the brake holds its tension on average; the explicit slip law (winch.h)
+  // rings about it by under 10 % with a period of about 10 steps (the drum element's stretch
+  // against the one-step lag of the tension it reads)
+  constexpr double kSlipMeanRelTol = 1e-2;
+  constexpr double kSlipPeakRelTol = 0.1;
+  EXPECT_NEAR(mean, 2000.0, 2000.0 * kSlipMeanRelTol);
+  EXPECT_LE(max_tension, 2000.0 * (1.0 + kSlipPeakRelTol));
+  // a brake above the load holds: no payout
+  core::Model held = HangingWeight();
+  held.cable.winch->brake_tension = 3000.0;
+  core::Simulation hold(held);
+  for (int i = 0; i < 400; ++i) ASSERT_TRUE(hold.Step().ok());
+  EXPECT_EQ(hold.cable_length(), 100.0);
+}
+
+}  // namespace
+}  // namespace towsim::reference
