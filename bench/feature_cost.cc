@@ -50,11 +50,8 @@ void CalmBottomless(towsim::core::Model* m) {
 void WavesPerIteration(towsim::core::Model* m) { m->integrator.waves_per_iteration = true; }
 // a winch at the steady tow's driven top (docs/winch.md): 150 m to 300 m, 1 m/s, 0.2 m/s^2
 void Winch(towsim::core::Model* m) {
-  towsim::core::WinchParams w;
-  w.min_length = 150.0;
-  w.max_length = 300.0;
-  w.max_speed = 1.0;
-  w.max_acceleration = 0.2;
+  // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
+  towsim::core::WinchParams w{150.0, 300.0, 1.0, 0.2};
   m->cable.winch = w;
 }
 // and paying out at 1 m/s from t = 0 (20 s: two element splits)

@@ -1,9 +1,10 @@
 // Accuracy against run time (issue 7): sweeps the time step, the number of elements, the
 // integrator (generalized-alpha with several rho_inf, trapezoidal) and, with vehicles, the
-// coupling scheme (staggered, strong) on the steady-tow, Case 1 and Case 3 (waves) scenes, and
-// writes one CSV row per run.
+// coupling scheme (staggered, strong) on the steady-tow, Case 1, Case 3 (waves) and winch-payout
+// scenes, and writes one CSV row per run.
 //
-//   work_precision [--out FILE.csv] [--scenes steady_tow,case1_forward,case3_waves] [--quick]
+//   work_precision [--out FILE.csv] [--scenes steady_tow,case1_forward,case3_waves,winch_payout]
+//                  [--quick]
 //   work_precision --targets      the shipped scenes at their own settings: RTF, and the
 //                                 towfish-track error against a run 4x finer in time and space
 //
@@ -356,9 +357,13 @@ int Targets() {
 
 int main(int argc, char** argv) {
   std::string out = std::string(TOWSIM_SOURCE_DIR) + "/bench/results/work_precision.csv";
-  // case3_waves: Case 1's system in the JONSWAP sea (docs/environment.md), its first 100 s
-  std::vector<SceneSweep> scenes = {
-      {"steady_tow", 300.0, false}, {"case1_forward", 100.0, true}, {"case3_waves", 100.0, true}};
+  // case3_waves: Case 1's system in the JONSWAP sea (docs/environment.md), its first 100 s;
+  // winch_payout: the winch paying out 150 -> 250 m under way, holding and reeling in
+  // (docs/winch.md), 330 s
+  std::vector<SceneSweep> scenes = {{"steady_tow", 300.0, false},
+                                    {"case1_forward", 100.0, true},
+                                    {"case3_waves", 100.0, true},
+                                    {"winch_payout", 330.0, false}};
   bool quick = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -375,7 +380,7 @@ int main(int argc, char** argv) {
       if (chosen.empty()) {
         std::fprintf(stderr,
                      "work_precision: error: --scenes = %s: must name steady_tow, "
-                     "case1_forward and/or case3_waves\n",
+                     "case1_forward, case3_waves and/or winch_payout\n",
                      list.c_str());
         return 2;
       }

@@ -47,11 +47,8 @@ core::Model HangingWeight() {
   b.volume = 0.2;
   b.position = Vec3(0, 0, 100);
   m.bodies.push_back(b);
-  core::WinchParams w;
-  w.min_length = 50;
-  w.max_length = 150;
-  w.max_speed = 0.1;
-  w.max_acceleration = 0.0025;
+  // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
+  core::WinchParams w{50, 150, 0.1, 0.0025};
   m.cable.winch = w;
   return m;
 }

@@ -196,11 +196,8 @@ core::Model VehicleModel() {
 TEST(CsvWriterTest, WinchSceneWritesTheCableLength) {
   TempDir tmp;
   core::Model model = TinyModel();
-  core::WinchParams w;
-  w.min_length = 5.0;
-  w.max_length = 20.0;
-  w.max_speed = 1.0;
-  w.max_acceleration = 10.0;
+  // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
+  core::WinchParams w{5.0, 20.0, 1.0, 10.0};
   model.cable.winch = w;
   core::Simulation sim(model);
   sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 1.0});

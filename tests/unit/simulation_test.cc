@@ -131,6 +131,24 @@ TEST(SimulationState, RoundTripWinchMovingAcrossASplit) {
   ExpectBitIdentical(straight, first);
 }
 
+// the drum on a towing vehicle (strong coupling): the same round trip across a split
+TEST(SimulationState, RoundTripWinchOnAVehicle) {
+  const Model model = test::SteadyTowWithWinch(SteadyTowWithVehicle(Coupling::kStrong));
+  const WinchCommand payout{WinchCommand::Mode::kSpeed, 5.0};
+  Simulation straight(model);
+  straight.SetWinchCommand(payout);
+  StepN(&straight, 20);
+  const int nodes_before = straight.num_nodes();
+  const State taken = straight.GetState();
+  StepN(&straight, kAfter);
+  ASSERT_GT(straight.num_nodes(), nodes_before);
+  Simulation fresh(model);
+  fresh.SetWinchCommand(payout);
+  fresh.SetState(taken);
+  StepN(&fresh, kAfter);
+  ExpectBitIdentical(straight, fresh);
+}
+
 std::string SetStateError(const Model& model, const State& s) {
   Simulation sim(model);
   try {

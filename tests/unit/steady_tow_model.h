@@ -59,11 +59,8 @@ inline core::Model SteadyTowWithVehicle(core::Coupling coupling) {
 // 5 m/s and 5 m/s^2), so that a few dozen steps pay out or reel in across an element split or
 // merge (docs/winch.md)
 inline core::Model SteadyTowWithWinch(core::Model m = SteadyTowModel()) {
-  core::WinchParams w;
-  w.min_length = 150;
-  w.max_length = 260;
-  w.max_speed = 5;
-  w.max_acceleration = 5;
+  // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
+  core::WinchParams w{150, 260, 5, 5};
   m.cable.winch = w;
   return m;
 }

@@ -70,7 +70,8 @@ TEST(SweepFile, BadKeyPathsAreReportedWithTheSweepFilesLine) {
   EXPECT_EQ(Error("scene: steady_tow.yaml\nparameters:\n  cable.lenght: [100, 200]\n"),
             "parameters.cable.lenght = [100, 200] (sweep.yaml:3): cable: unknown key; did you "
             "mean length? (allowed: length, elements, diameter, density, youngs_modulus, loads, "
-            "axial_damping, added_mass_coefficient, initial, initial_velocity, start, end, winch)");
+            "axial_damping, added_mass_coefficient, initial, initial_velocity, start, end, "
+            "winch)");
   EXPECT_NE(Error("scene: steady_tow.yaml\nparameters:\n  bodies.fish.mass: [1, 2]\n")
                 .find("parameters.bodies.fish.mass = [1, 2] (sweep.yaml:3): no body named fish "
                       "in the scene (bodies: towfish)"),

@@ -21,11 +21,8 @@ constexpr double kLimitTol = 1e-12;
 constexpr double kArrivalSlack = 2.0 * kH;
 
 WinchParams Params() {
-  WinchParams p;
-  p.min_length = 50.0;
-  p.max_length = 250.0;
-  p.max_speed = 1.0;
-  p.max_acceleration = 0.2;
+  // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
+  WinchParams p{50.0, 250.0, 1.0, 0.2};
   return p;
 }
 
