@@ -1,5 +1,6 @@
 #include "core/integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -89,6 +90,23 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   const double tol = settings.tolerance * q_scale_;
   NewtonPoint& kept = st.newton;  // the kept matrix in jac_ (State::newton)
   bool refresh = full || !kept.valid || kept.h != h;
+  if (!refresh && system_.num_lambda() > 0) {
+    // the predictor onto the joints: Phi is linear in q and lambda, so one back-substitution
+    // with the kept matrix satisfies it, without a residual evaluation (the force rows of the
+    // right-hand side are zero: the residual changes by O(dq^2) only)
+    system_.Constraints(st.q, st.lambda, t1, st.supports, &phi_);
+    r_.setZero();
+    system_.ToBlocks(r_, phi_, &rhs_);
+    rhs_ = -rhs_;
+    if (jac_.SolveFactored(&rhs_)) {
+      system_.FromBlocks(rhs_, &dq_, &dl_);
+      st.q += dq_;
+      st.lambda += dl_;
+      a_hat += dq_ / (p.beta * h2);
+      st.v = v_star + (p.gamma * h) * a_hat;
+      st.a = a_const + a_fac * a_hat;
+    }
+  }
   // the waves at t_{n+1} at the predicted positions, once per step (see the header)
   const bool waves_each_iteration = waves_ && settings.waves_per_iteration;
   if (waves_ && (t1 != wave_time_ || full) && !waves_each_iteration) {
@@ -126,8 +144,11 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.v = st.v;
       kept.a = st.a;
       if (waves_) kept.wave_q = waves_each_iteration ? st.q : wave_q_;
+      for (int e = 0; e < 2; ++e) kept.support_compliance[e] = st.supports[e].compliance;
       kept.theta = 0.0;
-      kept.theta_age = kMaxThetaAge + 1;  // the new matrix's rate is not known yet
+      // its rate at the point it was formed: ~0 (quadratic convergence); the test below takes
+      // it at least kMaxContraction, and later steps measure it
+      kept.theta_age = 0;
       ++tangent_refreshes_;
     } else {
       at.reused = true;
@@ -156,11 +177,14 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     dq_prev = dq_norm;
     // a fresh matrix: classic Newton test (quadratic convergence); a kept one: its rate must
     // be known (measured in this step, or at most kMaxThetaAge steps ago for the first
-    // iteration) to bound the error left
+    // iteration) to bound the error left after the increment, theta / (1 - theta) |dq|, with
+    // theta at least kMaxContraction (a rate measured on large increments understates the
+    // one the next, smaller increments show; the refresh rule admits rates up to it)
     const bool rate_known = refresh || measured || kept.theta_age <= kMaxThetaAge;
-    const double theta = kept.theta;
+    const double theta = std::max(kept.theta, kMaxContraction);
     const bool converged =
-        dq_norm <= tol && rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
+        refresh ? dq_norm <= tol
+                : rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
     if (converged) {
       at.ok = true;
       st.a_alpha = a_hat;
@@ -218,8 +242,16 @@ bool Integrator::RestoreNewtonMatrix(const State& s) {
   const double a_fac = (1.0 - ap_.alpha_m) / (1.0 - ap_.alpha_f);
   const JacobianCoefficients cf{1.0, ap_.gamma / (ap_.beta * h), a_fac / (ap_.beta * h2)};
   if (waves_) system_.SampleWaves(kept.wave_q, kept.t, &wave_samples_);
+  // the supports' compliances it was formed with, over a step ending at kept.t (the matrix
+  // depends on nothing else of the supports)
+  SupportMotion supports[2] = {s.supports[0], s.supports[1]};
+  for (int e = 0; e < 2; ++e) {
+    supports[e].compliance = kept.support_compliance[e];
+    supports[e].t0 = kept.t - h;
+    supports[e].t1 = kept.t;
+  }
   system_.Evaluate(kept.q, kept.v, kept.a, s.lambda, kept.t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr, s.supports);
+                   waves_ ? &wave_samples_ : nullptr, supports);
   return jac_.Factor();
 }
 
