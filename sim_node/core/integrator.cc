@@ -90,23 +90,6 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   const double tol = settings.tolerance * q_scale_;
   NewtonPoint& kept = st.newton;  // the kept matrix in jac_ (State::newton)
   bool refresh = full || !kept.valid || kept.h != h;
-  if (!refresh && system_.num_lambda() > 0) {
-    // the predictor onto the joints: Phi is linear in q and lambda, so one back-substitution
-    // with the kept matrix satisfies it, without a residual evaluation (the force rows of the
-    // right-hand side are zero: the residual changes by O(dq^2) only)
-    system_.Constraints(st.q, st.lambda, t1, st.supports, &phi_);
-    r_.setZero();
-    system_.ToBlocks(r_, phi_, &rhs_);
-    rhs_ = -rhs_;
-    if (jac_.SolveFactored(&rhs_)) {
-      system_.FromBlocks(rhs_, &dq_, &dl_);
-      st.q += dq_;
-      st.lambda += dl_;
-      a_hat += dq_ / (p.beta * h2);
-      st.v = v_star + (p.gamma * h) * a_hat;
-      st.a = a_const + a_fac * a_hat;
-    }
-  }
   // the waves at t_{n+1} at the predicted positions, once per step (see the header)
   const bool waves_each_iteration = waves_ && settings.waves_per_iteration;
   if (waves_ && (t1 != wave_time_ || full) && !waves_each_iteration) {

@@ -34,14 +34,12 @@
 // at the current iterate. A step that fails with a kept matrix is retried with full Newton (a
 // fresh matrix at every iteration) before it is halved.
 //
-// Predictor: a^_{n+1} = a^_n, then projected onto the joints by one back-substitution with the
-// kept matrix (Phi is linear in q and lambda: rhs [0; -Phi]): the first residual evaluation
-// meets the supports where the vehicles put them. Extrapolating a^ (a^_n + h (a^_n -
-// a^_{n-1}) / h_prev, also filtered or over two steps) is 2-50x closer in the smooth phases
-// of Case 1 when the steps before are converged to 1e-11, but with the shipped tolerance it
-// amplifies the accepted iterates' errors (the high-frequency part, which generalized-alpha
-// reverses and damps by rho_inf every step, while the predictor extrapolates it) and costs
-// more evaluations (docs/benchmarks.md).
+// Predictor: a^_{n+1} = a^_n. Extrapolating a^ (a^_n + h (a^_n - a^_{n-1}) / h_prev, also
+// filtered or over two steps) is 2-50x closer in the smooth phases of Case 1 when the steps
+// before are converged to 1e-11, but at the shipped tolerance it amplifies the accepted
+// iterates' errors (their high-frequency part, which generalized-alpha reverses and damps by
+// rho_inf every step while the predictor extrapolates it) and costs more evaluations; so does
+// projecting the predictor onto the joints with the kept matrix (docs/benchmarks.md).
 //
 // Waves (environment_field.h): their kinematics are sampled once per (sub)step at t_{n+1} at
 // the predictor's node positions and held through the Newton iterations (the Newton matrix is

@@ -185,6 +185,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
                       BlockTridiagonal* jac, const WaveSamples* waves,
                       const SupportMotion* supports) const {
   residual->setZero(num_q_);
+  phi->setZero(num_lambda_);
   if (jac) jac->SetZero();
   const Mat12& mass = element_.mass();
 
@@ -275,19 +276,32 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   }
 
   // joints (Eq. 24): Phi = r_end - p_support; R += Phi_q^T lambda
-  Constraints(q, lambda, t, supports, phi);
   for (int end = 0; end < 2; ++end) {
     const int nl = lambda_count_[end];
     if (nl == 0) continue;
     const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
     const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
     const int lo = end_lambda(end);
+    phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t, supports);
+    // a support that answers the force (state.h, vehicle_coupling.h):
+    //   Phi -= f C (lambda - lambda1), f the fraction of its motion at t
+    double f_c = 0.0;
+    if (ce.kind == EndKind::kVehicle && supports && !supports[end].compliance.isZero()) {
+      const SupportMotion& sm = supports[end];
+      f_c = sm.t1 <= sm.t0 ? 1.0 : (t - sm.t0) / (sm.t1 - sm.t0);
+      phi->segment<3>(lo) -= f_c * (sm.compliance * (lambda.segment<3>(lo) - sm.lambda1));
+    }
     residual->segment<3>(nd) += lambda.segment<3>(lo);
     const bool body = ce.kind == EndKind::kBody;
     if (body) residual->segment<3>(body_dof(ce.body)) -= lambda.segment<3>(lo);
-    if (ce.clamped)
-      for (int i = 0; i < 2; ++i)
-        residual->segment<3>(nd + 3) += lambda(lo + 3 + i) * clamp_dirs_[end][i];
+    if (ce.clamped) {
+      // direction held: n_k . r' = 0 for the two normals of the slope
+      for (int i = 0; i < 2; ++i) {
+        const Vec3& n = clamp_dirs_[end][i];
+        (*phi)(lo + 3 + i) = n.dot(q.segment<3>(nd + 3));
+        residual->segment<3>(nd + 3) += lambda(lo + 3 + i) * n;
+      }
+    }
     if (!jac) continue;
     for (int i = 0; i < 3; ++i) {
       AddQL(jac, nd, lo + i, Vec3::Unit(i));
@@ -295,42 +309,11 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     }
     if (ce.clamped)
       for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
-    const double f_c = ComplianceFraction(end, t, supports);
     if (f_c != 0.0) {
       // dPhi/dlambda = -f C
       const BlockIndex bl = lambda_index_[lo];
       jac->diag(bl.block).block<3, 3>(bl.local, bl.local) -= f_c * supports[end].compliance;
     }
-  }
-}
-
-double System::ComplianceFraction(int end, double t, const SupportMotion* supports) const {
-  const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
-  if (ce.kind != EndKind::kVehicle || !supports || supports[end].compliance.isZero()) return 0.0;
-  const SupportMotion& sm = supports[end];
-  return sm.t1 <= sm.t0 ? 1.0 : (t - sm.t0) / (sm.t1 - sm.t0);
-}
-
-void System::Constraints(const VectorXd& q, const VectorXd& lambda, double t,
-                         const SupportMotion* supports, VectorXd* phi) const {
-  phi->setZero(num_lambda_);
-  for (int end = 0; end < 2; ++end) {
-    if (lambda_count_[end] == 0) continue;
-    const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
-    const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
-    const int lo = end_lambda(end);
-    phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t, supports);
-    // a support that answers the force (state.h): Phi -= f C (lambda - lambda1), f the
-    // fraction of its motion at t
-    const double f_c = ComplianceFraction(end, t, supports);
-    if (f_c != 0.0) {
-      const SupportMotion& sm = supports[end];
-      phi->segment<3>(lo) -= f_c * (sm.compliance * (lambda.segment<3>(lo) - sm.lambda1));
-    }
-    // a clamped end's direction held: n_k . r' = 0 for the two normals of the slope
-    if (ce.clamped)
-      for (int i = 0; i < 2; ++i)
-        (*phi)(lo + 3 + i) = clamp_dirs_[end][i].dot(q.segment<3>(nd + 3));
   }
 }
 

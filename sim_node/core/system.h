@@ -10,6 +10,10 @@
 // clamped end, its direction. With Phi = r_end - p_support, lambda is the force the cable
 // exerts on its support (on a body: the interaction force of Eq. 29-30).
 //
+// A vehicle support that answers the joint force (SupportMotion::compliance, the strong
+// coupling of vehicle_coupling.h) adds -C (lambda - lambda1) to its Phi and -C to the
+// multiplier block of the Newton matrix.
+//
 // Block ordering for the linear solve: [start body | start multipliers | node 0], node 1, ...,
 // node N-1, [node N | end multipliers | end body], then one block per unattached body.
 
@@ -68,11 +72,6 @@ class System {
                 BlockTridiagonal* jac, const WaveSamples* waves = nullptr,
                 const SupportMotion* supports = nullptr) const;
 
-  // Phi alone (the constraint rows of Evaluate): linear in q and lambda, so a back-substitution
-  // with a Newton matrix satisfies it exactly
-  void Constraints(const Eigen::VectorXd& q, const Eigen::VectorXd& lambda, double t,
-                   const SupportMotion* supports, Eigen::VectorXd* phi) const;
-
   // the sea every load reads (environment_field.h)
   const EnvironmentField& sea() const { return sea_; }
   // sizes *out for this system (allocates: call once, outside Step)
@@ -112,8 +111,6 @@ class System {
   // adds a 3 x 3 block at global q indices (i, j) into the Newton matrix
   void Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m) const;
   void AddQL(BlockTridiagonal* jac, int qi, int li, const Eigen::Vector3d& col) const;
-  // f in Phi = ... - f C (lambda - lambda1) of a compliant vehicle support at t (state.h), else 0
-  double ComplianceFraction(int end, double t, const SupportMotion* supports) const;
 
   Model model_;
   EnvironmentField sea_;
