@@ -181,11 +181,14 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     // little); a pass that needed substeps is no such guess
     const bool warm = k > 1 && previous_pass_substeps_ == 1;
     if (warm) previous_pass_ = *state;  // same sizes: copies in place
-    // every pass starts from the step's start, but the integrator's kept Newton matrix is the
-    // one the previous pass left (State::newton; swaps move buffers, no allocation)
-    std::swap(newton_, state->newton);
-    *state = start_;
-    if (k > 1) std::swap(newton_, state->newton);
+    // every pass starts from the step's start (the first: *state is start_), but the
+    // integrator's kept Newton matrix is the one the previous pass left (State::newton; swaps
+    // move buffers, no allocation)
+    if (k > 1) {
+      std::swap(newton_, state->newton);
+      *state = start_;
+      std::swap(newton_, state->newton);
+    }
     // the cable with the attachment points as driven supports that answer the joint force
     for (int e = 0; e < 2; ++e) {
       const int v = vehicle_end_[e];
