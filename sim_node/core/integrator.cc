@@ -1,5 +1,6 @@
 #include "core/integrator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -128,8 +129,11 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.drum_length = st.winch.drum.LengthAt(t1);
       kept.drum_rate = st.winch.drum.RateAt(t1);
       if (waves_) kept.wave_q = waves_each_iteration ? st.q : wave_q_;
+      for (int e = 0; e < 2; ++e) kept.support_compliance[e] = st.supports[e].compliance;
       kept.theta = 0.0;
-      kept.theta_age = kMaxThetaAge + 1;  // the new matrix's rate is not known yet
+      // its rate at the point it was formed: ~0 (quadratic convergence); the test below takes
+      // it at least kMaxContraction, and later steps measure it
+      kept.theta_age = 0;
       ++tangent_refreshes_;
     } else {
       at.reused = true;
@@ -158,11 +162,14 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     dq_prev = dq_norm;
     // a fresh matrix: classic Newton test (quadratic convergence); a kept one: its rate must
     // be known (measured in this step, or at most kMaxThetaAge steps ago for the first
-    // iteration) to bound the error left
+    // iteration) to bound the error left after the increment, theta / (1 - theta) |dq|, with
+    // theta at least kMaxContraction (a rate measured on large increments understates the
+    // one the next, smaller increments show; the refresh rule admits rates up to it)
     const bool rate_known = refresh || measured || kept.theta_age <= kMaxThetaAge;
-    const double theta = kept.theta;
+    const double theta = std::max(kept.theta, kMaxContraction);
     const bool converged =
-        dq_norm <= tol && rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
+        refresh ? dq_norm <= tol
+                : rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
     if (converged) {
       at.ok = true;
       st.a_alpha = a_hat;
@@ -220,13 +227,21 @@ bool Integrator::RestoreNewtonMatrix(const State& s) {
   const double a_fac = (1.0 - ap_.alpha_m) / (1.0 - ap_.alpha_f);
   const JacobianCoefficients cf{1.0, ap_.gamma / (ap_.beta * h), a_fac / (ap_.beta * h2)};
   if (waves_) system_.SampleWaves(kept.wave_q, kept.t, &wave_samples_);
-  // the drum element as it was then (a constant motion at its length and rate)
+  // the supports' compliances it was formed with, over a step ending at kept.t (the matrix
+  // depends on nothing else of the supports), and the drum element as it was then (a constant
+  // motion at its length and rate)
+  SupportMotion supports[2] = {s.supports[0], s.supports[1]};
+  for (int e = 0; e < 2; ++e) {
+    supports[e].compliance = kept.support_compliance[e];
+    supports[e].t0 = kept.t - h;
+    supports[e].t1 = kept.t;
+  }
   DrumMotion drum;
   drum.t0 = kept.t;
   drum.length = kept.drum_length;
   drum.rate = kept.drum_rate;
   system_.Evaluate(kept.q, kept.v, kept.a, s.lambda, kept.t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr, s.supports, &drum);
+                   waves_ ? &wave_samples_ : nullptr, supports, &drum);
   return jac_.Factor();
 }
 

@@ -35,7 +35,9 @@ class StopRequestedError : public std::runtime_error {
 struct StepStatus {
   enum Code { kOk, kNotConverged, kNonFinite };
   Code code = kOk;
-  int iterations = 0;     // Newton iterations summed over substeps
+  // Newton iterations summed over substeps, retries and vehicle-coupling passes: each is one
+  // residual evaluation (System::Evaluate, with the Newton matrix when it is refreshed)
+  int iterations = 0;
   int substeps = 1;       // 1 when the full step converged
   double residual = 0.0;  // final force residual, inf-norm [N]
   std::string message;    // diagnosis when !ok(): where and when

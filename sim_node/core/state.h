@@ -26,10 +26,15 @@
 
 namespace towsim::core {
 
-// a vehicle attachment point moving linearly from p0 at t0 to p1 at t1 (t1 <= t0: held at p1)
+// a vehicle attachment point moving linearly from p0 at t0 to p1 at t1 (t1 <= t0: held at p1).
+// With the strong coupling (vehicle_coupling.h) the end point answers the joint force: p1 is
+// where the vehicle reaches under the force lambda1, and a force lambda moves it to
+//   p1(lambda) = p1 + compliance (lambda - lambda1)   (compliance = (h^2 / 4) G, 3 x 3 [m/N])
 struct SupportMotion {
   Vec3 p0 = Vec3::Zero(), p1 = Vec3::Zero();
   double t0 = 0.0, t1 = 0.0;
+  Eigen::Matrix3d compliance = Eigen::Matrix3d::Zero();
+  Vec3 lambda1 = Vec3::Zero();
 };
 
 // what the vehicle coupling carries from one step to the next (vehicle_coupling.h)
@@ -52,6 +57,8 @@ struct NewtonPoint {
   // the waves it was evaluated with: sampled at wave_q at t (only with waves)
   Eigen::VectorXd wave_q;
   double drum_length = 0.0, drum_rate = 0.0;  // element 0's l_0 and dl_0/dt then (winch)
+  // the support compliances it holds in its multiplier blocks (SupportMotion::compliance)
+  Eigen::Matrix3d support_compliance[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   double theta = 0.0;  // its measured contraction rate
   int theta_age = 0;   // steps since theta was measured
 };

@@ -358,6 +358,14 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
     const int lo = end_lambda(end);
     phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t, supports);
+    // a support that answers the force (state.h, vehicle_coupling.h):
+    //   Phi -= f C (lambda - lambda1), f the fraction of its motion at t
+    double f_c = 0.0;
+    if (ce.kind == EndKind::kVehicle && supports && !supports[end].compliance.isZero()) {
+      const SupportMotion& sm = supports[end];
+      f_c = sm.t1 <= sm.t0 ? 1.0 : (t - sm.t0) / (sm.t1 - sm.t0);
+      phi->segment<3>(lo) -= f_c * (sm.compliance * (lambda.segment<3>(lo) - sm.lambda1));
+    }
     residual->segment<3>(nd) += lambda.segment<3>(lo);
     const bool body = ce.kind == EndKind::kBody;
     if (body) residual->segment<3>(body_dof(ce.body)) -= lambda.segment<3>(lo);
@@ -376,6 +384,11 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     }
     if (ce.clamped)
       for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
+    if (f_c != 0.0) {
+      // dPhi/dlambda = -f C
+      const BlockIndex bl = lambda_index_[lo];
+      jac->diag(bl.block).block<3, 3>(bl.local, bl.local) -= f_c * supports[end].compliance;
+    }
   }
 }
 

@@ -10,6 +10,10 @@
 // clamped end, its direction. With Phi = r_end - p_support, lambda is the force the cable
 // exerts on its support (on a body: the interaction force of Eq. 29-30).
 //
+// A vehicle support that answers the joint force (SupportMotion::compliance, the strong
+// coupling of vehicle_coupling.h) adds -C (lambda - lambda1) to its Phi and -C to the
+// multiplier block of the Newton matrix.
+//
 // Block ordering for the linear solve: [start body | start multipliers | node 0], node 1, ...,
 // node N-1, [node N | end multipliers | end body], then one block per unattached body.
 //

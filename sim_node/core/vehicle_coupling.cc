@@ -27,6 +27,8 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
         (Eigen::Matrix3d() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0)
             .finished();
     const Eigen::Matrix3d g = j * m.partialPivLu().solve(j.transpose());
+    g_B_[e] = 0.5 * (g + g.transpose());
+    m_inv_jt_[e] = m.partialPivLu().solve(j.transpose());
     compliance_[e] = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(0.5 * (g + g.transpose()),
                                                                     Eigen::EigenvaluesOnly)
                          .eigenvalues()
@@ -38,7 +40,6 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
   f0_.resize(nv);
   f1_.resize(nv);
   residual_.resize(nv);
-  residual_prev_.resize(nv);
   flow0_.resize(nv);
   flow1_.resize(nv);
 }
@@ -94,6 +95,22 @@ StepStatus VehicleCoupling::Accept(const State& start, double h, State* state, S
   return *status;
 }
 
+void VehicleCoupling::CorrectVehicle(int end, const Vec3& r_W, double h, VehicleState* vs) const {
+  // the mean force changes by r / 2 over the step: d nu = (h / 2) M^-1 J^T R_WB^T r, the
+  // displacement and rotation (body frame) (h / 2) d nu, so that the attachment point moves by
+  // (h^2 / 4) R_WB G R_WB^T r = C r
+  const Mat3 r_wb = vs->q_WB.toRotationMatrix();
+  const Vec6 dnu = (0.5 * h) * (m_inv_jt_[end] * (r_wb.transpose() * r_W));
+  const Vec6 dx = (0.5 * h) * dnu;
+  vs->nu += dnu;
+  vs->p_W += r_wb * dx.head<3>();
+  const double angle = dx.tail<3>().norm();
+  if (angle > 0.0) {
+    const Eigen::Quaterniond dq(Eigen::AngleAxisd(angle, dx.tail<3>() / angle));
+    vs->q_WB = (vs->q_WB * dq).normalized();
+  }
+}
+
 StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>& commands,
                                  double h) {
   const Model& model = system_->model();
@@ -108,7 +125,6 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   std::vector<Vec3>& f0 = f0_;
   std::vector<Vec3>& f1 = f1_;
   std::vector<Vec3>& residual = residual_;
-  std::vector<Vec3>& residual_prev = residual_prev_;
   // predictor of lambda_{n+1}: linear extrapolation of the last two steps (strong scheme)
   const CouplingHistory& history = start_.coupling;
   const bool predict = strong && history.have_previous && history.h_previous > 0.0;
@@ -130,21 +146,23 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     const Vec3 p1 = vs.p_W + h * (vs.q_WB * Vec3(vs.nu.head<3>()));
     flow1_[v] = SampleVehicleFlow(vp, sea, p1, vs.q_WB, t0 + h);
   }
-  // the largest point compliance of a vehicle end: the force tolerance of the residual test
-  double compliance = 0.0;
-  for (int e = 0; e < 2; ++e) compliance = std::max(compliance, compliance_[e]);
-  Vec3 p_end_prev[2];
-  double omega = 0.5;  // Aitken relaxation factor, first value
-  StepStatus status;
-  status.iterations = 0;
-  for (int k = 1; k <= max_iterations; ++k) {
-    last_iterations_ = k;
-    // vehicles over [t_n, t_n + h] under the joint force (Eq. 29-30)
-    std::vector<VehicleState>& vehicles = vehicles_;
+  // strong: the attachment point's response to the joint force over the step, (h^2 / 4) G in
+  // the world frame at the attitude of t_n (see the header)
+  Mat3 point_compliance[2] = {Mat3::Zero(), Mat3::Zero()};
+  for (int e = 0; e < 2; ++e) {
+    const int v = vehicle_end_[e];
+    // (both ends on one vehicle: their forces are not told apart, no compliance)
+    if (!strong || v < 0 || vehicle_end_[0] == vehicle_end_[1]) continue;
+    const Mat3 r_wb = start_.vehicles[v].q_WB.toRotationMatrix();
+    point_compliance[e] = (0.25 * h * h) * (r_wb * g_B_[e] * r_wb.transpose());
+  }
+  // vehicles over [t_n, t_n + h] under the joint force (Eq. 29-30); strong: the mean of
+  // lambda_n and the guess of lambda_{n+1}, constant over the step (see the header)
+  std::vector<VehicleState>& vehicles = vehicles_;
+  auto advance_vehicles = [&] {
     vehicles = start_.vehicles;  // same size: copies in place
     for (int v = 0; v < nv; ++v) {
       PointLoad load;
-      // strong: the mean of lambda_n and lambda_{n+1}, constant over the step (see the header)
       load.force_W0 = strong ? 0.5 * (f0[v] + f1[v]) : f0[v];
       load.force_W1 = load.force_W0;
       for (int e = 0; e < 2; ++e)
@@ -153,25 +171,33 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       AdvanceVehicle(model.vehicles[v].params, model.environment, flow0_[v], flow1_[v], commands[v],
                      load, h, &vehicles[v], &sea);
     }
+  };
+  advance_vehicles();
+  StepStatus status;
+  status.iterations = 0;
+  for (int k = 1; k <= max_iterations; ++k) {
+    last_iterations_ = k;
     // later passes start the cable's Newton from the previous pass (its supports moved a
     // little); a pass that needed substeps is no such guess
     const bool warm = k > 1 && previous_pass_substeps_ == 1;
     if (warm) previous_pass_ = *state;  // same sizes: copies in place
-    // every pass starts from the step's start, but the integrator's kept Newton matrix is the
-    // one the previous pass left (State::newton; swaps move buffers, no allocation)
-    std::swap(newton_, state->newton);
-    *state = start_;
-    if (k > 1) std::swap(newton_, state->newton);
-    // the cable with the attachment points as driven supports
-    double moved = 0.0;
+    // every pass starts from the step's start (the first: *state is start_), but the
+    // integrator's kept Newton matrix is the one the previous pass left (State::newton; swaps
+    // move buffers, no allocation)
+    if (k > 1) {
+      std::swap(newton_, state->newton);
+      *state = start_;
+      std::swap(newton_, state->newton);
+    }
+    // the cable with the attachment points as driven supports that answer the joint force
     for (int e = 0; e < 2; ++e) {
       const int v = vehicle_end_[e];
       if (v < 0) continue;
       const Vec3 p0 = AttachmentPoint(start_.vehicles[v], e);
-      const Vec3 p1 = AttachmentPoint(vehicles[v], e);
-      if (k > 1) moved = std::max(moved, (p1 - p_end_prev[e]).lpNorm<Eigen::Infinity>());
-      p_end_prev[e] = p1;
-      state->supports[e] = {p0, p1, t0, t0 + h};
+      state->supports[e] = {p0,   AttachmentPoint(vehicles[v], e), t0, t0 + h, point_compliance[e],
+                            f1[v]};
+      // Newton starts from the predicted joint force
+      if (!point_compliance[e].isZero()) state->lambda.segment<3>(system_->end_lambda(e)) = f1[v];
     }
     const StepStatus cable = integrator_->Step(state, h, warm ? &previous_pass_ : nullptr);
     previous_pass_substeps_ = cable.substeps;
@@ -196,24 +222,53 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       status.message = m.str();
       return status;
     }
-    if (!strong || (k > 1 && moved <= tol)) return Accept(start_, h, state, &status);
-    // Aitken-relaxed update of the joint force at t_{n+1}
-    double num = 0.0, den = 0.0, r_max = 0.0;
-    for (int v = 0; v < nv; ++v) {
-      residual[v] = JointForce(*state, v) - f1[v];
-      r_max = std::max(r_max, residual[v].norm());
-      if (k > 1) {
-        const Vec3 d = residual[v] - residual_prev[v];
-        num += residual_prev[v].dot(d);
-        den += d.squaredNorm();
-      }
+    if (!strong) return Accept(start_, h, state, &status);
+    // the joint force the cable found against the guess the vehicles saw
+    for (int v = 0; v < nv; ++v) residual[v] = JointForce(*state, v) - f1[v];
+    // converged when the force residual moves no attachment point by more than the
+    // tolerance: a compliant end by C r (the cable's end already sits at p1 + C r; its
+    // vehicle then takes its linear response to r, below), an end without compliance (both
+    // ends on one vehicle) by at most (h^2 / 2) g |r|
+    double moved = 0.0;
+    for (int e = 0; e < 2; ++e) {
+      const int v = vehicle_end_[e];
+      if (v < 0) continue;
+      moved = std::max(moved, point_compliance[e].isZero()
+                                  ? 0.5 * h * h * compliance_[e] * residual[v].norm()
+                                  : (point_compliance[e] * residual[v]).lpNorm<Eigen::Infinity>());
     }
-    // the residual can no longer move an attachment point by the tolerance: converged
-    if (0.5 * h * h * compliance * r_max <= tol) return Accept(start_, h, state, &status);
-    if (k > 1 && den > 0.0) omega = std::clamp(-omega * num / den, 0.05, 1.5);
-    for (int v = 0; v < nv; ++v) {
-      f1[v] += omega * residual[v];
-      residual_prev[v] = residual[v];
+    if (moved <= tol) {
+      for (int e = 0; e < 2; ++e) {
+        const int v = vehicle_end_[e];
+        if (v < 0 || point_compliance[e].isZero()) continue;
+        CorrectVehicle(e, residual[v], h, &state->vehicles[v]);
+        state->supports[e].p1 += point_compliance[e] * residual[v];
+        state->supports[e].lambda1 += residual[v];
+      }
+      return Accept(start_, h, state, &status);
+    }
+    // the vehicles again under the cable's force; the cable's end sits where the linearized
+    // response put them, p1 + C r: within the tolerance of where they went, converged
+    for (int v = 0; v < nv; ++v) f1[v] += residual[v];
+    advance_vehicles();
+    double mismatch = 0.0;
+    for (int e = 0; e < 2; ++e) {
+      const int v = vehicle_end_[e];
+      if (v < 0) continue;
+      const Vec3 p1 = AttachmentPoint(vehicles[v], e);
+      const SupportMotion& sm = state->supports[e];
+      mismatch = std::max(mismatch,
+                          (p1 - (sm.p1 + sm.compliance * residual[v])).lpNorm<Eigen::Infinity>());
+    }
+    if (mismatch <= tol) {
+      state->vehicles = vehicles;
+      for (int e = 0; e < 2; ++e) {
+        const int v = vehicle_end_[e];
+        if (v < 0) continue;
+        state->supports[e].p1 = AttachmentPoint(vehicles[v], e);
+        state->supports[e].lambda1 = f1[v];
+      }
+      return Accept(start_, h, state, &status);
     }
   }
   status.code = StepStatus::kNotConverged;

@@ -6,10 +6,8 @@
 // attachment points as driven supports, moving linearly from their positions at t_n to those
 // at t_{n+1}, which gives the new joint force.
 //   staggered (the paper's scheme): one pass, the vehicles see lambda_n (constant);
-//   strong: the pass is repeated with the vehicles seeing the mean (lambda_n + lambda_{n+1}) / 2
-//   of the joint force, constant over the step, with Aitken's dynamic relaxation (Kuettler &
-//   Wall 2008) on lambda_{n+1}, until the attachment points move by less than the Newton
-//   tolerance.
+//   strong: the vehicles see the mean (lambda_n + lambda_{n+1}) / 2 of the joint force,
+//   constant over the step, converged within the cable's Newton iteration (below).
 // Why the mean: the joint impulse is h (lambda_n + lambda_{n+1}) / 2 either way, but the
 // attachment point's displacement weights the two forces as the Newmark average-acceleration
 // rule (beta = 1/4: h^2/4 each), which is unconditionally stable against the stiff cable end
@@ -17,17 +15,25 @@
 // lambda_n, h^2/6 on lambda_{n+1}; beta = 1/6), stable only for omega h < sqrt(12) with
 // omega^2 = k / m_vehicle: with the shipped cable that failed above h = 0.13 s, with E x10 at
 // h = 0.05 s (tests/stress). Both are second order.
-// The iteration converges when (stiffness of the cable end + its inertia / h^2) h^2 / (2 m_veh)
-// < 1, i.e. for any step at which the cable's own integration is meaningful.
 //
-// Cost (issue 7): each pass is a full cable solve, so the strong scheme starts from a predictor,
-// lambda_{n+1} ~ lambda_n + (h / h_prev)(lambda_n - lambda_{n-1}) (linear extrapolation of the
-// last two steps), and stops as soon as the joint-force residual r = lambda_{n+1} - guess
-// cannot move an attachment point by more than the tolerance: a force error growing linearly
-// to r over the step moves the point by at most (h^2 / 2) g |r|, g the largest eigenvalue of
-// the point's compliance G = J M^-1 J^T (M = M_RB + M_A, J = [I, -S(at_B)]: point velocity
-// from nu). Most steps then need one pass, like the staggered scheme, and still satisfy the
-// strong scheme's tolerance.
+// The strong coupling inside the Newton iteration (docs/benchmarks.md): the vehicles advance
+// once under a predicted joint force f1 ~ lambda_n + (h / h_prev)(lambda_n - lambda_{n-1})
+// (linear extrapolation of the last two steps) and reach p1; a change of lambda_{n+1} by
+// d lambda moves the attachment point by C d lambda, with
+//   C = (h^2 / 4) R_WB G R_WB^T,  G = J M^-1 J^T   (3 x 3 [m/N])
+// the point's compliance (M = M_RB + M_A, J = [I, -S(at_B)]: point velocity from nu; h^2 / 4
+// because the vehicle sees half of the change over the whole step). The cable's constraint is
+// then Phi = r_end - p1 - C (lambda - f1), with -C in the multiplier block of the Newton
+// matrix (state.h, SupportMotion), so one Newton solve finds the cable and the joint force
+// consistent with the vehicles' linearized response. The residual r = lambda_{n+1} - f1
+// moves the point by C r: within the tolerance, the step is converged and each vehicle takes
+// its linear response to r (velocity (h / 2) M^-1 J^T R_WB^T r, displacement h / 2 of that:
+// exact but for the damping and rotation over the step, a few per cent of C r). Otherwise
+// the vehicles advance again under lambda_{n+1} and the step is converged when they reach
+// p1 + C r within the tolerance; else the cable's Newton runs again from the last pass
+// against the new supports (rare: in the first seconds of Case 1, where the joint force jumps
+// by 100 N in a step). Most steps need one vehicle advance and one cable solve, like the
+// staggered scheme.
 
 #include <vector>
 
@@ -60,11 +66,16 @@ class VehicleCoupling {
   // a converged step: keeps lambda_n (of `start`), h and the water at the step's end in
   // state->coupling for the next step
   StepStatus Accept(const State& start, double h, State* state, StepStatus* status);
+  // the linear response of vehicle state *vs (advanced over h) to a change r_W of the joint
+  // force at t_{n+1} at cable end `end` (see the header)
+  void CorrectVehicle(int end, const Vec3& r_W, double h, VehicleState* vs) const;
 
   System* system_;
   Integrator* integrator_;
   int vehicle_end_[2] = {-1, -1};      // vehicle index holding each cable end, or -1
   double compliance_[2] = {0.0, 0.0};  // largest eigenvalue of G at each vehicle end [1/kg]
+  Mat3 g_B_[2] = {Mat3::Zero(), Mat3::Zero()};  // G at each vehicle end, body frame [1/kg]
+  Eigen::Matrix<double, 6, 3> m_inv_jt_[2];     // M^-1 J^T at each vehicle end (body frame)
   int last_iterations_ = 0;
   // per-step work space, sized once: Step does not allocate
   State start_;
@@ -72,7 +83,7 @@ class VehicleCoupling {
   NewtonPoint newton_;   // the kept Newton matrix carried from pass to pass
   int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
-  std::vector<Vec3> f0_, f1_, residual_, residual_prev_;
+  std::vector<Vec3> f0_, f1_, residual_;
   // the water at each vehicle at the start and the end of the step (vehicle_model.h): sampled
   // once per step, the end at the pose predicted from the start (p + h R_WB nu_1); the end of
   // one step is the start of the next (State::coupling.flow_end)
