@@ -16,3 +16,4 @@ towsim_add_test(wave_field_test LABEL unit SOURCES wave_field_test.cc
 towsim_add_test(environment_allocation_test LABEL unit SOURCES environment_allocation_test.cc
                 LIBS towsim_core_nomalloc)
 towsim_add_test(seabed_contact_test LABEL unit SOURCES seabed_contact_test.cc LIBS towsim::core)
+towsim_add_test(packet_math_test LABEL unit SOURCES packet_math_test.cc LIBS towsim::core)
