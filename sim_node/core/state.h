@@ -37,6 +37,9 @@ struct CouplingHistory {
   bool have_previous = false;    // the predictor has a previous step
   double h_previous = 0.0;       // its length [s]
   std::vector<Vec3> f_previous;  // joint force on each vehicle at its start, world frame [N]
+  // the strong scheme's relaxation factor at the end of the previous step: the next step's
+  // first update starts from it (vehicle_coupling.h)
+  double relaxation = 0.5;
   // the water at each vehicle sampled at the end of the previous step (at the predicted pose)
   // and its time (< 0: none; the next step then samples its start itself)
   double flow_time = -1.0;

@@ -62,6 +62,7 @@ void VehicleCoupling::HoldSupports(State* state) {
   CouplingHistory& history = state->coupling;
   history.have_previous = false;
   history.h_previous = 0.0;
+  history.relaxation = kFirstRelaxation;
   history.f_previous.assign(nv, Vec3::Zero());
   history.flow_time = -1.0;
   history.flow_end.assign(nv, VehicleFlow());
@@ -89,6 +90,7 @@ StepStatus VehicleCoupling::Accept(const State& start, double h, State* state, S
     history.flow_end[v] = flow1_[v];
   }
   history.h_previous = h;
+  history.relaxation = relaxation_;
   history.have_previous = true;
   history.flow_time = start.t + h;
   return *status;
@@ -134,7 +136,10 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   double compliance = 0.0;
   for (int e = 0; e < 2; ++e) compliance = std::max(compliance, compliance_[e]);
   Vec3 p_end_prev[2];
-  double omega = 0.5;  // Aitken relaxation factor, first value
+  // Aitken relaxation factor: the first update takes the previous step's last factor (the
+  // coupling's contraction changes little from step to step), at most 1
+  double omega = std::min(history.relaxation, 1.0);
+  relaxation_ = history.relaxation;
   StepStatus status;
   status.iterations = 0;
   for (int k = 1; k <= max_iterations; ++k) {
@@ -209,8 +214,11 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       }
     }
     // the residual can no longer move an attachment point by the tolerance: converged
-    if (0.5 * h * h * compliance * r_max <= tol) return Accept(start_, h, state, &status);
-    if (k > 1 && den > 0.0) omega = std::clamp(-omega * num / den, 0.05, 1.5);
+    if (0.25 * h * h * compliance * r_max <= tol) return Accept(start_, h, state, &status);
+    if (k > 1 && den > 0.0) {
+      omega = std::clamp(-omega * num / den, 0.05, 1.5);
+      relaxation_ = omega;
+    }
     for (int v = 0; v < nv; ++v) {
       f1[v] += omega * residual[v];
       residual_prev[v] = residual[v];

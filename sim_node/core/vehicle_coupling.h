@@ -20,14 +20,21 @@
 // The iteration converges when (stiffness of the cable end + its inertia / h^2) h^2 / (2 m_veh)
 // < 1, i.e. for any step at which the cable's own integration is meaningful.
 //
-// Cost (issue 7): each pass is a full cable solve, so the strong scheme starts from a predictor,
-// lambda_{n+1} ~ lambda_n + (h / h_prev)(lambda_n - lambda_{n-1}) (linear extrapolation of the
-// last two steps), and stops as soon as the joint-force residual r = lambda_{n+1} - guess
-// cannot move an attachment point by more than the tolerance: a force error growing linearly
-// to r over the step moves the point by at most (h^2 / 2) g |r|, g the largest eigenvalue of
-// the point's compliance G = J M^-1 J^T (M = M_RB + M_A, J = [I, -S(at_B)]: point velocity
-// from nu). Most steps then need one pass, like the staggered scheme, and still satisfy the
-// strong scheme's tolerance.
+// Cost (docs/benchmarks.md): each pass is a full cable solve, so the strong scheme starts from
+// a predictor, lambda_{n+1} ~ lambda_n + (h / h_prev)(lambda_n - lambda_{n-1}) (linear
+// extrapolation of the last two steps), and stops as soon as the joint-force residual
+// r = lambda_{n+1} - guess cannot move an attachment point by more than the tolerance: the
+// vehicles see the mean (lambda_n + guess) / 2, constant over the step, so the error r in the
+// guess is an error r / 2 in that force and moves the point by at most (h^2 / 2) g |r| / 2
+// = (h^2 / 4) g |r|, g the largest eigenvalue of the point's compliance G = J M^-1 J^T
+// (M = M_RB + M_A, J = [I, -S(at_B)]: point velocity from nu). In a steady tow most steps then
+// need one pass, like the staggered scheme, and still satisfy the strong scheme's tolerance.
+// Aitken's factor adapts within a step from the second update on; the first update takes the
+// factor the previous step ended with (State::coupling.relaxation; kFirstRelaxation at the
+// start of a run): the coupling's contraction rate changes little from one step to the next,
+// and a fixed first factor of 1/2 would leave half of the first residual for the next pass
+// whatever the rate (in waves, where every step needs a second pass, it made one step in five
+// take a third).
 
 #include <vector>
 
@@ -66,6 +73,9 @@ class VehicleCoupling {
   int vehicle_end_[2] = {-1, -1};      // vehicle index holding each cable end, or -1
   double compliance_[2] = {0.0, 0.0};  // largest eigenvalue of G at each vehicle end [1/kg]
   int last_iterations_ = 0;
+  // the relaxation factor a run starts with (Kuettler & Wall 2008 start Aitken at 0.5 or less)
+  static constexpr double kFirstRelaxation = 0.5;
+  double relaxation_ = kFirstRelaxation;  // this step's last Aitken factor
   // per-step work space, sized once: Step does not allocate
   State start_;
   State previous_pass_;  // the cable's solution of the previous strong-coupling pass
