@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # run.sh — the main job, end to end over loopback DDS. Installs what is missing, builds, then
-#   1. the steady tow scene offline (300 s, under a second; the verified reference of the
-#      README) with a short summary;
+#   1. the steady tow scene offline (300 s, under a second; the verified reference of
+#      docs/verification.md) with a short summary;
 #   2. the paper's Case 2 U-turn (config/scenes/case2_uturn.yaml, 250 s) twice, side by side, as
 #      separate processes on DDS: sim_node (realtime at TOWSIM_RATE x, default 50, waiting for
 #      its controllers before the first step), the manoeuvre runner (thrust, 20 deg rudder from
 #      55 s until the heading reaches 170 deg) and the towfish depth controller, once holding
 #      the towfish's fins at zero (the paper's run) and once holding the towfish at 25 m;
 #   3. each run is recorded by the node to out/<run>.mcap and exported to CSV with
-#      towsim_export, the paper's figures are drawn into out/case2_uturn/figures/, and a
+#      towsim_export, the paper's figures and the 3D view of the turn (scripts/plot_uturn_3d.py)
+#      are drawn into out/case2_uturn/figures/, and a
 #      summary table is printed: steady speed, turning radii, towfish depth range, tensions, and
 #      the towfish depth excursion with and without the depth controller.
 # While the first U-turn runs, towsim_foxglove serves it live to Foxglove at
@@ -147,7 +148,8 @@ done
 out=out/case2_uturn
 if [[ -n "$plot_python" ]]; then
   "$plot_python" scripts/plot_paper.py "$out" "$out/figures" >/dev/null
-  echo "figures (Park & Kim Figs. 14-20): $out/figures/"
+  "$plot_python" scripts/plot_uturn_3d.py "$out" "$out/figures/uturn_3d.png" >/dev/null
+  echo "figures (Park & Kim Figs. 14-20, and the 3D view uturn_3d.png): $out/figures/"
 else
   echo "note: no python3 with matplotlib found; figures skipped" \
        "(apt-get install python3-matplotlib, then: /usr/bin/python3 scripts/plot_paper.py $out)"

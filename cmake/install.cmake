@@ -40,7 +40,7 @@ install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
 install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common towsim_dds_security
-                towsim_ros_graph towsim_testing
+                towsim_ros_graph towsim_dds_qos towsim_testing
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)

@@ -10,7 +10,8 @@
                                                               turn command on, without (REF) and
                                                               with (CTL) a depth controller
 
-Standard library only. DIR holds the CSV files of `sim_node --csv DIR` (README "Output files").
+Standard library only. DIR holds the CSV files of `sim_node --csv DIR` (docs/command_line.md,
+"Output files").
 The case is recognised from the data: Case 2 when the towing vehicle's heading changes by more
 than 90 deg. The towing body is tow_vehicle (else the first body), the towfish towfish (else
 the last). docs/paper_cases.md explains every number; the definitions are:

@@ -4,8 +4,8 @@
     python3 scripts/plot_paper.py DIR [OUTDIR] [--tow NAME] [--fish NAME] [--every S]
                                   [--prefix P] [--dpi N] [--case1 C1DIR]
 
-DIR holds the CSV files of `sim_node --csv DIR` (README "Output files"); the PNG files go to
-OUTDIR (default DIR), each name preceded by --prefix (e.g. case2_). Needs python3 and
+DIR holds the CSV files of `sim_node --csv DIR` (docs/command_line.md, "Output files"); the PNG
+files go to OUTDIR (default DIR), each name preceded by --prefix (e.g. case2_). Needs python3 and
 matplotlib (Debian: python3-matplotlib; run it with /usr/bin/python3 where the python3 on PATH
 lacks it); draws off-screen. The case is recognised from the data (Case 2: the towing vehicle
 turns by more than 90 deg; scripts/paper_cases.py, which also measures the numbers).

@@ -4,10 +4,10 @@
     python3 scripts/plot_waves.py DIR [OUTDIR] [--tow NAME] [--fish NAME] [--from S]
                                   [--segment S] [--dpi N]
 
-DIR holds the CSV files of `sim_node --csv DIR` (e.g. config/scenes/case3_waves.yaml; README
-"Output files"); the PNG files go to OUTDIR (default DIR). Needs python3 with matplotlib and
-numpy (Debian: python3-matplotlib python3-numpy; run it with /usr/bin/python3 where the python3
-on PATH lacks them); draws off-screen.
+DIR holds the CSV files of `sim_node --csv DIR` (e.g. config/scenes/case3_waves.yaml;
+docs/command_line.md "Output files"); the PNG files go to OUTDIR (default DIR). Needs python3
+with matplotlib and numpy (Debian: python3-matplotlib python3-numpy; run it with
+/usr/bin/python3 where the python3 on PATH lacks them); draws off-screen.
 
   heave.png           heave of both bodies over time: their height above their mean depth
                       after --from [m, up positive], with the wave elevation when the run has it

@@ -153,7 +153,7 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   }
   dds_delete_qos(participant_qos);
   dds_qos_t* state_qos = ReliableQos(16, false);
-  dds_qos_t* command_qos = ReliableQos(1, false);
+  dds_qos_t* command_qos = ReliableQos(kCommandDepth, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);
   try {
     const dds_entity_t scene_topic =

@@ -305,7 +305,7 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
     const dds_entity_t topic =
         dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimControl__desc,
                          (m.prefix + "sim_control").c_str(), nullptr, nullptr);
-    dds_qos_t* qos = controllers::ReliableQos(32, false);
+    dds_qos_t* qos = controllers::ReliableQos(controllers::kControlDepth, false);
     m.control_writer = dds_create_writer(m.participant, topic, qos, nullptr);
     dds_delete_qos(qos);
     if (m.control_writer < 0)

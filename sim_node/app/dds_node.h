@@ -16,8 +16,10 @@
 //
 // Commands: dds/command_arbiter.h (last writer wins, NaN rejected, out of range clamped,
 // failsafe after `command_timeout` of simulation time). Each step: the scene's script entries
-// due fire first, then the commands taken. SimControl: PAUSE, RESUME, STEP n (while paused),
-// RESET (a new core::Simulation from the same Model, a new run id), SET_RATE.
+// due fire first, then the commands taken. SimControl (app/run_control.h): PAUSE, RESUME,
+// STEP n (while paused), RESET (a new core::Simulation from the same Model, a new run id),
+// SET_RATE. The pieces (docs/app_layer.md): app/node_setup.h builds the node, app/run_control.h
+// decides, app/dds_publisher.h publishes the topics of app/node_topics.h.
 //
 // Exit: at the end of `duration`, or on SIGINT / SIGTERM (app/stop_signal.h) at the next step
 // boundary or within 20 ms of waiting (writers linger 10 ms each for unacknowledged samples;
@@ -34,20 +36,10 @@
 
 #include "app/command_line.h"
 #include "core/model.h"
+#include "core/publish_rates.h"
 #include "core/simulation.h"
 
 namespace towsim::app {
-
-// publishing rates per topic [Hz]; 0: every step; rounded to a whole number of steps
-struct PublishRates {
-  double clock = 0.0;
-  double odom = 0.0;
-  double cable_force = 0.0;
-  double status = 0.0;
-  double cable_state = -1.0;  // < 0: the scene's time.output_rate
-  double sensors = 0.0;       // altitude and pressure (docs/sensors.md)
-  double markers = -1.0;      // < 0: the scene's time.output_rate
-};
 
 struct DdsNodeOptions {
   Mode mode = Mode::kRealtime;  // kRealtime, kFast or kLockstep (kOffline: exit 2)
@@ -63,7 +55,7 @@ struct DdsNodeOptions {
   double lockstep_timeout = 1.0;  // lockstep: wall time to wait for a step's commands [s]
   // lockstep: the vehicles waited for; empty: every vehicle that takes commands
   std::vector<std::string> lockstep_bodies;
-  PublishRates rates;
+  core::PublishRates rates;  // the scene's publish.* (core/publish_rates.h)
   bool use_script = true;     // the scene's script drives the vehicles between commands
   bool start_paused = false;  // wait for SimControl RESUME / STEP before the first step
   // MCAP recording of every message the node publishes (sim_node --record); empty: none.

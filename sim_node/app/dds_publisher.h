@@ -1,9 +1,10 @@
 #pragma once
-// The DDS endpoints of the node (DESIGN §3): writers of odometry, cable force, cable state,
-// /clock, status, scene info, /tf, /tf_static and the markers (docs/frames.md); readers of the
+// The DDS endpoints of the node (DESIGN §3): the writers of the per-step state topics of
+// app/node_topics.h (odometry, cable force, altitude and pressure of each body; cable state,
+// /tf, markers, /clock), of status, scene info and /tf_static (docs/frames.md); readers of the
 // vehicles' commands and of sim_control. A message is built and serialized only when its
-// writer has a matched reader (or a recording takes it); scene info and /tf_static (transient
-// local) are always written.
+// writer has a matched reader (or a recording or a Foxglove client takes it); scene info and
+// /tf_static (transient local) are always written.
 
 #include <cstdint>
 #include <memory>
@@ -13,6 +14,8 @@
 #include "app/foxglove_commands.h"
 #include "app/foxglove_server.h"
 #include "app/mcap_recording.h"
+#include "app/node_topics.h"
+#include "core/publish_rates.h"
 #include "core/simulation.h"
 #include "dds/entities.h"
 #include "dds/frames.h"
@@ -25,17 +28,6 @@
 
 namespace towsim::app {
 
-// publishing strides of the per-step topics [steps], >= 1
-struct PublishStrides {
-  long clock = 1;
-  long odom = 1;
-  long cable_force = 1;
-  long cable_state = 1;
-  long status = 1;
-  long sensors = 1;
-  long markers = 1;  // /tf goes with odom (the same state as the odometry)
-};
-
 class NodeEndpoints {
  public:
   // topics for every body of `sim` and commands for `command_vehicles` (vehicle indices);
@@ -44,8 +36,8 @@ class NodeEndpoints {
                 const core::Simulation& sim, const std::vector<int>& command_vehicles);
 
   // the state of `sim` after `step` steps: the topics whose stride divides `step` (all of
-  // them when `all`); odometry, cable force and cable state before the clock
-  void PublishState(const core::Simulation& sim, uint64_t step, const PublishStrides& strides,
+  // them when `all`); those of each body, then those of the node, /clock last
+  void PublishState(const core::Simulation& sim, uint64_t step, const core::PublishStrides& strides,
                     bool all);
   void PublishStatus(const dds::StatusSample& sample);
   void PublishSceneInfo(const dds::SceneInfoSample& sample);
@@ -90,60 +82,39 @@ class NodeEndpoints {
   }
   const dds::RawType* TypeOf(const dds::Participant& participant,
                              const dds_topic_descriptor_t* descriptor);
-  // publishes `msg` on `writer` (if matched) and records it (if recording)
+  // publishes `msg` (the C struct of the writer's topic) on `writer` (if matched), records it
+  // (if recording) and serves it (to subscribed Foxglove clients)
   template <class T>
-  void Emit(dds::Writer<T>& writer, const Recorded& recorded, const T& msg);
+  void Emit(dds::Writer<T>& writer, const Recorded& recorded, const void* msg);
   // writes `msg` whether matched or not (transient local topics) and records it
   template <class T>
-  void EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const T& msg);
+  void EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const void* msg);
   Recorded AddRecorded(const dds::Participant& participant, const std::string& topic,
                        const dds_topic_descriptor_t* descriptor, bool transient_local);
 
-  struct BodyEndpoints {
-    dds::Topic odom_topic, force_topic;
-    dds::Writer<dds::OdometryMsg> odom;
-    dds::Writer<dds::WrenchStampedMsg> force;
-    std::unique_ptr<dds::OdometryMessage> odom_msg;
-    std::unique_ptr<dds::WrenchStampedMessage> force_msg;
-    Recorded odom_rec, force_rec;
-  };
-  // a body's altimeter and pressure sensor (dds/sensor_translators.h)
-  struct SensorEndpoints {
-    SensorEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
-                    const std::string& body);
-    dds::Topic altitude_topic, pressure_topic;
-    dds::Writer<dds::RangeMsg> altitude;
-    dds::Writer<dds::FluidPressureMsg> pressure;
-    dds::RangeMessage altitude_msg;
-    dds::FluidPressureMessage pressure_msg;
-    Recorded altitude_rec, pressure_rec;
+  // a per-step state topic (app/node_topics.h) and its recording side
+  struct Published {
+    std::unique_ptr<StateTopic> topic;
+    Recorded recorded;
   };
 
-  dds::Topic clock_topic_, cable_topic_, status_topic_, scene_topic_, control_topic_, tf_topic_,
-      tf_static_topic_, markers_topic_;
-  dds::Writer<dds::ClockMsg> clock_;
-  dds::Writer<dds::CableStateMsg> cable_;
+  dds::Topic status_topic_, scene_topic_, control_topic_, tf_static_topic_;
   dds::Writer<dds::SimStatusMsg> status_;
   dds::Writer<dds::SceneInfoMsg> scene_;
-  dds::Writer<dds::TfMsg> tf_, tf_static_;
-  dds::Writer<dds::MarkerArrayMsg> markers_;
-  std::vector<std::unique_ptr<BodyEndpoints>> bodies_;
-  std::vector<std::unique_ptr<SensorEndpoints>> sensors_;  // one per body, same order
+  dds::Writer<dds::TfMsg> tf_static_;
+  std::vector<Published> state_;  // in the order they are published
   std::vector<dds::Topic> command_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
   dds::Reader<dds::SimControlMsg> control_reader_;
   dds::WaitSet waitset_;
 
-  dds::ClockMsg clock_msg_{};
-  std::unique_ptr<dds::CableStateMessage> cable_msg_;
   dds::SimStatusMessage status_msg_;
   dds::SceneInfoMessage scene_msg_;
-  std::unique_ptr<dds::TransformsMessage> tf_msg_, tf_static_msg_;
-  std::unique_ptr<dds::SceneMarkers> markers_msg_;
+  std::unique_ptr<dds::TransformsMessage> tf_static_msg_;
 
   McapRecording* recording_ = nullptr;
   std::vector<std::unique_ptr<dds::RawType>> raw_types_;  // one per type recorded
-  Recorded clock_rec_, cable_rec_, status_rec_, scene_rec_, tf_rec_, tf_static_rec_, markers_rec_;
+  Recorded status_rec_, scene_rec_, tf_static_rec_;
   std::vector<std::uint8_t> buffer_;  // the bytes of the message being recorded
   FoxgloveServer* fox_ = nullptr;
   std::unique_ptr<FoxgloveCommands> fox_commands_;

@@ -101,8 +101,7 @@ int Run(const towsim::app::Options& options) {
     dds.security = options.security;
     dds.open_outputs = model.publishing.open_outputs;
     const towsim::core::Publishing& pub = model.publishing;
-    dds.rates = {pub.clock, pub.odom, pub.cable_force, pub.status, pub.cable_state, pub.sensors,
-                 pub.markers};
+    dds.rates = pub.rates;
     dds.command_timeout = pub.command_timeout;
     dds.record_file = options.record_file;
     dds.foxglove_port = options.foxglove_port.value_or(-1);

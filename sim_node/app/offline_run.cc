@@ -102,7 +102,7 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
       csv->Write(*sim, status, wall_us);
     }
   } catch (const io::OutputError& e) {
-    // the CSV holds every row set written before (README "Exit codes": 1)
+    // the CSV holds every row set written before (docs/command_line.md "Exit codes": 1)
     progress.Finish();
     std::fprintf(stderr, "sim_node: error: --csv: %s\n", e.what());
     exit_code = 1;

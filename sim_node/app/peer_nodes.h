@@ -1,5 +1,5 @@
 #pragma once
-// Other nodes in this node's domain and namespace (README "DDS node"): a reader of
+// Other nodes in this node's domain and namespace (docs/topics.md): a reader of
 // <ns>/scene_info (transient local, so a node that started earlier is seen at once) that
 // ignores this participant's own writer. Every other writer of scene_info is another sim_node
 // (or a replay of one) whose controllers and status would mix with this node's. sim_node

@@ -1,5 +1,5 @@
 #pragma once
-// The largest axial strain of the cable over a run (README "Physics and verification"):
+// The largest axial strain of the cable over a run (docs/physics.md "Cable"):
 // eps = |r'| - 1 at the nodes (r' = dr/dx, x the unstretched arc length, Eq. 1), sampled at
 // the output times. Beyond kExtremeStrain (20 %: nylon, the most extensible rope fibre,
 // breaks at about that; steel wire at 1-2 %) the cable is no longer a cable in any material

@@ -1,20 +1,23 @@
 #include "app/topic_types.h"
 
+#include <algorithm>
 #include <stdexcept>
 
+#include "app/node_topics.h"
 #include "dds/messages.h"
 #include "io/ros2_schemas.h"
 
 namespace towsim::app {
 
 const std::vector<const dds_topic_descriptor_t*>& ContractTypes() {
-  static const std::vector<const dds_topic_descriptor_t*> types = {
-      &rosgraph_msgs_msg_dds__Clock__desc,         &nav_msgs_msg_dds__Odometry__desc,
-      &geometry_msgs_msg_dds__WrenchStamped__desc, &towsim_msgs_msg_dds__CableState__desc,
-      &towsim_msgs_msg_dds__SimStatus__desc,       &towsim_msgs_msg_dds__SceneInfo__desc,
-      &towsim_msgs_msg_dds__ActuatorCommand__desc, &towsim_msgs_msg_dds__SimControl__desc,
-      &sensor_msgs_msg_dds__Range__desc,           &sensor_msgs_msg_dds__FluidPressure__desc,
-      &tf2_msgs_msg_dds__TFMessage__desc,          &visualization_msgs_msg_dds__MarkerArray__desc};
+  // the types of the node's topic table (app/node_topics.h), each once
+  static const std::vector<const dds_topic_descriptor_t*> types = [] {
+    std::vector<const dds_topic_descriptor_t*> all;
+    for (const TopicRow& row : NodeTopicTable()) {
+      if (std::find(all.begin(), all.end(), row.type) == all.end()) all.push_back(row.type);
+    }
+    return all;
+  }();
   return types;
 }
 
@@ -31,24 +34,15 @@ const dds_topic_descriptor_t* DescriptorOfRos2Type(const std::string& ros2_type)
 std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
                                   const std::vector<std::string>& bodies, bool with_scene_info) {
   std::vector<NodeTopic> all;
-  if (with_scene_info) {
-    all.push_back({names.scene_info(), &towsim_msgs_msg_dds__SceneInfo__desc, true});
+  for (const TopicRow& row : NodeTopicTable()) {
+    if (row.per_body) continue;
+    if (!with_scene_info && row.type == &towsim_msgs_msg_dds__SceneInfo__desc) continue;
+    all.push_back({row.name(names, ""), row.type, row.transient_local()});
   }
-  all.insert(all.end(), {
-                            {names.clock(), &rosgraph_msgs_msg_dds__Clock__desc},
-                            {names.status(), &towsim_msgs_msg_dds__SimStatus__desc},
-                            {names.cable_state(), &towsim_msgs_msg_dds__CableState__desc},
-                            {names.sim_control(), &towsim_msgs_msg_dds__SimControl__desc},
-                            {names.tf(), &tf2_msgs_msg_dds__TFMessage__desc},
-                            {names.tf_static(), &tf2_msgs_msg_dds__TFMessage__desc, true},
-                            {names.markers(), &visualization_msgs_msg_dds__MarkerArray__desc},
-                        });
   for (const std::string& b : bodies) {
-    all.push_back({names.odom(b), &nav_msgs_msg_dds__Odometry__desc});
-    all.push_back({names.cable_force(b), &geometry_msgs_msg_dds__WrenchStamped__desc});
-    all.push_back({names.altitude(b), &sensor_msgs_msg_dds__Range__desc});
-    all.push_back({names.pressure(b), &sensor_msgs_msg_dds__FluidPressure__desc});
-    all.push_back({names.command(b), &towsim_msgs_msg_dds__ActuatorCommand__desc});
+    for (const TopicRow& row : NodeTopicTable()) {
+      if (row.per_body) all.push_back({row.name(names, b), row.type, row.transient_local()});
+    }
   }
   return all;
 }

@@ -12,7 +12,7 @@
 
 namespace towsim::app {
 
-// every topic type of DESIGN §3
+// every topic type of DESIGN §3 (those of app/node_topics.h)
 const std::vector<const dds_topic_descriptor_t*>& ContractTypes();
 
 // the descriptor of a ROS 2 type name ("nav_msgs/msg/Odometry"); nullptr if not a contract type
@@ -25,9 +25,10 @@ struct NodeTopic {
   bool transient_local = false;  // scene_info and /tf_static
 };
 
-// every topic of a towsim node of namespace `names` with these bodies (DESIGN §3,
-// docs/frames.md): /clock, status, cable/state, sim_control, /tf, /tf_static, markers, and per
-// body odom, cable_force and command; scene_info first when `with_scene_info`
+// every topic of a towsim node of namespace `names` with these bodies (the table of
+// app/node_topics.h: /clock, status, cable/state, sim_control, /tf, /tf_static, markers, and per
+// body odom, cable_force, altitude, pressure and command); scene_info first when
+// `with_scene_info`
 std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
                                   const std::vector<std::string>& bodies,
                                   bool with_scene_info = false);

@@ -1,5 +1,5 @@
 #pragma once
-// Commands on the topic of a body that takes none (README "DDS node"): a controller writing
+// Commands on the topic of a body that takes none (docs/topics.md): a controller writing
 // rt<ns>/ghost/command, for a body the scene does not have or one that takes no commands,
 // would otherwise be ignored without a word. The node watches the writers announced in
 // discovery (the DCPSPublication built-in topic); for each ActuatorCommand writer on such a

@@ -6,7 +6,7 @@
 // The range is also what an incoming command is clamped to (the DDS command check takes it
 // from here: sim_node/dds/translators.h, LimitsOf), so each limit is written once.
 //
-// The vehicles' actuators (docs: README "Vehicles"):
+// The vehicles' actuators (docs/physics.md "Vehicles"):
 //   thrust:  range [-max_thrust / 4, max_thrust] (a propeller astern gives about a quarter of its
 //            ahead thrust), no rate limit, T = thrust_time_constant (vehicle file);
 //   fins:    range +-max_deflection, rate +-max_rate (vehicle file), T = kFinServoTimeConstant.

@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "core/current_field.h"
+#include "core/publish_rates.h"
 #include "core/seabed.h"
 #include "core/vehicle_model.h"
 #include "core/wave_field.h"
@@ -168,14 +169,7 @@ struct ScriptEntry {
 
 // What a DDS node publishes and when (DESIGN §3-4); plain scene data, unused offline.
 struct Publishing {
-  // per-topic rates [Hz]; 0: every step; rounded to a whole number of steps
-  double clock = 0.0;
-  double odom = 0.0;
-  double cable_force = 0.0;
-  double status = 0.0;
-  double cable_state = -1.0;     // < 0: the scene's time.output_rate
-  double sensors = 0.0;          // altitude and pressure of every body (docs/sensors.md)
-  double markers = -1.0;         // 3D markers; < 0: the scene's time.output_rate
+  PublishRates rates;            // per-topic rates (core/publish_rates.h)
   double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]
   // security.open_outputs: with DDS Security, participants without a certificate may read the
   // outputs (never command); docs/security.md

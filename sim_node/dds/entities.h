@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 
 #include "dds/dds.h"
@@ -88,7 +89,8 @@ class Topic {
   std::string name_;
 };
 
-// a writer of samples of the generated C type T
+// a writer of samples of the generated C type T (void: of the topic's type, given as a
+// pointer to its C struct, WriteRaw)
 template <class T>
 class Writer {
  public:
@@ -112,8 +114,14 @@ class Writer {
   }
 
   // throws DdsError if Cyclone refuses the sample
-  void Write(const T& sample) {
-    const dds_return_t rc = dds_write(writer_.get(), &sample);
+  template <class U = T>
+  void Write(const U& sample) {
+    static_assert(std::is_same_v<U, T>, "a sample of the writer's type");
+    WriteRaw(&sample);
+  }
+  // `sample` points to a C struct of the topic's type; throws DdsError
+  void WriteRaw(const void* sample) {
+    const dds_return_t rc = dds_write(writer_.get(), sample);
     if (rc < 0) throw DdsError("writing to " + topic_name_, rc);
   }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Which DDS domain ids have ports with a Cyclone DDS configuration (README "DDS node").
+// Which DDS domain ids have ports with a Cyclone DDS configuration (docs/command_line.md).
 //
 // Cyclone maps a domain d and a participant index i to UDP ports as the RTPS specification
 // (DDSI-RTPS 2.x, section 9.6.1.1) does: PB + DG d + offset, and + PG i for the unicast ports,

@@ -1,12 +1,6 @@
 #pragma once
-// The QoS of the towsim topics (issue 4):
-//   state, /clock, status   reliable, keep last 1, volatile: a reliable writer matches both
-//                           reliable and best-effort ROS 2 subscribers, and keep-last 1
-//                           never blocks the node on a slow subscriber;
-//   commands                reliable, keep last 1: the newest command wins;
-//   sim_control             reliable, keep last 32: no request is lost in a burst;
-//   scene_info, /tf_static  reliable, transient local, keep last 1: late joiners get it.
-// Every one fixes the data representation to XCDR1 (plain CDR), which ROS 2 expects.
+// The QoS of the towsim topics, owned (RAII) for the node's entities. The definition is
+// controllers/common/dds_qos.h (shared with the controllers and the tests): see there.
 
 #include "dds/dds.h"
 
@@ -16,6 +10,7 @@ namespace towsim::dds {
 class Qos {
  public:
   Qos();
+  explicit Qos(dds_qos_t* owned);  // takes ownership
   ~Qos();
   Qos(Qos&& other) noexcept;
   Qos& operator=(Qos&& other) noexcept;

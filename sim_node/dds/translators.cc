@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/actuator.h"
+#include "dds/command_arbiter.h"
 #include "towsim_msgs.h"
 
 namespace towsim::dds {
@@ -277,6 +278,38 @@ ControlRequest FromSimControl(const SimControlMsg& msg) {
       r.error = "unknown command " + std::to_string(msg.command);
   }
   return r;
+}
+
+void ToStatusCommands(const CommandArbiter& arbiter, const StatusNotes& notes, StatusSample* s) {
+  s->failsafe_count = arbiter.failsafe_count();
+  s->failsafe_bodies.clear();
+  for (int i = 0; i < arbiter.size(); ++i) {
+    if (arbiter.failsafe(i)) s->failsafe_bodies.push_back(arbiter.vehicle(i).name);
+  }
+  s->commands_received = arbiter.received() + notes.unknown_commands;
+  s->commands_rejected = arbiter.rejected() + notes.unknown_commands;
+  s->commands_clamped = arbiter.clamped();
+  s->lockstep_timeouts = arbiter.lockstep_timeouts();
+  if (s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED) {
+    s->health = towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_ERROR;
+    s->message.assign(notes.failure);
+  } else if (!s->failsafe_bodies.empty()) {
+    s->health = towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_FAILSAFE;
+    s->message = arbiter.last_event();
+  } else {
+    s->health = towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_OK;
+    if (!notes.peer.empty()) {
+      s->message.assign(notes.peer);
+    } else if (!notes.strain.empty()) {
+      s->message.assign(notes.strain);
+    } else if (!notes.control.empty()) {
+      s->message.assign(notes.control);
+    } else if (!notes.unknown_event.empty() && arbiter.last_event().empty()) {
+      s->message.assign(notes.unknown_event);
+    } else if (s->message != arbiter.last_event()) {
+      s->message = arbiter.last_event();
+    }
+  }
 }
 
 }  // namespace towsim::dds

@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/simulation.h"
@@ -122,6 +123,26 @@ class SimStatusMessage {
 
 // the sample's strings are copied into `out`
 void ToSimStatus(const StatusSample& sample, SimStatusMessage* out);
+
+class CommandArbiter;  // dds/command_arbiter.h
+
+// what the status says beside the numbers of the run
+struct StatusNotes {
+  std::string_view failure;        // the run failed (state FAILED): why
+  std::string_view peer;           // another node in the namespace
+  std::string_view strain;         // the cable's strain warning
+  std::string_view control;        // the last refused control request
+  uint64_t unknown_commands = 0;   // commands on topics of no commandable body (rejected)
+  std::string_view unknown_event;  // the last of them
+};
+
+// The command counts, failsafes, health and message of the node's status `s` (whose state is
+// set): the arbiter's counts plus the unknown commands (received and rejected); health ERROR
+// with the failure when s->state is FAILED, FAILSAFE with the arbiter's last event while a
+// vehicle is in failsafe, else OK with the first of: the peer warning, the strain warning, the
+// refused control request, the unknown-command event (when the arbiter has none), the
+// arbiter's last event. Assigns the strings only when they change (no allocation per step).
+void ToStatusCommands(const CommandArbiter& arbiter, const StatusNotes& notes, StatusSample* s);
 
 struct SceneInfoSample {
   std::string run_id, scene, mode;

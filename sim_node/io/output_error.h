@@ -1,7 +1,8 @@
 #pragma once
 // The error an output file throws when its bytes cannot be written (disk full, quota, I/O
 // error): the file was opened but the data did not reach it. sim_node and the tools exit 1
-// on it (README "Exit codes"), whereas a path that cannot be opened is bad input (exit 2).
+// on it (docs/command_line.md "Exit codes"), whereas a path that cannot be opened is bad
+// input (exit 2).
 
 #include <stdexcept>
 #include <string>

@@ -200,7 +200,7 @@ core::CableParams ReadCable(const Field& field, const core::Model& model) {
   // material and discretization
   c.length = cable.Number("length", Range::Above(0.0));
   c.elements = cable.Integer("elements", Range::Closed(1, 10000));
-  // positive, and no larger than any cable could be (README "cable": the limits and why)
+  // positive, and no larger than any cable could be (docs/scene_format.md "cable": the limits)
   auto physical = [&cable](const std::string& key, double max, const std::string& why) {
     const Field f = cable.Require(key);
     const double x = f.Number(Range::Above(0.0));

@@ -67,14 +67,10 @@ core::IntegratorSettings ReadIntegrator(const Field& field) {
 core::Publishing ReadPublish(const Field& field) {
   const MapReader publish(field, MapKind::kPublish);
   core::Publishing p;
-  p.clock = publish.Number("clock", Range::AtLeast(0.0), p.clock);
-  p.odom = publish.Number("odom", Range::AtLeast(0.0), p.odom);
-  p.cable_force = publish.Number("cable_force", Range::AtLeast(0.0), p.cable_force);
-  p.status = publish.Number("status", Range::AtLeast(0.0), p.status);
-  p.sensors = publish.Number("sensors", Range::AtLeast(0.0), p.sensors);
-  if (publish.Has("cable_state"))
-    p.cable_state = publish.Get("cable_state").Number(Range::AtLeast(0.0));
-  if (publish.Has("markers")) p.markers = publish.Get("markers").Number(Range::AtLeast(0.0));
+  // every rate key (core/publish_rates.h): >= 0; absent: the default
+  for (const core::PublishRateKey& k : core::kPublishRateKeys) {
+    if (publish.Has(k.key)) p.rates[k.rate] = publish.Get(k.key).Number(Range::AtLeast(0.0));
+  }
   p.command_timeout = publish.Number("command_timeout", Range::Above(0.0), p.command_timeout);
   return p;
 }

@@ -5,6 +5,8 @@
 #include <initializer_list>
 #include <map>
 
+#include "core/publish_rates.h"
+
 namespace towsim::scene::internal {
 namespace {
 
@@ -44,13 +46,18 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
     }
     return keys;
   };
+  // the rate keys (core/publish_rates.h), then the command timeout
+  const auto publish_keys = [] {
+    std::vector<std::string> keys;
+    for (const core::PublishRateKey& k : core::kPublishRateKeys) keys.push_back(k.key);
+    keys.push_back("command_timeout");
+    return keys;
+  };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
       {MapKind::kScene,
        {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish",
         "security"}},
-      {MapKind::kPublish,
-       {"clock", "odom", "cable_state", "cable_force", "status", "markers", "command_timeout",
-        "sensors"}},
+      {MapKind::kPublish, publish_keys()},
       {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
       {MapKind::kEnvironment,

@@ -52,7 +52,7 @@ inline constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 // `text` without leading and trailing blanks (spaces, tabs)
 std::string Trim(const std::string& text);
 
-// The largest scene or model file read [bytes] (README "Scene format"): a YAML tree takes
+// The largest scene or model file read [bytes] (docs/scene_format.md): a YAML tree takes
 // hundreds of bytes per node, so a bigger file would cost gigabytes before any rule is checked.
 inline constexpr std::uintmax_t kMaxTextFileBytes = 16u << 20;
 

@@ -1,8 +1,8 @@
 // The controllers' trials over loopback DDS (issue 5): sim_node in lockstep on the paper's
 // Case 1 scene (start from rest, no script) with real controller processes: the manoeuvre
 // runner's zig-zag and turning circle, the autopilot's heading step and lawn-mower survey, the
-// README's C example. Every number the controllers report is checked against the node's own
-// bodies.csv. Domains 70-75, 79 (tests/integration/README.md).
+// C example of docs/controllers.md. Every number the controllers report is checked against
+// the node's own bodies.csv. Domains 70-75, 79 (tests/integration/README.md).
 
 #include <stdlib.h>
 
@@ -214,7 +214,8 @@ TEST(ControllerTrials, TurningCircleDiametersMatchTheTrack) {
   }
   EXPECT_NEAR(steady, ymax - ymin, 0.01 * steady);
   EXPECT_NEAR(steady, kinematic, 0.01 * steady);  // 2 U / r: the same circle
-  // the paper's Case 2 turning radius of the tow vehicle is 24.5 m (README) at the same rudder
+  // the paper's Case 2 turning radius of the tow vehicle is 24.5 m (docs/verification.md) at
+  // the same rudder
   EXPECT_NEAR(steady / 2, 24.5, 1.0);
 }
 
@@ -292,8 +293,8 @@ TEST(ControllerTrials, AutopilotLawnMowerReachesItsWaypoints) {
   EXPECT_LT(worst_half, kCrossTrackTol);
 }
 
-// domain 74: the README's C example drives the tow vehicle to the speed of the offline run
-// at the same thrust
+// domain 74: the C example of docs/controllers.md drives the tow vehicle to the speed of the
+// offline run at the same thrust
 TEST(ControllerTrials, HelloControllerInCReachesTheOfflineSpeed) {
   const double duration = 60.0;
   const TrialRun run = RunLockstep(74, {TOWSIM_HELLO_CONTROLLER, "74", "4165", "0"}, duration);

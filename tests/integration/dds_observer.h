@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/dds_qos.h"
 #include "dds/dds.h"
 #include "towsim_msgs.h"
 
@@ -32,14 +33,8 @@ struct Status {
   Clock::time_point when;
 };
 
-inline dds_qos_t* ReliableQos(int depth) {
-  dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
-  dds_qset_data_representation(q, 1, &xcdr1);
-  return q;
-}
+// the node's state QoS (controllers/common/dds_qos.h) with a reader history of `depth`
+inline dds_qos_t* ReliableQos(int depth) { return controllers::ReliableQos(depth, false); }
 
 // this test as a DDS participant: the node's status, control requests and raw commands
 class Observer {

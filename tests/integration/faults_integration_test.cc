@@ -380,9 +380,9 @@ TEST_F(FaultsTest, SecondWriterOnARecordingIsRefused) {
 // ---------------------------------------------------------------------------------------------
 // Disk full while recording or writing CSV in a DDS mode: the node exited 1 with no summary
 // and no final status, so controllers waited 30 s for a step that never came. An output
-// failure ends the run (README "Exit codes"): the last SimStatus is FAILED with the reason,
-// the summary is printed, exit 1; the controller ends at once. At start, a full disk is exit 1
-// too (it was 2, "bad input"). A small tmpfs of the test's own is the full disk.
+// failure ends the run (docs/command_line.md "Exit codes"): the last SimStatus is FAILED with
+// the reason, the summary is printed, exit 1; the controller ends at once. At start, a full
+// disk is exit 1 too (it was 2, "bad input"). A small tmpfs of the test's own is the full disk.
 
 // a tmpfs of `kilobytes` mounted on a directory, unmounted at the end (the test runs as root,
 // as CI does)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Recording overhead benchmark for the README (not a test): sim_node in fast mode (no
+# Recording overhead benchmark for docs/recording.md (not a test): sim_node in fast mode (no
 # subscriber, so without --record nothing is serialized) with and without --record, the same
 # scene, alternating, N runs each. Per run: the median of the node's own step time (status.csv
 # wall_us: the step and its publication, which is where recording adds its work), robust

@@ -223,7 +223,7 @@ TEST(RosGraph, NodeAndControllerListTheirDiscoveredEndpoints) {
   EXPECT_EQ(written, expected_written);
   const std::set<std::string> read =
       CheckEndpoints(sim.readers, sim.participant, o.subscriptions, "sim_node readers");
-  // scene_info: the node watches for another node in its namespace (README "DDS node")
+  // scene_info: the node watches for another node in its namespace (docs/topics.md)
   const std::set<std::string> expected_read = {"rt/towsim/scene_info", "rt/towsim/sim_control",
                                                "rt/towsim/tow_vehicle/command",
                                                "rt/towsim/towfish/command"};

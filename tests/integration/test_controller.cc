@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "common/dds_qos.h"
 #include "dds/dds.h"
 #include "dds/security.h"
 #include "nav_msgs.h"
@@ -110,17 +111,6 @@ Args Parse(int argc, char** argv) {
   return a;
 }
 
-dds_qos_t* ReliableQos(int depth, bool transient_local) {
-  dds_qos_t* q = dds_create_qos();
-  dds_qset_reliability(q, DDS_RELIABILITY_RELIABLE, DDS_MSECS(100));
-  dds_qset_history(q, DDS_HISTORY_KEEP_LAST, depth);
-  dds_qset_durability(q,
-                      transient_local ? DDS_DURABILITY_TRANSIENT_LOCAL : DDS_DURABILITY_VOLATILE);
-  const dds_data_representation_id_t xcdr1 = DDS_DATA_REPRESENTATION_XCDR1;
-  dds_qset_data_representation(q, 1, &xcdr1);
-  return q;
-}
-
 struct Body {
   std::string name;
   dds_entity_t odom_reader = 0;
@@ -142,8 +132,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "test_controller: error: %s\n", e.what());
     return 2;
   }
+  using towsim::controllers::ReliableQos;
   dds_qos_t* state_qos = ReliableQos(256, false);
-  dds_qos_t* command_qos = ReliableQos(1, false);
+  dds_qos_t* command_qos = ReliableQos(towsim::controllers::kCommandDepth, false);
   dds_qos_t* scene_qos = ReliableQos(1, true);
 
   // what the node simulates

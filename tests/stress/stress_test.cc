@@ -33,7 +33,8 @@ constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
 // --- energy bound ---------------------------------------------------------------------------
 // E(t) - E(0) <= W_in(t) + slack, slack = kEnergySlackRel * int |P_in| dt + kEnergySlackAbs.
 // What may legitimately exceed the balance: the trapezoidal quadrature of P_in over a step, the
-// one-step energy rises of generalized-alpha (README: ~1.5e-2 (omega h)^3 of a mode's energy),
+// one-step energy rises of generalized-alpha (docs/verification.md: ~1.5e-2 (omega h)^3 of a
+// mode's energy),
 // the waterplane's pitch and roll restoring (conservative but not in PotentialEnergy:
 // rho g I_L (1 - cos theta) = 1.05 kJ at 5 deg of pitch, far more than any run here shows)
 // and the body-lift moments M_uw u w, N_uv u v (not sign-definite). In every run below that

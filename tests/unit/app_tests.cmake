@@ -53,3 +53,9 @@ towsim_add_test(csv_reader_test LABEL unit
 towsim_add_test(sweep_table_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_table_test.cc
   LIBS towsim_sweep_lib)
+
+# the node's run control (app/run_control): a pure state machine, no DDS
+towsim_add_test(run_control_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/run_control_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/run_control.cc
+  LIBS towsim::dds)

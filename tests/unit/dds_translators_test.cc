@@ -9,6 +9,7 @@
 
 #include "core/script.h"
 #include "core/simulation.h"
+#include "dds/command_arbiter.h"
 #include "dds/translators.h"
 #include "scene/scene_loader.h"
 
@@ -225,6 +226,55 @@ TEST(StatusTest, CopiesEveryField) {
   EXPECT_EQ(m.msg.commands_rejected, 2u);
   EXPECT_EQ(m.msg.commands_clamped, 1u);
   EXPECT_EQ(m.msg.lockstep_timeouts, 1u);
+}
+
+// the status's command counts, health and message (ToStatusCommands): each source of the
+// message in its order of precedence
+TEST(StatusTest, CommandsHealthAndMessage) {
+  CommandLimits limits;
+  limits.thrust_min = -1000.0;
+  limits.thrust_max = 1000.0;
+  limits.rudder_max = 0.5;
+  limits.elevator_max = 0.5;
+  CommandArbiter arbiter({{"tow_vehicle", limits, false}}, /*command_timeout=*/0.5);
+  arbiter.Receive(0, ActuatorCommandMsg{}, 0.0);  // valid: zero thrust and fins
+  ActuatorCommandMsg nan{};
+  nan.thrust = std::numeric_limits<double>::quiet_NaN();
+  arbiter.Receive(0, nan, 0.0);  // rejected: the arbiter's last event
+  StatusSample s;
+  s.state = towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING;
+  StatusNotes notes;
+  notes.unknown_commands = 2;
+  notes.unknown_event = "command on rt/towsim/nobody/command: no such body";
+  ToStatusCommands(arbiter, notes, &s);
+  EXPECT_EQ(s.commands_received, 4u);  // 2 + 2 unknown
+  EXPECT_EQ(s.commands_rejected, 3u);  // 1 + 2 unknown
+  EXPECT_EQ(s.commands_clamped, 0u);
+  EXPECT_EQ(s.health, towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_OK);
+  EXPECT_EQ(s.message, arbiter.last_event());  // the arbiter's event over the unknown one
+  EXPECT_FALSE(s.message.empty());
+  notes.control = "sim_control: STEP ignored: the node is not paused";
+  ToStatusCommands(arbiter, notes, &s);
+  EXPECT_EQ(s.message, notes.control);
+  notes.strain = "strain 2.1 % exceeds 2 %";
+  ToStatusCommands(arbiter, notes, &s);
+  EXPECT_EQ(s.message, notes.strain);
+  notes.peer = "warning: another node runs on DDS domain 0";
+  ToStatusCommands(arbiter, notes, &s);
+  EXPECT_EQ(s.message, notes.peer);
+  // failsafe after the command timeout: health FAILSAFE with the arbiter's event
+  arbiter.CheckTimeouts(1.0);
+  ToStatusCommands(arbiter, notes, &s);
+  EXPECT_EQ(s.health, towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_FAILSAFE);
+  ASSERT_EQ(s.failsafe_bodies.size(), 1u);
+  EXPECT_EQ(s.failsafe_bodies[0], "tow_vehicle");
+  EXPECT_EQ(s.message, arbiter.last_event());
+  // failed: health ERROR with the failure, over everything else
+  s.state = towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED;
+  notes.failure = "solver failure at t = 1 s (step 20): not converged";
+  ToStatusCommands(arbiter, notes, &s);
+  EXPECT_EQ(s.health, towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_ERROR);
+  EXPECT_EQ(s.message, notes.failure);
 }
 
 TEST(SceneInfoTest, ListsBodies) {

@@ -1058,19 +1058,19 @@ TEST_F(SceneLoaderTest, LoadsAndSlopes) {
 
 TEST_F(SceneLoaderTest, PublishRatesAndCommandTimeout) {
   const Model defaults = Load(Edit("", ""));
-  EXPECT_EQ(defaults.publishing.odom, 0.0);
-  EXPECT_EQ(defaults.publishing.cable_state, -1.0);
-  EXPECT_EQ(defaults.publishing.sensors, 0.0);
+  EXPECT_EQ(defaults.publishing.rates[core::PublishRate::kOdom], 0.0);
+  EXPECT_EQ(defaults.publishing.rates[core::PublishRate::kCableState], -1.0);
+  EXPECT_EQ(defaults.publishing.rates[core::PublishRate::kSensors], 0.0);
   EXPECT_EQ(defaults.publishing.command_timeout, 0.5);
   const Model m = Load(Edit(
       "name: t\n", "name: t\npublish: {odom: 50, cable_state: 5, status: 1, command_timeout: 2}\n"));
-  EXPECT_EQ(m.publishing.odom, 50.0);
-  EXPECT_EQ(m.publishing.cable_state, 5.0);
-  EXPECT_EQ(m.publishing.status, 1.0);
-  EXPECT_EQ(m.publishing.clock, 0.0);
+  EXPECT_EQ(m.publishing.rates[core::PublishRate::kOdom], 50.0);
+  EXPECT_EQ(m.publishing.rates[core::PublishRate::kCableState], 5.0);
+  EXPECT_EQ(m.publishing.rates[core::PublishRate::kStatus], 1.0);
+  EXPECT_EQ(m.publishing.rates[core::PublishRate::kClock], 0.0);
   EXPECT_EQ(m.publishing.command_timeout, 2.0);
   const Model sensors = Load(Edit("name: t\n", "name: t\npublish: {sensors: 10}\n"));
-  EXPECT_EQ(sensors.publishing.sensors, 10.0);
+  EXPECT_EQ(sensors.publishing.rates[core::PublishRate::kSensors], 10.0);
 }
 
 // security.open_outputs (docs/security.md): false unless the scene says true; a boolean
