@@ -172,8 +172,8 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
     const Pack f = s.q[i] / e;
     const Pack inv = s.inv_1mq[i];
     const Pack cc = (e + f) * inv, ss = (e - f) * inv;
-    const Pack th = (kLongCrested ? k * along : s.kx[i] * x + s.ky[i] * y) +
-                    (s.phase[i] - s.omega[i] * t);
+    const Pack th =
+        (kLongCrested ? k * along : s.kx[i] * x + s.ky[i] * y) + (s.phase[i] - s.omega[i] * t);
     Pack sn, c;
     SinCos(th, &sn, &c);
     eta += s.a[i] * c;
