@@ -2,10 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <limits>
-#include <numeric>
 
 namespace towsim::core {
 namespace {
@@ -16,55 +13,6 @@ constexpr double kPi = 3.14159265358979323846;
 // sorted by k, so every later one is smaller still (their sum stays below N times this of
 // the surface kinematics)
 constexpr double kDecayCutoff = 1e-9;
-
-// round to the nearest integer (|x| < 2^51) by the 1.5 * 2^52 shift, without a library call
-inline double RoundToInt(double x) {
-  constexpr double kShift = 6755399441055744.0;  // 1.5 * 2^52
-  return (x + kShift) - kShift;  // IEEE addition, not re-associated (no -ffast-math here)
-}
-
-// sin and cos of x (|x| < 1e9: wave phases) to about 1e-15 absolute, without the library's
-// range reduction and special cases: x is reduced to r in [-pi, pi], the Taylor series of sin
-// and cos to degree 17 and 18 give them at h = r / 2 (truncation (pi/2)^19 / 19! = 4e-15),
-// and the double-angle formulas return to r
-inline void SinCos(double x, double* s, double* c) {
-  constexpr double kInv2Pi = 0.15915494309189535;
-  constexpr double k2PiHi = 6.283185307179586, k2PiLo = 2.4492935982947064e-16;
-  const double n = RoundToInt(x * kInv2Pi);
-  const double r = (x - n * k2PiHi) - n * k2PiLo;
-  const double h = 0.5 * r, h2 = h * h;
-  // Horner in h^2 with the Taylor coefficients 1 / (2j (2j + 1)) and 1 / ((2j - 1) 2j)
-  double ps = 1.0, pc = 1.0;
-  constexpr double kS[8] = {1.0 / 272, 1.0 / 210, 1.0 / 156, 1.0 / 110,
-                            1.0 / 72,  1.0 / 42,  1.0 / 20,  1.0 / 6};
-  constexpr double kC[9] = {1.0 / 306, 1.0 / 240, 1.0 / 182, 1.0 / 132, 1.0 / 90,
-                            1.0 / 56,  1.0 / 30,  1.0 / 12,  1.0 / 2};
-  for (double k : kS) ps = 1.0 - h2 * k * ps;
-  for (double k : kC) pc = 1.0 - h2 * k * pc;
-  const double sh = h * ps, ch = pc;
-  *s = 2.0 * sh * ch;
-  *c = (ch - sh) * (ch + sh);
-}
-
-// e^y for y <= 0 (depth factors) to about 1e-15 relative: y = n ln 2 + r, |r| <= ln 2 / 2,
-// Taylor to degree 12 (truncation 0.347^13 / 13! = 2e-16), 2^n from its exponent bits;
-// below -700 (1e-304) it returns 0
-inline double ExpNonPositive(double y) {
-  if (y < -700.0) return 0.0;
-  constexpr double kInvLn2 = 1.4426950408889634;
-  constexpr double kLn2Hi = 0.6931471803691238, kLn2Lo = 1.9082149292705877e-10;
-  const double n = RoundToInt(y * kInvLn2);
-  const double r = (y - n * kLn2Hi) - n * kLn2Lo;
-  constexpr double kInv[12] = {1.0 / 12, 1.0 / 11, 1.0 / 10, 1.0 / 9, 1.0 / 8, 1.0 / 7,
-                               1.0 / 6,  1.0 / 5,  1.0 / 4,  1.0 / 3, 1.0 / 2, 1.0};
-  double p = 1.0;
-  for (double k : kInv) p = 1.0 + r * k * p;
-  // 2^n: the biased exponent n + 1023 in bits 52-62
-  const std::uint64_t bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(n) + 1023) << 52;
-  double two_n;
-  std::memcpy(&two_n, &bits, sizeof two_n);
-  return p * two_n;
-}
 
 }  // namespace
 
@@ -82,22 +30,41 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   std::vector<WaveComponent> comps = w.components();
   std::stable_sort(comps.begin(), comps.end(),
                    [](const WaveComponent& a, const WaveComponent& b) { return a.k < b.k; });
+  long_crested_ = std::all_of(comps.begin(), comps.end(), [&](const WaveComponent& c) {
+    return c.direction == comps.front().direction;
+  });
+  cos_b_ = std::cos(comps.front().direction);
+  sin_b_ = std::sin(comps.front().direction);
   Components& s = waves_;
-  for (const WaveComponent& p : comps) {
-    s.kx.push_back(p.k * std::cos(p.direction));
-    s.ky.push_back(p.k * std::sin(p.direction));
-    s.k.push_back(p.k);
-    s.omega.push_back(p.omega);
-    s.phase.push_back(p.phase);
-    s.a.push_back(p.amplitude);
-    s.a_omega.push_back(p.amplitude * p.omega);
-    s.a_omega2.push_back(p.amplitude * p.omega * p.omega);
-    s.q.push_back(std::isfinite(wave_depth_) ? std::exp(-2.0 * p.k * wave_depth_) : 0.0);
-    s.inv_1mq.push_back(1.0 / (1.0 - s.q.back()));
-    s.cos_b.push_back(std::cos(p.direction));
-    s.sin_b.push_back(std::sin(p.direction));
+  const size_t n = comps.size();
+  const size_t packets = (n + kPackLanes - 1) / kPackLanes;
+  for (std::vector<Pack>* v : {&s.kx, &s.ky, &s.k, &s.omega, &s.phase, &s.a, &s.a_omega,
+                               &s.a_omega2, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
+    v->assign(packets, Broadcast(0.0));
+  for (size_t j = 0; j < packets * kPackLanes; ++j) {
+    // the padding repeats the last component with zero amplitude: it adds exactly 0
+    const WaveComponent& p = comps[std::min(j, n - 1)];
+    const double a = j < n ? p.amplitude : 0.0;
+    const size_t i = j / kPackLanes, l = j % kPackLanes;
+    const double q = std::isfinite(wave_depth_) ? std::exp(-2.0 * p.k * wave_depth_) : 0.0;
+    s.kx[i][l] = p.k * std::cos(p.direction);
+    s.ky[i][l] = p.k * std::sin(p.direction);
+    s.k[i][l] = p.k;
+    s.omega[i][l] = p.omega;
+    s.phase[i][l] = p.phase;
+    s.a[i][l] = a;
+    s.a_omega[i][l] = a * p.omega;
+    s.a_omega2[i][l] = a * p.omega * p.omega;
+    s.q[i][l] = q;
+    s.inv_1mq[i][l] = 1.0 / (1.0 - q);
+    s.cos_b[i][l] = std::cos(p.direction);
+    s.sin_b[i][l] = std::sin(p.direction);
+    if (j < n) {
+      s.k_scalar.push_back(p.k);
+      s.log_inv_1mq.push_back(-std::log1p(-q));
+    }
   }
-  amplitude_sum_ = std::accumulate(s.a.begin(), s.a.end(), 0.0);
+  for (const WaveComponent& p : comps) amplitude_sum_ += p.amplitude;
 }
 
 double EnvironmentField::Ramp(double t, double* rate) const {
@@ -130,18 +97,47 @@ double EnvironmentField::Elevation(double x, double y, double t) const {
   double rate;
   const double r = Ramp(t, &rate);
   if (r == 0.0) return 0.0;
+  // eta = r sum a cos th, two components a packet
   const Components& s = waves_;
-  double eta = 0.0;
-  for (size_t i = 0; i < s.k.size(); ++i)
-    eta += s.a[i] * std::cos(s.kx[i] * x + s.ky[i] * y - s.omega[i] * t + s.phase[i]);
-  return r * eta;
+  Pack eta = Broadcast(0.0);
+  for (size_t i = 0; i < s.k.size(); ++i) {
+    Pack sn, c;
+    SinCos(s.kx[i] * x + s.ky[i] * y + (s.phase[i] - s.omega[i] * t), &sn, &c);
+    eta += s.a[i] * c;
+  }
+  return r * Sum(eta);
 }
 
 WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) const {
   return SumWaves<true>(p_W, d_W, t);
 }
 
+size_t EnvironmentField::PacketsToSum(double zeta_e, bool always_wet) const {
+  const Components& s = waves_;
+  if (!always_wet) return s.k.size();
+  // component j has decayed where C_j(zeta) <= e^{k_j zeta} / (1 - q_j) < kDecayCutoff, i.e.
+  // k_j zeta + ln(1 / (1 - q_j)) < ln kDecayCutoff; both terms fall as k_j grows (zeta <= 0),
+  // so the components to sum are a prefix of the sorted list
+  const double log_cutoff = std::log(kDecayCutoff);
+  size_t lo = 0, hi = s.k_scalar.size();
+  while (lo < hi) {
+    const size_t mid = (lo + hi) / 2;
+    if (s.k_scalar[mid] * zeta_e + s.log_inv_1mq[mid] >= log_cutoff) {
+      lo = mid + 1;
+    } else {
+      hi = mid;
+    }
+  }
+  return (lo + kPackLanes - 1) / kPackLanes;
+}
+
 template <bool kDerivative>
+WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const {
+  return long_crested_ ? SumWaves<kDerivative, true>(p_W, d_W, t)
+                       : SumWaves<kDerivative, false>(p_W, d_W, t);
+}
+
+template <bool kDerivative, bool kLongCrested>
 WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const {
   WaveSample out;
   if (!has_waves_) return out;
@@ -158,44 +154,78 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   // a point below every possible trough is always wet: its elevation is not needed, and it
   // may stop at the first decayed component
   const bool always_wet = zeta < -r * amplitude_sum_;
-  double eta = 0.0;
-  double ux = 0.0, uy = 0.0, uu = 0.0, ax = 0.0, ay = 0.0, au = 0.0;  // u_h, u_up, ...
-  double dux = 0.0, duy = 0.0, duu = 0.0, dax = 0.0, day = 0.0, dau = 0.0;
-  const size_t n = s.k.size();
+  const size_t n = PacketsToSum(ze, always_wet);
+  // long-crested: th = k s + phase - w t with s = x cos b + y sin b, and dth/ds = k ds along d
+  const double along = x * cos_b_ + y * sin_b_;
+  const double d_along = d_W.x() * cos_b_ + d_W.y() * sin_b_;
+  // two components a packet; the horizontal parts are summed along the direction of travel
+  // (long-crested) or resolved per component
+  const Pack zero = Broadcast(0.0);
+  Pack eta = zero, uh_s = zero, ah_s = zero, duh_s = zero, dah_s = zero;
+  Pack ux = zero, uy = zero, uu = zero, ax = zero, ay = zero, au = zero;
+  Pack dux = zero, duy = zero, duu = zero, dax = zero, day = zero, dau = zero;
   for (size_t i = 0; i < n; ++i) {
-    const double k = s.k[i];
-    // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: e^{k zeta})
-    const double e = ExpNonPositive(k * ze);
-    const double q = s.q[i];
-    const double inv = s.inv_1mq[i];
-    if (always_wet && e * inv < kDecayCutoff) break;
-    const double f = q / e;
-    const double cc = (e + f) * inv, ss = (e - f) * inv;
-    const double th = s.kx[i] * x + s.ky[i] * y - s.omega[i] * t + s.phase[i];
-    double c, sn;
+    const Pack k = s.k[i];
+    // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: e^{k zeta}):
+    // E = e^{k zeta}, F = q / E, C = (E + F) / (1 - q), S = (E - F) / (1 - q)
+    const Pack e = ExpNonPositive(k * ze);
+    const Pack f = s.q[i] / e;
+    const Pack inv = s.inv_1mq[i];
+    const Pack cc = (e + f) * inv, ss = (e - f) * inv;
+    const Pack th =
+        (kLongCrested ? k * along : s.kx[i] * x + s.ky[i] * y) + (s.phase[i] - s.omega[i] * t);
+    Pack sn, c;
     SinCos(th, &sn, &c);
     eta += s.a[i] * c;
-    // direction of travel (cos b, sin b) = (kx, ky) / k
-    const double cb = s.cos_b[i], sb = s.sin_b[i];
-    const double aw = s.a_omega[i], aw2 = s.a_omega2[i];
+    const Pack aw = s.a_omega[i], aw2 = s.a_omega2[i];
     // u_h = a w C cos th, u_up = a w S sin th; du/dt: th_t = -w
-    const double uh = aw * cc * c, up = aw * ss * sn;
-    const double ah = aw2 * cc * sn, ap = -aw2 * ss * c;
-    ux += uh * cb, uy += uh * sb, uu += up;
-    ax += ah * cb, ay += ah * sb, au += ap;
+    const Pack uh = aw * cc * c, ah = aw2 * cc * sn;
+    uu += aw * ss * sn;
+    au -= aw2 * ss * c;
+    if (kLongCrested) {
+      uh_s += uh;
+      ah_s += ah;
+    } else {
+      ux += uh * s.cos_b[i], uy += uh * s.sin_b[i];
+      ax += ah * s.cos_b[i], ay += ah * s.sin_b[i];
+    }
     if (!kDerivative) continue;
     // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
-    const double g = s.kx[i] * d_W.x() + s.ky[i] * d_W.y();
-    const double dcc = k * ss * dze, dss = k * cc * dze;
-    const double duh = aw * (dcc * c - cc * sn * g), dup = aw * (dss * sn + ss * c * g);
-    const double dah = aw2 * (dcc * sn + cc * c * g), dap = -aw2 * (dss * c - ss * sn * g);
-    dux += duh * cb, duy += duh * sb, duu += dup;
-    dax += dah * cb, day += dah * sb, dau += dap;
+    const Pack g = kLongCrested ? k * d_along : s.kx[i] * d_W.x() + s.ky[i] * d_W.y();
+    const Pack dcc = k * ss * dze, dss = k * cc * dze;
+    const Pack duh = aw * (dcc * c - cc * sn * g), dah = aw2 * (dcc * sn + cc * c * g);
+    duu += aw * (dss * sn + ss * c * g);
+    dau -= aw2 * (dss * c - ss * sn * g);
+    if (kLongCrested) {
+      duh_s += duh;
+      dah_s += dah;
+    } else {
+      dux += duh * s.cos_b[i], duy += duh * s.sin_b[i];
+      dax += dah * s.cos_b[i], day += dah * s.sin_b[i];
+    }
   }
   // above the instantaneous surface (zeta > eta) the water is not there
-  if (!always_wet && zeta > r * eta) return out;
+  if (!always_wet && zeta > r * Sum(eta)) return out;
+  // the horizontal sums resolved along (cos b, sin b)
+  Vec3 u, a, du, da;
+  if (kLongCrested) {
+    const double uh = Sum(uh_s), ah = Sum(ah_s);
+    u << uh * cos_b_, uh * sin_b_, -Sum(uu);
+    a << ah * cos_b_, ah * sin_b_, -Sum(au);
+    if (kDerivative) {
+      const double duh = Sum(duh_s), dah = Sum(dah_s);
+      du << duh * cos_b_, duh * sin_b_, -Sum(duu);
+      da << dah * cos_b_, dah * sin_b_, -Sum(dau);
+    }
+  } else {
+    u << Sum(ux), Sum(uy), -Sum(uu);
+    a << Sum(ax), Sum(ay), -Sum(au);
+    if (kDerivative) {
+      du << Sum(dux), Sum(duy), -Sum(duu);
+      da << Sum(dax), Sum(day), -Sum(dau);
+    }
+  }
   // NED: w = -u_up; the ramp scales the velocity, and its rate adds r' u to the acceleration
-  const Vec3 u(ux, uy, -uu), a(ax, ay, -au), du(dux, duy, -duu), da(dax, day, -dau);
   out.velocity = r * u;
   out.acceleration = r * a + r_rate * u;
   if (kDerivative) {

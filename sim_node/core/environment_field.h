@@ -28,6 +28,7 @@
 
 #include "core/flow_sample.h"
 #include "core/model.h"
+#include "core/packet_math.h"
 
 namespace towsim::core {
 
@@ -71,11 +72,20 @@ class EnvironmentField {
   const SeabedContact& seabed_contact() const { return env_.seabed.contact(); }
 
  private:
-  // the wave components, structure of arrays, sorted by increasing k (so that a point at depth
-  // can stop at the first component that has decayed, see kDecayCutoff)
+  // the wave components, structure of arrays of two-component packets (packet_math.h), sorted
+  // by increasing k (so that a point at depth can stop at the first component that has
+  // decayed, see kDecayCutoff), padded with a zero-amplitude copy of the last one to a whole
+  // packet
   struct Components {
-    std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
+    std::vector<Pack> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
+    // per component (unpadded): k and ln(1 / (1 - q)), for the depth cut-off's search
+    std::vector<double> k_scalar, log_inv_1mq;
   };
+  // packets to sum at a point of height zeta_e above the mean level (all, or those before the
+  // first decayed component when the point is always wet)
+  size_t PacketsToSum(double zeta_e, bool always_wet) const;
+  template <bool kDerivative, bool kLongCrested>
+  WaveSample SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const;
   template <bool kDerivative>
   WaveSample SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const;
   double Ramp(double t, double* rate) const;
@@ -90,6 +100,10 @@ class EnvironmentField {
   double wave_depth_ = 0.0;     // h [m], infinity for deep water
   double ramp_ = 0.0;           // [s]
   double amplitude_sum_ = 0.0;  // sum a_i: no crest rises higher [m]
+  // every component travels the same way (b, a long-crested sea): the horizontal sums are
+  // formed along it once, and the phase is k (x cos b + y sin b)
+  bool long_crested_ = false;
+  double cos_b_ = 1.0, sin_b_ = 0.0;
 };
 
 }  // namespace towsim::core

@@ -89,6 +89,42 @@ TEST(EnvironmentField, WaveDerivativeAlongADirectionIsTheFiniteDifference) {
   }
 }
 
+TEST(EnvironmentField, ShortCrestedSeaResolvesEachComponentsDirection) {
+  // components travelling different ways take the per-component path of the sums (a
+  // long-crested sea sums along its one direction); three components: an odd count, so the
+  // last packet holds one zero-amplitude pad
+  constexpr double kStep = 1e-4;              // [m], as in the derivative test above
+  constexpr double kDerivativeAbsTol = 1e-6;  // [1/s], [1/s^2]
+  for (const double depth : {kInf, 25.0}) {
+    Environment env;
+    env.waves = WaveField(depth, env.gravity, env.water_density);
+    env.waves.AddComponent(0.4, 2.0 * kPi / 9.0, 0.3, 0.2);
+    env.waves.AddComponent(0.25, 2.0 * kPi / 5.5, -1.2, 2.5);
+    env.waves.AddComponent(0.1, 2.0 * kPi / 3.0, 2.0, -1.0);
+    if (std::isfinite(depth)) env.seabed = Seabed::Flat(depth);
+    const EnvironmentField sea(env);
+    for (const double t : {1.5, 70.0}) {
+      for (const Vec3& p : {Vec3(0, 0, 0.3), Vec3(12, -3, 4), Vec3(-30, 20, 14.0)}) {
+        const WaveKinematics ref = env.waves.Kinematics(p, t);
+        const Vec3 d = Vec3(-0.3, 0.9, 0.4).normalized();
+        const WaveSample w = sea.Waves(p, d, t);
+        EXPECT_LT((w.velocity - ref.velocity).norm(), kSameTheoryAbsTol) << p.transpose();
+        EXPECT_LT((w.acceleration - ref.acceleration).norm(), kSameTheoryAbsTol) << p.transpose();
+        EXPECT_NEAR(sea.Elevation(p.x(), p.y(), t), env.waves.Elevation(p.x(), p.y(), t),
+                    kSameTheoryAbsTol);
+        const WaveSample wp = sea.Waves(p + kStep * d, Vec3::Zero(), t);
+        const WaveSample wm = sea.Waves(p - kStep * d, Vec3::Zero(), t);
+        EXPECT_LT((w.d_velocity - (wp.velocity - wm.velocity) / (2 * kStep)).norm(),
+                  kDerivativeAbsTol)
+            << p.transpose();
+        EXPECT_LT((w.d_acceleration - (wp.acceleration - wm.acceleration) / (2 * kStep)).norm(),
+                  kDerivativeAbsTol)
+            << p.transpose();
+      }
+    }
+  }
+}
+
 TEST(EnvironmentField, HermiteWavesBetweenNodesMatchTheExactKinematics) {
   // the Case 1 cable (10 m elements) straight from the tow point at 3.7 m down at 30 deg below
   // the horizontal, in the case3_waves sea (JONSWAP Hs 2 m, Tp 8 s, 60 m deep): the waves held
