@@ -148,7 +148,10 @@ const finished = new Promise((resolve) => {
       channels.set(c.id, { topic: c.topic, reader: new MessageReader(definitions), schemaName: c.schemaName });
       subscriptions.set(client.subscribe(c.id), c.id);
       const m = c.topic.match(/^\/towsim\/([^/]+)\/command$/);
-      if (m) {
+      // winch/command is the winch's own command type, not a body's (docs/winch_dds.md)
+      if (m && m[1] === "winch") {
+        check(c.schemaName === "towsim_msgs/msg/WinchCommand", `${c.topic} schema ${c.schemaName}`);
+      } else if (m) {
         check(c.schemaName === "towsim_msgs/msg/ActuatorCommand", `${c.topic} schema ${c.schemaName}`);
         commandWriter = new MessageWriter(definitions);
         commandChannels.set(m[1], client.advertise({ topic: c.topic, encoding: "cdr", schemaName: c.schemaName }));

@@ -273,7 +273,12 @@ TEST_F(WinchDdsTest, TowfishDepthWinchModeReachesACommandedDepthWithinTheWinchsL
   EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();
 
   const std::vector<DepthLogLine> lines = ReadDepthLog(log);
-  ASSERT_EQ(lines.size(), static_cast<size_t>(std::lround(kDuration / kH)) + 1);
+  // one line per step answered, 0 .. N-1; the run's end state N (FINISHED, which no command
+  // answers) is logged only when the controller takes it before the node's last status
+  // leaves, a race of process exit, not of the control
+  const size_t steps = static_cast<size_t>(std::lround(kDuration / kH));
+  ASSERT_GE(lines.size(), steps);
+  ASSERT_LE(lines.size(), steps + 1);
   EXPECT_GT(std::abs(lines.front().z - kTarget), 4.0);  // a real change of depth
   // the last 100 s: at the commanded depth, the elevators near neutral (the winch rests once
   // |deeper demand| < deadband / elevator_depth = 0.5 m / 25 m/rad = 0.02 rad; the integral of
