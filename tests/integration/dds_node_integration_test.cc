@@ -48,20 +48,6 @@ constexpr double kStopMargin = 1.0;  // [s]
 
 double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
-std::string LogPrefix(const std::string& what) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
-         what;
-}
-
-std::vector<std::string> Node(const std::string& scene, const std::string& mode, int domain,
-                              std::vector<std::string> extra = {}) {
-  std::vector<std::string> argv = {
-      TOWSIM_DDS_NODE, "--scene", scene, "--mode", mode, "--domain", std::to_string(domain)};
-  argv.insert(argv.end(), extra.begin(), extra.end());
-  return argv;
-}
-
 std::vector<std::string> Controller(int domain, std::vector<std::string> extra = {}) {
   std::vector<std::string> argv = {TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(domain)};
   argv.insert(argv.end(), extra.begin(), extra.end());
@@ -112,7 +98,8 @@ std::vector<OdomLine> LockstepRun(int domain, const std::string& scene, double d
                                   std::vector<std::string> node_extra = {}) {
   node_extra.insert(node_extra.end(), {"--duration", std::to_string(duration)});
   const std::string tag = "d" + std::to_string(domain);
-  Process node(Node(scene, "lockstep", domain, node_extra), LogPrefix(tag + "_node"));
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, scene, "lockstep", domain, node_extra),
+               LogPrefix(tag + "_node"));
   const std::string log = LogPrefix(tag + "_odom.log");
   std::vector<std::string> ctl = {"--log", log};
   for (const std::string& c : commands) ctl.insert(ctl.end(), {"--command", c});
@@ -254,7 +241,8 @@ TEST_F(DdsNodeTest, LockstepWithTheScriptsCommandsEqualsOffline) {
 // domain 45
 TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
   Observer watch(45);
-  Process node(Node(kCase1, "lockstep", 45, {"--duration", "100", "--set", "script=[]"}),
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "lockstep", 45,
+                           {"--duration", "100", "--set", "script=[]"}),
                LogPrefix("node"));
   Process controller(Controller(45, {"--command", "tow_vehicle@0=4500,0,0"}),
                      LogPrefix("controller"));
@@ -290,10 +278,10 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
 TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
   constexpr uint8_t kWaiting = towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
   Observer watch(51);
-  Process node(
-      Node(kCase1, "realtime", 51,
-           {"--duration", "10", "--rate", "20", "--wait-for-controllers", "--set", "script=[]"}),
-      LogPrefix("node"));
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "realtime", 51,
+                           {"--duration", "10", "--rate", "20", "--wait-for-controllers", "--set",
+                            "script=[]"}),
+               LogPrefix("node"));
   Status waiting;
   ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.state == kWaiting; }, &waiting));
   EXPECT_EQ(waiting.step, 0u);
@@ -323,7 +311,8 @@ TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
 // domain 46
 TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
   Observer watch(46);
-  Process node(Node(kCase1, "realtime", 46, {"--duration", "600", "--set", "script=[]"}),
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "realtime", 46,
+                           {"--duration", "600", "--set", "script=[]"}),
                LogPrefix("node"));
   Status s;
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 1; }, &s));
@@ -362,7 +351,8 @@ TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
 // domain 47
 TEST_F(DdsNodeTest, PauseStepResetResumeAndRate) {
   Observer watch(47, "/sys_a");
-  Process node(Node(kSteadyTow, "realtime", 47, {"--namespace", "/sys_a", "--duration", "600"}),
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, kSteadyTow, "realtime", 47,
+                           {"--namespace", "/sys_a", "--duration", "600"}),
                LogPrefix("node"));
   Status s;
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 3; }, &s));
@@ -409,7 +399,8 @@ TEST_F(DdsNodeTest, PauseStepResetResumeAndRate) {
 // domain 48
 TEST_F(DdsNodeTest, SignalStopsAWaitingLockstepNode) {
   Observer watch(48);
-  Process node(Node(kCase1, "lockstep", 48, {"--duration", "100"}), LogPrefix("node"));
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "lockstep", 48, {"--duration", "100"}),
+               LogPrefix("node"));
   Status s;
   // it publishes its state while it waits for the first commands
   ASSERT_TRUE(watch.WaitFor(
@@ -429,14 +420,15 @@ TEST_F(DdsNodeTest, SignalStopsAWaitingLockstepNode) {
 
 // domain 49 (no traffic: the nodes fail before or right after setup)
 TEST_F(DdsNodeTest, DdsSetupErrorsExit2WithCyclonesMessage) {
-  Process bad_domain(Node(kCase1, "fast", 300, {"--duration", "1"}), LogPrefix("domain"));
+  Process bad_domain(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "fast", 300, {"--duration", "1"}),
+                     LogPrefix("domain"));
   ASSERT_TRUE(bad_domain.Wait(kProcessTimeout));
   EXPECT_EQ(bad_domain.exit_code(), 2);
   EXPECT_NE(bad_domain.err().find("sim_node: error: DDS setup failed"), std::string::npos)
       << bad_domain.err();
 
-  Process bad_config(Node(kCase1, "fast", 49, {"--duration", "1"}), LogPrefix("config"),
-                     {"CYCLONEDDS_URI=file:///nonexistent/cyclonedds.xml"});
+  Process bad_config(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "fast", 49, {"--duration", "1"}),
+                     LogPrefix("config"), {"CYCLONEDDS_URI=file:///nonexistent/cyclonedds.xml"});
   ASSERT_TRUE(bad_config.Wait(kProcessTimeout));
   EXPECT_EQ(bad_config.exit_code(), 2);
   EXPECT_NE(bad_config.err().find("sim_node: error: DDS setup failed"), std::string::npos)
@@ -444,16 +436,17 @@ TEST_F(DdsNodeTest, DdsSetupErrorsExit2WithCyclonesMessage) {
   EXPECT_NE(bad_config.err().find("/nonexistent/cyclonedds.xml"), std::string::npos)
       << bad_config.err();  // Cyclone's own message names the file
 
-  Process bad_namespace(Node(kCase1, "fast", 49, {"--namespace", "towsim"}), LogPrefix("ns"));
+  Process bad_namespace(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "fast", 49, {"--namespace", "towsim"}),
+                        LogPrefix("ns"));
   ASSERT_TRUE(bad_namespace.Wait(kProcessTimeout));
   EXPECT_EQ(bad_namespace.exit_code(), 2);
   EXPECT_NE(bad_namespace.err().find("--namespace towsim: must start with '/'"), std::string::npos)
       << bad_namespace.err();
 
   // and a solver failure is exit 3 with the diagnosis, as offline
-  Process failing(Node(kCase1, "fast", 49,
-                       {"--duration", "1", "--set", "integrator.max_iterations=1", "--set",
-                        "integrator.max_substep_level=0"}),
+  Process failing(SimNodeArgs(TOWSIM_DDS_NODE, kCase1, "fast", 49,
+                              {"--duration", "1", "--set", "integrator.max_iterations=1", "--set",
+                               "integrator.max_substep_level=0"}),
                   LogPrefix("solver"));
   ASSERT_TRUE(failing.Wait(kProcessTimeout));
   EXPECT_EQ(failing.exit_code(), 3);
@@ -476,7 +469,8 @@ TEST_F(DdsNodeTest, PublishesTheStandardTopics) {
   const dds_entity_t cable = dds_create_reader(p, cable_t, qos, nullptr);
   dds_delete_qos(qos);
 
-  Process node(Node(kSteadyTow, "realtime", 50, {"--rate", "4", "--duration", "600"}),
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, kSteadyTow, "realtime", 50,
+                           {"--rate", "4", "--duration", "600"}),
                LogPrefix("node"));
   auto take_one = [](dds_entity_t reader, const std::function<void(const void*)>& f) {
     const Clock::time_point start = Clock::now();
@@ -552,9 +546,9 @@ TEST_F(DdsNodeTest, SeaSceneEnvironmentTopicEqualsTheNodesEnvironmentCsv) {
                        (watch.prefix() + "ball/environment").c_str(), nullptr, nullptr);
   const dds_entity_t env = dds_create_reader(p, env_t, qos, nullptr);
   dds_delete_qos(qos);
-  Process node(Node(scene, "realtime", 189,
-                    {"--rate", "1", "--duration", "3", "--csv", dir + "_csv", "--set",
-                     "publish.sensors=10"}),
+  Process node(SimNodeArgs(TOWSIM_DDS_NODE, scene, "realtime", 189,
+                           {"--rate", "1", "--duration", "3", "--csv", dir + "_csv", "--set",
+                            "publish.sensors=10"}),
                LogPrefix("sea_node"));
   struct Sample {
     double t;
