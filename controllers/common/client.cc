@@ -86,6 +86,21 @@ static dds_entity_t WaitsetOf(dds_entity_t participant, dds_entity_t reader) {
   return ws;
 }
 
+// takes what `reader` has queued, up to 16 samples (a second call takes more), and calls
+// fn(sample, its stamp [s]) for each valid one, oldest first
+template <class Msg, class Fn>
+void TakeQueued(dds_entity_t reader, Fn fn) {
+  void* samples[16] = {};
+  dds_sample_info_t infos[16];
+  const dds_return_t k = dds_take(reader, samples, infos, 16, 16);
+  for (int j = 0; j < k; ++j) {
+    if (!infos[j].valid_data) continue;
+    const auto* m = static_cast<const Msg*>(samples[j]);
+    fn(*m, StampSeconds(m->header.stamp.sec, m->header.stamp.nanosec));
+  }
+  if (k > 0) dds_return_loan(reader, samples, k);
+}
+
 // takes from `track` (OdomTrack, AltitudeTrack: Take(t), Has(t), its waitset) until it has the
 // sample of the step at time t, or 0.5 s of wall time passed (then it keeps the latest)
 template <class Track>
@@ -117,26 +132,19 @@ struct OdomTrack {
   }
 
   void Take(double /*t*/) {
-    void* os[16] = {};
-    dds_sample_info_t oi[16];
-    const dds_return_t k = dds_take(reader, os, oi, 16, 16);
-    for (int j = 0; j < k; ++j) {
-      if (!oi[j].valid_data) continue;
-      const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(os[j]);
-      const double t = StampSeconds(o->header.stamp.sec, o->header.stamp.nanosec);
+    TakeQueued<nav_msgs_msg_dds__Odometry_>(reader, [this](const auto& o, double t) {
       if (reset_time >= 0.0) {
-        if (t > reset_time + 1e-9) continue;  // the old run's
+        if (t > reset_time + 1e-9) return;  // the old run's
         reset_time = -1.0;
       }
       if (t >= time || !have) {  // a RESET goes back in time: see below
-        odom = *o;
+        odom = o;
         odom.header.frame_id = nullptr;
         odom.child_frame_id = nullptr;
         time = t;
         have = true;
       }
-    }
-    if (k > 0) dds_return_loan(reader, os, k);
+    });
   }
 
   bool Has(double t) const { return have && time >= t - 1e-9; }
@@ -155,20 +163,11 @@ struct AltitudeTrack {
   void NewRun() { time = -1.0; }
 
   void Take(double t) {
-    void* rs[16] = {};
-    dds_sample_info_t ri[16];
-    const dds_return_t k = dds_take(reader, rs, ri, 16, 16);
-    for (int j = 0; j < k; ++j) {
-      if (!ri[j].valid_data) continue;
-      const auto* r = static_cast<const sensor_msgs_msg_dds__Range_*>(rs[j]);
-      const double stamp = StampSeconds(r->header.stamp.sec, r->header.stamp.nanosec);
-      if (stamp > t + 1e-9) continue;
-      if (stamp >= time) {
-        range = r->range;
-        time = stamp;
-      }
-    }
-    if (k > 0) dds_return_loan(reader, rs, k);
+    TakeQueued<sensor_msgs_msg_dds__Range_>(reader, [this, t](const auto& r, double stamp) {
+      if (stamp > t + 1e-9 || stamp < time) return;
+      range = r.range;
+      time = stamp;
+    });
   }
 
   bool Has(double t) const { return time >= t - 1e-9; }
