@@ -248,6 +248,7 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
                      LogPrefix("controller"));
   // let it drive for a while, then kill it
   ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.step >= 100; }, nullptr));
+  const uint64_t failsafes_before = watch.statuses().back().failsafe_count;
   controller.Signal(SIGKILL);
   ASSERT_TRUE(controller.Wait(5.0));
   const Clock::time_point killed = Clock::now();
@@ -261,6 +262,12 @@ TEST_F(DdsNodeTest, KilledControllerMeansFailsafe) {
   EXPECT_LT(Seconds(first.when - killed), kLockstepTimeout + kStopMargin);
   EXPECT_LT(Seconds(both.when - killed), 2 * kLockstepTimeout + kStopMargin);
   EXPECT_LE(both.step - first.step, 1u);
+  std::printf(
+      "[ dds_node ] %llu failsafes before the kill; after it: %s failsafe at step %llu, %s\n",
+      static_cast<unsigned long long>(failsafes_before),
+      first.failsafe_count == 2 ? "both vehicles" : first.failsafe_bodies.at(0).c_str(),
+      static_cast<unsigned long long>(first.step),
+      first.failsafe_count == 2 ? "together" : "the other a step later");
   // failsafe: both vehicles, each by its lockstep timeout, and the node goes on stepping
   EXPECT_EQ(both.failsafe_bodies, (std::vector<std::string>{"tow_vehicle", "towfish"}));
   EXPECT_EQ(both.lockstep_timeouts, 2u);
