@@ -24,7 +24,8 @@
 // speed 0 up to kWinchStep, then 1 m/s; at kBadStep a truncated WinchCommand (the bridge
 // rejects it) and a NaN speed (the node rejects it) first. Then paid_out_length in the decoded
 // CableState equals the node's winch.csv row for row, and at the end the drum's kinematics:
-// 200 m + v^2 / (2 a) + v (T - t_on - v / a) = 204 m.
+// 200 m + v^2 / (2 a) + v (T - t_on - v / a) = 204 m. Without `winch`, advertising
+// /towsim/winch/command is refused (an error status names the topic).
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
 import { spawn } from "node:child_process";
 import { mkdirSync, readFileSync, rmSync } from "node:fs";
@@ -166,6 +167,10 @@ const finished = new Promise((resolve) => {
   client.on("status", (s) => statuses.push(s));
   client.on("time", (t) => times.push(t.timestamp));
   client.on("advertise", (list) => {
+    if (!withWinch && winchChannel === undefined) {
+      // a scene without a winch: its command topic is refused (an error status names it)
+      winchChannel = client.advertise({ topic: "/towsim/winch/command", encoding: "cdr", schemaName: "towsim_msgs/msg/WinchCommand" });
+    }
     for (const c of list) {
       check(c.encoding === "cdr" && c.schemaEncoding === "ros2msg", `${c.topic}: encoding ${c.encoding} / ${c.schemaEncoding}`);
       const definitions = parseMessageDefinition(c.schema, { ros2: true });
@@ -318,6 +323,10 @@ if (inNode) {
   check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === kBad, `sim_node's notes of the malformed commands: ${node.err}`);
 } else {
   check(new RegExp(`malformed ${kBad}\\)`).test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+}
+if (!withWinch) {
+  check(statuses.some((s) => s.level === 2 && /advertise \/towsim\/winch\/command: not a topic clients may publish on/.test(s.message)),
+    `an error status refusing /towsim/winch/command without a winch (${JSON.stringify(statuses)})`);
 }
 if (withWinch) {
   check(statuses.some((s) => s.level === 2 && /malformed towsim_msgs\/msg\/WinchCommand on \/towsim\/winch\/command/.test(s.message)),
