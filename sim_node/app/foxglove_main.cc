@@ -14,7 +14,9 @@
 // time: the header stamp of each message, /clock for the time messages.
 //
 // clientPublish: a client may advertise rt/<ns>/<body>/command (towsim_msgs/msg/
-// ActuatorCommand) and rt/<ns>/sim_control (towsim_msgs/msg/SimControl) with encoding cdr.
+// ActuatorCommand), rt/<ns>/winch/command (towsim_msgs/msg/WinchCommand, when the scene info
+// says the scene has a winch; docs/winch_dds.md) and rt/<ns>/sim_control (towsim_msgs/msg/
+// SimControl) with encoding cdr.
 // Each message is checked to be a valid CDR sample of its type (Cyclone's deserializer) and
 // written on DDS as it is; the node validates it exactly like any DDS command (NaN rejected,
 // out of range clamped, counted in its status). A malformed message is rejected here: an error
