@@ -345,7 +345,9 @@ void DdsNode::TakeCommands() {
         });
   } else if (n_.winch_script) {
     n_.endpoints->winch_reader()->TakeEach([&](const dds::WinchCommandMsg&, const auto&) {
-      if (++winch_script_rejected_ == 1) std::fprintf(stderr, "sim_node: %s\n", kWinchScriptRejected);
+      if (++winch_script_rejected_ == 1) {
+        std::fprintf(stderr, "sim_node: %s\n", kWinchScriptRejected);
+      }
     });
   }
 }

@@ -3,11 +3,12 @@
 // towsim_foxglove and sim_node --foxglove: on `<ns>/<b>/command` a towsim_msgs/msg/
 // ActuatorCommand, or a geometry_msgs/msg/Twist from Foxglove's Teleop panel (TwistToCommand);
 // on `<ns>/winch/command` (a scene with a winch, docs/winch_dds.md) a towsim_msgs/msg/
-// WinchCommand; on `<ns>/sim_control` a towsim_msgs/msg/SimControl; encoding cdr. A message is checked to be
-// a valid CDR sample of its type (Cyclone's deserializer) and written on DDS as it is, from a
-// writer in the given participant, so that the node validates it exactly like any DDS command
-// (the node's own readers take the samples of a writer in the node's participant too). A
-// malformed message is rejected here (the server sends the reason to the client) and counted.
+// WinchCommand; on `<ns>/sim_control` a towsim_msgs/msg/SimControl; encoding cdr. A message
+// is checked to be a valid CDR sample of its type (Cyclone's deserializer) and written on DDS
+// as it is, from a writer in the given participant, so that the node validates it exactly like
+// any DDS command (the node's own readers take the samples of a writer in the node's
+// participant too). A malformed message is rejected here (the server sends the reason to the
+// client) and counted.
 //
 // Thread safety: Advertise, Publish and SetStatusStep may come from different threads.
 
