@@ -10,7 +10,6 @@
 #include <utility>
 
 #include "scene/config_error.h"
-#include "scene/yaml_comments.h"
 
 namespace towsim::scene::internal {
 namespace {
@@ -136,8 +135,7 @@ YAML::Node LoadOneDocument(const std::string& text, const std::string& name_for_
                            const std::string& key, const std::string& value_if_invalid) {
   std::vector<YAML::Node> documents;
   try {
-    // without its comments: the same nodes at the same marks, parsed faster (yaml_comments.h)
-    documents = YAML::LoadAll(StripYamlComments(text));
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     const std::string line = e.mark.is_null() ? "" : ":" + std::to_string(e.mark.line + 1);
     throw ConfigError(key, value_if_invalid, name_for_messages + line, "not valid YAML: " + e.msg);

@@ -19,8 +19,3 @@ towsim_add_test(yaml_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/yaml_reader_test.cc
   LIBS towsim::scene)
 target_include_directories(yaml_reader_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
-# the comments taken out before yaml-cpp parses (scene/yaml_comments.h): the same nodes, marks
-# and errors as the original text, against yaml-cpp itself
-towsim_add_test(yaml_comments_test LABEL unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/yaml_comments_test.cc
-  LIBS towsim::scene yaml-cpp)
