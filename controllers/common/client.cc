@@ -86,6 +86,33 @@ static dds_entity_t WaitsetOf(dds_entity_t participant, dds_entity_t reader) {
   return ws;
 }
 
+// takes what `reader` has queued, up to 16 samples (a second call takes more), and calls
+// fn(sample, its stamp [s]) for each valid one, oldest first
+template <class Msg, class Fn>
+void TakeQueued(dds_entity_t reader, Fn fn) {
+  void* samples[16] = {};
+  dds_sample_info_t infos[16];
+  const dds_return_t k = dds_take(reader, samples, infos, 16, 16);
+  for (int j = 0; j < k; ++j) {
+    if (!infos[j].valid_data) continue;
+    const auto* m = static_cast<const Msg*>(samples[j]);
+    fn(*m, StampSeconds(m->header.stamp.sec, m->header.stamp.nanosec));
+  }
+  if (k > 0) dds_return_loan(reader, samples, k);
+}
+
+// takes from `track` (OdomTrack, AltitudeTrack: Take(t), Has(t), its waitset) until it has the
+// sample of the step at time t, or 0.5 s of wall time passed (then it keeps the latest)
+template <class Track>
+void WaitForStep(Track* track, double t, const ClientOptions& opt) {
+  const Clock::time_point begin = Clock::now();
+  for (;;) {
+    track->Take(t);
+    if (track->Has(t)) break;
+    if (Stopping(opt) || !WaitForSamples(track->waitset, begin, 0.5)) break;
+  }
+}
+
 // the newest odometry of one body taken from its reader
 struct OdomTrack {
   dds_entity_t reader = 0;
@@ -104,38 +131,48 @@ struct OdomTrack {
     if (reset) reset_time = t;
   }
 
-  void Take() {
-    void* os[16] = {};
-    dds_sample_info_t oi[16];
-    const dds_return_t k = dds_take(reader, os, oi, 16, 16);
-    for (int j = 0; j < k; ++j) {
-      if (!oi[j].valid_data) continue;
-      const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(os[j]);
-      const double t = StampSeconds(o->header.stamp.sec, o->header.stamp.nanosec);
+  void Take(double /*t*/) {
+    TakeQueued<nav_msgs_msg_dds__Odometry_>(reader, [this](const auto& o, double t) {
       if (reset_time >= 0.0) {
-        if (t > reset_time + 1e-9) continue;  // the old run's
+        if (t > reset_time + 1e-9) return;  // the old run's
         reset_time = -1.0;
       }
       if (t >= time || !have) {  // a RESET goes back in time: see below
-        odom = *o;
+        odom = o;
         odom.header.frame_id = nullptr;
         odom.child_frame_id = nullptr;
         time = t;
         have = true;
       }
-    }
-    if (k > 0) dds_return_loan(reader, os, k);
+    });
   }
 
+  bool Has(double t) const { return have && time >= t - 1e-9; }
   // takes until the odometry of time t came, or 0.5 s of wall time (then the latest)
-  void WaitFor(double t, const ClientOptions& opt) {
-    const Clock::time_point wait_begin = Clock::now();
-    for (;;) {
-      Take();
-      if (have && time >= t - 1e-9) break;
-      if (Stopping(opt) || !WaitForSamples(waitset, wait_begin, 0.5)) break;
-    }
+  void WaitFor(double t, const ClientOptions& opt) { WaitForStep(this, t, opt); }
+};
+
+// the newest altimeter range (sensor_msgs/Range) stamped at most the step answered, taken from
+// its reader (a RESET's old run has later stamps)
+struct AltitudeTrack {
+  dds_entity_t reader = 0;   // 0: not subscribed
+  dds_entity_t waitset = 0;  // on `reader`
+  float range = 0.0f;
+  double time = -1.0;
+
+  void NewRun() { time = -1.0; }
+
+  void Take(double t) {
+    TakeQueued<sensor_msgs_msg_dds__Range_>(reader, [this, t](const auto& r, double stamp) {
+      if (stamp > t + 1e-9 || stamp < time) return;
+      range = r.range;
+      time = stamp;
+    });
   }
+
+  bool Has(double t) const { return time >= t - 1e-9; }
+  // takes until the range of time t came, or 0.5 s of wall time
+  void WaitFor(double t, const ClientOptions& opt) { WaitForStep(this, t, opt); }
 };
 
 struct LockstepClient::Impl {
@@ -143,14 +180,13 @@ struct LockstepClient::Impl {
   dds_entity_t participant = 0;
   dds_entity_t status_reader = 0, command_writer = 0;
   dds_entity_t waitset = 0;
-  dds_entity_t altitude_reader = 0;  // 0: not subscribed
-  dds_entity_t altitude_waitset = 0;  // on altitude_reader
   dds_entity_t winch_writer = 0;     // 0: no winch commands
   dds_entity_t cable_reader = 0;     // 0: not subscribed
   std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
   double step_size = 0.05;
   WinchInfo winch;
   OdomTrack own, observed;  // the commanded body's odometry, ClientOptions::observe's
+  AltitudeTrack altitude;   // with ClientOptions::altitude
 
   // the newest cable state stamped at most t (a RESET's old run has later stamps)
   CableSample cable;
@@ -173,26 +209,6 @@ struct LockstepClient::Impl {
       if (k > 0) dds_return_loan(cable_reader, cs, k);
       if (k < 4) break;
     }
-  }
-
-  // the newest altimeter range stamped at most t (a RESET's old run has later stamps)
-  float altitude_range = 0.0f;
-  double altitude_time = -1.0;
-  void TakeAltitude(double t) {
-    void* rs[16] = {};
-    dds_sample_info_t ri[16];
-    const dds_return_t k = dds_take(altitude_reader, rs, ri, 16, 16);
-    for (int j = 0; j < k; ++j) {
-      if (!ri[j].valid_data) continue;
-      const auto* r = static_cast<const sensor_msgs_msg_dds__Range_*>(rs[j]);
-      const double stamp = StampSeconds(r->header.stamp.sec, r->header.stamp.nanosec);
-      if (stamp > t + 1e-9) continue;
-      if (stamp >= altitude_time) {
-        altitude_range = r->range;
-        altitude_time = stamp;
-      }
-    }
-    if (k > 0) dds_return_loan(altitude_reader, rs, k);
   }
 };
 
@@ -254,9 +270,9 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
           Check(dds_create_topic(m.participant, &sensor_msgs_msg_dds__Range__desc,
                                  (prefix + options.body + "/altitude").c_str(), nullptr, nullptr),
                 "altitude topic");
-      m.altitude_reader = Check(
+      m.altitude.reader = Check(
           dds_create_reader(m.participant, altitude_topic, state_qos, nullptr), "altitude reader");
-      readers.push_back(m.altitude_reader);
+      readers.push_back(m.altitude.reader);
     }
     writers[0] = m.command_writer;
     // the optional endpoints: a reader or writer of `type` on prefix + `name`
@@ -354,7 +370,7 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
     Check(dds_waitset_attach(m.waitset, cond, 0), "waitset attach");
     m.own.waitset = WaitsetOf(m.participant, m.own.reader);
     if (m.observed.reader != 0) m.observed.waitset = WaitsetOf(m.participant, m.observed.reader);
-    if (m.altitude_reader != 0) m.altitude_waitset = WaitsetOf(m.participant, m.altitude_reader);
+    if (m.altitude.reader != 0) m.altitude.waitset = WaitsetOf(m.participant, m.altitude.reader);
   } catch (...) {
     dds_delete_qos(state_qos);
     dds_delete_qos(cable_qos);
@@ -413,7 +429,7 @@ int LockstepClient::Run(const Law& law) {
           // a RESET, not the first run seen: the old run's samples still queued are dropped
           m.own.NewRun(!run_id.empty(), t);
           m.observed.NewRun(!run_id.empty(), t);
-          m.altitude_time = -1.0;
+          m.altitude.NewRun();
           m.cable = CableSample{};
         }
         // the odometry of this step (published before the status); the latest one after a
@@ -443,17 +459,10 @@ int LockstepClient::Run(const Law& law) {
           b.y_dot = vw.y;
           b.z_dot = vw.z;
           b.dt = (new_run || t <= last_time) ? m.step_size : t - last_time;
-          if (m.altitude_reader != 0) {
+          if (m.altitude.reader != 0) {
             // the range of this step (published with the odometry, before the status)
-            const Clock::time_point altitude_begin = Clock::now();
-            for (;;) {
-              m.TakeAltitude(t);
-              if (m.altitude_time >= t - 1e-9) break;
-              if (Stopping(m.opt) || !WaitForSamples(m.altitude_waitset, altitude_begin, 0.5)) {
-                break;
-              }
-            }
-            if (m.altitude_time >= t - 1e-9) b.altitude = m.altitude_range;
+            m.altitude.WaitFor(t, m.opt);
+            if (m.altitude.Has(t)) b.altitude = m.altitude.range;
           }
           if (m.observed.reader != 0) {
             m.observed.WaitFor(t, m.opt);

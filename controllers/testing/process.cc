@@ -12,6 +12,8 @@
 #include <thread>
 #include <utility>
 
+#include <gtest/gtest.h>
+
 namespace towsim::testing {
 
 std::string ReadFile(const std::string& path) {
@@ -19,6 +21,21 @@ std::string ReadFile(const std::string& path) {
   std::stringstream s;
   s << in.rdbuf();
   return s.str();
+}
+
+std::string LogPrefix(const std::string& what) {
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
+         what;
+}
+
+std::vector<std::string> SimNodeArgs(const std::string& program, const std::string& scene,
+                                     const std::string& mode, int domain,
+                                     const std::vector<std::string>& extra) {
+  std::vector<std::string> argv = {
+      program, "--scene", scene, "--mode", mode, "--domain", std::to_string(domain)};
+  argv.insert(argv.end(), extra.begin(), extra.end());
+  return argv;
 }
 
 Process::Process(std::vector<std::string> argv, const std::string& log_prefix,

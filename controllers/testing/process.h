@@ -1,6 +1,7 @@
 #pragma once
 // Child processes for the integration tests: started with fork + exec, stdout and stderr to
-// files, waited for with a timeout, stopped by their own pid only.
+// files, waited for with a timeout, stopped by their own pid only; their command lines and
+// log paths.
 
 #include <sys/types.h>
 
@@ -40,5 +41,15 @@ class Process {
 };
 
 std::string ReadFile(const std::string& path);
+
+// a log path prefix for a child of the running GoogleTest test, unique to that test:
+// TempDir()/towsim_<suite>_<test>_<what> (Process adds .out / .err)
+std::string LogPrefix(const std::string& what);
+
+// the command line `program --scene S --mode M --domain N` followed by `extra`, for sim_node
+// in a DDS mode (README.md, "Command line")
+std::vector<std::string> SimNodeArgs(const std::string& program, const std::string& scene,
+                                     const std::string& mode, int domain,
+                                     const std::vector<std::string>& extra = {});
 
 }  // namespace towsim::testing

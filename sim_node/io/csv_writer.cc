@@ -80,11 +80,16 @@ std::string CsvField(const std::string& name) {
 
 void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
                          double altitude, double depth, double u, double v, double w) {
+  std::string line;
+  Row row(&line);
+  row.Number(t).Text(CsvField(body)).Number(wave_elevation);
   // no seabed: the altitude is NaN, written as an empty field (the files never hold NaN)
-  char altitude_field[32] = "";
-  if (!std::isnan(altitude)) std::snprintf(altitude_field, sizeof altitude_field, "%.9g", altitude);
-  std::fprintf(f, "%.9g,%s,%.9g,%s,%.9g,%.9g,%.9g,%.9g\n", t, CsvField(body).c_str(),
-               wave_elevation, altitude_field, depth, u, v, w);
+  if (std::isnan(altitude)) {
+    row.Text("");
+  } else {
+    row.Number(altitude);
+  }
+  row.Number(depth).Number(u).Number(v).Number(w).WriteTo(f);
 }
 
 CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), winch_(winch) {
@@ -198,7 +203,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   row.WriteTo(status_.f);
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
-  if (environment_.f != nullptr) WriteEnvironment(sim, &line);
+  if (environment_.f != nullptr) WriteEnvironment(sim);
   if (winch_file_.f != nullptr) {
     Row(&line)
         .Number(t)
@@ -211,7 +216,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   }
 }
 
-void CsvWriter::WriteEnvironment(const core::Simulation& sim, std::string* /*line*/) {
+void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
   const double t = sim.time();
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const core::Vec3 u = sim.water_velocity_at(b);

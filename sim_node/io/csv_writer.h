@@ -107,7 +107,7 @@ class CsvWriter {
   };
   void Open(File& file, const char* name, const char* header);
   void Check(const File& file) const;
-  void WriteEnvironment(const core::Simulation& sim, std::string* line);
+  void WriteEnvironment(const core::Simulation& sim);
 
   std::string dir_;
   bool winch_ = false;

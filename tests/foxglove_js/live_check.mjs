@@ -31,6 +31,8 @@ import { spawn } from "node:child_process";
 import { mkdirSync, readFileSync, rmSync } from "node:fs";
 import { join } from "node:path";
 
+import { check, failures, near, readCsv } from "../js_common/checks.mjs";
+
 let ws, wsProtocol, rosmsg, serialization;
 try {
   ws = await import("ws");
@@ -56,8 +58,6 @@ const kTeleopStep = 80; // the step the tow vehicle is answered with a Twist (Te
 const kThrust = 4165; // [N] Case 1
 const kBadAnswerDelay = 200; // [ms] between the NaN command and the good one
 const kTimeout = 60e3; // [ms] the whole check; a run that takes longer has hung
-const kRelCsv = 5e-9; // half a unit in the 9th significant digit of the CSV
-const kAbs = 1e-300;
 const kAtRest = 0.05; // [m/s] |u| of the tow vehicle before any thrust (the cable's pull)
 const kMoving = 0.5; // [m/s] u after 7 s of 4165 N (Case 1 reaches 6 m/s)
 // the winch (`winch`): the drum from 200 m, at kWinchSpeed from kWinchStep
@@ -69,15 +69,6 @@ const kWinchSpeedMode = 0; // WinchCommand.SPEED
 // the drum's length is the exact integral of its piecewise constant acceleration (trapezoids
 // of the speed, which ramps by a h a step): round-off only
 const kLengthRelTol = 1e-12;
-
-let failures = 0;
-function check(ok, what) {
-  if (!ok) {
-    failures += 1;
-    if (failures <= 20) console.error(`FAIL: ${what}`);
-  }
-  return ok;
-}
 
 rmSync(outDir, { recursive: true, force: true });
 mkdirSync(outDir, { recursive: true });
@@ -276,13 +267,7 @@ check(decodeFailures === 0, `${decodeFailures} messages failed to decode`);
 // odometry against bodies.csv
 const stampSec = (t) => t.sec + 1e-9 * (t.nanosec ?? t.nsec);
 const stampNs = (t) => BigInt(t.sec) * 1000000000n + BigInt(t.nanosec ?? t.nsec);
-const lines = readFileSync(join(outDir, "csv/bodies.csv"), "utf8").trim().split("\n");
-const header = lines.shift().split(",");
-const rows = lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [header[i], v])));
-const near = (v, text, what) => {
-  const c = Number(text);
-  return check(Math.abs(v - c) <= kRelCsv * Math.abs(c) + kAbs, `${what}: ${v} vs CSV ${text}`);
-};
+const rows = readCsv(join(outDir, "csv/bodies.csv"));
 let compared = 0;
 for (const body of ["tow_vehicle", "towfish"]) {
   const odom = new Map();
@@ -396,8 +381,8 @@ for (const [id, panel] of Object.entries(layout.configById)) {
   if (id.startsWith("Teleop!")) check(commandChannels.has(panel.topic.split("/")[2]), `layout ${id}: ${panel.topic}`);
 }
 
-if (failures > 0) {
-  console.error(`${failures} failures`);
+if (failures() > 0) {
+  console.error(`${failures()} failures`);
   process.exit(1);
 }
 let count = 0;

@@ -30,12 +30,6 @@ constexpr double kTurnStart = 55.0;       // [s]
 constexpr double kSettled = 60.0;         // [s] the fish has risen from its start at rest
 constexpr double kCommandedDepth = 25.0;  // [m]
 
-std::string LogPrefix(const std::string& what) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
-         what;
-}
-
 struct Sample {
   double t = 0, x = 0, y = 0, z = 0, yaw = 0;
 };

@@ -25,12 +25,6 @@ const std::string kCase1 = kSource + "/config/scenes/case1_forward.yaml";
 constexpr double kProcessTimeout = 60.0;  // [s] of wall time: a run that takes longer hung
 constexpr double kDeg = 180.0 / M_PI;
 
-std::string LogPrefix(const std::string& what) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
-         what;
-}
-
 struct Row {
   double t = 0, x = 0, y = 0, z = 0, yaw = 0, u = 0;
 };

@@ -33,12 +33,6 @@ const std::string kSource = TOWSIM_SOURCE_DIR;
 constexpr double kDiscoveryTimeout = 20.0;  // [s] until both nodes and their endpoints are seen
 constexpr double kStopTimeout = 10.0;       // [s] for a process to end after SIGTERM
 
-std::string LogPrefix(const std::string& what) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
-         what;
-}
-
 Gid FromGuid(const dds_guid_t& g) { return Gid(g.v, g.v + sizeof g.v); }
 Gid FromMsg(const rmw_dds_common_msg_dds__Gid_& g) { return Gid(g.data, g.data + 16); }
 

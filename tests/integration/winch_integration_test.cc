@@ -36,20 +36,6 @@ const std::vector<std::string> kDrivenWinch = {"1=speed:1", "6=length:70", "13=s
 constexpr double kProcessTimeout = 120.0;  // [s] of wall time: a run that takes longer hung
 constexpr double kH = 0.05;                // the scenes' step [s]
 
-std::string LogPrefix(const std::string& what) {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
-         what;
-}
-
-std::vector<std::string> Node(const std::string& scene, const std::string& mode, int domain,
-                              std::vector<std::string> extra = {}) {
-  std::vector<std::string> argv = {
-      TOWSIM_SIM_NODE, "--scene", scene, "--mode", mode, "--domain", std::to_string(domain)};
-  argv.insert(argv.end(), extra.begin(), extra.end());
-  return argv;
-}
-
 std::vector<std::string> Controller(int domain, const std::vector<std::string>& winch,
                                     std::vector<std::string> extra = {}) {
   std::vector<std::string> argv = {TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(domain)};
@@ -72,9 +58,10 @@ std::string LockstepRun(int domain, double duration, const std::vector<std::stri
                         std::vector<std::string> controller_extra = {},
                         std::string* node_out = nullptr) {
   const std::string dir = LogPrefix("d" + std::to_string(domain) + "_csv");
-  Process node(Node(kDriven, "lockstep", domain,
-                    {"--duration", std::to_string(duration), "--set", "script=[]", "--csv", dir}),
-               LogPrefix("d" + std::to_string(domain) + "_node"));
+  Process node(
+      SimNodeArgs(TOWSIM_SIM_NODE, kDriven, "lockstep", domain,
+                  {"--duration", std::to_string(duration), "--set", "script=[]", "--csv", dir}),
+      LogPrefix("d" + std::to_string(domain) + "_node"));
   Process controller(Controller(domain, winch, controller_extra),
                      LogPrefix("d" + std::to_string(domain) + "_controller"));
   EXPECT_TRUE(controller.Wait(kProcessTimeout)) << controller.command_line();
@@ -178,9 +165,9 @@ TEST_F(WinchDdsTest, LockstepWithTheWinchScriptedEqualsTheOfflineScript) {
       "script=[{at: 0, body: tow_vehicle, thrust: 1050}, {at: 1, winch_speed: 1.0}, "
       "{at: 6, winch_length: 157.5}]";
   const std::string dds = LogPrefix("lockstep_csv"), offline = LogPrefix("offline_csv");
-  Process node(Node(scene, "lockstep", 167,
-                    {"--duration", std::to_string(kDuration), "--set", script, "--winch", "script",
-                     "--wait-for-controllers", "--csv", dds}),
+  Process node(SimNodeArgs(TOWSIM_SIM_NODE, scene, "lockstep", 167,
+                           {"--duration", std::to_string(kDuration), "--set", script, "--winch",
+                            "script", "--wait-for-controllers", "--csv", dds}),
                LogPrefix("node"));
   Process controller(Controller(167, {}, {"--command", "tow_vehicle@0=1050,0,0", "--winch-until",
                                           std::to_string(kWinchUntil)}),
@@ -238,9 +225,9 @@ TEST_F(WinchDdsTest, LockstepWithTheWinchScriptedEqualsTheOfflineScript) {
 TEST_F(WinchDdsTest, WaitForControllersWaitsForTheWinchInLockstep) {
   constexpr double kDuration = 2.0, kControllerLate = 1.0;  // [s]
   Observer watch(168);
-  Process node(Node(kDriven, "lockstep", 168,
-                    {"--duration", std::to_string(kDuration), "--set", "script=[]",
-                     "--wait-for-controllers"}),
+  Process node(SimNodeArgs(TOWSIM_SIM_NODE, kDriven, "lockstep", 168,
+                           {"--duration", std::to_string(kDuration), "--set", "script=[]",
+                            "--wait-for-controllers"}),
                LogPrefix("node"));
   constexpr uint8_t kWaitingState = towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
   Status s;
@@ -273,7 +260,8 @@ constexpr uint8_t kStopped = towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOP
 // failsafe (realtime, where the node does not wait for the winch)
 TEST_F(WinchDdsTest, BadWinchCommandsAreRejectedClampedCountedAndSilenceMeansFailsafe) {
   Observer watch(163);
-  Process node(Node(kDriven, "realtime", 163, {"--duration", "600", "--set", "script=[]"}),
+  Process node(SimNodeArgs(TOWSIM_SIM_NODE, kDriven, "realtime", 163,
+                           {"--duration", "600", "--set", "script=[]"}),
                LogPrefix("node"));
   Status s;
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 1; }, &s));
@@ -358,9 +346,10 @@ TEST_F(WinchDdsTest, TowfishDepthWinchModeReachesACommandedDepthWithinTheWinchsL
   const std::string scene = kSource + "/tests/integration/scenes/winch_towfish.yaml";
   constexpr double kDuration = 300.0, kTarget = 35.0;
   const std::string dir = LogPrefix("csv"), log = LogPrefix("depth.log");
-  Process node(Node(scene, "lockstep", 165,
-                    {"--duration", std::to_string(kDuration), "--set", "script=[]", "--csv", dir}),
-               LogPrefix("node"));
+  Process node(
+      SimNodeArgs(TOWSIM_SIM_NODE, scene, "lockstep", 165,
+                  {"--duration", std::to_string(kDuration), "--set", "script=[]", "--csv", dir}),
+      LogPrefix("node"));
   Process tow({TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--thrust", "1050", "--start", "0",
                "--domain", "165"},
               LogPrefix("tow"));
@@ -447,7 +436,8 @@ double SteadyDepth(double length, double speed) {
 TEST_F(WinchDdsTest, PayoutManoeuvreSheetAgreesWithTheSteadySolution) {
   const std::string scene = kSource + "/config/scenes/winch_tow.yaml";
   const std::string results = LogPrefix("sheet.yaml"), plot = LogPrefix("sheet.svg");
-  Process node(Node(scene, "lockstep", 166, {"--duration", "450"}), LogPrefix("node"));
+  Process node(SimNodeArgs(TOWSIM_SIM_NODE, scene, "lockstep", 166, {"--duration", "450"}),
+               LogPrefix("node"));
   Process runner({TOWSIM_MANEUVER_RUNNER, "--maneuver", "payout", "--domain", "166", "--results",
                   results, "--plot", plot},
                  LogPrefix("runner"));

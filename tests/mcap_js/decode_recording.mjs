@@ -24,6 +24,7 @@ import { existsSync, readFileSync } from "node:fs";
 import { join } from "node:path";
 import { isDeepStrictEqual } from "node:util";
 
+import { check, failures, near, readCsv as readCsvFile } from "../js_common/checks.mjs";
 import { linearRead, readableOf } from "./mcap_file.mjs";
 
 let mcap, rosmsg, serialization, common;
@@ -41,27 +42,8 @@ const { parse: parseMessageDefinition } = rosmsg;
 const { MessageReader } = serialization;
 
 const [file, csvDir] = process.argv.slice(2);
-const kRelCsv = 5e-9; // half a unit in the 9th significant digit
-const kAbs = 1e-300; // exact zeros print as 0
 const kAbsAngle = 1e-12; // [rad] Euler angles from the quaternion by another formula
-let failures = 0;
-function check(ok, what) {
-  if (!ok) {
-    failures += 1;
-    if (failures <= 20) console.error(`FAIL: ${what}`);
-  }
-  return ok;
-}
-function near(v, csvText, what, abs = kAbs) {
-  const c = Number(csvText);
-  return check(Math.abs(Number(v) - c) <= kRelCsv * Math.abs(c) + abs, `${what}: ${v} vs CSV ${csvText}`);
-}
-
-function readCsv(name) {
-  const lines = readFileSync(join(csvDir, name), "utf8").trim().split("\n");
-  const header = lines.shift().split(",");
-  return lines.map((l) => Object.fromEntries(l.split(",").map((v, i) => [header[i], v])));
-}
+const readCsv = (name) => readCsvFile(join(csvDir, name));
 
 const bytes = new Uint8Array(readFileSync(file));
 const readable = readableOf(bytes);
@@ -392,8 +374,8 @@ for (const body of bodies) {
   }
 }
 
-if (failures > 0) {
-  console.error(`${failures} failures`);
+if (failures() > 0) {
+  console.error(`${failures()} failures`);
   process.exit(1);
 }
 console.log(
