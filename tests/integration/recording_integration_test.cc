@@ -333,6 +333,21 @@ TEST(RecordingTest, ReplayRepublishesTheSameMessagesWithTheRecordedTiming) {
   // recorder received them against the original (both processes' scheduling)
   std::sort(events.begin(), events.end(),
             [](const Event& x, const Event& y) { return x.original < y.original; });
+  // and not slow: a replay paced at the wrong rate, or each message timed from the one before
+  // (late by the sum of the sleeps' overshoots), drifts; the least lateness over the last fifth
+  // of the timeline against the first fifth measures that drift while the load's delays, which
+  // come and go, leave both minima near zero. kMaxDrift: 50 ms over the 3 s span, a rate error
+  // of 1.7 % (the replay at 0.95x drifts 150 ms).
+  constexpr double kMaxDrift = 0.05;  // [s]
+  const size_t fifth = events.size() / 5;
+  double first_min = HUGE_VAL, last_min = HUGE_VAL;
+  for (size_t i = 0; i < fifth; ++i) {
+    first_min = std::min(first_min, events[i].lateness);
+    last_min = std::min(last_min, events[events.size() - 1 - i].lateness);
+  }
+  EXPECT_LT(last_min - first_min, kMaxDrift)
+      << "the replay drifts late: least lateness " << first_min << " s at the start, "
+      << last_min << " s at the end";
   std::vector<double> lateness, error;
   for (size_t i = 0; i < events.size(); ++i) {
     lateness.push_back(events[i].lateness);
