@@ -89,7 +89,9 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   const JacobianCoefficients cf{1.0, p.gamma / (p.beta * h), a_fac / (p.beta * h2)};
   const double tol = settings.tolerance * q_scale_;
   NewtonPoint& kept = st.newton;  // the kept matrix in jac_ (State::newton)
-  bool refresh = full || !kept.valid || kept.h != h;
+  // a kept matrix whose last measured rate exceeds kRefreshRate is replaced at the step's
+  // first evaluation, which then costs no extra residual (see the header)
+  bool refresh = full || !kept.valid || kept.h != h || kept.theta > kRefreshRate;
   // the waves at t_{n+1} at the predicted positions, once per step (see the header)
   const bool waves_each_iteration = waves_ && settings.waves_per_iteration;
   if (waves_ && (t1 != wave_time_ || full) && !waves_each_iteration) {
@@ -160,16 +162,16 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.theta_age = 0;
     }
     dq_prev = dq_norm;
-    // a fresh matrix: classic Newton test (quadratic convergence); a kept one: its rate must
-    // be known (measured in this step, or at most kMaxThetaAge steps ago for the first
-    // iteration) to bound the error left after the increment, theta / (1 - theta) |dq|, with
-    // theta at least kMaxContraction (a rate measured on large increments understates the
-    // one the next, smaller increments show; the refresh rule admits rates up to it)
+    // the error left after the increment, theta / (1 - theta) |dq|, within the tolerance,
+    // with theta at least kMaxContraction (a rate measured on large increments understates the
+    // one the next, smaller increments show; the refresh rule admits rates up to it). The rate
+    // must be known: a fresh matrix (theta ~ 0, quadratic convergence: the floor makes the
+    // test |dq| <= 2.3 tol, as for a kept matrix; the increment after such an accepted one is
+    // 1e-5 tol in Case 1), or a kept one measured in this step or, for the first iteration,
+    // at most kMaxThetaAge steps ago
     const bool rate_known = refresh || measured || kept.theta_age <= kMaxThetaAge;
     const double theta = std::max(kept.theta, kMaxContraction);
-    const bool converged =
-        refresh ? dq_norm <= tol
-                : rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
+    const bool converged = rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
     if (converged) {
       at.ok = true;
       st.a_alpha = a_hat;
