@@ -81,8 +81,8 @@ StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); 
 
 void Simulation::Impl::MoveDrum(double h, double slip) {
   WinchState& w = state.winch;
-  winch_step = AdvanceWinch(*system.model().cable.winch, winch_command, w.length, w.drive_speed,
-                            slip, h);
+  winch_step =
+      AdvanceWinch(*system.model().cable.winch, winch_command, w.length, w.drive_speed, slip, h);
   // l_0(t) over the step: from l_0 at rate V_n, reaching l_0 + dL at t + h
   const double dl = winch_step.length - w.length;
   w.drum.t0 = state.t;

@@ -99,7 +99,7 @@ WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double
 bool BrakeSlipIteration::Next(double slip, double tension, double* next) {
   ++attempts_;
   const double excess = tension - brake_;
-  if (slip <= 0.0 && excess <= 0.0) return false;                 // the drum grips
+  if (slip <= 0.0 && excess <= 0.0) return false;                      // the drum grips
   if (std::abs(excess) <= kBrakeTensionRelTol * brake_) return false;  // it holds T_b
   if (attempts_ >= kMaxBrakeAttempts) return false;
   // dT/ds: the first slope, then the secant of the last two attempts (where it is a falling

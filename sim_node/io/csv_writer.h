@@ -52,8 +52,7 @@ namespace towsim::io {
 inline constexpr char kCsvBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
 inline constexpr char kCsvCableHeader[] = "t,node,x,y,z,tension";
 inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
-inline constexpr char kCsvStatusHeader[] =
-    "t,step,newton_iterations,residual,wall_us,cable_length";
+inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us,cable_length";
 inline constexpr char kCsvEnvironmentHeader[] =
     "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
 inline constexpr char kCsvWinchHeader[] = "t,paid_out_length,winch_speed,drum_tension,node_count";

@@ -219,13 +219,13 @@ core::WinchParams ReadWinch(const MapReader& cable, const core::CableParams& c,
   const double fraction = core::kSplitLength - 1.0 - core::kMergeLength;
   const double step = model.time.step;
   if (w.max_speed * step > fraction * element) {
-    map.Get("max_speed").Fail(
-        "must be <= " + FormatNumber(fraction * element / step) + " = " +
-        FormatNumber(fraction) + " l_e / time.step (the drum moves at most " +
-        FormatNumber(fraction) + " of an element a step, so its element stays within [" +
-        FormatNumber(core::kMergeLength) + ", " + FormatNumber(core::kSplitLength) +
-        "] l_e between splits and merges; l_e = cable.length / cable.elements = " +
-        FormatNumber(element) + " m, time.step = " + FormatNumber(step) + " s)");
+    map.Get("max_speed")
+        .Fail("must be <= " + FormatNumber(fraction * element / step) + " = " +
+              FormatNumber(fraction) + " l_e / time.step (the drum moves at most " +
+              FormatNumber(fraction) + " of an element a step, so its element stays within [" +
+              FormatNumber(core::kMergeLength) + ", " + FormatNumber(core::kSplitLength) +
+              "] l_e between splits and merges; l_e = cable.length / cable.elements = " +
+              FormatNumber(element) + " m, time.step = " + FormatNumber(step) + " s)");
   }
   w.max_acceleration = map.Number("max_acceleration", Range::Above(0.0));
   w.brake_tension = map.Number("brake_tension", Range::Above(0.0), w.brake_tension);

@@ -251,8 +251,8 @@ double DrumPower(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   const core::State& st = sim.state();
   const core::Model& m = sim.model();
-  const double w = (m.cable.density - m.environment.water_density) * m.cable.area() *
-                   m.environment.gravity;
+  const double w =
+      (m.cable.density - m.environment.water_density) * m.cable.area() * m.environment.gravity;
   const core::Vec12 e = sys.ElementCoordinates(st.q, 0), e_dot = sys.ElementCoordinates(st.v, 0);
   auto lagrangian = [&](double l) {
     const core::AncfElement element = sys.DrumElement(l);
@@ -279,8 +279,8 @@ double DrumFluxPower(const core::Simulation& sim) {
 // (-> 90 m), with its largest value and its change over a step at a split, a merge and
 // elsewhere
 struct EnergyBalance {
-  double work = 0.0, flux_work = 0.0;   // W_drum [J]: DrumPower, DrumFluxPower
-  double worst = 0.0, worst_flux = 0.0;  // max |E - E0 - W| [J]
+  double work = 0.0, flux_work = 0.0;            // W_drum [J]: DrumPower, DrumFluxPower
+  double worst = 0.0, worst_flux = 0.0;          // max |E - E0 - W| [J]
   double split = 0.0, merge = 0.0, other = 0.0;  // max change of the flux form's over a step [J]
   int splits = 0, merges = 0;
 };
@@ -334,7 +334,8 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme) {
 TEST(WinchCore, EnergyChangesByTheDrumsWork) {
   const EnergyBalance t = RunEnergyBalance(core::Scheme::kTrapezoidal);
   const EnergyBalance a = RunEnergyBalance(core::Scheme::kGeneralizedAlpha);
-  for (const auto& [name, b] : {std::pair{"trapezoidal", t}, std::pair{"generalized-alpha 0.8", a}}) {
+  for (const auto& [name, b] :
+       {std::pair{"trapezoidal", t}, std::pair{"generalized-alpha 0.8", a}}) {
     std::printf(
         "energy, %s: drum work %.3f J (flux form %.3f J), worst |E - E0 - W| %.3e J (flux form "
         "%.3e J); its change over a step: split %.3e J, merge %.3e J, elsewhere %.3e J; %d "
