@@ -280,23 +280,30 @@ double DrumFluxPower(const core::Simulation& sim) {
 // elsewhere
 struct EnergyBalance {
   double work = 0.0, flux_work = 0.0;            // W_drum [J]: DrumPower, DrumFluxPower
+  double drag_work = 0.0;  // W_loads [J]: the sphere's drag, by quadrature
   double worst = 0.0, worst_flux = 0.0;          // max |E - E0 - W| [J]
   double split = 0.0, merge = 0.0, other = 0.0;  // max change of the flux form's over a step [J]
   int splits = 0, merges = 0;
 };
 
-EnergyBalance RunEnergyBalance(core::Scheme scheme) {
-  // the hanging weight with conservative loads only: no drag (cable and sphere), no cable added
-  // mass (its force is the water's, not a potential's; the sphere's is a constant mass)
+// the hanging weight without the cable's drag and added mass (the added mass force is the
+// water's, not a potential's; the sphere's is a constant mass), the sphere's drag on or off
+EnergyBalance RunEnergyBalance(core::Scheme scheme, bool sphere_drag) {
   core::Model m = HangingWeight();
   m.cable.loads.drag = false;
   m.cable.loads.added_mass = false;
-  m.bodies[0].drag_coefficient = 0.0;
+  if (!sphere_drag) m.bodies[0].drag_coefficient = 0.0;
   m.integrator.scheme = scheme;
+  // the sphere's drag power -k |v|^3 (Morison, still water), k = rho C_D pi r^2 / 2
+  const core::SphereBody& body = m.bodies[0];
+  const double radius = std::cbrt(3.0 * body.volume / (4.0 * M_PI));
+  const double k =
+      0.5 * m.environment.water_density * body.drag_coefficient * M_PI * radius * radius;
   core::Simulation sim(m);
   auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
   const double e0 = energy(), h = m.time.step;
-  double power = DrumPower(sim), flux = DrumFluxPower(sim), residual = 0.0;
+  auto drag_power = [&] { return -k * std::pow(sim.body_velocity(0).norm(), 3); };
+  double power = DrumPower(sim), flux = DrumFluxPower(sim), drag = drag_power(), residual = 0.0;
   int nodes = sim.num_nodes();
   EnergyBalance b;
   sim.SetWinchCommand({WinchCommand::Mode::kLength, 120.0});
@@ -305,13 +312,16 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme) {
     if (i == 5200) sim.SetWinchCommand({WinchCommand::Mode::kLength, 90.0});
     // the drum's work by the trapezoidal rule over the step
     const double p = DrumPower(sim), pf = DrumFluxPower(sim);
+    const double pd = drag_power();
     b.work += 0.5 * h * (power + p);
     b.flux_work += 0.5 * h * (flux + pf);
+    b.drag_work += 0.5 * h * (drag + pd);
     power = p;
     flux = pf;
+    drag = pd;
     // the events' jumps in the flux form, whose power is continuous across them (the discrete
     // d(U - K)/dl_0 is taken on element 0, whose rest length jumps by l_e there)
-    const double e = energy(), r = e - e0 - b.flux_work;
+    const double e = energy(), r = e - e0 - b.flux_work - b.drag_work;
     const double jump = std::abs(r - residual);
     residual = r;
     if (sim.num_nodes() > nodes) {
@@ -324,7 +334,7 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme) {
       b.other = std::max(b.other, jump);
     }
     nodes = sim.num_nodes();
-    b.worst = std::max(b.worst, std::abs(e - e0 - b.work));
+    b.worst = std::max(b.worst, std::abs(e - e0 - b.work - b.drag_work));
     b.worst_flux = std::max(b.worst_flux, std::abs(r));
   }
   EXPECT_EQ(sim.cable_length(), 90.0);
@@ -332,16 +342,17 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme) {
 }
 
 TEST(WinchCore, EnergyChangesByTheDrumsWork) {
-  const EnergyBalance t = RunEnergyBalance(core::Scheme::kTrapezoidal);
-  const EnergyBalance a = RunEnergyBalance(core::Scheme::kGeneralizedAlpha);
-  for (const auto& [name, b] :
-       {std::pair{"trapezoidal", t}, std::pair{"generalized-alpha 0.8", a}}) {
+  const EnergyBalance t = RunEnergyBalance(core::Scheme::kTrapezoidal, false);
+  const EnergyBalance a = RunEnergyBalance(core::Scheme::kGeneralizedAlpha, false);
+  const EnergyBalance d = RunEnergyBalance(core::Scheme::kTrapezoidal, true);
+  for (const auto& [name, b] : {std::pair{"trapezoidal", t}, std::pair{"generalized-alpha 0.8", a},
+                                std::pair{"trapezoidal, sphere drag", d}}) {
     std::printf(
-        "energy, %s: drum work %.3f J (flux form %.3f J), worst |E - E0 - W| %.3e J (flux form "
-        "%.3e J); its change over a step: split %.3e J, merge %.3e J, elsewhere %.3e J; %d "
-        "splits, %d merges\n",
-        name, b.work, b.flux_work, b.worst, b.worst_flux, b.split, b.merge, b.other, b.splits,
-        b.merges);
+        "energy, %s: drum work %.3f J (flux form %.3f J), drag work %.3f J, worst |E - E0 - W| "
+        "%.3e J (flux form %.3e J); its change over a step: split %.3e J, merge %.3e J, "
+        "elsewhere %.3e J; %d splits, %d merges\n",
+        name, b.work, b.flux_work, b.drag_work, b.worst, b.worst_flux, b.split, b.merge, b.other,
+        b.splits, b.merges);
   }
   EXPECT_EQ(t.splits, 2);  // 100 -> 120 m: 11 -> 13 nodes
   EXPECT_EQ(t.merges, 3);  // 120 -> 90 m: 13 -> 10 nodes
@@ -367,6 +378,11 @@ TEST(WinchCore, EnergyChangesByTheDrumsWork) {
   // generalized-alpha (rho_inf = 0.8) dissipates the cable's high frequencies, which this slow
   // drum barely excites: in the same scene its balance is within the same tolerance
   EXPECT_LE(a.worst, kBalanceRelTol * std::abs(a.work));
+  // with the sphere's drag the balance holds with its work W_loads = -int k |v|^3 dt, a work
+  // larger than the tolerance (so that leaving it out would fail)
+  EXPECT_LE(d.worst, kBalanceRelTol * std::abs(d.work));
+  EXPECT_LE(d.worst_flux, kBalanceRelTol * std::abs(d.work));
+  EXPECT_GT(std::abs(d.drag_work), 2.0 * kBalanceRelTol * std::abs(d.work));
 }
 
 TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
