@@ -207,7 +207,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
   std::optional<CsvFile> environment_csv;  // as the node: only for a scene with a sea
   if (sea) environment_csv.emplace(d / "environment.csv", io::kCsvEnvironmentHeader);
-  CsvFile status_csv(d / "status.csv", has_winch ? io::kCsvStatusWinchHeader : io::kCsvStatusHeader);
+  CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
   std::optional<CsvFile> winch_csv;
   if (has_winch) winch_csv.emplace(d / "winch.csv", io::kCsvWinchHeader);
   ExportCounts counts;
@@ -265,20 +265,17 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     std::fprintf(status_csv.get(), "%.9g,%llu,%d,%.9g,%ld", s.sim_time,
                  static_cast<unsigned long long>(s.step), s.newton_iterations, s.residual,
                  std::lround(s.step_wall_time * 1e6));
-    if (has_winch) {
-      // cable_length: the paid-out length of the newest cable state at or before this stamp
-      // (the cable state comes at its own rate)
-      double length = std::numeric_limits<double>::quiet_NaN();
-      for (auto f = frames.upper_bound(StampNs(s.header.stamp)); f != frames.begin();) {
-        --f;
-        if (f->second.cable) {
-          length = f->second.cable->paid_out_length;
-          break;
-        }
+    // cable_length: the paid-out length of the newest cable state at or before this stamp
+    // (the cable state comes at its own rate)
+    double length = std::numeric_limits<double>::quiet_NaN();
+    for (auto f = frames.upper_bound(StampNs(s.header.stamp)); f != frames.begin();) {
+      --f;
+      if (f->second.cable) {
+        length = f->second.cable->paid_out_length;
+        break;
       }
-      std::fprintf(status_csv.get(), ",%.9g", length);
     }
-    std::fprintf(status_csv.get(), "\n");
+    std::fprintf(status_csv.get(), ",%.9g\n", length);
     ++counts.status_rows;
   }
   bodies_csv.Close();

@@ -16,8 +16,8 @@
 //                                                 only when the recording has these topics: a
 //                                                 scene with a sea; NaN altitude as an empty field)
 //                                                 the end-of-run repeat of a step is dropped;
-//                                                 a winch scene's cable_length from the newest
-//                                                 cable state at or before the status)
+//                                                 cable_length from the newest cable state
+//                                                 at or before the status)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).

@@ -175,11 +175,8 @@ Series SignalSeries(const std::string& signal, CaseFiles* files) {
       return m;
     });
   }
-  // status.csv: t,step,newton_iterations,residual,wall_us[,cable_length] (with a winch)
-  const std::string header = io::ReadCsvFile(files->Path("status.csv")).Column("cable_length") < 0
-                                 ? io::kCsvStatusHeader
-                                 : io::kCsvStatusWinchHeader;
-  const io::CsvTable& t = files->Get("status.csv", header.c_str());
+  // status.csv: t,step,newton_iterations,residual,wall_us,cable_length
+  const io::CsvTable& t = files->Get("status.csv", io::kCsvStatusHeader);
   const std::string file = files->Path("status.csv");
   const int c = quantity == "newton_iterations" ? 2 : quantity == "residual" ? 3 : 4;
   Series s;

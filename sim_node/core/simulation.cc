@@ -1,5 +1,6 @@
 #include "core/simulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -25,10 +26,23 @@ struct Simulation::Impl {
   std::vector<VehicleCommand> commands;
   WinchCommand winch_command;
   WinchStep winch_step;  // the drum's motion over the step being taken
+  State brake_start;     // a slipping brake's step start, for its repeated attempts (winch.h)
   int coupling_iterations = 0;
-  // the drum's motion for the step h from the current state, with the split or merge of the
-  // drum element it needs (winch.h, drum_element.h)
-  void PrepareWinch(double h);
+  // the drum's motion for the step h from the current state with the brake's slip `slip`,
+  // with the split or merge of the drum element it needs (winch.h, drum_element.h)
+  void PrepareWinch(double h, double slip);
+  // winch_step and the drum element's motion over the step h with the slip `slip`
+  void MoveDrum(double h, double slip);
+  // the cable (and the vehicles) over h from the current state
+  StepStatus StepSystem(double h);
+  // the brake's tension band (winch.h): the step repeated from brake_start with the slips of
+  // BrakeSlipIteration, *s the last attempt's status, its iterations summed over the attempts
+  void SolveBrakeSlip(double h, double slip, StepStatus* s);
+  // the largest slip the scene's step rule allows (winch.h): (kSplitLength - 1 - kMergeLength)
+  // l_e a step
+  double MaxSlip(double h) const {
+    return (kSplitLength - 1.0 - kMergeLength) * system.element_length() / h;
+  }
 };
 
 Simulation::Simulation(const Model& model, const std::function<bool()>& stop_requested)
@@ -40,6 +54,9 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   s.winch.speed = 0.0;
   s.winch.nodes = sys.num_nodes();
   s.winch.drum.length = sys.drum_length();
+  if (model.cable.winch && std::isfinite(model.cable.winch->brake_tension)) {
+    impl_->brake_start = s;  // sized once: its copies in Step do not allocate
+  }
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
@@ -62,43 +79,77 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); }
 
-void Simulation::Impl::PrepareWinch(double h) {
+void Simulation::Impl::MoveDrum(double h, double slip) {
   WinchState& w = state.winch;
-  const CableParams& c = system.model().cable;
-  const double l0 = system.drum_length();
-  // the tension at the drum (the start's joint force) and the drum element's compliance
-  const double tension =
-      system.end_lambda_count(0) > 0 ? state.lambda.segment<3>(system.end_lambda(0)).norm() : 0.0;
-  const double ea = c.youngs_modulus * c.area();
-  winch_step = AdvanceWinch(*c.winch, winch_command, w.length, w.drive_speed, w.slip_speed,
-                            tension, l0 / ea, h);
-  const double dl = winch_step.length - w.length;
-  // keep l_0 at the step's end within [kMergeLength, kSplitLength] l_e (drum_element.h)
-  const double le = system.element_length();
-  if (l0 + dl > kSplitLength * le) {
-    SplitDrumElement(&system, &state);
-  } else if (l0 + dl < kMergeLength * le) {
-    MergeDrumElement(&system, &state);
-  }
-
+  winch_step =
+      AdvanceWinch(*system.model().cable.winch, winch_command, w.length, w.drive_speed, slip, h);
   // l_0(t) over the step: from l_0 at rate V_n, reaching l_0 + dL at t + h
+  const double dl = winch_step.length - w.length;
   w.drum.t0 = state.t;
   w.drum.length = system.drum_length();
   w.drum.rate = w.speed;
   w.drum.accel = 2.0 * (dl - w.speed * h) / (h * h);
 }
 
+void Simulation::Impl::PrepareWinch(double h, double slip) {
+  const double l0 = system.drum_length();
+  MoveDrum(h, slip);
+  const double dl = winch_step.length - state.winch.length;
+  // keep l_0 at the step's end within [kMergeLength, kSplitLength] l_e (drum_element.h)
+  const double le = system.element_length();
+  bool changed = false;
+  if (l0 + dl > kSplitLength * le) {
+    changed = SplitDrumElement(&system, &state);
+  } else if (l0 + dl < kMergeLength * le) {
+    changed = MergeDrumElement(&system, &state);
+  }
+  if (changed) MoveDrum(h, slip);  // from the new drum element's l_0
+}
+
+StepStatus Simulation::Impl::StepSystem(double h) {
+  if (system.model().vehicles.empty()) {
+    coupling_iterations = 0;
+    return integrator.Step(&state, h);
+  }
+  const StepStatus s = coupling.Step(&state, commands, h);
+  coupling_iterations = coupling.last_iterations();
+  return s;
+}
+
+void Simulation::Impl::SolveBrakeSlip(double h, double slip, StepStatus* s) {
+  const CableParams& c = system.model().cable;
+  const double stiffness_h = c.youngs_modulus * c.area() * h / system.drum_length();
+  const double first = state.winch.slip_slope < 0.0 ? state.winch.slip_slope : -stiffness_h;
+  BrakeSlipIteration brake(c.winch->brake_tension, MaxSlip(h), first);
+  int iterations = s->iterations;
+  double next = 0.0;
+  while (s->ok() && winch_step.length < c.winch->max_length &&
+         brake.Next(slip, state.lambda.segment<3>(system.end_lambda(0)).norm(), &next)) {
+    // again from the step's start, keeping the kept Newton matrix the attempt left (the
+    // integrator's cache of it, integrator.h)
+    brake_start.newton = state.newton;
+    state = brake_start;
+    slip = next;
+    MoveDrum(h, slip);
+    *s = StepSystem(h);
+    iterations += s->iterations;
+  }
+  s->iterations = iterations;
+  if (brake.attempts() > 1) state.winch.slip_slope = brake.slope();
+}
+
 StepStatus Simulation::StepBy(double h) {
   StepStatus s;
   const bool winch = has_winch();
-  if (winch) impl_->PrepareWinch(h);
-  if (impl_->system.model().vehicles.empty()) {
-    s = impl_->integrator.Step(&impl_->state, h);
-    impl_->coupling_iterations = 0;
-  } else {
-    s = impl_->coupling.Step(&impl_->state, impl_->commands, h);
-    impl_->coupling_iterations = impl_->coupling.last_iterations();
-  }
+  // a brake (winch.h): the first attempt slips as the last step did
+  const bool brake = winch && std::isfinite(model().cable.winch->brake_tension) &&
+                     impl_->system.end_lambda_count(0) > 0;
+  const double slip =
+      brake ? std::clamp(impl_->state.winch.slip_speed, 0.0, impl_->MaxSlip(h)) : 0.0;
+  if (winch) impl_->PrepareWinch(h, slip);
+  if (brake) impl_->brake_start = impl_->state;
+  s = impl_->StepSystem(h);
+  if (brake) impl_->SolveBrakeSlip(h, slip, &s);
   if (s.ok()) {
     ++impl_->state.step;
     if (winch) {

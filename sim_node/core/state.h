@@ -84,6 +84,7 @@ struct WinchState {
   double speed = 0.0;   // dL/dt [m/s], + pays out
   double drive_speed = 0.0;  // the drive's own speed, without the brake's slip (winch.h)
   double slip_speed = 0.0;   // the brake's slip (winch.h)
+  double slip_slope = 0.0;   // dT/ds the brake's last secant measured [N s/m] (0: none yet)
   int nodes = 0;        // cable nodes in use (part of the state's shape)
   bool slipping = false;  // the brake slipped in the last step
   DrumMotion drum;        // element 0's rest length over the last (or current) step

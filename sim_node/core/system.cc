@@ -232,28 +232,15 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     if (jac->first_block() != first_node_) jac->SetFirstBlock(first_node_);
     jac->SetZero();
   }
-  // the drum element's rest length and its rate at t (winch; system.h)
-  double drum_rate = 0.0, drum_l = drum_length_;
-  if (winch_ && drum_motion) {
-    drum_l = drum_motion->LengthAt(t);
-    drum_rate = drum_motion->RateAt(t);
-  }
-  std::optional<AncfElement> drum;  // on the stack: Evaluate does not allocate
-  Vec12 drum_weight = weight_load_;
-  if (winch_) {
-    drum.emplace(DrumElement(drum_l));
-    drum_weight = UniformLoad(loads_.weight_per_length, drum_l);
-  }
-
-  // cable elements: M e_ddot + F_int + R_load (Eq. 25)
+  // cable elements: M e_ddot + F_int + R_load (Eq. 25), element e of `element` (the drum
+  // element's rest length moves: its own element, weight load and rate; system.h)
   Vec12 force;
   Mat12 k, c, j;
   ElementLoadJacobians lj;
   ElementWaves ew;
-  for (int e = 0; e < num_elements(); ++e) {
+  const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
+                               double drum_rate) {
     const int o = cable_dof(e);
-    const bool at_drum = winch_ && e == 0;
-    const AncfElement& element = at_drum ? *drum : element_;
     const Mat12& mass = element.mass();
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
     if (waves) {
@@ -269,7 +256,6 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     element.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
-      const Vec12& qw = at_drum ? drum_weight : weight_load_;
       residual->segment<12>(o) += element.MassTimes(ea) + force - load_scale * qw;
       if (jac) {
         j = cf.c_a * mass + cf.c_q * k;
@@ -285,7 +271,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
         if (cf.c_v != 0.0) j += cf.c_v * (c + lj.d_dedot);
       }
     }
-    if (at_drum && drum_rate != 0.0) {
+    if (drum_rate != 0.0) {
       // material entering / leaving at the drum with the drum's velocity (system.h):
       // dl_0/dt (dM/dl) e_dot - rho_c A dl_0/dt v_0
       const double m_dot = element.props().mass_per_length * drum_rate;
@@ -297,10 +283,23 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
         j.block<3, 3>(0, 0) -= (cf.c_v * m_dot) * Mat3::Identity();
       }
     }
-    if (!jac) continue;
+    if (!jac) return;
     for (int r = 0; r < 4; ++r)
       for (int s = 0; s < 4; ++s) Add3(jac, o + 3 * r, o + 3 * s, j.block<3, 3>(3 * r, 3 * s));
+  };
+  int first_plain = 0;  // the elements from here on have the nominal length l_e
+  if (winch_) {
+    // the drum element's rest length and its rate at t
+    double drum_rate = 0.0, drum_l = drum_length_;
+    if (drum_motion) {
+      drum_l = drum_motion->LengthAt(t);
+      drum_rate = drum_motion->RateAt(t);
+    }
+    const AncfElement drum = DrumElement(drum_l);  // on the stack: Evaluate does not allocate
+    add_element(0, drum, UniformLoad(loads_.weight_per_length, drum_l), drum_rate);
+    first_plain = 1;
   }
+  for (int e = first_plain; e < num_elements(); ++e) add_element(e, element_, weight_load_, 0.0);
 
   // bodies (Morison): (m + m_a) a - (rho V + m_a) a_w - (m - rho V) g e_z * scale
   //   + k |V| V * scale, V = v - u_w, m_a = C_a rho V, u_w and a_w the water's velocity and

@@ -49,8 +49,7 @@ double StoppingSpeed(double a, double h, double d, double v) {
 }  // namespace
 
 WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double length,
-                       double speed, double slip_speed, double tension, double slip_compliance,
-                       double h) {
+                       double speed, double slip_speed, double h) {
   // `speed`: the drive's (winch.h)
   WinchCommand c = command;
   ClampWinchCommand(p, &c);
@@ -79,11 +78,10 @@ WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double
   };
   if (c.mode == WinchCommand::Mode::kLength) land(c.value);
   s.drive_speed = s.speed;
-  // the brake: the slip integrates the tension's excess over it (winch.h)
-  if (std::isfinite(p.brake_tension)) {
-    s.slip_speed =
-        std::max(0.0, slip_speed + (tension - p.brake_tension) * slip_compliance / h);
-    s.slipping = s.slip_speed > 0.0;
+  // the brake's slip over the step, solved with the step (winch.h, BrakeSlipIteration)
+  if (slip_speed > 0.0) {
+    s.slip_speed = slip_speed;
+    s.slipping = true;
     s.speed += s.slip_speed;
     s.length += h * s.slip_speed;
   }
@@ -96,6 +94,26 @@ WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double
     s.speed = s.drive_speed = s.slip_speed = 0.0;
   }
   return s;
+}
+
+bool BrakeSlipIteration::Next(double slip, double tension, double* next) {
+  ++attempts_;
+  const double excess = tension - brake_;
+  if (slip <= 0.0 && excess <= 0.0) return false;                      // the drum grips
+  if (std::abs(excess) <= kBrakeTensionRelTol * brake_) return false;  // it holds T_b
+  if (attempts_ >= kMaxBrakeAttempts) return false;
+  // dT/ds: the first slope, then the secant of the last two attempts (where it is a falling
+  // one: more slip, less tension)
+  if (attempts_ > 1 && slip != last_slip_) {
+    const double secant = (tension - last_tension_) / (slip - last_slip_);
+    if (secant < 0.0) slope_ = secant;
+  }
+  last_slip_ = slip;
+  last_tension_ = tension;
+  const double s = std::clamp(slip - excess / slope_, 0.0, max_slip_);
+  if (s == slip) return false;  // at a bound it cannot leave
+  *next = s;
+  return true;
 }
 
 }  // namespace towsim::core

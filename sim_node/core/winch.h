@@ -16,15 +16,21 @@
 //   u^2 + a h u = 2 a d - a h V_n,   u = (-a h + sqrt(a^2 h^2 + 4 (2 a d - a h V_n))) / 2.
 // A step that reaches a stop point at a speed <= a h ends there at rest (exact stop); L stays
 // within [min_length, max_length] always.
-// Brake: a slipping friction brake holds its tension, T = brake_tension, while the drum pays
-// out. Explicitly, per step, the slip speed s >= 0 (on top of the drive's, kept apart) grows by
-// the speed that would relieve the tension excess of the drum element within the step,
-//   s_{n+1} = max(0, s_n + (T - brake_tension) l_0 / (E A h))   (dT/dl_0 = -E A / l_0),
-// and falls likewise once the tension is below the brake's, until the drum grips (s = 0). This
-// integral law drives T to brake_tension while slipping (a constant slip speed would leave the
-// load falling steadily at its full weight: a damper, not a brake); it is not bound by
-// max_speed or max_acceleration (the brake, not the motor, sets it). T is the tension at the
-// step's start.
+// Brake: a slipping friction brake holds its tension, T = brake_tension = T_b, while the drum
+// pays out (Coulomb friction: it grips below T_b and slips at T_b). The slip speed s >= 0 of a
+// step (on top of the drive's, kept apart; constant over the step) is solved with the step, so
+// that the drum tension at the step's end T_{n+1}(s) (the start's joint force) satisfies the
+// complementarity
+//   s = 0 and T_{n+1}(0) <= T_b   (the drum grips),   or   s > 0 and T_{n+1}(s) = T_b,
+// by secant iteration on whole steps (BrakeSlipIteration; Simulation::StepBy repeats the step
+// from its start with each new s): a step that grips (s_n = 0 and T_{n+1}(0) <= T_b) is taken
+// once, a slipping one converges to |T_{n+1} - T_b| <= kBrakeTensionRelTol T_b in at most 3
+// attempts in the hanging-weight test, 6 in the unit tests' steady tow.
+// The first correction takes the slope the last slipping step measured (WinchState::slip_slope),
+// or without one the drum element's stiffness, dT/ds = -E A h / l_0 (the stiffest the cable can
+// respond within a step); later ones the secant. The slip is not bound by
+// max_speed or max_acceleration (the brake, not the motor, sets it) but by the scene's step rule,
+// h s <= (kSplitLength - 1 - kMergeLength) l_e (docs/winch.md), and it stops at max_length.
 //
 // The cable's side (system.h, docs/winch.md): element 0 at the drum has the variable rest length
 // l_0 = L - (nodes - 2) l_e; it is split when l_0 would exceed kSplitLength l_e and merged
@@ -80,11 +86,37 @@ struct WinchStep {
   bool slipping = false;     // the brake slips (s_{n+1} > 0)
 };
 
-// the drum's step h (above) from L_n = length, the drive's V_n = drive_speed and the slip
-// s_n = slip_speed under `command` (clamped into its range), with the drum tension T and
-// slip_compliance = l_0 / (E A) [m/N]
+// the drum's step h (above) from L_n = length and the drive's V_n = drive_speed under
+// `command` (clamped into its range), with the brake's slip `slip_speed` >= 0 over the step
+// added (0 with a brake that grips, or without one)
 WinchStep AdvanceWinch(const WinchParams& p, const WinchCommand& command, double length,
-                       double drive_speed, double slip_speed, double tension,
-                       double slip_compliance, double h);
+                       double drive_speed, double slip_speed, double h);
+
+// the brake's slip solved with the step (above): its tension band and its attempts
+inline constexpr double kBrakeTensionRelTol = 1e-3;  // |T_{n+1} - T_b| <= 1e-3 T_b (2 N in 2 kN)
+// then the last attempt is kept (the tests need at most 6)
+inline constexpr int kMaxBrakeAttempts = 8;
+
+// the secant iteration for the slip s of one step (above): a first attempt with the previous
+// step's slip (within [0, s_max]), then Next with the tension each attempt gave until it says
+// the step stands
+class BrakeSlipIteration {
+ public:
+  // brake_tension T_b, the slip's bound s_max and the first slope dT/ds < 0 [N s/m]
+  BrakeSlipIteration(double brake_tension, double max_slip, double first_slope)
+      : brake_(brake_tension), max_slip_(max_slip), slope_(first_slope) {}
+  // the attempt with slip `slip` ended at drum tension `tension`: false if it stands (grips,
+  // holds T_b within the band, or the slip is at a bound it cannot leave); else true and
+  // *next is the slip of the next attempt
+  bool Next(double slip, double tension, double* next);
+  int attempts() const { return attempts_; }
+  // the last slope used (the secant once two attempts differ)
+  double slope() const { return slope_; }
+
+ private:
+  double brake_, max_slip_, slope_;
+  double last_slip_ = 0.0, last_tension_ = 0.0;
+  int attempts_ = 0;
+};
 
 }  // namespace towsim::core

@@ -102,7 +102,7 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), 
     Open(bodies_, "bodies.csv", kCsvBodiesHeader);
     Open(cable_, "cable.csv", kCsvCableHeader);
     Open(forces_, "forces.csv", kCsvForcesHeader);
-    Open(status_, "status.csv", winch_ ? kCsvStatusWinchHeader : kCsvStatusHeader);
+    Open(status_, "status.csv", kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
     if (winch) Open(winch_file_, "winch.csv", kCsvWinchHeader);
   } catch (...) {
@@ -199,7 +199,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
       .Integer(status.iterations)
       .Number(status.residual)
       .Integer(wall_us);
-  if (winch_) row.Number(sim.cable_length());
+  row.Number(sim.cable_length());
   row.WriteTo(status_.f);
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);

@@ -13,11 +13,11 @@
 //               frame [N, N m] (Simulation::body_cable_wrench); plus
 //               rows "cable.start" / "cable.end" for a cable end held by a fixed or driven
 //               support (not a body): the force the cable exerts on the support, world frame
-//   status.csv  t,step,newton_iterations,residual,wall_us[,cable_length]
+//   status.csv  t,step,newton_iterations,residual,wall_us,cable_length
 //               Newton iterations and final residual [N] of the step that led here, its
-//               wall time [us] as measured by the caller, and, only for a scene with a winch
-//               (cable.winch; docs/winch.md), the paid-out unstretched cable length [m]
-//               (Simulation::cable_length)
+//               wall time [us] as measured by the caller, and the paid-out unstretched cable
+//               length [m] (Simulation::cable_length: cable.length in a scene without a winch;
+//               docs/winch.md)
 //   environment.csv  t,body,wave_elevation,altitude,depth,current_u,current_v,current_w
 //               one row per body, only when HasSea(model.environment) (a calm scene writes
 //               exactly the four files above): the surface elevation eta at the body origin
@@ -52,10 +52,7 @@ namespace towsim::io {
 inline constexpr char kCsvBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
 inline constexpr char kCsvCableHeader[] = "t,node,x,y,z,tension";
 inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
-inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
-// status.csv of a scene with a winch (cable.winch): one more column
-inline constexpr char kCsvStatusWinchHeader[] =
-    "t,step,newton_iterations,residual,wall_us,cable_length";
+inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us,cable_length";
 inline constexpr char kCsvEnvironmentHeader[] =
     "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
 inline constexpr char kCsvWinchHeader[] = "t,paid_out_length,winch_speed,drum_tension,node_count";
@@ -79,8 +76,8 @@ void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
-  // when `sea`, i.e. HasSea of the scene; winch.csv and status.csv's cable_length column when
-  // `winch`, the scene has cable.winch) and writes their headers; throws std::runtime_error
+  // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has cable.winch)
+  // and writes their headers; throws std::runtime_error
   // naming the path if a file cannot be opened
   explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false);
   ~CsvWriter();  // closes, ignoring errors

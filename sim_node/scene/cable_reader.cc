@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/winch.h"
 #include "scene/body_reader.h"
 
 namespace towsim::scene::internal {
@@ -194,7 +195,7 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
 // cable.winch: the limits, each positive; min_length <= cable.length <= max_length; the start
 // (the drum) held
 core::WinchParams ReadWinch(const MapReader& cable, const core::CableParams& c,
-                            const EndInput& start) {
+                            const EndInput& start, const core::Model& model) {
   const MapReader map(cable.Get("winch"), MapKind::kWinch);
   if (!map.field().node().IsMap()) {
     map.field().Fail(
@@ -210,6 +211,22 @@ core::WinchParams ReadWinch(const MapReader& cable, const core::CableParams& c,
     map.Get("max_length").Fail("must be >= cable.length = " + FormatNumber(c.length));
   }
   w.max_speed = map.Number("max_speed", Range::Above(0.0));
+  // the drum element l_0 stays within [kMergeLength, kSplitLength] l_e at every instant if a
+  // step changes it by at most (kSplitLength - 1 - kMergeLength) l_e: a split at the step's
+  // start leaves l_0 - l_e >= kSplitLength l_e - h V - l_e, a merge l_0 + l_e <= kMergeLength
+  // l_e + h V + l_e (docs/winch.md "Scene keys")
+  const double element = c.length / c.elements;
+  const double fraction = core::kSplitLength - 1.0 - core::kMergeLength;
+  const double step = model.time.step;
+  if (w.max_speed * step > fraction * element) {
+    map.Get("max_speed")
+        .Fail("must be <= " + FormatNumber(fraction * element / step) + " = " +
+              FormatNumber(fraction) + " l_e / time.step (the drum moves at most " +
+              FormatNumber(fraction) + " of an element a step, so its element stays within [" +
+              FormatNumber(core::kMergeLength) + ", " + FormatNumber(core::kSplitLength) +
+              "] l_e between splits and merges; l_e = cable.length / cable.elements = " +
+              FormatNumber(element) + " m, time.step = " + FormatNumber(step) + " s)");
+  }
   w.max_acceleration = map.Number("max_acceleration", Range::Above(0.0));
   w.brake_tension = map.Number("brake_tension", Range::Above(0.0), w.brake_tension);
   if (start.end.kind == core::EndKind::kFree) {
@@ -266,7 +283,7 @@ core::CableParams ReadCable(const Field& field, const core::Model& model) {
   c.end = end.end;
   CheckEnds(start, end, model);
   CheckInitialShape(c, start, end, model);
-  if (cable.Has("winch")) c.winch = ReadWinch(cable, c, start);
+  if (cable.Has("winch")) c.winch = ReadWinch(cable, c, start, model);
 
   // initial velocity: given, else that of a driven end, else zero
   core::Vec3 velocity = core::Vec3::Zero();

@@ -137,11 +137,14 @@ std::vector<std::string> Lines(const std::string& text) {
   return lines;
 }
 
-// status.csv without its last column (wall_us: the wall time a step took)
+// status.csv without its fifth column (wall_us: the wall time a step took; cable_length follows)
 std::string WithoutWallTime(const std::string& csv) {
   std::istringstream in(csv);
   std::string out;
-  for (std::string line; std::getline(in, line);) out += line.substr(0, line.rfind(',')) + "\n";
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t end = line.rfind(','), begin = line.rfind(',', end - 1);
+    out += line.substr(0, begin) + line.substr(end) + "\n";
+  }
   return out;
 }
 

@@ -6,15 +6,23 @@
 //     to 250 m the steady tow matches the steady towed-cable solution at 250 m
 //     (towed_cable_steady.h) as closely as a run started with 250 m does, and the drum tension
 //     has no jump at the element splits and merges;
-//   - the brake: above brake_tension the drum slips, and the tension it holds is the brake's.
+//   - the brake: above brake_tension the drum slips, and the tension it holds is the brake's;
+//   - the energy balance of the open system (docs/winch.md "Energy"): with the drum fixed and
+//     conservative loads, dE/dt = P_drum = dl_0/dt d(U - K)/dl_0 (the Lagrangian's explicit
+//     dependence on the drum element's rest length, at fixed coordinates and rates),
+//     E(t) - E(0) = int P_drum dt through payout, reel-in, splits and merges; the merge's jump
+//     measured and bounded.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
+#include "core/ancf_element.h"
+#include "core/cable_loads.h"
 #include "core/model.h"
 #include "core/script.h"
 #include "core/simulation.h"
@@ -235,41 +243,202 @@ TEST(WinchCore, DrumTensionSmoothAcrossSplitsAndMerges) {
   EXPECT_LE(worst_jump, kJumpRelTol);
 }
 
+// the drum's power in the discrete model (docs/winch.md "Energy"): dl_0/dt times the derivative
+// of U - K of element 0 (its strain energy, its submerged weight's potential -q_w(l_0) . e and its
+// kinetic energy 1/2 e_dot^T M(l_0) e_dot, paper Eq. 7-8, 15-16) in its rest length l_0 at fixed
+// e, e_dot, by central differences
+double DrumPower(const core::Simulation& sim) {
+  const core::System& sys = sim.system();
+  const core::State& st = sim.state();
+  const core::Model& m = sim.model();
+  const double w =
+      (m.cable.density - m.environment.water_density) * m.cable.area() * m.environment.gravity;
+  const core::Vec12 e = sys.ElementCoordinates(st.q, 0), e_dot = sys.ElementCoordinates(st.v, 0);
+  auto lagrangian = [&](double l) {
+    const core::AncfElement element = sys.DrumElement(l);
+    const double potential = element.StrainEnergy(e) - core::UniformLoad(Vec3(0, 0, w), l).dot(e);
+    return potential - 0.5 * e_dot.dot(element.mass() * e_dot);
+  };
+  const double l0 = sys.drum_length(), dl = 1e-4 * l0;  // O(dl^2) ~ 1e-8 relative
+  return st.winch.speed * (lagrangian(l0 + dl) - lagrangian(l0 - dl)) / (2.0 * dl);
+}
+
+// the same power as the continuum's flux at the drum: the tension's power on the material
+// leaving the drum at dL/dt (1 + eps) along the cable, and the strain and kinetic energy it
+// carries out (its potential is 0 at the drum, z = 0): dL/dt [-T (1 + eps) + E A eps^2 / 2 +
+// rho_c A (dL/dt (1 + eps))^2 / 2], eps = T / (E A)
+double DrumFluxPower(const core::Simulation& sim) {
+  const core::CableParams& c = sim.model().cable;
+  const double ea = c.youngs_modulus * c.area(), rate = sim.winch_speed();
+  const double t = sim.drum_tension(), eps = t / ea;
+  const double v = rate * (1.0 + eps);
+  return rate * (-t * (1.0 + eps) + 0.5 * ea * eps * eps + 0.5 * c.density * c.area() * v * v);
+}
+
+// the balance E(t) - E(0) - W_drum(t) over the hanging weight's payout (100 -> 120 m) and reel-in
+// (-> 90 m), with its largest value and its change over a step at a split, a merge and
+// elsewhere
+struct EnergyBalance {
+  double work = 0.0, flux_work = 0.0;            // W_drum [J]: DrumPower, DrumFluxPower
+  double drag_work = 0.0;  // W_loads [J]: the sphere's drag, by quadrature
+  double worst = 0.0, worst_flux = 0.0;          // max |E - E0 - W| [J]
+  double split = 0.0, merge = 0.0, other = 0.0;  // max change of the flux form's over a step [J]
+  int splits = 0, merges = 0;
+};
+
+// the hanging weight without the cable's drag and added mass (the added mass force is the
+// water's, not a potential's; the sphere's is a constant mass), the sphere's drag on or off
+EnergyBalance RunEnergyBalance(core::Scheme scheme, bool sphere_drag) {
+  core::Model m = HangingWeight();
+  m.cable.loads.drag = false;
+  m.cable.loads.added_mass = false;
+  if (!sphere_drag) m.bodies[0].drag_coefficient = 0.0;
+  m.integrator.scheme = scheme;
+  // the sphere's drag power -k |v|^3 (Morison, still water), k = rho C_D pi r^2 / 2
+  const core::SphereBody& body = m.bodies[0];
+  const double radius = std::cbrt(3.0 * body.volume / (4.0 * M_PI));
+  const double k =
+      0.5 * m.environment.water_density * body.drag_coefficient * M_PI * radius * radius;
+  core::Simulation sim(m);
+  auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
+  const double e0 = energy(), h = m.time.step;
+  auto drag_power = [&] { return -k * std::pow(sim.body_velocity(0).norm(), 3); };
+  double power = DrumPower(sim), flux = DrumFluxPower(sim), drag = drag_power(), residual = 0.0;
+  int nodes = sim.num_nodes();
+  EnergyBalance b;
+  sim.SetWinchCommand({WinchCommand::Mode::kLength, 120.0});
+  for (int i = 1; i <= 12200; ++i) {
+    EXPECT_TRUE(sim.Step().ok()) << "step " << i;
+    if (i == 5200) sim.SetWinchCommand({WinchCommand::Mode::kLength, 90.0});
+    // the drum's work by the trapezoidal rule over the step
+    const double p = DrumPower(sim), pf = DrumFluxPower(sim);
+    const double pd = drag_power();
+    b.work += 0.5 * h * (power + p);
+    b.flux_work += 0.5 * h * (flux + pf);
+    b.drag_work += 0.5 * h * (drag + pd);
+    power = p;
+    flux = pf;
+    drag = pd;
+    // the events' jumps in the flux form, whose power is continuous across them (the discrete
+    // d(U - K)/dl_0 is taken on element 0, whose rest length jumps by l_e there)
+    const double e = energy(), r = e - e0 - b.flux_work - b.drag_work;
+    const double jump = std::abs(r - residual);
+    residual = r;
+    if (sim.num_nodes() > nodes) {
+      ++b.splits;
+      b.split = std::max(b.split, jump);
+    } else if (sim.num_nodes() < nodes) {
+      ++b.merges;
+      b.merge = std::max(b.merge, jump);
+    } else {
+      b.other = std::max(b.other, jump);
+    }
+    nodes = sim.num_nodes();
+    b.worst = std::max(b.worst, std::abs(e - e0 - b.work - b.drag_work));
+    b.worst_flux = std::max(b.worst_flux, std::abs(r));
+  }
+  EXPECT_EQ(sim.cable_length(), 90.0);
+  return b;
+}
+
+TEST(WinchCore, EnergyChangesByTheDrumsWork) {
+  const EnergyBalance t = RunEnergyBalance(core::Scheme::kTrapezoidal, false);
+  const EnergyBalance a = RunEnergyBalance(core::Scheme::kGeneralizedAlpha, false);
+  const EnergyBalance d = RunEnergyBalance(core::Scheme::kTrapezoidal, true);
+  for (const auto& [name, b] : {std::pair{"trapezoidal", t}, std::pair{"generalized-alpha 0.8", a},
+                                std::pair{"trapezoidal, sphere drag", d}}) {
+    std::printf(
+        "energy, %s: drum work %.3f J (flux form %.3f J), drag work %.3f J, worst |E - E0 - W| "
+        "%.3e J (flux form %.3e J); its change over a step: split %.3e J, merge %.3e J, "
+        "elsewhere %.3e J; %d splits, %d merges\n",
+        name, b.work, b.flux_work, b.drag_work, b.worst, b.worst_flux, b.split, b.merge, b.other,
+        b.splits, b.merges);
+  }
+  EXPECT_EQ(t.splits, 2);  // 100 -> 120 m: 11 -> 13 nodes
+  EXPECT_EQ(t.merges, 3);  // 120 -> 90 m: 13 -> 10 nodes
+  // the trapezoidal rule conserves the energy of a linear system exactly; the cable's geometric
+  // nonlinearity over a step, the quadrature of the drum's power and the merges (below) leave
+  // a balance within 1e-4 of the drum's work, an order above the measured 1.5e-5
+  constexpr double kBalanceRelTol = 1e-4;
+  EXPECT_LE(t.worst, kBalanceRelTol * std::abs(t.work));
+  // the continuum's flux at the drum gives the same work: its difference from the discrete
+  // model's d(U - K)/dl_0 is the drum element's discretization error, far below the balance's
+  EXPECT_NEAR(t.flux_work, t.work, kBalanceRelTol * std::abs(t.work));
+  EXPECT_LE(t.worst_flux, kBalanceRelTol * std::abs(t.work));
+  // a merge replaces the two-element cubic by one (docs/winch.md): its energy changes by the
+  // interpolation error over 1.4 l_e; bounded by 1e-5 of the drum's work for an element's
+  // payout, T l_e = 2.4e4 J (measured 0.06 J, 2.5e-6 of it), and so is a split's (it keeps
+  // the shape, strain energy and mass; its kinetic energy changes by the material velocity of
+  // the new node against the interpolated one)
+  const core::Model m = HangingWeight();
+  const double element_work = 2426.0 * m.cable.length / m.cable.elements;  // T l_e [J]
+  constexpr double kEventRelTol = 1e-5;
+  EXPECT_LE(t.merge, kEventRelTol * element_work);
+  EXPECT_LE(t.split, kEventRelTol * element_work);
+  // generalized-alpha (rho_inf = 0.8) dissipates the cable's high frequencies, which this slow
+  // drum barely excites: in the same scene its balance is within the same tolerance
+  EXPECT_LE(a.worst, kBalanceRelTol * std::abs(a.work));
+  // with the sphere's drag the balance holds with its work W_loads = -int k |v|^3 dt, a work
+  // larger than the tolerance (so that leaving it out would fail)
+  EXPECT_LE(d.worst, kBalanceRelTol * std::abs(d.work));
+  EXPECT_LE(d.worst_flux, kBalanceRelTol * std::abs(d.work));
+  EXPECT_GT(std::abs(d.drag_work), 2.0 * kBalanceRelTol * std::abs(d.work));
+}
+
 TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
   // the hanging weight of 2426 N at 100 m; a brake of 2000 N cannot hold it
   core::Model m = HangingWeight();
   m.cable.winch->brake_tension = 2000.0;
   core::Simulation sim(m);
-  // after the first 5 s (the slip building up), over 15 s
-  double max_tension = 0.0, sum = 0.0, v_start = 0.0;
-  int n = 0;
+  // every step: the drum tension's largest deviation from the brake's while slipping, and the
+  // most it exceeds the brake's while gripping
+  double worst = 0.0, worst_grip = -INFINITY, v_start = 0.0;
+  long iterations = 0;
+  int slipping = 0;
   for (int i = 1; i <= 400; ++i) {
-    ASSERT_TRUE(sim.Step().ok()) << "step " << i;
+    const core::StepStatus s = sim.Step();
+    ASSERT_TRUE(s.ok()) << "step " << i;
+    iterations += s.iterations;
     if (i == 100) v_start = sim.winch_speed();
-    if (i <= 100) continue;
-    max_tension = std::max(max_tension, sim.drum_tension());
-    sum += sim.drum_tension();
-    ++n;
+    if (sim.state().winch.slipping) {
+      ++slipping;
+      worst = std::max(worst, std::abs(sim.drum_tension() - 2000.0));
+    } else {
+      worst_grip = std::max(worst_grip, sim.drum_tension() - 2000.0);
+    }
   }
-  const double mean = sum / n;
-  std::printf("slipping: L %.3f m, V %.3f m/s (from %.3f), drum tension mean %.1f N, up to %.1f N\n",
-              sim.cable_length(), sim.winch_speed(), v_start, mean, max_tension);
+  std::printf(
+      "slipping: L %.3f m, V %.3f m/s (from %.3f at 5 s), %d of 400 steps slipping, drum tension "
+      "within %.3f N of the brake's (gripping: at most %+.3f N above it), %.2f Newton iterations "
+      "per step\n",
+      sim.cable_length(), sim.winch_speed(), v_start, slipping, worst, worst_grip,
+      iterations / 400.0);
   EXPECT_GT(sim.cable_length(), 105.0);  // paid out under the load
   EXPECT_GT(sim.winch_speed(), v_start);  // the load accelerates: a brake, not a damper
   EXPECT_TRUE(sim.state().winch.slipping);
-  // while slipping the brake holds its tension on average; the explicit slip law (winch.h)
-  // rings about it by under 10 % with a period of about 10 steps (the drum element's stretch
-  // against the one-step lag of the tension it reads)
-  constexpr double kSlipMeanRelTol = 1e-2;
-  constexpr double kSlipPeakRelTol = 0.1;
-  EXPECT_NEAR(mean, 2000.0, 2000.0 * kSlipMeanRelTol);
-  EXPECT_LE(max_tension, 2000.0 * (1.0 + kSlipPeakRelTol));
+  // Coulomb friction (winch.h): while slipping the drum tension is the brake's at every step,
+  // within the band the slip's secant iteration solves it to (kBrakeTensionRelTol = 1e-3: 2 N;
+  // the explicit slip law before it, reading the tension at the step's start, rang by +-7 %);
+  // a step that grips has the tension at or below the brake's (within the same band). The
+  // load's first bounce on the cable leaves the tension below the brake's for a step or two
+  // (measured: 2 steps grip)
+  constexpr double kBandN = core::kBrakeTensionRelTol * 2000.0;
+  EXPECT_GE(slipping, 390);
+  EXPECT_LE(worst, kBandN);
+  EXPECT_LE(worst_grip, kBandN);
   // a brake above the load holds: no payout
   core::Model held = HangingWeight();
   held.cable.winch->brake_tension = 3000.0;
   core::Simulation hold(held);
-  for (int i = 0; i < 400; ++i) ASSERT_TRUE(hold.Step().ok());
+  long held_iterations = 0;
+  for (int i = 0; i < 400; ++i) {
+    const core::StepStatus s = hold.Step();
+    ASSERT_TRUE(s.ok()) << "held, step " << i;
+    held_iterations += s.iterations;
+  }
+  std::printf("held: %.2f Newton iterations per step\n", held_iterations / 400.0);
   EXPECT_EQ(hold.cable_length(), 100.0);
+  EXPECT_FALSE(hold.state().winch.slipping);
 }
 
 }  // namespace

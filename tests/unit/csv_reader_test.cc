@@ -24,7 +24,7 @@ TEST(CsvReader, SplitsWhatCsvFieldWrites) {
 TEST(CsvReader, ChecksTheHeaderAndTheFieldCount) {
   test::TempDir dir;
   const std::string path = (dir.path() / "status.csv").string();
-  std::ofstream(path) << kCsvStatusHeader << "\n0,0,0,0,0\n\n0.1,2,3,1e-9,40\n";
+  std::ofstream(path) << kCsvStatusHeader << "\n0,0,0,0,0,10\n\n0.1,2,3,1e-9,40,10\n";
   const CsvTable t = ReadCsvFile(path, kCsvStatusHeader);
   ASSERT_EQ(t.rows.size(), 2u);  // the empty line is skipped
   EXPECT_EQ(t.Column("residual"), 3);
@@ -42,7 +42,7 @@ TEST(CsvReader, ChecksTheHeaderAndTheFieldCount) {
     ReadCsvFile(path);
     ADD_FAILURE();
   } catch (const std::runtime_error& e) {
-    EXPECT_EQ(std::string(e.what()), path + ":2: 3 fields, the header has 5");
+    EXPECT_EQ(std::string(e.what()), path + ":2: 3 fields, the header has 6");
   }
   EXPECT_THROW(ReadCsvFile(path + ".missing"), std::runtime_error);
 }

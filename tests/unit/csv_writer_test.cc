@@ -35,7 +35,7 @@ namespace fs = std::filesystem;
 constexpr char kBodiesHeader[] = "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r";
 constexpr char kCableHeader[] = "t,node,x,y,z,tension";
 constexpr char kForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
-constexpr char kStatusHeader[] = "t,step,newton_iterations,residual,wall_us";
+constexpr char kStatusHeader[] = "t,step,newton_iterations,residual,wall_us,cable_length";
 
 // "%.9g" keeps 9 significant digits: values read back agree to ~1e-8 relative
 constexpr double kPrintRelTol = 1e-8;
@@ -159,12 +159,14 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
   const Rows status_rows = ReadCsv(dir / "status.csv", &header);
   EXPECT_EQ(header, kStatusHeader);
   ASSERT_EQ(status_rows.size(), static_cast<size_t>(writes));
-  for (const auto& row : status_rows) ASSERT_EQ(row.size(), 5u);
+  for (const auto& row : status_rows) ASSERT_EQ(row.size(), 6u);
   EXPECT_EQ(status_rows[0][1], "0");
   EXPECT_EQ(status_rows[0][4], "0");
   EXPECT_EQ(status_rows[1][1], "1");
   EXPECT_EQ(status_rows[1][2], std::to_string(status.iterations));
   EXPECT_EQ(status_rows[1][4], "1234");
+  // no winch: the paid-out length is the scene's cable.length at every row (docs/winch.md)
+  for (const auto& row : status_rows) EXPECT_EQ(std::stod(row[5]), model.cable.length);
 }
 
 // a 6-DOF vehicle (turned and pitched) holds the cable's start; the sphere hangs at its end

@@ -84,6 +84,27 @@ TEST(NoAllocation, WinchPayoutAndReelIn) {
   EXPECT_EQ(g_news.load(), 0) << "operator new called during Step";
 }
 
+// a slipping brake repeats its steps from a copy of the step's start (winch.h): the copies
+// reuse their storage
+TEST(NoAllocation, BrakeSlipping) {
+  Model model = test::SteadyTowWithWinch();
+  model.cable.winch->brake_tension = 0.7 * Simulation(model).drum_tension();
+  Simulation sim(model);
+  for (int k = 0; k < 20; ++k) ASSERT_TRUE(sim.Step().ok());  // warm-up: work space sized
+  ASSERT_TRUE(sim.state().winch.slipping);
+  const double length = sim.cable_length();
+  Eigen::internal::set_is_malloc_allowed(false);
+  g_news = 0;
+  g_counting = true;
+  bool ok = true;
+  for (int k = 0; k < 100 && ok; ++k) ok = sim.Step().ok();
+  g_counting = false;
+  Eigen::internal::set_is_malloc_allowed(true);
+  ASSERT_TRUE(ok);
+  EXPECT_GT(sim.cable_length(), length);  // it slipped
+  EXPECT_EQ(g_news.load(), 0) << "operator new called during Step";
+}
+
 TEST(NoAllocation, VehicleInASea) {
   ExpectStepsDoNotAllocate(InASea(SteadyTowWithVehicle(Coupling::kStrong)));
 }

@@ -771,6 +771,13 @@ TEST_F(SceneLoaderTest, WinchErrorsNameKeyValueAndRule) {
             "cable.winch.max_length = 90 (t.yaml:13): must be >= cable.length = 100");
   EXPECT_EQ(error(Replace(winch, "max_speed: 1", "max_speed: 0")),
             "cable.winch.max_speed = 0 (t.yaml:13): must be > 0");
+  // the drum moves at most (1.6 - 1 - 0.4) l_e = 2 m a step of 0.01 s (l_e = 100 m / 10)
+  EXPECT_EQ(error(Replace(winch, "max_speed: 1", "max_speed: 250")),
+            "cable.winch.max_speed = 250 (t.yaml:13): must be <= 200 = 0.2 l_e / time.step (the "
+            "drum moves at most 0.2 of an element a step, so its element stays within [0.4, "
+            "1.6] l_e between splits and merges; l_e = cable.length / cable.elements = 10 m, "
+            "time.step = 0.01 s)");
+  EXPECT_EQ(error(Replace(winch, "max_speed: 1", "max_speed: 200")), "(accepted)");
   EXPECT_EQ(error(Replace(winch, "max_acceleration: 0.2", "max_acceleration: -1")),
             "cable.winch.max_acceleration = -1 (t.yaml:13): must be > 0");
   EXPECT_EQ(error(Replace(winch, "max_acceleration: 0.2", "max_acceleration: 0.2, brake: 5")),

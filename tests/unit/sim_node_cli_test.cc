@@ -259,7 +259,7 @@ TEST(SimNodeCliTest, OfflineCatenaryWritesTheFourCsvFiles) {
        {Expected{"bodies.csv", "t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r", 0},
         Expected{"cable.csv", "t,node,x,y,z,tension", 21},
         Expected{"forces.csv", "t,body,fx,fy,fz,mx,my,mz", 2},
-        Expected{"status.csv", "t,step,newton_iterations,residual,wall_us", 1}}) {
+        Expected{"status.csv", "t,step,newton_iterations,residual,wall_us,cable_length", 1}}) {
     SCOPED_TRACE(e.file);
     const std::vector<std::string> lines = Lines(ReadFile(csv / e.file));
     ASSERT_FALSE(lines.empty());

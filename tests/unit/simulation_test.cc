@@ -133,6 +133,26 @@ TEST(SimulationState, RoundTripWinchMovingAcrossASplit) {
   ExpectBitIdentical(straight, first);
 }
 
+// a slipping brake (winch.h): its slip solved by repeated attempts of each step, and the slope
+// it carries to the next step, continue bit for bit from a restored state
+TEST(SimulationState, RoundTripBrakeSlipping) {
+  Model model = test::SteadyTowWithWinch();
+  model.cable.winch->brake_tension = 0.7 * Simulation(model).drum_tension();
+  Simulation straight(model);
+  StepN(&straight, 20);
+  ASSERT_TRUE(straight.state().winch.slipping);
+  const State taken = straight.GetState();
+  StepN(&straight, kAfter);
+  ASSERT_GT(straight.cable_length(), taken.winch.length);  // it slipped on
+  Simulation fresh(model);
+  fresh.SetState(taken);
+  StepN(&fresh, kAfter);
+  ExpectBitIdentical(straight, fresh);
+  EXPECT_EQ(fresh.cable_length(), straight.cable_length());
+  EXPECT_EQ(fresh.winch_speed(), straight.winch_speed());
+  EXPECT_EQ(fresh.state().winch.slip_slope, straight.state().winch.slip_slope);
+}
+
 // the drum on a towing vehicle (strong coupling): the same round trip across a split
 TEST(SimulationState, RoundTripWinchOnAVehicle) {
   const Model model = test::SteadyTowWithWinch(SteadyTowWithVehicle(Coupling::kStrong));

@@ -59,7 +59,7 @@ class SweepSignals : public ::testing::Test {
     Write(dir_.path() / "forces.csv",
           std::string(io::kCsvForcesHeader) + "\n" + "0,tow,3,4,12,0,0,0\n0,towfish,0,0,0,0,0,0\n");
     Write(dir_.path() / "status.csv", std::string(io::kCsvStatusHeader) + "\n" +
-                                          "0,0,0,0,0\n1,10,4,1e-9,200\n2,20,2,3e-9,100\n");
+                                          "0,0,0,0,0,2\n1,10,4,1e-9,200,2\n2,20,2,3e-9,100,2\n");
   }
   double One(const scene::SweepResult& r, const std::string& out = "") {
     return ComputeSweepResults({r}, dir_.path().string(), out).at(0);

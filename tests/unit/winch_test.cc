@@ -1,8 +1,9 @@
 // The drum's kinematics (winch.h, AdvanceWinch) against its limits and their definitions: the
 // speed and acceleration limits hold at every step, a length target and the drum's ends are
 // reached exactly and at rest, the time to travel is the time-optimal (bang-coast-bang) one
-// to within a step or two, and the brake slips by the excess it must relieve. The references
-// are the limits themselves and the analytic minimum-time profile.
+// to within a step or two, the brake's slip adds to the drive, and the slip's secant iteration
+// finds the slip that holds the brake's tension. The references are the limits themselves, the
+// analytic minimum-time profile and the root of a known tension law.
 
 #include "core/winch.h"
 
@@ -46,7 +47,7 @@ DriveRecord Drive(const WinchParams& p, const WinchCommand& command, double leng
   double L = length, V = 0.0;
   const double sign = target > length ? 1.0 : -1.0;
   for (int k = 1; k * kH <= duration; ++k) {
-    const WinchStep s = AdvanceWinch(p, command, L, V, 0.0, 0.0, 0.0, kH);
+    const WinchStep s = AdvanceWinch(p, command, L, V, 0.0, kH);
     run.max_speed = std::max(run.max_speed, std::abs(s.speed));
     run.max_accel = std::max(run.max_accel, std::abs(s.speed - V) / kH);
     if (sign * (s.length - target) > 0.0) run.overshoot = true;
@@ -97,7 +98,7 @@ TEST(Winch, SpeedCommandReachedAtTheAccelerationLimit) {
   double L = 150.0, V = 0.0;
   int steps = 0;
   while (V < 0.6) {
-    const WinchStep s = AdvanceWinch(p, {WinchCommand::Mode::kSpeed, 0.6}, L, V, 0.0, 0.0, 0.0, kH);
+    const WinchStep s = AdvanceWinch(p, {WinchCommand::Mode::kSpeed, 0.6}, L, V, 0.0, kH);
     EXPECT_NEAR(s.speed - V, std::min(p.max_acceleration * kH, 0.6 - V), 1e-15);
     // constant acceleration over the step: the trapezoidal length update
     EXPECT_DOUBLE_EQ(s.length, L + 0.5 * kH * (V + s.speed));
@@ -110,35 +111,74 @@ TEST(Winch, SpeedCommandReachedAtTheAccelerationLimit) {
   EXPECT_EQ(V, 0.6);
 }
 
-TEST(Winch, BrakeSlipIntegratesTheExcessTension) {
-  WinchParams p = Params();
-  p.brake_tension = 10000.0;
-  const double compliance = 10.0 / 9.24e5;  // l_0 / (E A): 10 m of the shipped cable
-  // holding: below the brake tension nothing moves
-  WinchStep s = AdvanceWinch(p, {}, 150.0, 0.0, 0.0, 9999.0, compliance, kH);
-  EXPECT_EQ(s.speed, 0.0);
-  EXPECT_FALSE(s.slipping);
-  // 2000 N above it: s = 2000 l_0 / (E A h), past max_speed and max_acceleration, on top of
-  // the drive's speed (here at rest), which the slip leaves alone
-  s = AdvanceWinch(p, {}, 150.0, 0.0, 0.0, 12000.0, compliance, kH);
+TEST(Winch, BrakeSlipAddsToTheDrive) {
+  const WinchParams p = Params();
+  // the slip of the step on top of the drive's speed (at rest here), past max_speed and
+  // max_acceleration, which the drive's part keeps
+  WinchStep s = AdvanceWinch(p, {}, 150.0, 0.0, 1.5, kH);
   EXPECT_TRUE(s.slipping);
-  EXPECT_DOUBLE_EQ(s.slip_speed, 2000.0 * compliance / kH);
-  EXPECT_EQ(s.speed, s.slip_speed);
-  EXPECT_DOUBLE_EQ(s.length, 150.0 + kH * s.speed);
+  EXPECT_EQ(s.slip_speed, 1.5);
+  EXPECT_EQ(s.speed, 1.5);
   EXPECT_EQ(s.drive_speed, 0.0);
-  // the excess again: the slip grows by as much; 1000 N below: it falls by half of that
-  const double s1 = s.slip_speed;
-  s = AdvanceWinch(p, {}, s.length, 0.0, s1, 12000.0, compliance, kH);
-  EXPECT_DOUBLE_EQ(s.slip_speed, 2.0 * s1);
-  s = AdvanceWinch(p, {}, s.length, 0.0, s1, 9000.0, compliance, kH);
-  EXPECT_DOUBLE_EQ(s.slip_speed, 0.5 * s1);
-  // far below: the drum grips (no negative slip)
-  s = AdvanceWinch(p, {}, s.length, 0.0, s1, 0.0, compliance, kH);
-  EXPECT_EQ(s.slip_speed, 0.0);
+  EXPECT_DOUBLE_EQ(s.length, 150.0 + kH * 1.5);
+  s = AdvanceWinch(p, {}, 150.0, 0.0, 0.0, kH);
   EXPECT_FALSE(s.slipping);
+  EXPECT_EQ(s.length, 150.0);
   // the drum's end holds even a slipping brake
-  s = AdvanceWinch(p, {}, p.max_length, 0.0, 1.0, 1e9, compliance, kH);
+  s = AdvanceWinch(p, {}, p.max_length, 0.0, 1.0, kH);
   EXPECT_EQ(s.length, p.max_length);
+  EXPECT_EQ(s.slip_speed, 0.0);
+}
+
+// the secant iteration on a tension that falls linearly with the slip, T(s) = T_0 - k h s (the
+// reference: its root s* = (T_0 - T_b) / (k h)), and on a nonlinear one
+TEST(Winch, BrakeSlipIterationSolvesTheTensionBand) {
+  constexpr double kBrake = 2000.0;  // T_b [N]
+  constexpr double kMaxSlip = 40.0;  // [m/s]
+  // a first slope 3x too stiff (the drum element alone), the cable's true one 3x softer
+  constexpr double kStiffnessH = 9.24e4 * kH;  // E A h / l_0, l_0 = 10 m [N s/m]
+  const double true_slope = kStiffnessH / 3.0;
+  auto tension = [&](double s) { return 2500.0 - true_slope * s; };
+  BrakeSlipIteration it(kBrake, kMaxSlip, -kStiffnessH);
+  double slip = 0.0, next = 0.0;
+  int attempts = 1;
+  while (it.Next(slip, tension(slip), &next)) {
+    slip = next;
+    ++attempts;
+  }
+  // the first correction undershoots by 3x, the secant is exact on a line: 3 attempts
+  EXPECT_EQ(attempts, 3);
+  EXPECT_NEAR(slip, 500.0 / true_slope, 1e-12 * kMaxSlip);
+  EXPECT_LE(std::abs(tension(slip) - kBrake), kBrakeTensionRelTol * kBrake);
+  // a stiffening response T = T_0 - c s - d s^3: within the band in at most 5 attempts
+  auto curved = [&](double s) { return 2500.0 - 0.5 * true_slope * s - 50.0 * s * s * s; };
+  BrakeSlipIteration it2(kBrake, kMaxSlip, -kStiffnessH);
+  slip = 0.0;
+  attempts = 1;
+  while (it2.Next(slip, curved(slip), &next)) {
+    slip = next;
+    ++attempts;
+  }
+  EXPECT_LE(attempts, 5);
+  EXPECT_LE(std::abs(curved(slip) - kBrake), kBrakeTensionRelTol * kBrake);
+  // below the brake's tension without slip: the drum grips at once
+  BrakeSlipIteration grip(kBrake, kMaxSlip, -kStiffnessH);
+  EXPECT_FALSE(grip.Next(0.0, 1999.0, &next));
+  EXPECT_EQ(grip.attempts(), 1);
+  // a slip that leaves the tension below the brake's: less slip by the first slope, none if
+  // that would be negative (the next attempt at s = 0, where it grips)
+  BrakeSlipIteration less(kBrake, kMaxSlip, -kStiffnessH);
+  ASSERT_TRUE(less.Next(1.0, 1000.0, &next));
+  EXPECT_DOUBLE_EQ(next, 1.0 - 1000.0 / kStiffnessH);
+  BrakeSlipIteration none(kBrake, kMaxSlip, -kStiffnessH);
+  ASSERT_TRUE(none.Next(0.1, 0.0, &next));
+  EXPECT_EQ(next, 0.0);
+  EXPECT_FALSE(none.Next(0.0, 1500.0, &next));
+  // more than the bound allows: the slip stops at it
+  BrakeSlipIteration bound(kBrake, kMaxSlip, -kStiffnessH);
+  ASSERT_TRUE(bound.Next(0.0, 1e9, &next));
+  EXPECT_EQ(next, kMaxSlip);
+  EXPECT_FALSE(bound.Next(kMaxSlip, 1e9, &next));
 }
 
 TEST(Winch, CommandsClampedIntoTheirRanges) {
