@@ -63,6 +63,12 @@ AncfElement::AncfElement(const ElementProperties& props) : props_(props) {
   for (int g = 0; g < 5; ++g) {
     points_[g] = EvaluateShape(rule.xi[g], l);
     points_[g].weight_dx = rule.weight[g] * l;
+    for (int k = 0; k < 4; ++k) {
+      n_(k, g) = points_[g].n[k];
+      dn_(k, g) = points_[g].dn[k];
+      ddn_(k, g) = points_[g].ddn[k];
+    }
+    wdx_(g) = points_[g].weight_dx;
   }
   ends_[0] = EvaluateShape(0.0, l);
   ends_[1] = EvaluateShape(1.0, l);
@@ -122,27 +128,43 @@ Vec12 AncfElement::MassLengthDerivativeTimes(const Vec12& e_dot) const {
   return f;
 }
 
-void AncfElement::InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const {
-  // as InternalForce below, without the Jacobians
-  force->setZero();
+void AncfElement::InterpolateFields(const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot,
+                                    unsigned load_fields, GaussFields* f) const {
+  f->r_x = AtGaussPoints(e, dn_);
+  if (props_.ei > 0.0) f->r_xx = AtGaussPoints(e, ddn_);
+  if (props_.axial_damping > 0.0) f->v_x = AtGaussPoints(e_dot, dn_);
+  if (load_fields & kFieldPosition) f->r = AtGaussPoints(e, n_);
+  if (load_fields & kFieldVelocity) f->v = AtGaussPoints(e_dot, n_);
+  if (load_fields & kFieldAcceleration) f->acc = AtGaussPoints(e_ddot, n_);
+}
+
+void AncfElement::InternalForce(const GaussFields& f, Vec12* force) const {
+  // as InternalForce below, without the Jacobians: the weighted densities u_a, u_b at the
+  // points (3 x 5), then F = [F_0 .. F_3] = U_a N'^T + U_b N''^T (3 x 4)
   const double ea = props_.ea, c = props_.axial_damping;
   const bool bending = props_.ei > 0.0;
-  for (const ShapeAtPoint& p : points_) {
-    const Vec3 a = Interpolate(p.dn, e);
+  Mat35 u_a, u_b;
+  for (int g = 0; g < 5; ++g) {
+    const Vec3 a = f.r_x.col(g);
     double n = ea * 0.5 * (a.squaredNorm() - 1.0);
-    if (c > 0.0) n += ea * c * a.dot(Interpolate(p.dn, e_dot));
+    if (c > 0.0) n += ea * c * a.dot(f.v_x.col(g));
     Vec3 f_a = n * a;
     if (bending) {
-      const BendingDensity bd = Bending(props_.ei, a, Interpolate(p.ddn, e), false);
+      const BendingDensity bd = Bending(props_.ei, a, f.r_xx.col(g), false);
       f_a += bd.u_a;
-      const Vec3 f_b = p.weight_dx * bd.u_b;
-      f_a *= p.weight_dx;
-      for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += p.dn[k] * f_a + p.ddn[k] * f_b;
-    } else {
-      f_a *= p.weight_dx;
-      for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += p.dn[k] * f_a;
+      u_b.col(g) = wdx_(g) * bd.u_b;
     }
+    u_a.col(g) = wdx_(g) * f_a;
   }
+  Eigen::Map<Eigen::Matrix<double, 3, 4>> out(force->data());
+  out.noalias() = u_a * dn_.transpose();
+  if (bending) out.noalias() += u_b * ddn_.transpose();
+}
+
+void AncfElement::InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const {
+  GaussFields f;
+  InterpolateFields(e, e_dot, e_dot, 0, &f);
+  InternalForce(f, force);
 }
 
 void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
