@@ -178,6 +178,9 @@ void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force
   if (damping) damping->setZero();
   const double ea = props_.ea, c = props_.axial_damping;
   const bool bending = props_.ei > 0.0;
+  // without damping K is the Hessian of U, symmetric: the blocks k <= j are summed, the others
+  // mirrored at the end (K_jk = K_kj^T)
+  const bool symmetric = c == 0.0;
   for (const ShapeAtPoint& p : points_) {
     const double wdx = p.weight_dx;
     const Vec3 a = Interpolate(p.dn, e);
@@ -208,23 +211,37 @@ void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force
     for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += wdx * (p.dn[k] * f_a + p.ddn[k] * f_b);
     if (stiffness) {
       // K_kj = int ( S'_k S'_j u_aa + S'_k S''_j u_ab + S''_k S'_j u_ba + S''_k S''_j u_bb ) dx
-      for (int k = 0; k < 4; ++k)
+      //      = int ( S'_k P_j + S''_k Q_j ) dx,  P_j = S'_j u_aa + S''_j u_ab,
+      //                                          Q_j = S'_j u_ba + S''_j u_bb
+      const Mat3 w_aa = wdx * k_aa;
+      if (bending) {
+        const Mat3 w_ab = wdx * k_ab, w_ba = w_ab.transpose(), w_bb = wdx * k_bb;
+        Mat3 p_j[4], q_j[4];
         for (int j = 0; j < 4; ++j) {
-          Mat3 blk = (p.dn[k] * p.dn[j]) * k_aa;
-          if (bending)
-            blk += (p.dn[k] * p.ddn[j]) * k_ab + (p.ddn[k] * p.dn[j]) * k_ab.transpose() +
-                   (p.ddn[k] * p.ddn[j]) * k_bb;
-          stiffness->block<3, 3>(3 * k, 3 * j) += wdx * blk;
+          p_j[j] = p.dn[j] * w_aa + p.ddn[j] * w_ab;
+          q_j[j] = p.dn[j] * w_ba + p.ddn[j] * w_bb;
         }
+        for (int k = 0; k < 4; ++k)
+          for (int j = symmetric ? k : 0; j < 4; ++j)
+            stiffness->block<3, 3>(3 * k, 3 * j) += p.dn[k] * p_j[j] + p.ddn[k] * q_j[j];
+      } else {
+        for (int k = 0; k < 4; ++k)
+          for (int j = symmetric ? k : 0; j < 4; ++j)
+            stiffness->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * w_aa;
+      }
     }
     if (damping && c > 0.0) {
       // C_kj = int S'_k S'_j EA c a a^T dx
-      const Mat3 c_aa = ea * c * a * a.transpose();
+      const Mat3 c_aa = (wdx * ea * c) * a * a.transpose();
       for (int k = 0; k < 4; ++k)
         for (int j = 0; j < 4; ++j)
-          damping->block<3, 3>(3 * k, 3 * j) += (wdx * p.dn[k] * p.dn[j]) * c_aa;
+          damping->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * c_aa;
     }
   }
+  if (stiffness && symmetric)
+    for (int k = 1; k < 4; ++k)
+      for (int j = 0; j < k; ++j)
+        stiffness->block<3, 3>(3 * k, 3 * j) = stiffness->block<3, 3>(3 * j, 3 * k).transpose();
 }
 
 double AncfElement::AxialForce(const Vec12& e, const Vec12& e_dot, double xi) const {

@@ -130,7 +130,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
       f += c * (NormalProjector(a) * flow.acceleration);
       f_a -= AddedMassTangentDerivative(c, a, flow.acceleration);
     }
-    Mat3 f_pos;  // df/dr where f_r
+    Mat3 f_pos = Mat3::Zero();  // df/dr where f_r
     if constexpr (kSea) {
       if (f_r) f_pos = -f_v * shear * Vec3::UnitZ().transpose();
       if (fluid_inertia && !shear.isZero()) {
@@ -155,17 +155,31 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
       }
     }
     const double w = p.weight_dx;
+    // R = -int S^T f dx: dR/de = -int S_k (f_a S'_j + f_pos S_j) dx = -int S_k D_j dx,
+    // dR/de_dot = -int S_k f_v S_j dx = -int S_k V_j dx, M_a = int S_k m S_j dx = int S_k A_j dx
+    Mat3 d_j[4], v_j[4], a_j[4];
+    for (int j = 0; j < 4; ++j) {
+      d_j[j] = (w * p.dn[j]) * f_a;
+      if (kSea && f_r) d_j[j] += (w * p.n[j]) * f_pos;
+      v_j[j] = (w * p.n[j]) * f_v;
+      if (added) a_j[j] = (w * p.n[j]) * m_pt;
+    }
     for (int k = 0; k < 4; ++k) {
       r.segment<3>(3 * k) -= (w * p.n[k]) * f;
-      for (int j = 0; j < 4; ++j) {
-        // R = -int S^T f dx: dR/de = -int S_k f_a S'_j, dR/de_dot = -int S_k f_v S_j
-        jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.dn[j]) * f_a;
-        if (kSea && f_r) jac->d_de.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_pos;
-        jac->d_dedot.block<3, 3>(3 * k, 3 * j) -= (w * p.n[k] * p.n[j]) * f_v;
-        if (added) jac->added_mass.block<3, 3>(3 * k, 3 * j) += (w * p.n[k] * p.n[j]) * m_pt;
+      for (int j = 0; j < 4; ++j) jac->d_de.block<3, 3>(3 * k, 3 * j) -= p.n[k] * d_j[j];
+      // (the blocks of dR/de_dot and M_a have the weights S_k S_j: k <= j here, mirrored below)
+      for (int j = k; j < 4; ++j) {
+        jac->d_dedot.block<3, 3>(3 * k, 3 * j) -= p.n[k] * v_j[j];
+        if (added) jac->added_mass.block<3, 3>(3 * k, 3 * j) += p.n[k] * a_j[j];
       }
     }
   }
+  for (int k = 1; k < 4; ++k)
+    for (int j = 0; j < k; ++j) {
+      jac->d_dedot.block<3, 3>(3 * k, 3 * j) = jac->d_dedot.block<3, 3>(3 * j, 3 * k);
+      if (added)
+        jac->added_mass.block<3, 3>(3 * k, 3 * j) = jac->added_mass.block<3, 3>(3 * j, 3 * k);
+    }
   return r;
 }
 
