@@ -300,14 +300,24 @@ Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
   return tau;
 }
 
+VehicleInertia::VehicleInertia(const VehicleParams& p)
+    : m_rb(RigidBodyMassMatrix(p)), mass_lu(m_rb + p.added_mass) {}
+
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
                     const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
                     double h, VehicleState* s, const EnvironmentField* sea) {
+  AdvanceVehicle(p, VehicleInertia(p), env, flow0, flow1, cmd, load, h, s, sea);
+}
+
+void AdvanceVehicle(const VehicleParams& p, const VehicleInertia& inertia, const Environment& env,
+                    const VehicleFlow& flow0, const VehicleFlow& flow1, const VehicleCommand& cmd,
+                    const PointLoad& load, double h, VehicleState* s,
+                    const EnvironmentField* sea) {
   // classical RK4; stage c in {0, 1/2, 1}: f_W(c) = f_W0 + c (f_W1 - f_W0), applied at point_B
   // with the stage attitude: force_B = R^T f_W, moment_B = point_B x force_B (paper Eq. 29-30)
   const VehicleState s0 = *s;
-  const Mat6 m_rb = RigidBodyMassMatrix(p);
-  const Eigen::PartialPivLU<Mat6> mass_lu(m_rb + p.added_mass);
+  const Mat6& m_rb = inertia.m_rb;
+  const Eigen::PartialPivLU<Mat6>& mass_lu = inertia.mass_lu;
   // the same water all through the step (still water, a steady uniform current): no blending
   const bool steady_flow = !flow0.accelerating && !flow1.accelerating && !flow0.waves &&
                            !flow1.waves && flow0.origin.velocity == flow1.origin.velocity;
