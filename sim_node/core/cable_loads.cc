@@ -49,13 +49,15 @@ Vec12 ResidualOnly(const AncfElement& element, const CableLoadContext& ctx,
   if (!ctx.drag && !added && !fluid_inertia && !contact) return r;
   // the load per unit length at each point, weighted: R -= int S^T f dx = F N^T (3 x 4)
   Mat35 f_w;
+  FlowSample flow;  // the same at every point without local flow
+  if (!local_flow) flow.velocity = sea.uniform_current();
+  // (r is interpolated only where the current is looked up at it: LoadFields)
+  const bool at_r = local_flow && !sea.steady_uniform_current();
   for (int g = 0; g < 5; ++g) {
     const ShapeAtPoint& p = element.points()[g];
     const Vec3 a = fields.r_x.col(g);
-    // (r is interpolated only where the current is looked up at it: LoadFields)
-    const bool at_r = local_flow && !sea.steady_uniform_current();
-    const FlowSample flow =
-        FlowAt(sea, local_flow, p, at_r ? Vec3(fields.r.col(g)) : Vec3(), t, waves, nullptr);
+    if (local_flow)
+      flow = FlowAt(sea, true, p, at_r ? Vec3(fields.r.col(g)) : Vec3(), t, waves, nullptr);
     Vec3 f = Vec3::Zero();
     if (ctx.drag) {
       const Vec3 v_rel = RelativeVelocity(fields.v.col(g), flow);
