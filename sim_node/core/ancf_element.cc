@@ -63,6 +63,12 @@ AncfElement::AncfElement(const ElementProperties& props) : props_(props) {
   for (int g = 0; g < 5; ++g) {
     points_[g] = EvaluateShape(rule.xi[g], l);
     points_[g].weight_dx = rule.weight[g] * l;
+    for (int k = 0; k < 4; ++k) {
+      n_(k, g) = points_[g].n[k];
+      dn_(k, g) = points_[g].dn[k];
+      ddn_(k, g) = points_[g].ddn[k];
+    }
+    wdx_(g) = points_[g].weight_dx;
   }
   ends_[0] = EvaluateShape(0.0, l);
   ends_[1] = EvaluateShape(1.0, l);
@@ -122,27 +128,43 @@ Vec12 AncfElement::MassLengthDerivativeTimes(const Vec12& e_dot) const {
   return f;
 }
 
-void AncfElement::InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const {
-  // as InternalForce below, without the Jacobians
-  force->setZero();
+void AncfElement::InterpolateFields(const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot,
+                                    unsigned load_fields, GaussFields* f) const {
+  f->r_x = AtGaussPoints(e, dn_);
+  if (props_.ei > 0.0) f->r_xx = AtGaussPoints(e, ddn_);
+  if (props_.axial_damping > 0.0) f->v_x = AtGaussPoints(e_dot, dn_);
+  if (load_fields & kFieldPosition) f->r = AtGaussPoints(e, n_);
+  if (load_fields & kFieldVelocity) f->v = AtGaussPoints(e_dot, n_);
+  if (load_fields & kFieldAcceleration) f->acc = AtGaussPoints(e_ddot, n_);
+}
+
+void AncfElement::InternalForce(const GaussFields& f, Vec12* force) const {
+  // as InternalForce below, without the Jacobians: the weighted densities u_a, u_b at the
+  // points (3 x 5), then F = [F_0 .. F_3] = U_a N'^T + U_b N''^T (3 x 4)
   const double ea = props_.ea, c = props_.axial_damping;
   const bool bending = props_.ei > 0.0;
-  for (const ShapeAtPoint& p : points_) {
-    const Vec3 a = Interpolate(p.dn, e);
+  Mat35 u_a, u_b;
+  for (int g = 0; g < 5; ++g) {
+    const Vec3 a = f.r_x.col(g);
     double n = ea * 0.5 * (a.squaredNorm() - 1.0);
-    if (c > 0.0) n += ea * c * a.dot(Interpolate(p.dn, e_dot));
+    if (c > 0.0) n += ea * c * a.dot(f.v_x.col(g));
     Vec3 f_a = n * a;
     if (bending) {
-      const BendingDensity bd = Bending(props_.ei, a, Interpolate(p.ddn, e), false);
+      const BendingDensity bd = Bending(props_.ei, a, f.r_xx.col(g), false);
       f_a += bd.u_a;
-      const Vec3 f_b = p.weight_dx * bd.u_b;
-      f_a *= p.weight_dx;
-      for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += p.dn[k] * f_a + p.ddn[k] * f_b;
-    } else {
-      f_a *= p.weight_dx;
-      for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += p.dn[k] * f_a;
+      u_b.col(g) = wdx_(g) * bd.u_b;
     }
+    u_a.col(g) = wdx_(g) * f_a;
   }
+  Eigen::Map<Eigen::Matrix<double, 3, 4>> out(force->data());
+  out.noalias() = u_a * dn_.transpose();
+  if (bending) out.noalias() += u_b * ddn_.transpose();
+}
+
+void AncfElement::InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const {
+  GaussFields f;
+  InterpolateFields(e, e_dot, e_dot, 0, &f);
+  InternalForce(f, force);
 }
 
 void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
@@ -156,6 +178,9 @@ void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force
   if (damping) damping->setZero();
   const double ea = props_.ea, c = props_.axial_damping;
   const bool bending = props_.ei > 0.0;
+  // without damping K is the Hessian of U, symmetric: the blocks k <= j are summed, the others
+  // mirrored at the end (K_jk = K_kj^T)
+  const bool symmetric = c == 0.0;
   for (const ShapeAtPoint& p : points_) {
     const double wdx = p.weight_dx;
     const Vec3 a = Interpolate(p.dn, e);
@@ -186,23 +211,37 @@ void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force
     for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += wdx * (p.dn[k] * f_a + p.ddn[k] * f_b);
     if (stiffness) {
       // K_kj = int ( S'_k S'_j u_aa + S'_k S''_j u_ab + S''_k S'_j u_ba + S''_k S''_j u_bb ) dx
-      for (int k = 0; k < 4; ++k)
+      //      = int ( S'_k P_j + S''_k Q_j ) dx,  P_j = S'_j u_aa + S''_j u_ab,
+      //                                          Q_j = S'_j u_ba + S''_j u_bb
+      const Mat3 w_aa = wdx * k_aa;
+      if (bending) {
+        const Mat3 w_ab = wdx * k_ab, w_ba = w_ab.transpose(), w_bb = wdx * k_bb;
+        Mat3 p_j[4], q_j[4];
         for (int j = 0; j < 4; ++j) {
-          Mat3 blk = (p.dn[k] * p.dn[j]) * k_aa;
-          if (bending)
-            blk += (p.dn[k] * p.ddn[j]) * k_ab + (p.ddn[k] * p.dn[j]) * k_ab.transpose() +
-                   (p.ddn[k] * p.ddn[j]) * k_bb;
-          stiffness->block<3, 3>(3 * k, 3 * j) += wdx * blk;
+          p_j[j] = p.dn[j] * w_aa + p.ddn[j] * w_ab;
+          q_j[j] = p.dn[j] * w_ba + p.ddn[j] * w_bb;
         }
+        for (int k = 0; k < 4; ++k)
+          for (int j = symmetric ? k : 0; j < 4; ++j)
+            stiffness->block<3, 3>(3 * k, 3 * j) += p.dn[k] * p_j[j] + p.ddn[k] * q_j[j];
+      } else {
+        for (int k = 0; k < 4; ++k)
+          for (int j = symmetric ? k : 0; j < 4; ++j)
+            stiffness->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * w_aa;
+      }
     }
     if (damping && c > 0.0) {
       // C_kj = int S'_k S'_j EA c a a^T dx
-      const Mat3 c_aa = ea * c * a * a.transpose();
+      const Mat3 c_aa = (wdx * ea * c) * a * a.transpose();
       for (int k = 0; k < 4; ++k)
         for (int j = 0; j < 4; ++j)
-          damping->block<3, 3>(3 * k, 3 * j) += (wdx * p.dn[k] * p.dn[j]) * c_aa;
+          damping->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * c_aa;
     }
   }
+  if (stiffness && symmetric)
+    for (int k = 1; k < 4; ++k)
+      for (int j = 0; j < k; ++j)
+        stiffness->block<3, 3>(3 * k, 3 * j) = stiffness->block<3, 3>(3 * j, 3 * k).transpose();
 }
 
 double AncfElement::AxialForce(const Vec12& e, const Vec12& e_dot, double xi) const {

@@ -21,6 +21,8 @@ namespace towsim::core {
 using Vec12 = Eigen::Matrix<double, 12, 1>;
 using Mat12 = Eigen::Matrix<double, 12, 12>;
 using Mat3 = Eigen::Matrix3d;
+using Mat35 = Eigen::Matrix<double, 3, 5>;
+using Mat45 = Eigen::Matrix<double, 4, 5>;
 
 // Scalar Hermite weights at one point: r = sum_k n[k] e_k, r' = sum_k dn[k] e_k, r'' = ...
 struct ShapeAtPoint {
@@ -31,6 +33,28 @@ struct ShapeAtPoint {
 };
 
 ShapeAtPoint EvaluateShape(double xi, double l);
+
+// An element's fields at its five Gauss points (column g: point g), each interpolated once per
+// evaluation and read by both the internal force and the loads (cable_loads.h). With the
+// coordinates as the 3 x 4 matrix E = [r_0 r'_0 r_1 r'_1] and the shape tables N, N', N''
+// (4 x 5: S_k, dS_k/dx, d2S_k/dx2 of Eq. 4 at the points): r = E N, r' = E N', r'' = E N''.
+// Which ones are filled: AncfElement::InterpolateFields.
+struct GaussFields {
+  Mat35 r_x;   // r' (always)
+  Mat35 r_xx;  // r'' (with bending)
+  Mat35 v_x;   // r_dot' (with axial damping)
+  Mat35 r;     // r (kFieldPosition)
+  Mat35 v;     // r_dot (kFieldVelocity)
+  Mat35 acc;   // r_ddot (kFieldAcceleration)
+};
+// the fields a load asks InterpolateFields for, besides the element's own
+inline constexpr unsigned kFieldPosition = 1, kFieldVelocity = 2, kFieldAcceleration = 4;
+
+// x(x_g) at the five Gauss points for element coordinates x (12 x 1) and a shape table
+// (4 x 5): X S, X = x as 3 x 4
+inline Mat35 AtGaussPoints(const Vec12& x, const Mat45& table) {
+  return Eigen::Map<const Eigen::Matrix<double, 3, 4>>(x.data()) * table;
+}
 
 struct ElementProperties {
   double length = 1.0;           // l [m]
@@ -49,6 +73,19 @@ class AncfElement {
   // consistent mass matrix M = int rho A S^T S dx (Eq. 7), constant
   const Mat12& mass() const { return mass_; }
   const std::array<ShapeAtPoint, 5>& points() const { return points_; }
+  // the shape tables at the Gauss points (4 x 5, column g: point g; GaussFields) and the
+  // weights times l [m]
+  const Mat45& shape_n() const { return n_; }
+  const Mat45& shape_dn() const { return dn_; }
+  const Mat45& shape_ddn() const { return ddn_; }
+  const Eigen::Matrix<double, 1, 5>& weights_dx() const { return wdx_; }
+
+  // the fields at the Gauss points: r' always, r'' with bending, r_dot' with axial damping,
+  // and those of `load_fields` (kFieldPosition | kFieldVelocity | kFieldAcceleration)
+  void InterpolateFields(const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot,
+                         unsigned load_fields, GaussFields* fields) const;
+  // the internal force F = dU/de + damping force from the fields (InterpolateFields)
+  void InternalForce(const GaussFields& fields, Vec12* force) const;
 
   // strain energy U(e) (Eq. 8)
   double StrainEnergy(const Vec12& e) const;
@@ -79,6 +116,8 @@ class AncfElement {
   Eigen::Matrix4d mass4_;  // M = mass4_ (x) I3
   Eigen::Matrix4d dmass4_;  // dM/dl = dmass4_ (x) I3
   std::array<ShapeAtPoint, 5> points_;
+  Mat45 n_, dn_, ddn_;  // points_ as tables
+  Eigen::Matrix<double, 1, 5> wdx_;
   std::array<ShapeAtPoint, 2> ends_;
 };
 

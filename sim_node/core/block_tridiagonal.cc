@@ -53,12 +53,26 @@ void BlockTridiagonal::SetZero() {
 
 bool BlockTridiagonal::Solve(Eigen::VectorXd* b) { return Factor() && SolveFactored(b); }
 
+namespace {
+
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using ConstMap6 = Eigen::Map<const Mat6>;
+
+}  // namespace
+
 bool BlockTridiagonal::Factor() {
   const int n = num_blocks();
   for (int i = first_; i < n; ++i) {
     Map d = diag(i);
-    // D^_i = D_i - L_{i-1} X_{i-1}
-    if (i > first_) d.noalias() -= lower(i - 1) * x(i - 1);
+    // D^_i = D_i - L_{i-1} X_{i-1} (fixed size between two 6 x 6 blocks)
+    if (i > first_) {
+      if (sizes_[i] == 6 && sizes_[i - 1] == 6)
+        Eigen::Map<Mat6>(d.data()).noalias() -=
+            ConstMap6(lower_[i - 1].data()) * ConstMap6(x_[i - 1].data());
+      else
+        d.noalias() -= lower(i - 1) * x(i - 1);
+    }
     double det;
     if (sizes_[i] == 6) {
       lu6_[i].compute(Eigen::Map<const Eigen::Matrix<double, 6, 6>>(d.data()));
@@ -72,7 +86,9 @@ bool BlockTridiagonal::Factor() {
     if (i + 1 < n) {
       // X_i = D^_i^-1 U_i
       Map xi = x(i);
-      if (sizes_[i] == 6)
+      if (sizes_[i] == 6 && sizes_[i + 1] == 6)
+        Eigen::Map<Mat6>(x_[i].data()) = lu6_[i].solve(ConstMap6(upper_[i].data()));
+      else if (sizes_[i] == 6)
         xi = lu6_[i].solve(upper(i));
       else
         xi = lu(i).solve(upper(i));
@@ -82,10 +98,6 @@ bool BlockTridiagonal::Factor() {
 }
 
 namespace {
-
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using ConstMap6 = Eigen::Map<const Mat6>;
 
 // y -= A x (A rows(y) x rows(x)), fixed size when both are 6
 void SubtractProduct(const BlockTridiagonal::Map& a, const Eigen::Map<Eigen::VectorXd>& x,

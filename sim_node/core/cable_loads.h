@@ -58,6 +58,15 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
                           const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
                           ElementLoadJacobians* jac);
 
+// the fields ElementLoadResidual reads at the Gauss points besides r' (GaussFields: kField*)
+unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea);
+// the residual alone (the evaluations without Jacobians) from the element's fields at its
+// Gauss points, interpolated once for this and the internal force (AncfElement::
+// InterpolateFields with LoadFields(ctx, sea))
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
+                          const EnvironmentField& sea, double t, const ElementWaves* waves,
+                          const GaussFields& fields, double scale);
+
 // Consistent generalized force of a uniform load f per unit unstretched length:
 //   Q_k = f int S_k dx = f l [1/2, l/12, 1/2, -l/12]_k
 Vec12 UniformLoad(const Eigen::Vector3d& f, double l);

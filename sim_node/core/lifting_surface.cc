@@ -36,8 +36,10 @@ double DragCoefficient(const LiftingSurface& s, double alpha) {
   double cd = s.cd0 + cl * cl / (kPi * s.oswald * s.aspect_ratio);
   // + flat-plate drag ramped in between alpha_s and 2 alpha_s
   const double ramp = std::clamp((std::abs(alpha) - s.stall_angle) / s.stall_angle, 0.0, 1.0);
-  const double sin_a = std::sin(alpha);
-  cd += ramp * kFlatPlateNormal * sin_a * sin_a;
+  if (ramp > 0.0) {  // (below stall the term is 0: no sine)
+    const double sin_a = std::sin(alpha);
+    cd += ramp * kFlatPlateNormal * sin_a * sin_a;
+  }
   return cd;
 }
 
@@ -52,8 +54,9 @@ SurfaceLoad SurfaceForce(const LiftingSurface& s, double rho, const Vec3& v_rel_
   out.speed = speed;
   if (speed < kMinSpeed) return out;
   // alpha = atan2(-u_n, u_c) + incidence + sign * delta, wrapped to (-pi, pi]
-  const double alpha =
-      std::remainder(std::atan2(-u_n, u_c) + s.incidence + s.deflection_sign * delta, 2.0 * kPi);
+  // (remainder(x, 2 pi) = x exactly for |x| <= pi: called only beyond)
+  double alpha = std::atan2(-u_n, u_c) + s.incidence + s.deflection_sign * delta;
+  if (std::abs(alpha) > kPi) alpha = std::remainder(alpha, 2.0 * kPi);
   out.alpha = alpha;
   out.cl = LiftCoefficient(s, alpha);
   out.cd = DragCoefficient(s, alpha);

@@ -64,6 +64,7 @@ System::System(const Model& model)
                            (!sea_.uniform() && loads_.fluid_inertia_per_length > 0.0) ||
                            sea_.has_seabed();
   weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
+  load_fields_ = state_dependent_loads_ ? LoadFields(loads_, sea_) : 0;
   const int nb = num_bodies();
   winch_ = model_.cable.winch.has_value();
   num_nodes_ = model_.cable.elements + 1;
@@ -237,6 +238,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   Vec12 force;
   Mat12 k, c, j;
   ElementLoadJacobians lj;
+  GaussFields fields;  // without the Jacobians: r', r_dot, ... interpolated once per element
   ElementWaves ew;
   const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
                                double drum_rate) {
@@ -253,7 +255,12 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
         ew.acceleration.segment<3>(6 * k + 3) = ws.d_acceleration;
       }
     }
-    element.InternalForce(ee, ed, &force, jac ? &k : nullptr, jac ? &c : nullptr);
+    if (jac) {
+      element.InternalForce(ee, ed, &force, &k, &c);
+    } else {
+      element.InterpolateFields(ee, ed, ea, load_fields_, &fields);
+      element.InternalForce(fields, &force);
+    }
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
       residual->segment<12>(o) += element.MassTimes(ea) + force - load_scale * qw;
@@ -262,8 +269,10 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
         if (cf.c_v != 0.0) j += cf.c_v * c;
       }
     } else {
-      const Vec12 rl = ElementLoadResidual(element, loads_, sea_, t, waves ? &ew : nullptr, ee, ed,
-                                           ea, load_scale, jac ? &lj : nullptr);
+      const ElementWaves* w = waves ? &ew : nullptr;
+      const Vec12 rl =
+          jac ? ElementLoadResidual(element, loads_, sea_, t, w, ee, ed, ea, load_scale, &lj)
+              : ElementLoadResidual(element, loads_, sea_, t, w, fields, load_scale);
       residual->segment<12>(o) += element.MassTimes(ea) + force + rl;
       if (jac) {
         // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)

@@ -150,6 +150,7 @@ class System {
   // for them (issue 7)
   bool state_dependent_loads_ = false;
   Vec12 weight_load_ = Vec12::Zero();  // UniformLoad(weight_per_length, l)
+  unsigned load_fields_ = 0;  // the fields the loads read at the Gauss points (LoadFields)
   int num_q_ = 0, num_lambda_ = 0, cable_offset_ = 0;
   bool winch_ = false;
   int max_nodes_ = 0, num_nodes_ = 0, first_node_ = 0;

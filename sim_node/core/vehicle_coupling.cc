@@ -42,6 +42,7 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
   residual_.resize(nv);
   flow0_.resize(nv);
   flow1_.resize(nv);
+  for (const Vehicle& v : system_->model().vehicles) inertia_.emplace_back(v.params);
 }
 
 Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
@@ -168,8 +169,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       for (int e = 0; e < 2; ++e)
         if (vehicle_end_[e] == v)
           load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
-      AdvanceVehicle(model.vehicles[v].params, model.environment, flow0_[v], flow1_[v], commands[v],
-                     load, h, &vehicles[v], &sea);
+      AdvanceVehicle(model.vehicles[v].params, inertia_[v], model.environment, flow0_[v],
+                     flow1_[v], commands[v], load, h, &vehicles[v], &sea);
     }
   };
   advance_vehicles();

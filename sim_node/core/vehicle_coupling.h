@@ -88,6 +88,7 @@ class VehicleCoupling {
   // once per step, the end at the pose predicted from the start (p + h R_WB nu_1); the end of
   // one step is the start of the next (State::coupling.flow_end)
   std::vector<VehicleFlow> flow0_, flow1_;
+  std::vector<VehicleInertia> inertia_;  // each vehicle's, factored once (vehicle_model.h)
 };
 
 }  // namespace towsim::core

@@ -24,20 +24,26 @@ Mat3 Skew(const Vec3& a) {
   return s;
 }
 
-// Fossen's m2c (Fossen 2011 ch. 3 and 6; MSS m2c.m): the Kirchhoff Coriolis-centripetal matrix of a
-// kinetic energy 1/2 nu^T M nu (M symmetrized),
-//   C(nu) = [ 0            -S(M11 nu1 + M12 nu2) ]
-//           [ -S(M11 nu1 + M12 nu2)  -S(M21 nu1 + M22 nu2) ]
-Mat6 M2C(const Mat6& m_in, const Vec6& nu) {
-  const Mat6 m = 0.5 * (m_in + m_in.transpose());
+// C(nu) nu for Fossen's m2c (Fossen 2011 ch. 3 and 6; MSS m2c.m), the Kirchhoff
+// Coriolis-centripetal matrix of a kinetic energy 1/2 nu^T M nu, given M_sym = (M + M^T) / 2:
+//   C(nu) = [ 0       -S(a) ]     [a; b] = M_sym nu,
+//           [ -S(a)   -S(b) ]
+// so C(nu) nu = [nu2 x a; nu1 x a + nu2 x b] (the 6 x 6 matrix is never formed). munk = false
+// drops the moment rows' terms in nu1 of C's lower left block (HydrodynamicForces).
+Vec6 CoriolisTimes(const Mat6& m_sym, const Vec6& nu, bool munk = true) {
+  const Vec6 ab = m_sym * nu;
+  const Vec3 a = ab.head<3>(), b = ab.tail<3>();
   const Vec3 nu1 = nu.head<3>(), nu2 = nu.tail<3>();
-  const Vec3 a = m.topLeftCorner<3, 3>() * nu1 + m.topRightCorner<3, 3>() * nu2;
-  const Vec3 b = m.bottomLeftCorner<3, 3>() * nu1 + m.bottomRightCorner<3, 3>() * nu2;
-  Mat6 c = Mat6::Zero();
-  c.topRightCorner<3, 3>() = -Skew(a);
-  c.bottomLeftCorner<3, 3>() = -Skew(a);
-  c.bottomRightCorner<3, 3>() = -Skew(b);
-  return c;
+  Vec6 c_nu;
+  c_nu.head<3>() = nu2.cross(a);
+  c_nu.tail<3>() = nu2.cross(b);
+  const Vec3 c21 = nu1.cross(a);
+  c_nu(3) += c21.x();
+  if (munk) {
+    c_nu(4) += c21.y();
+    c_nu(5) += c21.z();
+  }
+  return c_nu;
 }
 
 Mat6 TotalMass(const VehicleParams& p) { return RigidBodyMassMatrix(p) + p.added_mass; }
@@ -124,9 +130,11 @@ VehicleFlow SampleVehicleFlow(const VehicleParams& p, const EnvironmentField& se
   return f;
 }
 
-Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s,
-                        const VehicleFlow& flow) {
-  const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
+namespace {
+
+// HydrodynamicForces with the state's rotation matrix r_wb = R_WB (computed once per stage)
+Vec6 HydrodynamicForcesAt(const VehicleParams& p, const Environment& env, const VehicleState& s,
+                          const Mat3& r_wb, const VehicleFlow& flow) {
   const Vec3 omega = s.nu.tail<3>();
   // nu_r = nu - [R^T u_W(O); 0]: velocity relative to the water at the origin, and v_c the
   // water's velocity there in B
@@ -141,12 +149,8 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   // moment, as in Fossen's MSS torpedo/remus100: CA(6,1:2) = CA(5,1:3) = 0 (1-based), i.e. the
   // yaw and pitch moments proportional to the linear velocities, (X_udot - Y_vdot) u v,
   // (Z_wdot - X_udot) u w and the coupling terms Y_rdot u r, Z_qdot u q, are dropped.
-  Mat6 c_a = M2C(p.added_mass, nu_r);
-  if (!p.munk_moment) {
-    c_a(5, 0) = c_a(5, 1) = 0.0;
-    c_a(4, 0) = c_a(4, 1) = c_a(4, 2) = 0.0;
-  }
-  tau -= c_a * nu_r;
+  // (CA(5,1:3) is row y of -S(a) nu1, CA(6,1:2) row z: both dropped whole, S(a)_zz = 0)
+  tau -= CoriolisTimes(0.5 * (p.added_mass + p.added_mass.transpose()), nu_r, p.munk_moment);
 
   // the added mass accelerates with the relative velocity: M_A nu_r_dot = M_A nu_dot
   // + M_A [omega x v_c; 0] for a current steady in W (v_c_dot = -omega x v_c, Fossen 2011 ch. 10)
@@ -219,27 +223,33 @@ Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const Ve
   return tau;
 }
 
+}  // namespace
+
+Vec6 HydrodynamicForces(const VehicleParams& p, const Environment& env, const VehicleState& s,
+                        const VehicleFlow& flow) {
+  return HydrodynamicForcesAt(p, env, s, s.q_WB.normalized().toRotationMatrix(), flow);
+}
+
 namespace {
 
 // the right-hand side with the factored total mass M_RB + M_A (constant: factored once per RK4
-// step instead of once per stage)
+// step instead of once per stage) and the state's R_WB (computed once per stage)
 VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const VehicleState& s,
-                        const VehicleFlow& flow, const VehicleCommand& cmd, const Vec3& force_B,
-                        const Vec3& moment_B, const Mat6& m_rb,
+                        const Mat3& r_wb, const VehicleFlow& flow, const VehicleCommand& cmd,
+                        const Vec3& force_B, const Vec3& moment_B, const Mat6& m_rb,
                         const Eigen::PartialPivLU<Mat6>& mass_lu,
                         const EnvironmentField* sea = nullptr) {
   VehicleDerivative d;
-  const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   // p_dot_W = R_WB nu_1, attitude rate omega_B
   d.p_dot_W = r_wb * s.nu.head<3>();
   d.omega_B = s.nu.tail<3>();
 
   // (M_RB + M_A) nu_dot = tau_hyd + tau_ext - C_RB(nu) nu   (paper Eq. 27-28, Fossen form)
-  Vec6 rhs = HydrodynamicForces(p, env, s, flow);
+  Vec6 rhs = HydrodynamicForcesAt(p, env, s, r_wb, flow);
   if (sea && sea->has_seabed()) rhs += SeabedContactWrench(p, *sea, s);
   rhs.head<3>() += force_B;
   rhs.tail<3>() += moment_B;
-  rhs -= M2C(m_rb, s.nu) * s.nu;
+  rhs -= CoriolisTimes(m_rb, s.nu);  // M_RB is symmetric
   d.nu_dot = mass_lu.solve(rhs);
 
   // actuators (actuator.h): x_dot = clamp((clamp(u, range) - x) / T, +-max_rate)
@@ -256,7 +266,8 @@ VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
                                const Vec3& force_B, const Vec3& moment_B, const VehicleFlow& flow) {
   const Mat6 m_rb = RigidBodyMassMatrix(p);
   const Eigen::PartialPivLU<Mat6> lu(m_rb + p.added_mass);
-  return Rates(p, env, s, flow, cmd, force_B, moment_B, m_rb, lu);
+  return Rates(p, env, s, s.q_WB.normalized().toRotationMatrix(), flow, cmd, force_B, moment_B,
+               m_rb, lu);
 }
 
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
@@ -289,24 +300,35 @@ Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
   return tau;
 }
 
+VehicleInertia::VehicleInertia(const VehicleParams& p)
+    : m_rb(RigidBodyMassMatrix(p)), mass_lu(m_rb + p.added_mass) {}
+
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
                     const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
                     double h, VehicleState* s, const EnvironmentField* sea) {
+  AdvanceVehicle(p, VehicleInertia(p), env, flow0, flow1, cmd, load, h, s, sea);
+}
+
+void AdvanceVehicle(const VehicleParams& p, const VehicleInertia& inertia, const Environment& env,
+                    const VehicleFlow& flow0, const VehicleFlow& flow1, const VehicleCommand& cmd,
+                    const PointLoad& load, double h, VehicleState* s,
+                    const EnvironmentField* sea) {
   // classical RK4; stage c in {0, 1/2, 1}: f_W(c) = f_W0 + c (f_W1 - f_W0), applied at point_B
   // with the stage attitude: force_B = R^T f_W, moment_B = point_B x force_B (paper Eq. 29-30)
   const VehicleState s0 = *s;
-  const Mat6 m_rb = RigidBodyMassMatrix(p);
-  const Eigen::PartialPivLU<Mat6> mass_lu(m_rb + p.added_mass);
+  const Mat6& m_rb = inertia.m_rb;
+  const Eigen::PartialPivLU<Mat6>& mass_lu = inertia.mass_lu;
   // the same water all through the step (still water, a steady uniform current): no blending
   const bool steady_flow = !flow0.accelerating && !flow1.accelerating && !flow0.waves &&
                            !flow1.waves && flow0.origin.velocity == flow1.origin.velocity;
   auto rates = [&](const VehicleState& x, double c) {
     const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
-    const Vec3 f_b = x.q_WB.normalized().toRotationMatrix().transpose() * f_w;
+    const Mat3 r_wb = x.q_WB.normalized().toRotationMatrix();
+    const Vec3 f_b = r_wb.transpose() * f_w;
     if (steady_flow)
-      return Rates(p, env, x, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu, sea);
-    return Rates(p, env, x, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu,
-                 sea);
+      return Rates(p, env, x, r_wb, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu, sea);
+    return Rates(p, env, x, r_wb, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb,
+                 mass_lu, sea);
   };
   // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
   // components are integrated like the other states and renormalized at the end)

@@ -32,6 +32,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 
 #include "core/flow_sample.h"
 
@@ -183,12 +184,25 @@ VehicleDerivative VehicleRates(const VehicleParams& p, const Environment& env,
 Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
                          const VehicleState& s);
 
+// The constant mass properties the RK4 stages read: M_RB and the LU of M_RB + M_A, factored
+// once per vehicle (not once per step)
+struct VehicleInertia {
+  explicit VehicleInertia(const VehicleParams& p);
+  Mat6 m_rb;
+  Eigen::PartialPivLU<Mat6> mass_lu;
+};
+
 // one explicit RK4 step of length h with the point load interpolated linearly in time and the
 // water interpolated linearly from flow0 (at the start) to flow1 (at the end); with `sea`, the
 // seabed contact at every stage (not lagged); the quaternion is renormalized
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleFlow& flow0,
                     const VehicleFlow& flow1, const VehicleCommand& cmd, const PointLoad& load,
                     double h, VehicleState* s, const EnvironmentField* sea = nullptr);
+// the same with the vehicle's inertia factored beforehand (VehicleInertia(p))
+void AdvanceVehicle(const VehicleParams& p, const VehicleInertia& inertia, const Environment& env,
+                    const VehicleFlow& flow0, const VehicleFlow& flow1, const VehicleCommand& cmd,
+                    const PointLoad& load, double h, VehicleState* s,
+                    const EnvironmentField* sea = nullptr);
 // the same in still water
 void AdvanceVehicle(const VehicleParams& p, const Environment& env, const VehicleCommand& cmd,
                     const PointLoad& load, double h, VehicleState* s);
