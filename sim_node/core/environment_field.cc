@@ -230,6 +230,14 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   for (const WaveComponent& p : comps) amplitude_sum_ += p.amplitude;
 }
 
+void EnvironmentField::set_avx2(bool on) {
+#if TOWSIM_WAVES_AVX2
+  avx2_ = on && HaveAvx2();
+#else
+  (void)on;
+#endif
+}
+
 double EnvironmentField::Ramp(double t, double* rate) const {
   // r(t) = (1 - cos(pi t / T)) / 2 on [0, T), 1 after, 0 before 0 (wave_field.h)
   *rate = 0.0;

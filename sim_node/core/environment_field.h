@@ -69,6 +69,11 @@ class EnvironmentField {
   bool steady_uniform_current() const { return steady_uniform_current_; }
   bool has_waves() const { return has_waves_; }
   bool has_seabed() const { return has_seabed_; }
+  // the wave sums run compiled for AVX2 (where the processor has it; environment_field.cc);
+  // set_avx2(false) takes the baseline path, which gives the same bits (a test checks it);
+  // set_avx2(true) where there is no AVX2 changes nothing
+  bool avx2() const { return avx2_; }
+  void set_avx2(bool on);
 
   // the current alone at p_W, t (cheap); dU/dz in *shear [1/s] when asked
   FlowSample Current(const Vec3& p_W, double t, Vec3* shear = nullptr) const;
