@@ -9,8 +9,9 @@
 //                 [--winch-filter 10] [--winch-elevator-depth 25] [--winch-max-speed V]
 //                 [--winch-max-acceleration A]]
 //                 [--log FILE]
-// Altitude mode: the commanded depth is z + range - A, range the sim's own altimeter
-// (<ns>/<body>/altitude, sensor_msgs/Range, docs/sensors.md) of the step answered; while it
+// Altitude mode: the commanded depth is z + range cos(roll) cos(pitch) - A, range the sim's own
+// altimeter (<ns>/<body>/altitude, sensor_msgs/Range, docs/sensors.md: along the body's z axis,
+// so its vertical part is the depth of the echo below the body) of the step answered; while it
 // reports no seabed (+inf: none in the scene or out of range) the last target (at first the
 // current depth) is held. Fallback for a scene without a seabed: --seabed-depth B or
 // --seabed-profile give the seabed instead (no altimeter read): the commanded depth is
@@ -191,7 +192,9 @@ int main(int argc, char** argv) {
     const int rc = client.Run([&](const BodyState& b) {
       if (altitude_mode && opt.altitude) {
         if (std::isfinite(b.altitude)) {
-          p.depth = b.z + b.altitude - altitude;  // the seabed below, less the altitude
+          // the beam runs along the body's z axis: its echo comes from the depth z + r cos(roll)
+          // cos(pitch) (docs/sensors.md); the seabed there, less the altitude
+          p.depth = b.z + b.altitude * std::cos(b.roll) * std::cos(b.pitch) - altitude;
           have_target = true;
         } else {
           if (!have_target) p.depth = b.z;  // nothing measured yet: hold the depth

@@ -76,7 +76,11 @@ std::string Usage() {
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
          "  --wait-for-controllers\n"
          "                        DDS modes: the first step waits until every vehicle that\n"
-         "                        takes commands has received one (status: waiting)\n"
+         "                        takes commands (and the winch, where lockstep waits for\n"
+         "                        it) has received one (status: waiting)\n"
+         "  --winch dds|script    DDS modes, a scene with cable.winch: commanded over DDS\n"
+         "                        (default), or following the scene's script, neither\n"
+         "                        waited for nor failsafed (docs/winch_dds.md)\n"
          "  --security DIR/NAME   DDS modes: DDS Security with the identity DIR/NAME made by\n"
          "                        scripts/security.sh (docs/security.md)\n"
          "  -h, --help            print this help and exit\n"
@@ -123,7 +127,8 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     static const char* const kWithValue[] = {"--scene",     "--mode",     "--duration", "--rate",
                                              "--set",       "--csv",      "--record",   "--domain",
-                                             "--namespace", "--security", "--foxglove"};
+                                             "--namespace", "--security", "--foxglove",
+                                             "--winch"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -195,6 +200,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
         return fail("--foxglove " + v + ": must be a port number from 0 to 65535");
       }
       o.foxglove_port = static_cast<int>(port);
+    } else if (name == "--winch") {
+      if (v != "dds" && v != "script") return fail("--winch " + v + ": must be dds or script");
+      o.winch = v;
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
@@ -205,6 +213,10 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
   }
   if (o.mode == Mode::kOffline && !o.security.empty()) {
     return fail("--security " + o.security + ": needs a DDS mode (realtime, fast or lockstep)");
+  }
+  if (o.mode == Mode::kOffline && o.winch == "dds") {
+    return fail("--winch dds: needs a DDS mode (realtime, fast or lockstep); offline the winch "
+                "follows the scene's script");
   }
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +

@@ -34,6 +34,9 @@ struct Options {
   std::string ns = "/towsim";          // --namespace NS: ROS 2 namespace of the topics
   bool paused = false;                 // --paused: start paused (SimControl RESUME / STEP)
   bool wait_for_controllers = false;   // --wait-for-controllers: first step once all commanded
+  // --winch dds|script: the winch (cable.winch) commanded over DDS (default), or following the
+  // scene's script, neither waited for nor failsafed (docs/winch_dds.md)
+  std::optional<std::string> winch;
   std::string security;                // --security DIR/NAME: DDS Security identity (DDS modes)
   bool help = false;                   // --help / -h
   bool version = false;                // --version

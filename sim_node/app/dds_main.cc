@@ -29,6 +29,7 @@ int RunDdsModes(const towsim::core::Model& model, const towsim::app::Options& op
   dds.allow_another_node = options.allow_another_node;
   dds.start_paused = options.paused;
   dds.wait_for_controllers = options.wait_for_controllers;
+  dds.winch_script = options.winch == "script";
   if (csv != nullptr) {
     dds.output = [csv](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
                        long us) { csv->Write(s, st, us); };

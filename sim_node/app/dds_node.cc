@@ -9,6 +9,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "app/stop_signal.h"
 #include "app/strain_watch.h"
 #include "dds/command_arbiter.h"
+#include "dds/topic_names.h"
 #include "dds/translators.h"
 #include "io/output_error.h"
 
@@ -35,6 +37,10 @@ constexpr double kLockstepStartTimeout = 30.0;
 constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
 constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
 constexpr int kMaxCommandNotes = 5;         // rejected / clamped commands told on stderr
+
+// a command on the winch's topic while the winch follows the script (--winch script)
+constexpr const char* kWinchScriptRejected =
+    "winch: command rejected (the winch follows the scene's script: --winch script)";
 
 constexpr uint8_t kWaiting = towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
 constexpr uint8_t kFailed = towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED;
@@ -78,7 +84,14 @@ class DdsNode {
   bool WaitLockstep();
   // paused: status now and then, and wait for control requests
   void Idle();
-  bool AllCommanded() const;  // every vehicle that takes commands has received one
+  // the arbiter entries --wait-for-controllers waits for: every vehicle that takes commands,
+  // and the winch where lockstep waits for it (docs/winch_dds.md)
+  std::vector<int> Awaited() const;
+  bool AllCommanded() const;  // every entry of Awaited() has received a valid command
+  // "tow_vehicle (rt/towsim/tow_vehicle/command), winch (rt/towsim/winch/command)"
+  std::string Describe(const std::vector<int>& entries) const;
+  // --wait-for-controllers: says on stderr whom the first step waits for, when that changes
+  void NoteAwaited();
   // one step with the commands held; false on solver failure
   bool DoStep();
   // back to the scene's initial state; false on solver failure
@@ -120,6 +133,10 @@ class DdsNode {
   uint64_t prior_received_ = 0, prior_rejected_ = 0, prior_clamped_ = 0, prior_failsafes_ = 0,
            prior_timeouts_ = 0;
   int command_notes_ = 0;
+  std::string awaited_note_;  // the last NoteAwaited() line
+  // --winch script: commands on the winch's topic, rejected (received and rejected in the
+  // status, with the commands on topics of no commandable body)
+  uint64_t winch_script_rejected_ = 0;
   bool output_failed_ = false;  // opt_.output threw io::OutputError
   dds::StatusSample status_;    // reused: no allocation per step
 };
@@ -130,7 +147,7 @@ int DdsNode::Run() {
     return rc == kExitStoppedInSetup ? kExitOk : rc;
   }
   control_ = RunControl(RunControl::Options{opt_.start_paused,
-                                            opt_.wait_for_controllers && num_command_vehicles() > 0,
+                                            opt_.wait_for_controllers && !Awaited().empty(),
                                             n_.steps_to_run, opt_.rate});
   run_id_ = NewRunId(model_.name);
 
@@ -190,6 +207,7 @@ int DdsNode::Loop() {
     TakeCommands();
     if (control_.waiting_for_controllers()) {
       if (!AllCommanded()) {
+        NoteAwaited();
         Idle();
         continue;
       }
@@ -272,8 +290,9 @@ void DdsNode::PublishStatus(uint8_t state) {
   notes.peer = n_.peer_note;
   notes.strain = strain;
   notes.control = control_.note();
-  notes.unknown_commands = n_.unknown->count();
-  notes.unknown_event = n_.unknown->last_event();
+  notes.unknown_commands = n_.unknown->count() + winch_script_rejected_;
+  notes.unknown_event = winch_script_rejected_ > 0 ? std::string_view(kWinchScriptRejected)
+                                                   : std::string_view(n_.unknown->last_event());
   dds::ToStatusCommands(*n_.arbiter, notes, &s);
   n_.endpoints->PublishStatus(s);
 }
@@ -324,6 +343,12 @@ void DdsNode::TakeCommands() {
         [&](const dds::WinchCommandMsg& msg, const dds_sample_info_t&) {
           NoteCommand(n_.arbiter->Receive(w, msg, t), w);
         });
+  } else if (n_.winch_script) {
+    n_.endpoints->winch_reader()->TakeEach([&](const dds::WinchCommandMsg&, const auto&) {
+      if (++winch_script_rejected_ == 1) {
+        std::fprintf(stderr, "sim_node: %s\n", kWinchScriptRejected);
+      }
+    });
   }
 }
 
@@ -352,15 +377,9 @@ bool DdsNode::WaitLockstep() {
     }
     if (!hinted && waited >= kLockstepHintAfter) {
       hinted = true;
-      std::string names;
-      for (int i : arbiter.Missing(step_)) {
-        names += (names.empty() ? "" : ", ") + arbiter.vehicle(i).name;
-      }
-      std::fprintf(stderr,
-                   "sim_node: lockstep: waiting for the commands of step %llu (%s) on "
-                   "rt%s/<body>/command\n",
-                   static_cast<unsigned long long>(step_), names.c_str(),
-                   opt_.ns == "/" ? "" : opt_.ns.c_str());
+      std::fprintf(stderr, "sim_node: lockstep: waiting for the commands of step %llu: %s\n",
+                   static_cast<unsigned long long>(step_),
+                   Describe(arbiter.Missing(step_)).c_str());
     }
     if (Seconds(now - last_status_wall_) >= kIdleStatusPeriod) {
       // again, for late joiners (volatile topics): the state, then the status
@@ -385,11 +404,43 @@ void DdsNode::Idle() {
   n_.endpoints->WaitForInput(kWaitSlice);
 }
 
+std::vector<int> DdsNode::Awaited() const {
+  std::vector<int> entries;
+  for (int i = 0; i < num_command_vehicles(); ++i) entries.push_back(i);
+  if (const int w = n_.winch_entry; w >= 0 && n_.arbiter->vehicle(w).lockstep) {
+    entries.push_back(w);
+  }
+  return entries;
+}
+
 bool DdsNode::AllCommanded() const {
-  for (int i = 0; i < num_command_vehicles(); ++i) {
+  for (int i : Awaited()) {
     if (!n_.arbiter->commanded(i)) return false;
   }
   return true;
+}
+
+std::string DdsNode::Describe(const std::vector<int>& entries) const {
+  const dds::TopicNames names(opt_.ns);
+  std::string text;
+  for (int i : entries) {
+    const std::string& name = n_.arbiter->vehicle(i).name;
+    const std::string topic = i == n_.winch_entry ? names.winch_command() : names.command(name);
+    text += (text.empty() ? "" : ", ") + name + " (" + topic + ")";
+  }
+  return text;
+}
+
+void DdsNode::NoteAwaited() {
+  std::vector<int> missing;
+  for (int i : Awaited()) {
+    if (!n_.arbiter->commanded(i)) missing.push_back(i);
+  }
+  const std::string note = Describe(missing);
+  if (note == awaited_note_) return;
+  awaited_note_ = note;
+  std::fprintf(stderr, "sim_node: --wait-for-controllers: waiting for the first command of %s\n",
+               note.c_str());
 }
 
 bool DdsNode::DoStep() {
@@ -504,9 +555,9 @@ void DdsNode::Summary(double wall) const {
       rtf, static_cast<unsigned long long>(pacer_.overruns()),
       static_cast<unsigned long long>(prior_failsafes_ + n_.arbiter->failsafe_count()),
       static_cast<unsigned long long>(prior_received_ + n_.arbiter->received() +
-                                      n_.unknown->count()),
+                                      n_.unknown->count() + winch_script_rejected_),
       static_cast<unsigned long long>(prior_rejected_ + n_.arbiter->rejected() +
-                                      n_.unknown->count()),
+                                      n_.unknown->count() + winch_script_rejected_),
       static_cast<unsigned long long>(prior_clamped_ + n_.arbiter->clamped()),
       static_cast<unsigned long long>(prior_timeouts_ + n_.arbiter->lockstep_timeouts()), resets_);
   if (strain_.extreme() && n > 0 && n < static_cast<int>(sizeof line)) {

@@ -75,6 +75,10 @@ struct DdsNodeOptions {
   // wait before the first step until every vehicle that takes commands has received one (so
   // controllers started beside the node miss no step, in every mode; the status says waiting)
   bool wait_for_controllers = false;
+  // the winch (cable.winch) follows the scene's script: not waited for in lockstep, no
+  // failsafe, its commands on rt/<ns>/winch/command rejected and counted (sim_node --winch
+  // script, docs/winch_dds.md); false: commanded over DDS like a vehicle
+  bool winch_script = false;
   // called with the state at t = 0, every k = max(1, round(1 / (output_rate h))) steps and at
   // the last state (e.g. CsvWriter::Write); may throw (then RunDdsNode throws)
   std::function<void(const core::Simulation&, const core::StepStatus&, long wall_us)> output;

@@ -24,20 +24,27 @@ dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t, u
 
 FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
                                    const dds::TopicNames& names,
-                                   const std::vector<std::string>& bodies, std::string program,
-                                   bool quiet)
+                                   const std::vector<std::string>& bodies, bool winch,
+                                   std::string program, bool quiet)
     : participant_(participant),
       program_(std::move(program)),
       quiet_(quiet),
       command_type_(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc),
       control_type_(participant, &towsim_msgs_msg_dds__SimControl__desc),
-      twist_type_(participant, &geometry_msgs_msg_dds__Twist__desc) {
+      twist_type_(participant, &geometry_msgs_msg_dds__Twist__desc),
+      winch_type_(participant, &towsim_msgs_msg_dds__WinchCommand__desc) {
   for (const std::string& b : bodies) {
     Inbound& in = inbound_[RosTopicName(names.command(b))];
     in.schema_name = "towsim_msgs/msg/ActuatorCommand";
     in.descriptor = &towsim_msgs_msg_dds__ActuatorCommand__desc;
     in.type = &command_type_;
     in.teleop = true;
+  }
+  if (winch) {  // the winch's own command (docs/winch_dds.md), checked by the node like any
+    Inbound& in = inbound_[RosTopicName(names.winch_command())];
+    in.schema_name = "towsim_msgs/msg/WinchCommand";
+    in.descriptor = &towsim_msgs_msg_dds__WinchCommand__desc;
+    in.type = &winch_type_;
   }
   Inbound& control = inbound_[RosTopicName(names.sim_control())];
   control.schema_name = "towsim_msgs/msg/SimControl";

@@ -2,11 +2,13 @@
 // What Foxglove clients may publish (clientPublish; docs/foxglove.md), shared by the bridge
 // towsim_foxglove and sim_node --foxglove: on `<ns>/<b>/command` a towsim_msgs/msg/
 // ActuatorCommand, or a geometry_msgs/msg/Twist from Foxglove's Teleop panel (TwistToCommand);
-// on `<ns>/sim_control` a towsim_msgs/msg/SimControl; encoding cdr. A message is checked to be
-// a valid CDR sample of its type (Cyclone's deserializer) and written on DDS as it is, from a
-// writer in the given participant, so that the node validates it exactly like any DDS command
-// (the node's own readers take the samples of a writer in the node's participant too). A
-// malformed message is rejected here (the server sends the reason to the client) and counted.
+// on `<ns>/winch/command` (a scene with a winch, docs/winch_dds.md) a towsim_msgs/msg/
+// WinchCommand; on `<ns>/sim_control` a towsim_msgs/msg/SimControl; encoding cdr. A message
+// is checked to be a valid CDR sample of its type (Cyclone's deserializer) and written on DDS
+// as it is, from a writer in the given participant, so that the node validates it exactly like
+// any DDS command (the node's own readers take the samples of a writer in the node's
+// participant too). A malformed message is rejected here (the server sends the reason to the
+// client) and counted.
 //
 // Thread safety: Advertise, Publish and SetStatusStep may come from different threads.
 
@@ -37,9 +39,11 @@ dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& twis
 
 class FoxgloveCommands {
  public:
-  // `program` names the notes on stderr ("towsim_foxglove: rejected a malformed ...")
+  // `program` names the notes on stderr ("towsim_foxglove: rejected a malformed ...");
+  // `winch`: the scene has a winch (SceneInfo.has_winch), so clients may command it
   FoxgloveCommands(const dds::Participant& participant, const dds::TopicNames& names,
-                   const std::vector<std::string>& bodies, std::string program, bool quiet);
+                   const std::vector<std::string>& bodies, bool winch, std::string program,
+                   bool quiet);
   FoxgloveCommands(const FoxgloveCommands&) = delete;
   FoxgloveCommands& operator=(const FoxgloveCommands&) = delete;
 
@@ -68,7 +72,7 @@ class FoxgloveCommands {
   const dds::Participant& participant_;
   std::string program_;
   bool quiet_;
-  dds::RawType command_type_, control_type_, twist_type_;
+  dds::RawType command_type_, control_type_, twist_type_, winch_type_;
   std::mutex mutex_;                        // inbound_
   std::map<std::string, Inbound> inbound_;  // ROS topic -> writer
   std::atomic<uint64_t> status_step_{0};

@@ -14,7 +14,9 @@
 // time: the header stamp of each message, /clock for the time messages.
 //
 // clientPublish: a client may advertise rt/<ns>/<body>/command (towsim_msgs/msg/
-// ActuatorCommand) and rt/<ns>/sim_control (towsim_msgs/msg/SimControl) with encoding cdr.
+// ActuatorCommand), rt/<ns>/winch/command (towsim_msgs/msg/WinchCommand, when the scene info
+// says the scene has a winch; docs/winch_dds.md) and rt/<ns>/sim_control (towsim_msgs/msg/
+// SimControl) with encoding cdr.
 // Each message is checked to be a valid CDR sample of its type (Cyclone's deserializer) and
 // written on DDS as it is; the node validates it exactly like any DDS command (NaN rejected,
 // out of range clamped, counted in its status). A malformed message is rejected here: an error
@@ -177,7 +179,8 @@ class Bridge {
   int Run();
 
  private:
-  void Serve(const std::vector<std::string>& bodies);
+  // winch: the scene has one (SceneInfo.has_winch), so clients may command it
+  void Serve(const std::vector<std::string>& bodies, bool winch);
   // readers for the channels with subscribers (and /clock while a client is connected)
   void UpdateReaders();
   void TakeAll();
@@ -193,7 +196,7 @@ class Bridge {
   std::unique_ptr<towsim::app::FoxgloveCommands> commands_;  // clientPublish, after Serve()
 };
 
-void Bridge::Serve(const std::vector<std::string>& bodies) {
+void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
   for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies, true)) {
     auto s = std::make_unique<Served>();
     s->topic = t;
@@ -210,7 +213,7 @@ void Bridge::Serve(const std::vector<std::string>& bodies) {
     s->topic_entity = dds::Entity(e);
     served_.push_back(std::move(s));
   }
-  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies,
+  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winch,
                                                               "towsim_foxglove", opt_.quiet);
   commands_->Attach(&server_);
 }
@@ -268,12 +271,13 @@ int Bridge::Run() {
   dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc, names_.scene_info());
   dds::Reader<dds::SceneInfoMsg> scene(participant_, scene_topic, dds::SceneInfoQos());
   std::vector<std::string> bodies;
-  bool have_scene = false, hinted = false;
+  bool have_scene = false, hinted = false, winch = false;
   const double start = static_cast<double>(dds_time()) * 1e-9;
   while (!have_scene && !towsim::app::StopRequested()) {
     scene.TakeEach([&](const dds::SceneInfoMsg& m, const dds_sample_info_t&) {
       if (have_scene) return;
       for (uint32_t i = 0; i < m.bodies._length; ++i) bodies.push_back(m.bodies._buffer[i]);
+      winch = m.has_winch;
       have_scene = true;
     });
     if (!have_scene) dds_sleepfor(DDS_MSECS(10));
@@ -284,7 +288,7 @@ int Bridge::Run() {
     }
   }
   if (!have_scene) return kExitOk;  // stopped while waiting
-  Serve(bodies);
+  Serve(bodies, winch);
   try {
     server_.Start();
   } catch (const std::runtime_error& e) {

@@ -59,6 +59,12 @@ int Run(const Options& options, DdsModeRunner run_dds) {
     return kExitBadInput;
   }
   if (model.name.empty()) model.name = std::filesystem::path(scene).stem().string();
+  if (options.winch && !model.cable.winch) {
+    std::fprintf(stderr,
+                 "sim_node: error: --winch %s: the scene %s has no winch (cable.winch)\n",
+                 options.winch->c_str(), scene.c_str());
+    return kExitBadInput;
+  }
   const double duration = options.duration.value_or(model.time.duration);
   model.time.duration = duration;
   if (!(duration / model.time.step <= core::kMaxSteps)) {

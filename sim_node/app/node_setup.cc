@@ -65,7 +65,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
   }
   // the winch (docs/winch_dds.md): one more entry, after the vehicles, waited for in lockstep
-  // like a commanded body
+  // like a commanded body; none with --winch script (the scene's script drives it)
+  n.winch_script = model.cable.winch.has_value() && opt.winch_script;
   if (model.cable.winch) {
     for (const auto& v : vehicles) {
       if (v.name == dds::kWinchName) {
@@ -73,6 +74,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
                    "(rename the vehicle)");
       }
     }
+  }
+  if (model.cable.winch && !opt.winch_script) {
     const bool waited = opt.lockstep_bodies.empty() ||
                         std::find(opt.lockstep_bodies.begin(), opt.lockstep_bodies.end(),
                                   dds::kWinchName) != opt.lockstep_bodies.end();
@@ -85,7 +88,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     for (const auto& v : vehicles) found = found || v.name == name;
     if (!found) {
       return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands" +
-                 (model.cable.winch ? " nor the winch" : ""));
+                 (n.winch_entry >= 0 ? " nor the winch" : "") +
+                 (n.winch_script ? " (--winch script: the winch is not waited for)" : ""));
     }
   }
   n.arbiter.emplace(std::move(vehicles), opt.command_timeout);

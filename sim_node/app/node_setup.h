@@ -35,7 +35,9 @@ inline constexpr int kExitStoppedInSetup = -1;  // a signal stopped the setup (t
 // the node's parts, in the order they are built (and destroyed in reverse)
 struct NodeParts {
   std::vector<int> command_vehicles;  // vehicle index of arbiter entry i
-  int winch_entry = -1;  // the winch's arbiter entry, after the vehicles'; < 0: no winch
+  // the winch's arbiter entry, after the vehicles'; < 0: no winch, or it follows the script
+  int winch_entry = -1;
+  bool winch_script = false;  // --winch script: the scene's winch follows its script
   bool has_lockstep_vehicles = false;
   std::optional<dds::CommandArbiter> arbiter;
   std::optional<core::Simulation> sim;

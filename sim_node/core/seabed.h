@@ -17,6 +17,23 @@
 // (on an interior cell edge, those of the cell with the larger index; outside the grid the
 // extended constants give zero slope across the edge the point lies beyond).
 //
+// The range along a ray (RayRange, an altimeter's beam; docs/sensors.md): the smallest s >= 0
+// with F(o + s u) = 0, F = z - d(x, y) the signed depth below the bed, u a unit direction.
+// Along the ray F(s) = o_z + s u_z - d(o_x + s u_x, o_y + s u_y) is
+//   flat:   linear, F(s) = F(0) + s u_z, closed form s = -F(0) / u_z;
+//   plane:  linear, F(s) = F(0) + s (u_z - g . (u_x, u_y)), g = grad d, closed form;
+//   grid:   piecewise quadratic: between the parameters where the ray's horizontal trace
+//           crosses a grid line x = x_i or y = y_j it stays in one bilinear cell (or one strip
+//           of the constant extension), where d is bilinear in (x, y) and so quadratic in s.
+//           The ray is marched from one crossing to the next; in each piece the quadratic
+//           through F at its ends and middle brackets the first root (the piece's end, or its
+//           vertex where F has a maximum >= 0 inside, so a grazing hump is not stepped over),
+//           and bisection on F itself finds it. The march covers only the s where the ray's
+//           depth lies within [min d_ij, max d_ij] (outside, F has one sign).
+// The result is +infinity when the ray meets the bed nowhere in [0, max_range] (no seabed, a
+// beam at or above the horizon over a flat bed, a bed beyond max_range), 0 when o lies on the
+// bed and -infinity when o lies below it (F(0) > 0): REP 117's "no return" and "too close".
+//
 // The water depth the waves' dispersion relation uses (WaveDepth): the depth d(0, 0) under
 // the scene origin for every kind (flat: its depth), infinity when there is no seabed.
 //
@@ -66,6 +83,9 @@ class Seabed {
   double Depth(double x, double y) const;
   // unit normal into the water (NED, upward); -e_z without a seabed
   Vec3 Normal(double x, double y) const;
+  // range [m] from `origin` along the unit `direction` to the bed, at most max_range (see
+  // above: +inf no return, -inf origin below the bed); never allocates
+  double RayRange(const Vec3& origin, const Vec3& direction, double max_range) const;
   // depth for the waves' dispersion relation (see above)
   double WaveDepth() const;
 
@@ -83,6 +103,8 @@ class Seabed {
  private:
   // d and its gradient (d_x, d_y) at (x, y)
   void Evaluate(double x, double y, double* d, double* d_x, double* d_y) const;
+  // RayRange on the grid, for F(0) < 0 and s in [s_lo, s_hi]
+  double GridRayRange(const Vec3& origin, const Vec3& direction, double s_lo, double s_hi) const;
 
   Kind kind_ = Kind::kNone;
   double depth_ = std::numeric_limits<double>::infinity();
@@ -90,6 +112,7 @@ class Seabed {
   double slope_direction_ = 0.0;
   double gx_ = 0.0, gy_ = 0.0;  // plane gradient tan(slope) (cos c, sin c)
   std::vector<double> x_, y_, d_;
+  double d_min_ = 0.0, d_max_ = 0.0;  // of the grid's depths
   SeabedContact contact_;
 };
 

@@ -335,6 +335,12 @@ double Simulation::body_altitude(int b) const {
   return sea.SeabedDepth(p.x(), p.y()) - p.z();
 }
 
+double Simulation::body_altimeter_range(int b, double max_range) const {
+  // beam u = R_WB e_z, the body's z axis in the world
+  const Vec3 beam = body_attitude(b) * Vec3::UnitZ();
+  return impl_->system.sea().SeabedRayRange(body_position(b), beam, max_range);
+}
+
 double Simulation::body_depth(int b) const {
   const Vec3 p = body_position(b);
   return p.z() + surface_elevation_at(b);

@@ -134,11 +134,16 @@ class Simulation {
   double StrainEnergy() const;
 
   // --- the sea at a body (docs/environment.md), at its origin and the current time ---
-  // what a towfish's altimeter and pressure sensor would report: the altitude above the seabed
-  // straight below (NaN without a seabed) and the depth below the instantaneous surface,
-  // z + eta [m]; the surface elevation eta (positive up) and the water's velocity (current +
-  // waves, world frame) there [m, m/s]
+  // the altitude above the seabed straight below, d(x, y) - z (NaN without a seabed), and the
+  // depth below the instantaneous surface, z + eta [m]; the surface elevation eta (positive
+  // up) and the water's velocity (current + waves, world frame) there [m, m/s]
   double body_altitude(int b) const;
+  // what the body's altimeter reports (docs/sensors.md): the range [m] from the body origin
+  // along its beam, the body's z axis (down in the NED body frame; a sphere's frame stays
+  // aligned with the world, so straight down), to the seabed, at most max_range;
+  // Seabed::RayRange's conventions (REP 117): +inf no return (no seabed, the beam at or above
+  // the horizon over a flat bed, the bed beyond max_range), -inf the origin below the bed
+  double body_altimeter_range(int b, double max_range) const;
   double body_depth(int b) const;
   double surface_elevation_at(int b) const;
   Vec3 water_velocity_at(int b) const;

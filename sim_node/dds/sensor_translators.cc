@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <utility>
 
 #include "core/wave_field.h"
@@ -26,15 +25,9 @@ FluidPressureMessage::FluidPressureMessage(std::string frame_id)
 
 void ToAltitude(const core::Simulation& sim, int body, RangeMsg* msg) {
   msg->header.stamp = ToTimeMsg(sim.time());
-  const double altitude = sim.body_altitude(body);  // NaN without a seabed
-  constexpr float kInf = std::numeric_limits<float>::infinity();
-  if (std::isnan(altitude) || altitude > msg->max_range) {
-    msg->range = kInf;  // REP 117: no echo
-  } else if (altitude < msg->min_range) {
-    msg->range = -kInf;  // REP 117: too close (the origin is in the bed)
-  } else {
-    msg->range = static_cast<float>(altitude);
-  }
+  // along the beam (the body's z axis) to the bed: +inf no return, -inf the origin in the
+  // bed (REP 117), the conventions of Simulation::body_altimeter_range
+  msg->range = static_cast<float>(sim.body_altimeter_range(body, msg->max_range));
 }
 
 void ToPressure(const core::Simulation& sim, int body, FluidPressureMsg* msg) {

@@ -1,12 +1,15 @@
 #pragma once
 // A body's altimeter and pressure sensor on the wire (docs/sensors.md): pure translators from
-// the core's sea at a body (Simulation::body_altitude, body_depth) to sensor_msgs/Range and
-// sensor_msgs/FluidPressure; no DDS entities, no clocks (tests/unit/sensor_translators_test.cc).
+// the core's sea at a body (Simulation::body_altimeter_range, the waves' kinematics) to
+// sensor_msgs/Range and sensor_msgs/FluidPressure; no DDS entities, no clocks
+// (tests/unit/sensor_translators_test.cc).
 //
-//   altitude  sensor_msgs/Range: range = the altitude above the seabed straight below the body
-//             origin [m]; ULTRASOUND (an acoustic altimeter), field of view kAltimeterFieldOfView,
-//             min_range 0, max_range kAltimeterMaxRange. REP 117: +inf when there is no seabed
-//             or it is beyond max_range (no echo), -inf when the origin is below the bed
+//   altitude  sensor_msgs/Range: range = the distance from the body origin along its beam, the
+//             body's z axis (down in the NED body frame), to the seabed [m]; ULTRASOUND (an
+//             acoustic altimeter), field of view kAltimeterFieldOfView, min_range 0, max_range
+//             kAltimeterMaxRange. REP 117: +inf when nothing echoes (no seabed, the beam at or
+//             above the horizon over a flat bed, the bed beyond max_range), -inf when the
+//             origin is below the bed
 //   pressure  sensor_msgs/FluidPressure: absolute pressure [Pa] at the body origin, linear
 //             theory's total pressure: kAtmosphericPressure + rho g z + p_d below the
 //             instantaneous surface, p_d the waves' dynamic pressure
@@ -49,7 +52,7 @@ class FluidPressureMessage {
   std::string frame_id_;
 };
 
-// the altitude of body b as the altimeter reports it (above); never allocates
+// the range of body b's altimeter (above); never allocates
 void ToAltitude(const core::Simulation& sim, int body, RangeMsg* msg);
 // the absolute pressure at body b's origin (above); never allocates
 void ToPressure(const core::Simulation& sim, int body, FluidPressureMsg* msg);

@@ -1,7 +1,7 @@
 // An independent Foxglove client of a live towsim node (docs/foxglove.md), built on
 // @foxglove/ws-protocol (FoxgloveClient) over the `ws` WebSocket, decoding with
 // @foxglove/rosmsg + @foxglove/rosmsg2-serialization from the schemas the server advertises:
-//   node live_check.mjs SIM_NODE TOWSIM_FOXGLOVE SOURCE_DIR OUT_DIR DOMAIN [in-node]
+//   node live_check.mjs SIM_NODE TOWSIM_FOXGLOVE SOURCE_DIR OUT_DIR DOMAIN [in-node] [winch]
 // It starts and stops the processes itself (also when it fails):
 //   1. sim_node: Case 1 in lockstep for 10 s without its script, --csv OUT_DIR/csv;
 //   2. towsim_foxglove --domain DOMAIN --port 0 (a free port, read from its first line); or,
@@ -18,6 +18,14 @@
 // (every CSV row at t > 0 has its message; 9 significant digits, as decode_recording.mjs);
 // the tow vehicle at rest until the thrust comes and moving after it; time messages are
 // /clock's stamps; the bridge's summary counts the malformed message.
+// With `winch`, Case 1 gets a winch at the cable's start (--set cable.winch, 150 m to 260 m,
+// 1 m/s, 0.5 m/s^2) and this client is also the winch's lockstep controller through
+// clientPublish on /towsim/winch/command (towsim_msgs/msg/WinchCommand, docs/winch_dds.md):
+// speed 0 up to kWinchStep, then 1 m/s; at kBadStep a truncated WinchCommand (the bridge
+// rejects it) and a NaN speed (the node rejects it) first. Then paid_out_length in the decoded
+// CableState equals the node's winch.csv row for row, and at the end the drum's kinematics:
+// 200 m + v^2 / (2 a) + v (T - t_on - v / a) = 204 m. Without `winch`, advertising
+// /towsim/winch/command is refused (an error status names the topic).
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
 import { spawn } from "node:child_process";
 import { mkdirSync, readFileSync, rmSync } from "node:fs";
@@ -38,8 +46,9 @@ const { FoxgloveClient } = wsProtocol.FoxgloveClient ? wsProtocol : wsProtocol.d
 const { parse: parseMessageDefinition } = rosmsg;
 const { MessageReader, MessageWriter } = serialization;
 
-const [simNode, bridgeExe, sourceDir, outDir, domainText, where] = process.argv.slice(2);
-const inNode = where === "in-node";
+const [simNode, bridgeExe, sourceDir, outDir, domainText, ...flags] = process.argv.slice(2);
+const inNode = flags.includes("in-node");
+const withWinch = flags.includes("winch");
 const kDuration = 10; // [s] simulated
 const kThrustStep = 20; // the first step answered with thrust
 const kBadStep = 60; // the step whose answer is preceded by a malformed and a NaN command
@@ -51,6 +60,15 @@ const kRelCsv = 5e-9; // half a unit in the 9th significant digit of the CSV
 const kAbs = 1e-300;
 const kAtRest = 0.05; // [m/s] |u| of the tow vehicle before any thrust (the cable's pull)
 const kMoving = 0.5; // [m/s] u after 7 s of 4165 N (Case 1 reaches 6 m/s)
+// the winch (`winch`): the drum from 200 m, at kWinchSpeed from kWinchStep
+const kWinch = "{min_length: 150, max_length: 260, max_speed: 1, max_acceleration: 0.5}";
+const kWinchStep = 100; // t = 5 s
+const kWinchSpeed = 1; // [m/s], the drum's max_speed
+const kWinchAcceleration = 0.5; // [m/s^2]
+const kWinchSpeedMode = 0; // WinchCommand.SPEED
+// the drum's length is the exact integral of its piecewise constant acceleration (trapezoids
+// of the speed, which ramps by a h a step): round-off only
+const kLengthRelTol = 1e-12;
 
 let failures = 0;
 function check(ok, what) {
@@ -91,7 +109,8 @@ const deadline = setTimeout(() => {
 const node = start(
   [simNode, "--scene", join(sourceDir, "config/scenes/case1_forward.yaml"), "--mode", "lockstep",
     "--duration", String(kDuration), "--domain", domainText, "--csv", join(outDir, "csv"),
-    "--set", "script=[]", ...(inNode ? ["--foxglove", "0"] : [])],
+    "--set", "script=[]", ...(inNode ? ["--foxglove", "0"] : []),
+    ...(withWinch ? ["--set", `cable.winch=${kWinch}`] : [])],
   "sim_node",
 );
 const bridge = inNode ? node : start([bridgeExe, "--domain", domainText, "--port", "0"], "towsim_foxglove");
@@ -121,11 +140,17 @@ let decodeFailures = 0;
 const commandChannels = new Map(); // body -> client channel id
 let commandWriter;
 let teleopChannel;
+let winchChannel;
+let winchWriter;
 // geometry_msgs/Twist as Foxglove's Teleop panel sends it, with the official definitions
 const twistWriter = new MessageWriter(parseMessageDefinition(
   "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n================================================================================\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n",
   { ros2: true }));
 const answered = new Set();
+
+function winchCommand(step, speed) {
+  return { header: { stamp: { sec: 0, nanosec: 0 }, frame_id: "" }, step: BigInt(step), mode: kWinchSpeedMode, value: speed };
+}
 
 function command(step, thrust) {
   return {
@@ -142,6 +167,10 @@ const finished = new Promise((resolve) => {
   client.on("status", (s) => statuses.push(s));
   client.on("time", (t) => times.push(t.timestamp));
   client.on("advertise", (list) => {
+    if (!withWinch && winchChannel === undefined) {
+      // a scene without a winch: its command topic is refused (an error status names it)
+      winchChannel = client.advertise({ topic: "/towsim/winch/command", encoding: "cdr", schemaName: "towsim_msgs/msg/WinchCommand" });
+    }
     for (const c of list) {
       check(c.encoding === "cdr" && c.schemaEncoding === "ros2msg", `${c.topic}: encoding ${c.encoding} / ${c.schemaEncoding}`);
       const definitions = parseMessageDefinition(c.schema, { ros2: true });
@@ -151,6 +180,10 @@ const finished = new Promise((resolve) => {
       // winch/command is the winch's own command type, not a body's (docs/winch_dds.md)
       if (m && m[1] === "winch") {
         check(c.schemaName === "towsim_msgs/msg/WinchCommand", `${c.topic} schema ${c.schemaName}`);
+        if (withWinch) {
+          winchWriter = new MessageWriter(definitions);
+          winchChannel = client.advertise({ topic: c.topic, encoding: "cdr", schemaName: c.schemaName });
+        }
       } else if (m) {
         check(c.schemaName === "towsim_msgs/msg/ActuatorCommand", `${c.topic} schema ${c.schemaName}`);
         commandWriter = new MessageWriter(definitions);
@@ -179,6 +212,7 @@ const finished = new Promise((resolve) => {
     if (value.state === 3 || value.state === 4 || value.state === 5) resolve();
     if (value.state !== 0 && value.state !== 2) return; // running or waiting
     if (answered.has(step) || commandWriter === undefined || commandChannels.size < 2) return;
+    if (withWinch && winchWriter === undefined) return;
     answered.add(step);
     const thrust = step >= kThrustStep ? kThrust : 0;
     const answer = () => {
@@ -190,6 +224,9 @@ const finished = new Promise((resolve) => {
         client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, thrust)));
       }
       client.sendMessage(commandChannels.get("towfish"), commandWriter.writeMessage(command(step, 0)));
+      if (withWinch) {
+        client.sendMessage(winchChannel, winchWriter.writeMessage(winchCommand(step, step >= kWinchStep ? kWinchSpeed : 0)));
+      }
     };
     if (step !== kBadStep) {
       answer();
@@ -198,6 +235,10 @@ const finished = new Promise((resolve) => {
     const good = commandWriter.writeMessage(command(step, thrust));
     client.sendMessage(commandChannels.get("tow_vehicle"), good.subarray(0, 12)); // truncated
     client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, NaN)));
+    if (withWinch) {
+      client.sendMessage(winchChannel, winchWriter.writeMessage(winchCommand(step, 0)).subarray(0, 12)); // truncated
+      client.sendMessage(winchChannel, winchWriter.writeMessage(winchCommand(step, NaN)));
+    }
     // the answer after the node took the NaN command (its reader keeps the newest command only)
     setTimeout(answer, kBadAnswerDelay);
   });
@@ -272,15 +313,55 @@ check(u(kDuration) > kMoving, `moving after the thrust: u = ${u(kDuration)}`);
 
 // the NaN command: rejected and counted by the node; the malformed one: by the bridge
 const last = (byTopic.get("/towsim/status") ?? []).at(-1)?.value;
-check(last !== undefined && Number(last.commands_rejected) === 1, `node: commands_rejected ${last?.commands_rejected}`);
+const kBad = withWinch ? 2 : 1; // the NaN / malformed commands sent: the thrust's, the winch's
+check(last !== undefined && Number(last.commands_rejected) === kBad, `node: commands_rejected ${last?.commands_rejected}`);
 // the Teleop Twist answered its step: no lockstep timeout, no failsafe
 check(last !== undefined && Number(last.lockstep_timeouts) === 0 && Number(last.failsafe_count) === 0,
   `lockstep timeouts ${last?.lockstep_timeouts}, failsafes ${last?.failsafe_count}`);
 check(statuses.some((s) => s.level === 2 && /malformed/.test(s.message)), `an error status for the malformed command (${JSON.stringify(statuses)})`);
 if (inNode) {
-  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === 1, `sim_node's note of the malformed command: ${node.err}`);
+  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === kBad, `sim_node's notes of the malformed commands: ${node.err}`);
 } else {
-  check(/malformed 1\)/.test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+  check(new RegExp(`malformed ${kBad}\\)`).test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+}
+if (!withWinch) {
+  check(statuses.some((s) => s.level === 2 && /advertise \/towsim\/winch\/command: not a topic clients may publish on/.test(s.message)),
+    `an error status refusing /towsim/winch/command without a winch (${JSON.stringify(statuses)})`);
+}
+if (withWinch) {
+  check(statuses.some((s) => s.level === 2 && /malformed towsim_msgs\/msg\/WinchCommand on \/towsim\/winch\/command/.test(s.message)),
+    `an error status for the malformed WinchCommand (${JSON.stringify(statuses)})`);
+  check(/winch at step \d+: command rejected: speed is NaN/.test(node.err), `the node's note of the NaN winch speed: ${node.err}`);
+  // paid_out_length over the WebSocket against the node's winch.csv, and the drum's kinematics
+  const cable = new Map();
+  for (const { value } of byTopic.get("/towsim/cable/state") ?? []) {
+    check(value.positions.length === value.node_count, `CableState: ${value.positions.length} positions, node_count ${value.node_count}`);
+    cable.set(stampSec(value.header.stamp).toFixed(6), value);
+  }
+  const winchLines = readFileSync(join(outDir, "csv/winch.csv"), "utf8").trim().split("\n");
+  check(winchLines.shift() === "t,paid_out_length,winch_speed,drum_tension,node_count", "winch.csv header");
+  let winchCompared = 0;
+  for (const line of winchLines) {
+    const [t, length, speed, , nodes] = line.split(",");
+    if (Number(t) === 0) continue;
+    const c = cable.get(Number(t).toFixed(6));
+    if (!check(c !== undefined, `t = ${t}: a CableState message`)) continue;
+    near(c.paid_out_length, length, `t = ${t} paid_out_length`);
+    near(c.winch_speed, speed, `t = ${t} winch_speed`);
+    check(c.node_count === Number(nodes), `t = ${t} node_count ${c.node_count} vs CSV ${nodes}`);
+    winchCompared += 1;
+  }
+  check(winchCompared >= 10 * kDuration, `${winchCompared} winch.csv rows compared`);
+  const tOn = kWinchStep * h;
+  const expected = 200 + kWinchSpeed ** 2 / (2 * kWinchAcceleration) +
+    kWinchSpeed * (kDuration - tOn - kWinchSpeed / kWinchAcceleration);
+  const end = cable.get(kDuration.toFixed(6));
+  check(end !== undefined && Math.abs(end.paid_out_length - expected) <= kLengthRelTol * expected,
+    `paid_out_length at ${kDuration} s: ${end?.paid_out_length}, expected ${expected}`);
+  const before = cable.get(tOn.toFixed(6)); // the state the command of step kWinchStep answers
+  check(before !== undefined && before.paid_out_length === 200, `paid_out_length before the winch command: ${before?.paid_out_length}`);
+  check(inNode || (byTopic.get("/towsim/winch/command") ?? []).length > 0, "messages on /towsim/winch/command (the bridge's DDS traffic)");
+  console.error(`winch: paid_out_length ${end?.paid_out_length} m at ${kDuration} s (expected ${expected}), ${winchCompared} winch.csv rows matched`);
 }
 
 // time messages: the simulation time of /clock

@@ -1,9 +1,10 @@
 // The winch over DDS (docs/winch_dds.md) as processes over loopback: sim_node, the test
 // controller (msgs/ only) sending WinchCommand on rt/<ns>/winch/command, the controllers
 // (towfish_depth --winch, maneuver_runner --maneuver payout) and this test as a DDS participant.
-// Domains 157-159, 163-166 (tests/integration/README.md).
+// Domains 157-159, 163-168 (tests/integration/README.md).
 
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -160,6 +161,107 @@ TEST_F(WinchDdsTest, LockstepOverDdsEqualsTheOfflineScript) {
                              [](const WinchRow& x, const WinchRow& y) { return x.length < y.length; })
                 ->length,
             69.0);
+}
+
+// domain 167: sim_node --winch script in lockstep with a real controller for the towing vehicle
+// (the test controller): the winch follows the scene's script, is neither waited for nor
+// failsafed (the controller answers it for 5 s only, then never again), and the commands it
+// did send are rejected and counted; the files equal the offline run of the same script to the
+// last digit
+TEST_F(WinchDdsTest, LockstepWithTheWinchScriptedEqualsTheOfflineScript) {
+  const std::string scene = kSource + "/config/scenes/winch_tow.yaml";
+  constexpr double kDuration = 15.0, kWinchUntil = 5.0;
+  // the towing vehicle's thrust (the controller sends the same), pay out at 1 m/s from 1 s,
+  // drive to 157.5 m from 6 s (the drum's 0.2 m/s^2: at 1 m/s and 152.5 m at 6 s, 2.5 s on at
+  // 1 m/s, 5 s braking: there at 13.5 s)
+  const std::string script =
+      "script=[{at: 0, body: tow_vehicle, thrust: 1050}, {at: 1, winch_speed: 1.0}, "
+      "{at: 6, winch_length: 157.5}]";
+  const std::string dds = LogPrefix("lockstep_csv"), offline = LogPrefix("offline_csv");
+  Process node(Node(scene, "lockstep", 167,
+                    {"--duration", std::to_string(kDuration), "--set", script, "--winch", "script",
+                     "--wait-for-controllers", "--csv", dds}),
+               LogPrefix("node"));
+  Process controller(Controller(167, {}, {"--command", "tow_vehicle@0=1050,0,0", "--winch-until",
+                                          std::to_string(kWinchUntil)}),
+                     LogPrefix("controller"));
+  Process reference({TOWSIM_SIM_NODE, "--scene", scene, "--mode", "offline", "--duration",
+                     std::to_string(kDuration), "--set", script, "--csv", offline},
+                    LogPrefix("offline"));
+  ASSERT_TRUE(controller.Wait(kProcessTimeout)) << controller.command_line();
+  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
+  ASSERT_TRUE(node.Wait(kProcessTimeout)) << node.command_line();
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  ASSERT_TRUE(reference.Wait(kProcessTimeout));
+  ASSERT_EQ(reference.exit_code(), 0) << reference.err();
+  // 300 steps: the vehicle's 300 commands, and the winch's answers of steps 0 .. 99 (t < 5 s),
+  // every one taken rejected (the winch's reader keeps the newest sample only and the node does
+  // not wait for it, so a few are replaced before they are taken); no lockstep timeout (the
+  // winch was not waited for), no failsafe
+  const long steps = std::lround(kDuration / kH), winch_steps = std::lround(kWinchUntil / kH);
+  unsigned long long received = 0, rejected = 0, clamped = 0;
+  const size_t at = node.out().find("commands ");
+  ASSERT_NE(at, std::string::npos) << node.out();
+  ASSERT_EQ(std::sscanf(node.out().c_str() + at, "commands %llu (rejected %llu, clamped %llu)",
+                        &received, &rejected, &clamped),
+            3)
+      << node.out();
+  EXPECT_EQ(received - rejected, static_cast<unsigned long long>(steps)) << node.out();
+  EXPECT_GT(rejected, 0u) << node.out();
+  EXPECT_LE(rejected, static_cast<unsigned long long>(winch_steps)) << node.out();
+  EXPECT_EQ(clamped, 0u) << node.out();
+  EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();
+  EXPECT_NE(node.out().find("lockstep timeouts 0"), std::string::npos) << node.out();
+  EXPECT_NE(node.err().find("winch: command rejected (the winch follows the scene's script: "
+                            "--winch script)"),
+            std::string::npos)
+      << node.err();
+  // --wait-for-controllers waits for the towing vehicle only (if it had to wait at all)
+  EXPECT_EQ(node.err().find("winch (rt/towsim/winch/command)"), std::string::npos) << node.err();
+  for (const char* file : {"bodies.csv", "cable.csv", "forces.csv", "winch.csv"}) {
+    const std::string fo = ReadFile(offline + "/" + file), fd = ReadFile(dds + "/" + file);
+    EXPECT_FALSE(fo.empty()) << file;
+    EXPECT_TRUE(fo == fd) << file << " differs: offline " << offline << ", lockstep " << dds;
+  }
+  // the script moved the drum to its length target (so that the equality says something)
+  const std::vector<WinchRow> rows = WinchRows(dds);
+  ASSERT_EQ(rows.size(), static_cast<size_t>(steps / 2) + 1);  // output_rate 10 Hz
+  constexpr double kLengthTol = 1e-6;  // [m] the drum stops exactly at a length target
+  EXPECT_NEAR(rows.back().length, 157.5, kLengthTol);
+  EXPECT_NEAR(rows.front().length, 150.0, kLengthTol);
+}
+
+// domain 168: --wait-for-controllers in lockstep on a scene whose only commanded part is the
+// winch: the first step waits for the winch's controller, the log line names it and its
+// topic, the status says waiting at step 0; the controller starts later, the run then goes
+// through without a timeout or failsafe
+TEST_F(WinchDdsTest, WaitForControllersWaitsForTheWinchInLockstep) {
+  constexpr double kDuration = 2.0, kControllerLate = 1.0;  // [s]
+  Observer watch(168);
+  Process node(Node(kDriven, "lockstep", 168,
+                    {"--duration", std::to_string(kDuration), "--set", "script=[]",
+                     "--wait-for-controllers"}),
+               LogPrefix("node"));
+  constexpr uint8_t kWaitingState = towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
+  Status s;
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.state == kWaitingState; }, &s));
+  EXPECT_EQ(s.step, 0u);
+  const std::string line =
+      "sim_node: --wait-for-controllers: waiting for the first command of winch "
+      "(rt/towsim/winch/command)";
+  for (int i = 0; i < 100 && node.err().find(line) == std::string::npos; ++i) usleep(20000);
+  EXPECT_NE(node.err().find(line), std::string::npos) << node.err();
+  usleep(static_cast<useconds_t>(kControllerLate * 1e6));
+  EXPECT_EQ(watch.statuses().back().step, 0u);  // still before the first step
+  Process controller(Controller(168, {"0=speed:1"}), LogPrefix("controller"));
+  ASSERT_TRUE(controller.Wait(kProcessTimeout)) << controller.command_line();
+  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
+  ASSERT_TRUE(node.Wait(kProcessTimeout));
+  EXPECT_EQ(node.exit_code(), 0) << node.err();
+  const long steps = std::lround(kDuration / kH);
+  EXPECT_NE(node.out().find(std::to_string(steps) + " steps"), std::string::npos) << node.out();
+  EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();
+  EXPECT_NE(node.out().find("lockstep timeouts 0"), std::string::npos) << node.out();
 }
 
 constexpr uint8_t kSpeed = towsim_msgs_msg_dds__WinchCommand_Constants_SPEED;

@@ -37,7 +37,8 @@ TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
   const core::Simulation sim(model);
   RangeMessage range("ball");
   ToAltitude(sim, 0, &range.msg);
-  // the plane: d(x, y) = 40 + tan(5 deg) (x cos 90 + y sin 90) at (3, 4); the ball at z = 20
+  // a sphere's beam points straight down (its frame stays aligned with the world): the plane
+  // d(x, y) = 40 + tan(5 deg) (x cos 90 + y sin 90) at (3, 4); the ball at z = 20
   const double bed = 40.0 + std::tan(5.0 * kPi / 180.0) * 4.0;
   EXPECT_NEAR(range.msg.range, bed - 20.0, kFloatRelTol * (bed - 20.0));
   EXPECT_EQ(range.msg.radiation_type, sensor_msgs_msg_dds__Range_Constants_ULTRASOUND);

@@ -209,7 +209,16 @@ INSTANTIATE_TEST_SUITE_P(
                 {"--paused", "needs a DDS mode"}},
         BadArgs{"RecordOffline",
                 {"--scene", kCatenary, "--mode", "offline", "--record", "x.mcap"},
-                {"--record x.mcap", "needs a DDS mode"}}),
+                {"--record x.mcap", "needs a DDS mode"}},
+        BadArgs{"BadWinchSource",
+                {"--scene", kCatenary, "--mode", "fast", "--winch", "manual"},
+                {"--winch manual", "must be dds or script"}},
+        BadArgs{"WinchDdsOffline",
+                {"--scene", kCatenary, "--mode", "offline", "--winch", "dds"},
+                {"--winch dds", "needs a DDS mode"}},
+        BadArgs{"WinchWithoutAWinch",
+                {"--scene", kCatenary, "--mode", "offline", "--winch", "script"},
+                {"--winch script", "has no winch (cable.winch)"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SimNodeCliTest, HelpAndVersionExitZero) {

@@ -6,6 +6,8 @@
 
 #include "core/simulation.h"
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -188,6 +190,45 @@ TEST(SimulationState, WrongShapeIsRejected) {
   EXPECT_EQ(SetStateError(winch, s),
             "SetState: winch.nodes = 1, this model needs 2 to 28 (cable nodes in use; the "
             "winch's max_length holds at most that many)");
+}
+
+// The altimeter (Simulation::body_altimeter_range, docs/sensors.md): a vehicle's beam runs
+// along its body z axis, so over a flat bed h below its origin a pitch theta and a roll phi
+// give h / (cos theta cos phi); a sphere's points straight down. Reference: the closed form;
+// tolerance: round-off of the quaternion rotation and one division.
+TEST(SimulationAltimeter, TiltedVehicleOverAFlatBedReadsHOverCosine) {
+  constexpr double kPi = 3.14159265358979323846;
+  constexpr double kBed = 250.0;            // [m]
+  constexpr double kMaxRange = 1000.0;      // [m], beyond the bed
+  constexpr double kRangeRelTol = 1e-13;    // round-off
+  struct Tilt {
+    double roll_deg, pitch_deg;
+  };
+  for (const Tilt tilt : {Tilt{0, 0}, Tilt{0, 15}, Tilt{0, -30}, Tilt{20, 0}, Tilt{-10, 25}}) {
+    Model model = SteadyTowWithVehicle(Coupling::kStrong);
+    model.environment.seabed = Seabed::Flat(kBed);
+    const double phi = tilt.roll_deg * kPi / 180.0, theta = tilt.pitch_deg * kPi / 180.0;
+    model.vehicles[0].euler = Vec3(phi, theta, 0.7);
+    const Simulation sim(model);
+    const int vehicle = sim.num_spheres();
+    const double h = kBed - sim.body_position(vehicle).z();
+    const double expected = h / (std::cos(theta) * std::cos(phi));
+    EXPECT_NEAR(sim.body_altimeter_range(vehicle, kMaxRange), expected, kRangeRelTol * expected)
+        << "roll " << tilt.roll_deg << ", pitch " << tilt.pitch_deg;
+    // the vertical altitude (the environment's) is h whatever the attitude
+    EXPECT_NEAR(sim.body_altitude(vehicle), h, kRangeRelTol * h);
+    // the sphere: straight down
+    const double h_sphere = kBed - sim.body_position(0).z();
+    EXPECT_NEAR(sim.body_altimeter_range(0, kMaxRange), h_sphere, kRangeRelTol * h_sphere);
+  }
+  // pitched past the horizon: no return (REP 117's +inf), and beyond max_range likewise
+  Model model = SteadyTowWithVehicle(Coupling::kStrong);
+  model.environment.seabed = Seabed::Flat(kBed);
+  model.vehicles[0].euler = Vec3(0.0, 100.0 * kPi / 180.0, 0.0);
+  const Simulation up(model);
+  EXPECT_EQ(up.body_altimeter_range(up.num_spheres(), kMaxRange),
+            std::numeric_limits<double>::infinity());
+  EXPECT_EQ(up.body_altimeter_range(0, 10.0), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace
