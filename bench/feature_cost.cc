@@ -98,6 +98,11 @@ const std::vector<Variant>& Variants() {
        {"integrator.coupling=staggered"},
        "Case 1: two 6-DOF vehicles instead of driven point + sphere, staggered"},
       {"two_vehicles_strong", "case1_forward.yaml", {}, "Case 1, strong coupling (shipped)"},
+      {"case1_waves",
+       "case1_forward.yaml",
+       {"environment.waves={jonswap: {hs: 2, tp: 8, gamma: 3.3, direction_deg: 180, components: "
+        "100, seed: 1}, ramp: 20}"},
+       "Case 1 in a JONSWAP sea (Hs 2 m, Tp 8 s, 100 components, 20 s ramp), deep water"},
       {"current_profile",
        "steady_tow.yaml",
        {"environment.current={profile: [[0, [0.8, 0, 0]], [60, [0.2, 0.4, 0]], [180, [-0.3, 0, "

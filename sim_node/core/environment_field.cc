@@ -4,6 +4,17 @@
 #include <cmath>
 #include <limits>
 
+// Pack4 values by value inside always-inlined code (packet_math.h); the warning comes at the
+// end of the file, where the templates are compiled, so it is off for the whole file
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+// the wave sums compiled for AVX2 as well (x86-64 GCC/Clang), chosen at run time
+#if defined(__x86_64__) && defined(__GNUC__)
+#define TOWSIM_WAVES_AVX2 1
+#else
+#define TOWSIM_WAVES_AVX2 0
+#endif
+
 namespace towsim::core {
 namespace {
 
@@ -13,6 +24,151 @@ constexpr double kPi = 3.14159265358979323846;
 // sorted by k, so every later one is smaller still (their sum stays below N times this of
 // the surface kinematics)
 constexpr double kDecayCutoff = 1e-9;
+
+// packet i of a component array (WavePackets)
+[[gnu::always_inline]] inline WavePack P(const std::vector<double>& v, size_t i) {
+  return LoadPack4(v.data() + kWaveLanes * i);
+}
+
+// a point's sums over the components, before the ramp and the resolution along b
+struct RawSums {
+  double eta = 0.0;
+  double uh = 0.0, ah = 0.0;                      // long-crested: along the direction of travel
+  double ux = 0.0, uy = 0.0, ax = 0.0, ay = 0.0;  // short-crested: resolved per component
+  double uu = 0.0, au = 0.0;                      // upward
+  // long-crested derivative: sum a w k S cos th, a w k C sin th, a w^2 k S sin th, a w^2 k C cos th
+  double d_sc = 0.0, d_cs = 0.0, d2_ss = 0.0, d2_cc = 0.0;
+  // short-crested derivative
+  double dux = 0.0, duy = 0.0, duu = 0.0, dax = 0.0, day = 0.0, dau = 0.0;
+};
+
+// where and when: x, y, the clamped height ze and its rate dze along d, the along-track
+// coordinate and its rate (long-crested), d's horizontal components, t, and the packets to sum
+struct PointArgs {
+  double x, y, ze, dze, along, d_along, dx, dy, t;
+  size_t packets;
+};
+
+// the sums of SumWaves over the first a.packets packets (environment_field.h); always
+// inlined into the two targets below, so that each compiles it for its own instruction set
+template <bool kDerivative, bool kLongCrested, bool kDeep>
+[[gnu::always_inline]] inline RawSums SumPackets(const WavePackets& s, const PointArgs& a) {
+  const WavePack zero = {};
+  WavePack eta = zero, uh_s = zero, ah_s = zero;
+  WavePack ux = zero, uy = zero, uu = zero, ax = zero, ay = zero, au = zero;
+  WavePack dux = zero, duy = zero, duu = zero, dax = zero, day = zero, dau = zero;
+  WavePack d_sc = zero, d_cs = zero, d2_ss = zero, d2_cc = zero;
+  for (size_t i = 0; i < a.packets; ++i) {
+    const WavePack k = P(s.k, i);
+    // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: C = S = E):
+    // E = e^{k zeta}, F = q / E, C = (E + F) / (1 - q), S = (E - F) / (1 - q)
+    const WavePack e = ExpNonPositive(k * a.ze);
+    WavePack cc = e, ss = e;
+    if (!kDeep) {
+      const WavePack f = P(s.q, i) / e;
+      const WavePack inv = P(s.inv_1mq, i);
+      cc = (e + f) * inv, ss = (e - f) * inv;
+    }
+    const WavePack th = (kLongCrested ? k * a.along : P(s.kx, i) * a.x + P(s.ky, i) * a.y) +
+                        (P(s.phase, i) - P(s.omega, i) * a.t);
+    WavePack sn, c;
+    SinCos(th, &sn, &c);
+    eta += P(s.a, i) * c;
+    const WavePack aw = P(s.a_omega, i), aw2 = P(s.a_omega2, i);
+    // u_h = a w C cos th, u_up = a w S sin th; du/dt: th_t = -w
+    const WavePack cc_c = cc * c, cc_sn = cc * sn;
+    const WavePack ss_sn = kDeep ? cc_sn : ss * sn, ss_c = kDeep ? cc_c : ss * c;
+    const WavePack uh = aw * cc_c, ah = aw2 * cc_sn;
+    uu += aw * ss_sn;
+    au -= aw2 * ss_c;
+    if (kLongCrested) {
+      uh_s += uh;
+      ah_s += ah;
+    } else {
+      ux += uh * P(s.cos_b, i), uy += uh * P(s.sin_b, i);
+      ax += ah * P(s.cos_b, i), ay += ah * P(s.sin_b, i);
+    }
+    if (!kDerivative) continue;
+    // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
+    if (kLongCrested) {
+      // d u_h / ds = a w k (S cos th dzeta/ds - C sin th ds_along/ds), and alike: the
+      // point's two rates come out of the sums (SumWaves)
+      const WavePack awk = P(s.a_omega_k, i), aw2k = P(s.a_omega2_k, i);
+      d_sc += awk * ss_c;
+      d_cs += awk * cc_sn;
+      d2_ss += aw2k * ss_sn;
+      d2_cc += aw2k * cc_c;
+      continue;
+    }
+    const WavePack g = P(s.kx, i) * a.dx + P(s.ky, i) * a.dy;
+    const WavePack dcc = k * ss * a.dze, dss = k * cc * a.dze;
+    const WavePack duh = aw * (dcc * c - cc * sn * g), dah = aw2 * (dcc * sn + cc * c * g);
+    duu += aw * (dss * sn + ss * c * g);
+    dau -= aw2 * (dss * c - ss * sn * g);
+    dux += duh * P(s.cos_b, i), duy += duh * P(s.sin_b, i);
+    dax += dah * P(s.cos_b, i), day += dah * P(s.sin_b, i);
+  }
+  RawSums r;
+  r.eta = Sum(eta);
+  r.uu = Sum(uu), r.au = Sum(au);
+  if (kLongCrested) {
+    r.uh = Sum(uh_s), r.ah = Sum(ah_s);
+    if (kDerivative)
+      r.d_sc = Sum(d_sc), r.d_cs = Sum(d_cs), r.d2_ss = Sum(d2_ss), r.d2_cc = Sum(d2_cc);
+  } else {
+    r.ux = Sum(ux), r.uy = Sum(uy), r.ax = Sum(ax), r.ay = Sum(ay);
+    if (kDerivative) {
+      r.dux = Sum(dux), r.duy = Sum(duy), r.duu = Sum(duu);
+      r.dax = Sum(dax), r.day = Sum(day), r.dau = Sum(dau);
+    }
+  }
+  return r;
+}
+
+// eta / r = sum a cos th at (x, y, t)
+[[gnu::always_inline]] inline double SumElevation(const WavePackets& s, double x, double y,
+                                                  double t) {
+  WavePack eta = {};
+  for (size_t i = 0; i < s.packets; ++i) {
+    WavePack sn, c;
+    SinCos(P(s.kx, i) * x + P(s.ky, i) * y + (P(s.phase, i) - P(s.omega, i) * t), &sn, &c);
+    eta += P(s.a, i) * c;
+  }
+  return Sum(eta);
+}
+
+// the two instruction sets (packet_math.h): the x86-64 baseline (SSE2), and AVX2 where the
+// processor has it; the same operations on the same lanes, so the same bits
+template <bool kDerivative, bool kLongCrested, bool kDeep>
+RawSums SumBaseline(const WavePackets& s, const PointArgs& a) {
+  return SumPackets<kDerivative, kLongCrested, kDeep>(s, a);
+}
+double ElevationBaseline(const WavePackets& s, double x, double y, double t) {
+  return SumElevation(s, x, y, t);
+}
+#if TOWSIM_WAVES_AVX2
+template <bool kDerivative, bool kLongCrested, bool kDeep>
+__attribute__((target("avx2"))) RawSums SumAvx2(const WavePackets& s, const PointArgs& a) {
+  return SumPackets<kDerivative, kLongCrested, kDeep>(s, a);
+}
+__attribute__((target("avx2"))) double ElevationAvx2(const WavePackets& s, double x, double y,
+                                                     double t) {
+  return SumElevation(s, x, y, t);
+}
+bool HaveAvx2() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2");
+}
+#endif
+
+template <bool kDerivative, bool kLongCrested, bool kDeep>
+RawSums Sums(bool avx2, const WavePackets& s, const PointArgs& a) {
+#if TOWSIM_WAVES_AVX2
+  if (avx2) return SumAvx2<kDerivative, kLongCrested, kDeep>(s, a);
+#endif
+  (void)avx2;
+  return SumBaseline<kDerivative, kLongCrested, kDeep>(s, a);
+}
 
 }  // namespace
 
@@ -26,6 +182,7 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   if (steady_uniform_current_) uniform_current_ = c.Velocity(0.0, 0.0);
   if (!has_waves_) return;
   wave_depth_ = w.depth();
+  deep_ = !std::isfinite(wave_depth_);
   ramp_ = w.ramp();
   std::vector<WaveComponent> comps = w.components();
   std::stable_sort(comps.begin(), comps.end(),
@@ -35,36 +192,50 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   });
   cos_b_ = std::cos(comps.front().direction);
   sin_b_ = std::sin(comps.front().direction);
-  Components& s = waves_;
+#if TOWSIM_WAVES_AVX2
+  avx2_ = HaveAvx2();
+#endif
+  WavePackets& s = waves_;
   const size_t n = comps.size();
-  const size_t packets = (n + kPackLanes - 1) / kPackLanes;
-  for (std::vector<Pack>* v : {&s.kx, &s.ky, &s.k, &s.omega, &s.phase, &s.a, &s.a_omega,
-                               &s.a_omega2, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
-    v->assign(packets, Broadcast(0.0));
-  for (size_t j = 0; j < packets * kPackLanes; ++j) {
+  const size_t packets = (n + kWaveLanes - 1) / kWaveLanes;
+  s.packets = packets;
+  for (std::vector<double>* v :
+       {&s.kx, &s.ky, &s.k, &s.omega, &s.phase, &s.a, &s.a_omega, &s.a_omega2, &s.a_omega_k,
+        &s.a_omega2_k, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
+    v->assign(packets * kWaveLanes, 0.0);
+  for (size_t j = 0; j < packets * kWaveLanes; ++j) {
     // the padding repeats the last component with zero amplitude: it adds exactly 0
     const WaveComponent& p = comps[std::min(j, n - 1)];
     const double a = j < n ? p.amplitude : 0.0;
-    const size_t i = j / kPackLanes, l = j % kPackLanes;
     const double q = std::isfinite(wave_depth_) ? std::exp(-2.0 * p.k * wave_depth_) : 0.0;
-    s.kx[i][l] = p.k * std::cos(p.direction);
-    s.ky[i][l] = p.k * std::sin(p.direction);
-    s.k[i][l] = p.k;
-    s.omega[i][l] = p.omega;
-    s.phase[i][l] = p.phase;
-    s.a[i][l] = a;
-    s.a_omega[i][l] = a * p.omega;
-    s.a_omega2[i][l] = a * p.omega * p.omega;
-    s.q[i][l] = q;
-    s.inv_1mq[i][l] = 1.0 / (1.0 - q);
-    s.cos_b[i][l] = std::cos(p.direction);
-    s.sin_b[i][l] = std::sin(p.direction);
+    s.kx[j] = p.k * std::cos(p.direction);
+    s.ky[j] = p.k * std::sin(p.direction);
+    s.k[j] = p.k;
+    s.omega[j] = p.omega;
+    s.phase[j] = p.phase;
+    s.a[j] = a;
+    s.a_omega[j] = a * p.omega;
+    s.a_omega2[j] = a * p.omega * p.omega;
+    s.a_omega_k[j] = a * p.omega * p.k;
+    s.a_omega2_k[j] = a * p.omega * p.omega * p.k;
+    s.q[j] = q;
+    s.inv_1mq[j] = 1.0 / (1.0 - q);
+    s.cos_b[j] = std::cos(p.direction);
+    s.sin_b[j] = std::sin(p.direction);
     if (j < n) {
       s.k_scalar.push_back(p.k);
       s.log_inv_1mq.push_back(-std::log1p(-q));
     }
   }
   for (const WaveComponent& p : comps) amplitude_sum_ += p.amplitude;
+}
+
+void EnvironmentField::set_avx2(bool on) {
+#if TOWSIM_WAVES_AVX2
+  avx2_ = on && HaveAvx2();
+#else
+  (void)on;
+#endif
 }
 
 double EnvironmentField::Ramp(double t, double* rate) const {
@@ -97,15 +268,11 @@ double EnvironmentField::Elevation(double x, double y, double t) const {
   double rate;
   const double r = Ramp(t, &rate);
   if (r == 0.0) return 0.0;
-  // eta = r sum a cos th, two components a packet
-  const Components& s = waves_;
-  Pack eta = Broadcast(0.0);
-  for (size_t i = 0; i < s.k.size(); ++i) {
-    Pack sn, c;
-    SinCos(s.kx[i] * x + s.ky[i] * y + (s.phase[i] - s.omega[i] * t), &sn, &c);
-    eta += s.a[i] * c;
-  }
-  return r * Sum(eta);
+    // eta = r sum a cos th, four components a packet
+#if TOWSIM_WAVES_AVX2
+  if (avx2_) return r * ElevationAvx2(waves_, x, y, t);
+#endif
+  return r * ElevationBaseline(waves_, x, y, t);
 }
 
 WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) const {
@@ -113,8 +280,8 @@ WaveSample EnvironmentField::Waves(const Vec3& p_W, const Vec3& d_W, double t) c
 }
 
 size_t EnvironmentField::PacketsToSum(double zeta_e, bool always_wet) const {
-  const Components& s = waves_;
-  if (!always_wet) return s.k.size();
+  const WavePackets& s = waves_;
+  if (!always_wet) return s.packets;
   // component j has decayed where C_j(zeta) <= e^{k_j zeta} / (1 - q_j) < kDecayCutoff, i.e.
   // k_j zeta + ln(1 / (1 - q_j)) < ln kDecayCutoff; both terms fall as k_j grows (zeta <= 0),
   // so the components to sum are a prefix of the sorted list
@@ -128,101 +295,64 @@ size_t EnvironmentField::PacketsToSum(double zeta_e, bool always_wet) const {
       hi = mid;
     }
   }
-  return (lo + kPackLanes - 1) / kPackLanes;
+  return (lo + kWaveLanes - 1) / kWaveLanes;
 }
 
 template <bool kDerivative>
 WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const {
-  return long_crested_ ? SumWaves<kDerivative, true>(p_W, d_W, t)
-                       : SumWaves<kDerivative, false>(p_W, d_W, t);
+  if (!long_crested_) return SumWaves<kDerivative, false, false>(p_W, d_W, t);
+  return deep_ ? SumWaves<kDerivative, true, true>(p_W, d_W, t)
+               : SumWaves<kDerivative, true, false>(p_W, d_W, t);
 }
 
-template <bool kDerivative, bool kLongCrested>
+template <bool kDerivative, bool kLongCrested, bool kDeep>
 WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const {
   WaveSample out;
   if (!has_waves_) return out;
   double r_rate;
   const double r = Ramp(t, &r_rate);
   if (r == 0.0 && r_rate == 0.0) return out;
-  const Components& s = waves_;
-  const double x = p_W.x(), y = p_W.y(), zeta = -p_W.z();  // zeta: height above the mean level
+  const double zeta = -p_W.z();  // height above the mean level
+  PointArgs pa;
+  pa.x = p_W.x(), pa.y = p_W.y(), pa.t = t;
+  pa.dx = d_W.x(), pa.dy = d_W.y();
   // crest rule: between the mean and the instantaneous surface, the kinematics at zeta = 0;
   // below the seabed those at zeta = -h (wave_field.h); the clamped coordinate does not move
-  double ze = zeta, dze = -d_W.z();
-  if (ze > 0.0) ze = 0.0, dze = 0.0;
-  if (ze < -wave_depth_) ze = -wave_depth_, dze = 0.0;
+  pa.ze = zeta, pa.dze = -d_W.z();
+  if (pa.ze > 0.0) pa.ze = 0.0, pa.dze = 0.0;
+  if (pa.ze < -wave_depth_) pa.ze = -wave_depth_, pa.dze = 0.0;
   // a point below every possible trough is always wet: its elevation is not needed, and it
   // may stop at the first decayed component
   const bool always_wet = zeta < -r * amplitude_sum_;
-  const size_t n = PacketsToSum(ze, always_wet);
+  pa.packets = PacketsToSum(pa.ze, always_wet);
   // long-crested: th = k s + phase - w t with s = x cos b + y sin b, and dth/ds = k ds along d
-  const double along = x * cos_b_ + y * sin_b_;
-  const double d_along = d_W.x() * cos_b_ + d_W.y() * sin_b_;
-  // two components a packet; the horizontal parts are summed along the direction of travel
+  pa.along = pa.x * cos_b_ + pa.y * sin_b_;
+  pa.d_along = pa.dx * cos_b_ + pa.dy * sin_b_;
+  // four components a packet; the horizontal parts are summed along the direction of travel
   // (long-crested) or resolved per component
-  const Pack zero = Broadcast(0.0);
-  Pack eta = zero, uh_s = zero, ah_s = zero, duh_s = zero, dah_s = zero;
-  Pack ux = zero, uy = zero, uu = zero, ax = zero, ay = zero, au = zero;
-  Pack dux = zero, duy = zero, duu = zero, dax = zero, day = zero, dau = zero;
-  for (size_t i = 0; i < n; ++i) {
-    const Pack k = s.k[i];
-    // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: e^{k zeta}):
-    // E = e^{k zeta}, F = q / E, C = (E + F) / (1 - q), S = (E - F) / (1 - q)
-    const Pack e = ExpNonPositive(k * ze);
-    const Pack f = s.q[i] / e;
-    const Pack inv = s.inv_1mq[i];
-    const Pack cc = (e + f) * inv, ss = (e - f) * inv;
-    const Pack th =
-        (kLongCrested ? k * along : s.kx[i] * x + s.ky[i] * y) + (s.phase[i] - s.omega[i] * t);
-    Pack sn, c;
-    SinCos(th, &sn, &c);
-    eta += s.a[i] * c;
-    const Pack aw = s.a_omega[i], aw2 = s.a_omega2[i];
-    // u_h = a w C cos th, u_up = a w S sin th; du/dt: th_t = -w
-    const Pack uh = aw * cc * c, ah = aw2 * cc * sn;
-    uu += aw * ss * sn;
-    au -= aw2 * ss * c;
-    if (kLongCrested) {
-      uh_s += uh;
-      ah_s += ah;
-    } else {
-      ux += uh * s.cos_b[i], uy += uh * s.sin_b[i];
-      ax += ah * s.cos_b[i], ay += ah * s.sin_b[i];
-    }
-    if (!kDerivative) continue;
-    // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
-    const Pack g = kLongCrested ? k * d_along : s.kx[i] * d_W.x() + s.ky[i] * d_W.y();
-    const Pack dcc = k * ss * dze, dss = k * cc * dze;
-    const Pack duh = aw * (dcc * c - cc * sn * g), dah = aw2 * (dcc * sn + cc * c * g);
-    duu += aw * (dss * sn + ss * c * g);
-    dau -= aw2 * (dss * c - ss * sn * g);
-    if (kLongCrested) {
-      duh_s += duh;
-      dah_s += dah;
-    } else {
-      dux += duh * s.cos_b[i], duy += duh * s.sin_b[i];
-      dax += dah * s.cos_b[i], day += dah * s.sin_b[i];
-    }
-  }
+  const RawSums m = Sums<kDerivative, kLongCrested, kDeep>(avx2_, waves_, pa);
   // above the instantaneous surface (zeta > eta) the water is not there
-  if (!always_wet && zeta > r * Sum(eta)) return out;
+  if (!always_wet && zeta > r * m.eta) return out;
   // the horizontal sums resolved along (cos b, sin b)
   Vec3 u, a, du, da;
   if (kLongCrested) {
-    const double uh = Sum(uh_s), ah = Sum(ah_s);
-    u << uh * cos_b_, uh * sin_b_, -Sum(uu);
-    a << ah * cos_b_, ah * sin_b_, -Sum(au);
+    u << m.uh * cos_b_, m.uh * sin_b_, -m.uu;
+    a << m.ah * cos_b_, m.ah * sin_b_, -m.au;
     if (kDerivative) {
-      const double duh = Sum(duh_s), dah = Sum(dah_s);
-      du << duh * cos_b_, duh * sin_b_, -Sum(duu);
-      da << dah * cos_b_, dah * sin_b_, -Sum(dau);
+      // du_h/ds = dzeta sum awk S c - ds_along sum awk C s, du_up/ds = dzeta sum awk C s +
+      // ds_along sum awk S c; da_h/ds = dzeta sum aw2k S s + ds_along sum aw2k C c,
+      // da_up/ds = -(dzeta sum aw2k C c - ds_along sum aw2k S s)
+      const double dze = pa.dze, dal = pa.d_along;
+      const double duh = dze * m.d_sc - dal * m.d_cs, dah = dze * m.d2_ss + dal * m.d2_cc;
+      du << duh * cos_b_, duh * sin_b_, -(dze * m.d_cs + dal * m.d_sc);
+      da << dah * cos_b_, dah * sin_b_, dze * m.d2_cc - dal * m.d2_ss;
     }
   } else {
-    u << Sum(ux), Sum(uy), -Sum(uu);
-    a << Sum(ax), Sum(ay), -Sum(au);
+    u << m.ux, m.uy, -m.uu;
+    a << m.ax, m.ay, -m.au;
     if (kDerivative) {
-      du << Sum(dux), Sum(duy), -Sum(duu);
-      da << Sum(dax), Sum(day), -Sum(dau);
+      du << m.dux, m.duy, -m.duu;
+      da << m.dax, m.day, -m.dau;
     }
   }
   // NED: w = -u_up; the ramp scales the velocity, and its rate adds r' u to the acceleration

@@ -32,6 +32,21 @@
 
 namespace towsim::core {
 
+// The wave components as the sums read them: a structure of arrays of four-component packets
+// (packet_math.h; packet i is the doubles [4 i, 4 i + 4) of each array), sorted by increasing k
+// (so that a point at depth can stop at the first component that has decayed, see
+// kDecayCutoff), padded with zero-amplitude copies of the last one to a whole packet
+constexpr int kWaveLanes = 4;
+using WavePack = Pack4;
+struct WavePackets {
+  size_t packets = 0;
+  std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
+  // a w k, a w^2 k: the long-crested sums' derivative along a direction
+  std::vector<double> a_omega_k, a_omega2_k;
+  // per component (unpadded): k and ln(1 / (1 - q)), for the depth cut-off's search
+  std::vector<double> k_scalar, log_inv_1mq;
+};
+
 // The waves' kinematics at a point and their derivative along a direction d:
 // d/ds u_w(p + s d) at s = 0 (d = r' at a cable node: the derivative along the cable).
 struct WaveSample {
@@ -54,6 +69,11 @@ class EnvironmentField {
   bool steady_uniform_current() const { return steady_uniform_current_; }
   bool has_waves() const { return has_waves_; }
   bool has_seabed() const { return has_seabed_; }
+  // the wave sums run compiled for AVX2 (where the processor has it; environment_field.cc);
+  // set_avx2(false) takes the baseline path, which gives the same bits (a test checks it);
+  // set_avx2(true) where there is no AVX2 changes nothing
+  bool avx2() const { return avx2_; }
+  void set_avx2(bool on);
 
   // the current alone at p_W, t (cheap); dU/dz in *shear [1/s] when asked
   FlowSample Current(const Vec3& p_W, double t, Vec3* shear = nullptr) const;
@@ -77,19 +97,11 @@ class EnvironmentField {
   const SeabedContact& seabed_contact() const { return env_.seabed.contact(); }
 
  private:
-  // the wave components, structure of arrays of two-component packets (packet_math.h), sorted
-  // by increasing k (so that a point at depth can stop at the first component that has
-  // decayed, see kDecayCutoff), padded with a zero-amplitude copy of the last one to a whole
-  // packet
-  struct Components {
-    std::vector<Pack> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
-    // per component (unpadded): k and ln(1 / (1 - q)), for the depth cut-off's search
-    std::vector<double> k_scalar, log_inv_1mq;
-  };
   // packets to sum at a point of height zeta_e above the mean level (all, or those before the
   // first decayed component when the point is always wet)
   size_t PacketsToSum(double zeta_e, bool always_wet) const;
-  template <bool kDerivative, bool kLongCrested>
+  // kDeep: infinitely deep water (q = 0: C = S = e^{k zeta}, no division)
+  template <bool kDerivative, bool kLongCrested, bool kDeep>
   WaveSample SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const;
   template <bool kDerivative>
   WaveSample SumWaves(const Vec3& p_W, const Vec3& d_W, double t) const;
@@ -101,8 +113,10 @@ class EnvironmentField {
   bool has_waves_ = false;
   bool has_seabed_ = false;
   Vec3 uniform_current_ = Vec3::Zero();
-  Components waves_;
+  WavePackets waves_;
+  bool avx2_ = false;           // the sums compiled for AVX2 run here (environment_field.cc)
   double wave_depth_ = 0.0;     // h [m], infinity for deep water
+  bool deep_ = false;           // h infinite
   double ramp_ = 0.0;           // [s]
   double amplitude_sum_ = 0.0;  // sum a_i: no crest rises higher [m]
   // every component travels the same way (b, a long-crested sea): the horizontal sums are

@@ -181,6 +181,39 @@ TEST(EnvironmentField, HermiteWavesBetweenNodesMatchTheExactKinematics) {
       worst_v / scale_v, scale_v, worst_a / scale_a, scale_a);
 }
 
+TEST(EnvironmentField, BaselineAndAvx2SumsGiveTheSameBits) {
+  // the sums compiled for AVX2 and for the SSE2 baseline do the same IEEE operations on the
+  // same four lanes (packet_math.h): equal bit for bit, deep and finite depth, long- and
+  // short-crested, near the surface (the elevation test) and at depth
+  for (const double depth : {kInf, 60.0}) {
+    Environment env = JonswapSea(depth);
+    EnvironmentField fast(env), baseline(env);
+    if (!fast.avx2()) GTEST_SKIP() << "no AVX2 on this processor: one path only";
+    baseline.set_avx2(false);
+    ASSERT_FALSE(baseline.avx2());
+    Environment crossed = env;
+    crossed.waves.AddComponent(0.3, 2.0 * kPi / 6.0, -1.0, 0.4);  // another direction
+    EnvironmentField fast_x(crossed), baseline_x(crossed);
+    baseline_x.set_avx2(false);
+    const Vec3 d = Vec3(0.8, 0.3, 0.5).normalized();
+    for (const double t : {5.0, 61.3}) {
+      for (const Vec3& p : {Vec3(0, 0, 0.4), Vec3(-50, 20, 14.0), Vec3(30, -4, 3.7)}) {
+        for (const auto* pair : {&fast, &fast_x}) {
+          const EnvironmentField& a = *pair;
+          const EnvironmentField& b = pair == &fast ? baseline : baseline_x;
+          const WaveSample wa = a.Waves(p, d, t), wb = b.Waves(p, d, t);
+          EXPECT_EQ(wa.velocity, wb.velocity) << p.transpose();
+          EXPECT_EQ(wa.acceleration, wb.acceleration) << p.transpose();
+          EXPECT_EQ(wa.d_velocity, wb.d_velocity) << p.transpose();
+          EXPECT_EQ(wa.d_acceleration, wb.d_acceleration) << p.transpose();
+          EXPECT_EQ(a.Elevation(p.x(), p.y(), t), b.Elevation(p.x(), p.y(), t));
+          EXPECT_EQ(a.Flow(p, t).acceleration, b.Flow(p, t).acceleration);
+        }
+      }
+    }
+  }
+}
+
 TEST(EnvironmentField, CurrentIsTheCurrentFieldWithItsShear) {
   Environment env;
   env.current = CurrentField::Profile({{0.0, Vec3(1.0, 0.2, 0.0)}, {50.0, Vec3(0.4, 0.0, 0.0)}});
