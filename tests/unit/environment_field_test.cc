@@ -44,6 +44,22 @@ Environment JonswapSea(double depth) {
 // kDecayCutoff times the surface amplitude)
 constexpr double kSameTheoryAbsTol = 1e-9;  // [m/s], [m/s^2]
 
+// w = sea.Waves(p, d, t): its derivatives along d against central differences with step s:
+// truncation (k s)^2 / 6 of the largest k's term, round-off 1e-16 / s: s = 1e-4 m gives about
+// 1e-8 relative to the kinematics' scale (~1 m/s)
+constexpr double kStep = 1e-4;              // [m]
+constexpr double kDerivativeAbsTol = 1e-6;  // [1/s], [1/s^2]
+void ExpectDerivativesAreTheFiniteDifferences(const EnvironmentField& sea, const WaveSample& w,
+                                              const Vec3& p, const Vec3& d, double t) {
+  const WaveSample wp = sea.Waves(p + kStep * d, Vec3::Zero(), t);
+  const WaveSample wm = sea.Waves(p - kStep * d, Vec3::Zero(), t);
+  EXPECT_LT((w.d_velocity - (wp.velocity - wm.velocity) / (2 * kStep)).norm(), kDerivativeAbsTol)
+      << p.transpose();
+  EXPECT_LT((w.d_acceleration - (wp.acceleration - wm.acceleration) / (2 * kStep)).norm(),
+            kDerivativeAbsTol)
+      << p.transpose();
+}
+
 TEST(EnvironmentField, WavesAreTheWaveFieldsKinematics) {
   for (const double depth : {kInf, 60.0, 15.0}) {
     const Environment env = JonswapSea(depth);
@@ -67,24 +83,13 @@ TEST(EnvironmentField, WavesAreTheWaveFieldsKinematics) {
 }
 
 TEST(EnvironmentField, WaveDerivativeAlongADirectionIsTheFiniteDifference) {
-  // central differences with step s: truncation (k s)^2 / 6 of the largest k's term, round-off
-  // 1e-16 / s: s = 1e-4 m gives about 1e-8 relative to the kinematics' scale (~1 m/s)
-  constexpr double kStep = 1e-4;              // [m]
-  constexpr double kDerivativeAbsTol = 1e-6;  // [1/s], [1/s^2]
   for (const double depth : {kInf, 40.0}) {
     const EnvironmentField sea(JonswapSea(depth));
     const double t = 25.0;
     for (const Vec3& p : {Vec3(0, 0, 3.7), Vec3(30, -4, 12.0), Vec3(-20, 7, 35.0)}) {
       const Vec3 d = Vec3(0.8, 0.3, 0.5).normalized() * 1.0002;  // a stretched cable slope
       const WaveSample w = sea.Waves(p, d, t);
-      const WaveSample wp = sea.Waves(p + kStep * d, Vec3::Zero(), t);
-      const WaveSample wm = sea.Waves(p - kStep * d, Vec3::Zero(), t);
-      EXPECT_LT((w.d_velocity - (wp.velocity - wm.velocity) / (2 * kStep)).norm(),
-                kDerivativeAbsTol)
-          << p.transpose();
-      EXPECT_LT((w.d_acceleration - (wp.acceleration - wm.acceleration) / (2 * kStep)).norm(),
-                kDerivativeAbsTol)
-          << p.transpose();
+      ExpectDerivativesAreTheFiniteDifferences(sea, w, p, d, t);
     }
   }
 }
@@ -93,8 +98,6 @@ TEST(EnvironmentField, ShortCrestedSeaResolvesEachComponentsDirection) {
   // components travelling different ways take the per-component path of the sums (a
   // long-crested sea sums along its one direction); three components: an odd count, so the
   // last packet holds one zero-amplitude pad
-  constexpr double kStep = 1e-4;              // [m], as in the derivative test above
-  constexpr double kDerivativeAbsTol = 1e-6;  // [1/s], [1/s^2]
   for (const double depth : {kInf, 25.0}) {
     Environment env;
     env.waves = WaveField(depth, env.gravity, env.water_density);
@@ -112,14 +115,7 @@ TEST(EnvironmentField, ShortCrestedSeaResolvesEachComponentsDirection) {
         EXPECT_LT((w.acceleration - ref.acceleration).norm(), kSameTheoryAbsTol) << p.transpose();
         EXPECT_NEAR(sea.Elevation(p.x(), p.y(), t), env.waves.Elevation(p.x(), p.y(), t),
                     kSameTheoryAbsTol);
-        const WaveSample wp = sea.Waves(p + kStep * d, Vec3::Zero(), t);
-        const WaveSample wm = sea.Waves(p - kStep * d, Vec3::Zero(), t);
-        EXPECT_LT((w.d_velocity - (wp.velocity - wm.velocity) / (2 * kStep)).norm(),
-                  kDerivativeAbsTol)
-            << p.transpose();
-        EXPECT_LT((w.d_acceleration - (wp.acceleration - wm.acceleration) / (2 * kStep)).norm(),
-                  kDerivativeAbsTol)
-            << p.transpose();
+        ExpectDerivativesAreTheFiniteDifferences(sea, w, p, d, t);
       }
     }
   }
