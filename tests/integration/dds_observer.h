@@ -98,12 +98,7 @@ class Observer {
                double elevator) {
     dds_entity_t& w = command_writers_[body];
     if (w == 0) {
-      dds_qos_t* qos = ReliableQos(1);
-      const dds_entity_t t =
-          dds_create_topic(participant_, &towsim_msgs_msg_dds__ActuatorCommand__desc,
-                           (prefix_ + body + "/command").c_str(), nullptr, nullptr);
-      w = dds_create_writer(participant_, t, qos, nullptr);
-      dds_delete_qos(qos);
+      w = CommandWriter(&towsim_msgs_msg_dds__ActuatorCommand__desc, body + "/command");
     }
     ASSERT_TRUE(Matched(w)) << "the node's command reader of " << body << " did not match";
     towsim_msgs_msg_dds__ActuatorCommand_ m{};
@@ -119,12 +114,7 @@ class Observer {
   // or any other number)
   void WinchCommand(uint64_t step, uint8_t mode, double value) {
     if (winch_writer_ == 0) {
-      dds_qos_t* qos = ReliableQos(1);
-      const dds_entity_t t =
-          dds_create_topic(participant_, &towsim_msgs_msg_dds__WinchCommand__desc,
-                           (prefix_ + "winch/command").c_str(), nullptr, nullptr);
-      winch_writer_ = dds_create_writer(participant_, t, qos, nullptr);
-      dds_delete_qos(qos);
+      winch_writer_ = CommandWriter(&towsim_msgs_msg_dds__WinchCommand__desc, "winch/command");
     }
     ASSERT_TRUE(Matched(winch_writer_)) << "the node's winch command reader did not match";
     towsim_msgs_msg_dds__WinchCommand_ m{};
@@ -139,6 +129,16 @@ class Observer {
   const std::string& prefix() const { return prefix_; }
 
  private:
+  // a writer of commands (reliable, depth 1, as a controller's) on rt/<ns>/<name>
+  dds_entity_t CommandWriter(const dds_topic_descriptor_t* type, const std::string& name) {
+    dds_qos_t* qos = ReliableQos(1);
+    const dds_entity_t t =
+        dds_create_topic(participant_, type, (prefix_ + name).c_str(), nullptr, nullptr);
+    const dds_entity_t w = dds_create_writer(participant_, t, qos, nullptr);
+    dds_delete_qos(qos);
+    return w;
+  }
+
   static bool Matched(dds_entity_t writer) {
     const Clock::time_point start = Clock::now();
     for (;;) {
