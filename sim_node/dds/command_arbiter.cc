@@ -103,28 +103,26 @@ int CommandArbiter::TimeOut(uint64_t step, bool unheard_too) {
   return n;
 }
 
-bool CommandArbiter::Take(int v, core::VehicleCommand* command) {
-  State& s = state_[v];
+// the failsafe command is the default one: zero thrust and fins centred (VehicleCommand), speed
+// 0, the drum held (WinchCommand)
+template <class Command>
+bool CommandArbiter::TakeHeld(State& s, const Command& held, Command* command) {
   if (s.failsafe) {
-    *command = core::VehicleCommand{};  // zero thrust, fins centred
+    *command = Command{};
     return true;
   }
   if (!s.fresh) return false;
   s.fresh = false;
-  *command = s.held;
+  *command = held;
   return true;
 }
 
+bool CommandArbiter::Take(int v, core::VehicleCommand* command) {
+  return TakeHeld(state_[v], state_[v].held, command);
+}
+
 bool CommandArbiter::Take(int v, core::WinchCommand* command) {
-  State& s = state_[v];
-  if (s.failsafe) {
-    *command = core::WinchCommand{};  // speed 0: the drum held
-    return true;
-  }
-  if (!s.fresh) return false;
-  s.fresh = false;
-  *command = s.held_winch;
-  return true;
+  return TakeHeld(state_[v], state_[v].held_winch, command);
 }
 
 void CommandArbiter::Reset() {

@@ -113,6 +113,9 @@ class CommandArbiter {
     bool fresh = false;      // held not yet given to the simulation
   };
   void EnterFailsafe(int v, const std::string& why);
+  // Take's rule for either kind of command held in s
+  template <class Command>
+  static bool TakeHeld(State& s, const Command& held, Command* command);
   // counts a checked sample of entry v; true if it is to be held
   bool Count(int v, CheckedCommand::Verdict verdict, const std::string& reason, uint64_t step,
              double t);
