@@ -138,110 +138,102 @@ void AncfElement::InterpolateFields(const Vec12& e, const Vec12& e_dot, const Ve
   if (load_fields & kFieldAcceleration) f->acc = AtGaussPoints(e_ddot, n_);
 }
 
-void AncfElement::InternalForce(const GaussFields& f, Vec12* force) const {
-  // as InternalForce below, without the Jacobians: the weighted densities u_a, u_b at the
-  // points (3 x 5), then F = [F_0 .. F_3] = U_a N'^T + U_b N''^T (3 x 4)
-  const double ea = props_.ea, c = props_.axial_damping;
-  const bool bending = props_.ei > 0.0;
+namespace {
+
+// The internal force F = dU/de + damping force from the fields at the Gauss points (one law
+// for both uses): at point g the densities u_a = EA (eps + c eps_dot) r' + dU_b/dr' and
+// u_b = dU_b/dr'' (eps = (r'.r' - 1)/2, eps_dot = r'.r_dot', Eq. 8-10), weighted, give
+//   F = [F_0 .. F_3] = U_a N'^T + U_b N''^T (3 x 4).
+// kWithJacobian: also K = dF/de and C = dF/de_dot where asked (stiffness, damping non-null).
+template <bool kWithJacobian>
+void InternalForceAt(const AncfElement& element, const GaussFields& f, Vec12* force,
+                     Mat12* stiffness, Mat12* damping) {
+  const ElementProperties& props = element.props();
+  const double ea = props.ea, c = props.axial_damping;
+  const bool bending = props.ei > 0.0;
+  // without damping K is the Hessian of U, symmetric: the blocks k <= j are summed, the others
+  // mirrored at the end (K_jk = K_kj^T)
+  const bool symmetric = c == 0.0;
+  if constexpr (kWithJacobian) {
+    if (stiffness) stiffness->setZero();
+    if (damping) damping->setZero();
+  }
   Mat35 u_a, u_b;
   for (int g = 0; g < 5; ++g) {
+    const double wdx = element.weights_dx()(g);
     const Vec3 a = f.r_x.col(g);
+    // axial: u_a = EA (eps + c eps_dot) a
     double n = ea * 0.5 * (a.squaredNorm() - 1.0);
     if (c > 0.0) n += ea * c * a.dot(f.v_x.col(g));
     Vec3 f_a = n * a;
+    BendingDensity bd;
     if (bending) {
-      const BendingDensity bd = Bending(props_.ei, a, f.r_xx.col(g), false);
+      bd = Bending(props.ei, a, f.r_xx.col(g), kWithJacobian && stiffness);
       f_a += bd.u_a;
-      u_b.col(g) = wdx_(g) * bd.u_b;
+      u_b.col(g) = wdx * bd.u_b;
     }
-    u_a.col(g) = wdx_(g) * f_a;
+    u_a.col(g) = wdx * f_a;
+    if constexpr (kWithJacobian) {
+      const ShapeAtPoint& p = element.points()[g];
+      if (stiffness) {
+        // K_kj = int ( S'_k S'_j u_aa + S'_k S''_j u_ab + S''_k S'_j u_ba + S''_k S''_j u_bb ) dx
+        //      = int ( S'_k P_j + S''_k Q_j ) dx,  P_j = S'_j u_aa + S''_j u_ab,
+        //                                          Q_j = S'_j u_ba + S''_j u_bb
+        Mat3 k_aa = n * Mat3::Identity() + ea * a * a.transpose();
+        if (c > 0.0) k_aa += ea * c * a * f.v_x.col(g).transpose();
+        if (bending) k_aa += bd.u_aa;
+        const Mat3 w_aa = wdx * k_aa;
+        if (bending) {
+          const Mat3 w_ab = wdx * bd.u_ab, w_ba = w_ab.transpose(), w_bb = wdx * bd.u_bb;
+          Mat3 p_j[4], q_j[4];
+          for (int j = 0; j < 4; ++j) {
+            p_j[j] = p.dn[j] * w_aa + p.ddn[j] * w_ab;
+            q_j[j] = p.dn[j] * w_ba + p.ddn[j] * w_bb;
+          }
+          for (int k = 0; k < 4; ++k)
+            for (int j = symmetric ? k : 0; j < 4; ++j)
+              stiffness->block<3, 3>(3 * k, 3 * j) += p.dn[k] * p_j[j] + p.ddn[k] * q_j[j];
+        } else {
+          for (int k = 0; k < 4; ++k)
+            for (int j = symmetric ? k : 0; j < 4; ++j)
+              stiffness->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * w_aa;
+        }
+      }
+      if (damping && c > 0.0) {
+        // C_kj = int S'_k S'_j EA c a a^T dx
+        const Mat3 c_aa = (wdx * ea * c) * a * a.transpose();
+        for (int k = 0; k < 4; ++k)
+          for (int j = 0; j < 4; ++j)
+            damping->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * c_aa;
+      }
+    }
   }
   Eigen::Map<Eigen::Matrix<double, 3, 4>> out(force->data());
-  out.noalias() = u_a * dn_.transpose();
-  if (bending) out.noalias() += u_b * ddn_.transpose();
+  out.noalias() = u_a * element.shape_dn().transpose();
+  if (bending) out.noalias() += u_b * element.shape_ddn().transpose();
+  if constexpr (kWithJacobian) {
+    if (stiffness && symmetric)
+      for (int k = 1; k < 4; ++k)
+        for (int j = 0; j < k; ++j)
+          stiffness->block<3, 3>(3 * k, 3 * j) = stiffness->block<3, 3>(3 * j, 3 * k).transpose();
+  }
 }
 
-void AncfElement::InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const {
-  GaussFields f;
-  InterpolateFields(e, e_dot, e_dot, 0, &f);
-  InternalForce(f, force);
+}  // namespace
+
+void AncfElement::InternalForce(const GaussFields& fields, Vec12* force, Mat12* stiffness,
+                                Mat12* damping) const {
+  if (stiffness || damping)
+    InternalForceAt<true>(*this, fields, force, stiffness, damping);
+  else
+    InternalForceAt<false>(*this, fields, force, nullptr, nullptr);
 }
 
 void AncfElement::InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
                                 Mat12* damping) const {
-  if (!stiffness && !damping) {
-    InternalForceOnly(e, e_dot, force);
-    return;
-  }
-  force->setZero();
-  if (stiffness) stiffness->setZero();
-  if (damping) damping->setZero();
-  const double ea = props_.ea, c = props_.axial_damping;
-  const bool bending = props_.ei > 0.0;
-  // without damping K is the Hessian of U, symmetric: the blocks k <= j are summed, the others
-  // mirrored at the end (K_jk = K_kj^T)
-  const bool symmetric = c == 0.0;
-  for (const ShapeAtPoint& p : points_) {
-    const double wdx = p.weight_dx;
-    const Vec3 a = Interpolate(p.dn, e);
-    const double eps = 0.5 * (a.squaredNorm() - 1.0);
-    // axial: u_a = EA (eps + c eps_dot) a, eps_dot = a . a_dot
-    double n = ea * eps;
-    Vec3 a_dot = Vec3::Zero();
-    if (c > 0.0) {
-      a_dot = Interpolate(p.dn, e_dot);
-      n += ea * c * a.dot(a_dot);
-    }
-    Vec3 f_a = n * a;
-    Vec3 f_b = Vec3::Zero();
-    Mat3 k_aa = n * Mat3::Identity() + ea * a * a.transpose();
-    if (c > 0.0) k_aa += ea * c * a * a_dot.transpose();
-    Mat3 k_ab = Mat3::Zero(), k_bb = Mat3::Zero();
-    if (bending) {
-      const BendingDensity bd = Bending(props_.ei, a, Interpolate(p.ddn, e), stiffness);
-      f_a += bd.u_a;
-      f_b = bd.u_b;
-      if (stiffness) {
-        k_aa += bd.u_aa;
-        k_ab = bd.u_ab;
-        k_bb = bd.u_bb;
-      }
-    }
-    // F_k = int ( S'_k u_a + S''_k u_b ) dx
-    for (int k = 0; k < 4; ++k) force->segment<3>(3 * k) += wdx * (p.dn[k] * f_a + p.ddn[k] * f_b);
-    if (stiffness) {
-      // K_kj = int ( S'_k S'_j u_aa + S'_k S''_j u_ab + S''_k S'_j u_ba + S''_k S''_j u_bb ) dx
-      //      = int ( S'_k P_j + S''_k Q_j ) dx,  P_j = S'_j u_aa + S''_j u_ab,
-      //                                          Q_j = S'_j u_ba + S''_j u_bb
-      const Mat3 w_aa = wdx * k_aa;
-      if (bending) {
-        const Mat3 w_ab = wdx * k_ab, w_ba = w_ab.transpose(), w_bb = wdx * k_bb;
-        Mat3 p_j[4], q_j[4];
-        for (int j = 0; j < 4; ++j) {
-          p_j[j] = p.dn[j] * w_aa + p.ddn[j] * w_ab;
-          q_j[j] = p.dn[j] * w_ba + p.ddn[j] * w_bb;
-        }
-        for (int k = 0; k < 4; ++k)
-          for (int j = symmetric ? k : 0; j < 4; ++j)
-            stiffness->block<3, 3>(3 * k, 3 * j) += p.dn[k] * p_j[j] + p.ddn[k] * q_j[j];
-      } else {
-        for (int k = 0; k < 4; ++k)
-          for (int j = symmetric ? k : 0; j < 4; ++j)
-            stiffness->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * w_aa;
-      }
-    }
-    if (damping && c > 0.0) {
-      // C_kj = int S'_k S'_j EA c a a^T dx
-      const Mat3 c_aa = (wdx * ea * c) * a * a.transpose();
-      for (int k = 0; k < 4; ++k)
-        for (int j = 0; j < 4; ++j)
-          damping->block<3, 3>(3 * k, 3 * j) += (p.dn[k] * p.dn[j]) * c_aa;
-    }
-  }
-  if (stiffness && symmetric)
-    for (int k = 1; k < 4; ++k)
-      for (int j = 0; j < k; ++j)
-        stiffness->block<3, 3>(3 * k, 3 * j) = stiffness->block<3, 3>(3 * j, 3 * k).transpose();
+  GaussFields fields;
+  InterpolateFields(e, e_dot, e_dot, 0, &fields);
+  InternalForce(fields, force, stiffness, damping);
 }
 
 double AncfElement::AxialForce(const Vec12& e, const Vec12& e_dot, double xi) const {

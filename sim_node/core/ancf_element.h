@@ -84,8 +84,11 @@ class AncfElement {
   // and those of `load_fields` (kFieldPosition | kFieldVelocity | kFieldAcceleration)
   void InterpolateFields(const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot,
                          unsigned load_fields, GaussFields* fields) const;
-  // the internal force F = dU/de + damping force from the fields (InterpolateFields)
-  void InternalForce(const GaussFields& fields, Vec12* force) const;
+  // the internal force F = dU/de + damping force from the fields (InterpolateFields), and
+  // where asked (non-null) its Jacobians K = dF/de (12 x 12) and C = dF/de_dot (12 x 12); the
+  // force is the same to the bit with or without them (one law, ancf_element.cc)
+  void InternalForce(const GaussFields& fields, Vec12* force, Mat12* stiffness,
+                     Mat12* damping) const;
 
   // strain energy U(e) (Eq. 8)
   double StrainEnergy(const Vec12& e) const;
@@ -99,8 +102,7 @@ class AncfElement {
   Mat12 MassLengthDerivative() const;
   Vec12 MassLengthDerivativeTimes(const Vec12& e_dot) const;
 
-  // internal force F = dU/de + damping force, and optionally its Jacobians
-  //   K = dF/de (12 x 12), C = dF/de_dot (12 x 12).
+  // the same from the element coordinates (the fields interpolated here)
   void InternalForce(const Vec12& e, const Vec12& e_dot, Vec12* force, Mat12* stiffness,
                      Mat12* damping) const;
 
@@ -108,9 +110,6 @@ class AncfElement {
   double AxialForce(const Vec12& e, const Vec12& e_dot, double xi) const;
 
  private:
-  // the force alone (the Newton iterations with a kept matrix need no Jacobians)
-  void InternalForceOnly(const Vec12& e, const Vec12& e_dot, Vec12* force) const;
-
   ElementProperties props_;
   Mat12 mass_;
   Eigen::Matrix4d mass4_;  // M = mass4_ (x) I3

@@ -51,21 +51,21 @@ struct ElementLoadJacobians {
 };
 
 // Generalized load residual of one element at time t in the sea `sea`, with the waves at its
-// nodes (nullptr: none); `scale` multiplies weight and drag (static load continuation).
-// Jacobians are filled when jac != nullptr.
+// nodes (nullptr: none), from the element's fields at its Gauss points (AncfElement::
+// InterpolateFields with LoadFields(ctx, sea); interpolated once per element for this and the
+// internal force); `scale` multiplies weight and drag (static load continuation). Jacobians
+// are filled when jac != nullptr; the residual is the same to the bit with or without them
+// (one load law, cable_loads.cc).
+Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
+                          const EnvironmentField& sea, double t, const ElementWaves* waves,
+                          const GaussFields& fields, double scale, ElementLoadJacobians* jac);
+// the fields ElementLoadResidual reads at the Gauss points besides r' (GaussFields: kField*)
+unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea);
+// the same from the element coordinates (the fields interpolated here)
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
                           const EnvironmentField& sea, double t, const ElementWaves* waves,
                           const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
                           ElementLoadJacobians* jac);
-
-// the fields ElementLoadResidual reads at the Gauss points besides r' (GaussFields: kField*)
-unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea);
-// the residual alone (the evaluations without Jacobians) from the element's fields at its
-// Gauss points, interpolated once for this and the internal force (AncfElement::
-// InterpolateFields with LoadFields(ctx, sea))
-Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
-                          const EnvironmentField& sea, double t, const ElementWaves* waves,
-                          const GaussFields& fields, double scale);
 
 // Consistent generalized force of a uniform load f per unit unstretched length:
 //   Q_k = f int S_k dx = f l [1/2, l/12, 1/2, -l/12]_k

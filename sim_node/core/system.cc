@@ -238,7 +238,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   Vec12 force;
   Mat12 k, c, j;
   ElementLoadJacobians lj;
-  GaussFields fields;  // without the Jacobians: r', r_dot, ... interpolated once per element
+  GaussFields fields;  // r', r_dot, ... interpolated once per element for both laws
   ElementWaves ew;
   const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
                                double drum_rate) {
@@ -255,12 +255,8 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
         ew.acceleration.segment<3>(6 * k + 3) = ws.d_acceleration;
       }
     }
-    if (jac) {
-      element.InternalForce(ee, ed, &force, &k, &c);
-    } else {
-      element.InterpolateFields(ee, ed, ea, load_fields_, &fields);
-      element.InternalForce(fields, &force);
-    }
+    element.InterpolateFields(ee, ed, ea, load_fields_, &fields);
+    element.InternalForce(fields, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
       residual->segment<12>(o) += element.MassTimes(ea) + force - load_scale * qw;
@@ -271,8 +267,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     } else {
       const ElementWaves* w = waves ? &ew : nullptr;
       const Vec12 rl =
-          jac ? ElementLoadResidual(element, loads_, sea_, t, w, ee, ed, ea, load_scale, &lj)
-              : ElementLoadResidual(element, loads_, sea_, t, w, fields, load_scale);
+          ElementLoadResidual(element, loads_, sea_, t, w, fields, load_scale, jac ? &lj : nullptr);
       residual->segment<12>(o) += element.MassTimes(ea) + force + rl;
       if (jac) {
         // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)

@@ -112,6 +112,28 @@ TEST(AncfElement, TangentIsTheDerivativeOfTheForce) {
   }
 }
 
+// one law computes the force with and without the Jacobians (ancf_element.cc): the force is
+// the same to the bit whichever of K and C is asked for
+TEST(AncfElement, ForceIsBitIdenticalWithAndWithoutTheJacobians) {
+  Vec12 ed;
+  ed << 0.3, -0.1, 0.2, 0.01, -0.02, 0.03, -0.2, 0.4, 0.1, 0.02, 0.01, -0.01;
+  for (const bool bending : {false, true})
+    for (const double c : {0.0, 0.05}) {
+      ElementProperties p = PaperElement(c);
+      if (!bending) p.ei = 0.0;
+      const AncfElement el(p);
+      Vec12 f, f_kc, f_k, f_c;
+      Mat12 k, d;
+      el.InternalForce(CurvedCoordinates(), ed, &f, nullptr, nullptr);
+      el.InternalForce(CurvedCoordinates(), ed, &f_kc, &k, &d);
+      el.InternalForce(CurvedCoordinates(), ed, &f_k, &k, nullptr);
+      el.InternalForce(CurvedCoordinates(), ed, &f_c, nullptr, &d);
+      EXPECT_EQ(f, f_kc) << "bending " << bending << ", c " << c;
+      EXPECT_EQ(f, f_k) << "bending " << bending << ", c " << c;
+      EXPECT_EQ(f, f_c) << "bending " << bending << ", c " << c;
+    }
+}
+
 TEST(AncfElement, ExactCurvatureOfACircularArc) {
   // nodes on a circle of radius R with unit tangents: the interpolated curvature ~ 1/R and
   // the energy ~ EI l / (2 R^2) (cubic Hermite arc, error ~ (l/R)^4)

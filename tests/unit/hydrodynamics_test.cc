@@ -142,6 +142,8 @@ void CheckLoadJacobians(const Environment& env, const ElementWaves* waves) {
   edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
   ElementLoadJacobians jac;
   const Vec12 r0 = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, &jac);
+  // one load law with and without the Jacobians (cable_loads.cc): the same residual to the bit
+  EXPECT_EQ(r0, ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, nullptr));
   Mat12 de, dv, da;
   const double h = 1e-6;
   for (int i = 0; i < 12; ++i) {
