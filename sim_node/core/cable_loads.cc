@@ -38,9 +38,9 @@ FlowSample FlowAt(const EnvironmentField& sea, const ShapeAtPoint& p, const Vec3
 // kSea = false: still water or a steady uniform current, no seabed (the sea's code compiled
 // out, so that a scene without it costs what it did before the sea existed)
 template <bool kSea, bool kWithJacobian>
-Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx,
-               const EnvironmentField& sea, double t, const ElementWaves* waves,
-               const GaussFields& fields, double scale, ElementLoadJacobians* jac) {
+Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const EnvironmentField& sea,
+               double t, const ElementWaves* waves, const GaussFields& fields, double scale,
+               ElementLoadJacobians* jac) {
   const double l = element.props().length;
   Vec12 r = -scale * UniformLoad(ctx.weight_per_length, l);
   if constexpr (kWithJacobian) {
@@ -54,7 +54,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx,
   const bool fluid_inertia = local_flow && ctx.fluid_inertia_per_length > 0.0;
   const bool contact = kSea && sea.has_seabed();
   if (!ctx.drag && !added && !fluid_inertia && !contact) return r;
-  Mat35 f_w;  // the load per unit length at each point, weighted
+  Mat35 f_w;        // the load per unit length at each point, weighted
   FlowSample flow;  // the same at every point without local flow
   if (!local_flow) flow.velocity = sea.uniform_current();
   // (r is interpolated only where the current is looked up at it: LoadFields)
@@ -66,9 +66,9 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx,
     if (local_flow)
       flow = FlowAt(sea, p, at_r ? Vec3(fields.r.col(g)) : Vec3(), t, waves,
                     kWithJacobian ? &shear : nullptr);
-    Vec3 f = Vec3::Zero();     // load per unit length, enters R with a minus sign
-    Mat3 f_a, f_v, m_pt;       // df/da, df/dr_dot, the added mass per length at this point
-    bool f_r = false;          // df/dr = -f_v dU/dz e_z^T (a sheared current)
+    Vec3 f = Vec3::Zero();  // load per unit length, enters R with a minus sign
+    Mat3 f_a, f_v, m_pt;    // df/da, df/dr_dot, the added mass per length at this point
+    bool f_r = false;       // df/dr = -f_v dU/dz e_z^T (a sheared current)
     if constexpr (kWithJacobian) {
       f_a.setZero();
       f_v.setZero();
@@ -106,8 +106,8 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx,
         if (fluid_inertia && !shear.isZero()) {
           // the current's material acceleration U_z dU/dz varies with z: d/dz = (dU_z/dz) dU/dz
           // (a piecewise-linear profile has no U'')
-          const Mat3 d = ctx.fluid_inertia_per_length * NormalProjector(a) *
-                         (shear.z() * shear) * Vec3::UnitZ().transpose();
+          const Mat3 d = ctx.fluid_inertia_per_length * NormalProjector(a) * (shear.z() * shear) *
+                         Vec3::UnitZ().transpose();
           f_pos = f_r ? Mat3(f_pos + d) : d;
           f_r = true;
         }
