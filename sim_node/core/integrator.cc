@@ -101,6 +101,10 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   }
   const WaveSamples* waves = waves_ ? &wave_samples_ : nullptr;
   ++kept.theta_age;  // one more step since the kept matrix's rate was measured
+  // steps a first iteration may be accepted on the last measured rate (see the header)
+  const int rate_age_limit = kept.theta_steady ? kMaxThetaAgeSteady : kMaxThetaAge;
+  // a re-measurement: the first increment alone may not be accepted, its rate is too old
+  bool remeasure = kept.theta_age > rate_age_limit;
   double dq_prev = 0.0;
   for (int it = 1; it <= settings.max_iterations; ++it) {
     at.iterations = it;
@@ -136,6 +140,8 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       // its rate at the point it was formed: ~0 (quadratic convergence); the test below takes
       // it at least kMaxContraction, and later steps measure it
       kept.theta_age = 0;
+      kept.theta_steady = false;
+      remeasure = false;
       ++tangent_refreshes_;
     } else {
       at.reused = true;
@@ -160,6 +166,13 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     if (measured) {
       kept.theta = dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
       kept.theta_age = 0;
+      // a re-measurement that finds the rate small lengthens the interval to the next one; any
+      // measurement that finds it not small shortens it again
+      if (kept.theta >= kSteadyRate) {
+        kept.theta_steady = false;
+      } else if (remeasure) {
+        kept.theta_steady = true;
+      }
     }
     dq_prev = dq_norm;
     // the error left after the increment, theta / (1 - theta) |dq|, within the tolerance,
@@ -169,7 +182,7 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     // test |dq| <= 2.3 tol, as for a kept matrix; the increment after such an accepted one is
     // 1e-5 tol in Case 1), or a kept one measured in this step or, for the first iteration,
     // at most kMaxThetaAge steps ago
-    const bool rate_known = refresh || measured || kept.theta_age <= kMaxThetaAge;
+    const bool rate_known = refresh || measured || kept.theta_age <= rate_age_limit;
     const double theta = std::max(kept.theta, kMaxContraction);
     const bool converged = rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
     if (converged) {
@@ -178,7 +191,12 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       st.t = t1;
       return at;
     }
-    refresh = full || kept.theta > kMaxContraction;
+    // a kept matrix whose rate is unknown here (measured more than kMaxKeepAge steps ago) and
+    // whose first increment is too large to be accepted is replaced for the second
+    // evaluation: such a matrix would most likely not converge in that one (see the header)
+    const bool stale = it == 1 && !refresh && kept.theta_age > kMaxKeepAge &&
+                       !(theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol);
+    refresh = full || kept.theta > kMaxContraction || stale;
   }
   return at;
 }

@@ -61,6 +61,9 @@ struct NewtonPoint {
   Eigen::Matrix3d support_compliance[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
   double theta = 0.0;  // its measured contraction rate
   int theta_age = 0;   // steps since theta was measured
+  // the last re-measurement of theta (core/integrator.h, kMaxThetaAge) found it small: the
+  // next one is due after kMaxThetaAgeSteady steps instead
+  bool theta_steady = false;
 };
 
 // the rest length of the cable's element 0 at the drum over a step (system.h): from `length`

@@ -79,7 +79,10 @@ function start(argv, name) {
   child.err = "";
   child.stdout.on("data", (d) => (child.out += d));
   child.stderr.on("data", (d) => (child.err += d));
-  child.exited = new Promise((resolve) => child.on("exit", (code, signal) => resolve(code ?? 128)));
+  child.exited = new Promise((resolve) => child.on("exit", (code, signal) => {
+    child.signal = signal;
+    resolve(code ?? 128);
+  }));
   child.name = name;
   children.push(child);
   return child;
@@ -241,8 +244,8 @@ client.close();
 if (!inNode) bridge.kill("SIGTERM");
 const [nodeCode, bridgeCode] = await Promise.all([node.exited, bridge.exited]);
 clearTimeout(deadline);
-check(nodeCode === 0, `sim_node exit ${nodeCode}: ${node.err}`);
-check(bridgeCode === 0, `towsim_foxglove exit ${bridgeCode}: ${bridge.err}`);
+check(nodeCode === 0, `sim_node exit ${nodeCode}${node.signal ? ` (signal ${node.signal})` : ""}: ${node.err}`);
+check(bridgeCode === 0, `towsim_foxglove exit ${bridgeCode}${bridge.signal ? ` (signal ${bridge.signal})` : ""}: ${bridge.err}`);
 
 // --- checks ---
 check(serverInfo !== undefined, "serverInfo received");

@@ -130,5 +130,101 @@ TEST(Integrator, KeepsTheNewtonMatrixAndConvergesToTheTolerance) {
   EXPECT_LT(diff, kAgreement);
 }
 
+// The kept matrix's age (core/integrator.h, docs/benchmarks.md): the steady tow from vertical
+// after 100 s, where its steps converge in one iteration with a matrix of small rate. The
+// state after kSettle steps, its kept matrix rebuilt in `integrator`.
+constexpr int kSettle = 2000;
+
+State SettledSteadyTow(const System& system, Integrator* integrator) {
+  State s;
+  BuildInitialState(system, &s);
+  EXPECT_TRUE(integrator->InitializeAcceleration(&s));
+  for (int i = 0; i < kSettle; ++i) EXPECT_TRUE(integrator->Step(&s, 0.05).ok()) << i;
+  return s;
+}
+
+// one step from `start` with its kept matrix's rate measured `age` steps before the step (the
+// step counts one more); a velocity kick of `kick` [m/s] at a mid-cable node makes the first
+// increment fail the acceptance test. Returns the step's status; *refreshes the Newton
+// matrices it factored, *out the state after it
+StepStatus StepAged(const System& system, const State& start, int age, double kick, long* refreshes,
+                    State* out) {
+  Integrator integrator(system);
+  *out = start;
+  EXPECT_TRUE(integrator.RestoreNewtonMatrix(*out));
+  out->newton.theta_age = age;
+  out->v(system.cable_dof(10)) += kick;
+  const StepStatus st = integrator.Step(out, 0.05);
+  *refreshes = integrator.tangent_refreshes();
+  return st;
+}
+
+TEST(Integrator, ReplacesAMatrixOfUnknownRateForTheSecondEvaluation) {
+  const Model m = SteadyTowFromVertical(1e-8);
+  const System system(m);
+  Integrator integrator(system);
+  const State settled = SettledSteadyTow(system, &integrator);
+  ASSERT_TRUE(settled.newton.valid);
+  ASSERT_LT(settled.newton.theta, Integrator::kRefreshRate);  // kept at the next step
+  // 1 mm/s at node 10: about 0.05 s x 1e-3 m/s = 5e-5 m = 25 tol of first increment
+  constexpr double kKick = 1e-3;
+  long refreshes[2];
+  State after[2];
+  // measured kMaxKeepAge steps before this step's first evaluation: kept for the second
+  const StepStatus young =
+      StepAged(system, settled, Integrator::kMaxKeepAge - 1, kKick, &refreshes[0], &after[0]);
+  // one step more: replaced for the second evaluation, which then converges (quadratically)
+  const StepStatus old =
+      StepAged(system, settled, Integrator::kMaxKeepAge, kKick, &refreshes[1], &after[1]);
+  std::printf(
+      "kicked step, rate measured %d / %d steps before: %d / %d iterations, %ld / %ld "
+      "matrices factored\n",
+      Integrator::kMaxKeepAge, Integrator::kMaxKeepAge + 1, young.iterations, old.iterations,
+      refreshes[0], refreshes[1]);
+  ASSERT_TRUE(young.ok());
+  ASSERT_TRUE(old.ok());
+  EXPECT_GE(young.iterations, 2);  // the first increment was not accepted
+  EXPECT_EQ(refreshes[0], 0);
+  EXPECT_EQ(old.iterations, 2);
+  EXPECT_EQ(refreshes[1], 1);
+  // both accepted states are within the error estimate's tolerance x L of the solution
+  constexpr double kAgreement = 2 * 1e-8 * 200.0;  // [m]
+  EXPECT_LT((after[0].q - after[1].q).lpNorm<Eigen::Infinity>(), kAgreement);
+}
+
+TEST(Integrator, ReMeasuresASmallRateLessOften) {
+  const Model m = SteadyTowFromVertical(1e-8);
+  const System system(m);
+  Integrator integrator(system);
+  const State settled = SettledSteadyTow(system, &integrator);
+  long refreshes = 0;
+  State after;
+  // the rate measured kMaxThetaAge steps ago, no re-measurement yet: accepted on it
+  StepStatus st = StepAged(system, settled, Integrator::kMaxThetaAge - 1, 0.0, &refreshes, &after);
+  ASSERT_TRUE(st.ok());
+  EXPECT_EQ(st.iterations, 1);
+  // one step more: re-measured (a second iteration), and found small
+  State fresh = settled;
+  fresh.newton.theta_steady = false;
+  st = StepAged(system, fresh, Integrator::kMaxThetaAge, 0.0, &refreshes, &after);
+  ASSERT_TRUE(st.ok());
+  EXPECT_EQ(st.iterations, 2);
+  EXPECT_EQ(refreshes, 0);
+  std::printf("re-measured rate %.3g (steady below %.2g)\n", after.newton.theta,
+              Integrator::kSteadyRate);
+  ASSERT_LT(after.newton.theta, Integrator::kSteadyRate);
+  EXPECT_TRUE(after.newton.theta_steady);
+  EXPECT_EQ(after.newton.theta_age, 0);
+  // after that the interval is kMaxThetaAgeSteady: the same age is accepted on the rate ...
+  State steady = after;
+  st = StepAged(system, steady, Integrator::kMaxThetaAge, 0.0, &refreshes, &after);
+  ASSERT_TRUE(st.ok());
+  EXPECT_EQ(st.iterations, 1);
+  // ... until kMaxThetaAgeSteady steps have passed
+  st = StepAged(system, steady, Integrator::kMaxThetaAgeSteady, 0.0, &refreshes, &after);
+  ASSERT_TRUE(st.ok());
+  EXPECT_EQ(st.iterations, 2);
+}
+
 }  // namespace
 }  // namespace towsim::core
