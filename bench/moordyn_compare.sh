@@ -7,7 +7,7 @@
 # environment sets the runs per command and round (default 5). Needs build/sim_node/app/sim_node
 # (BUILD_DIR=dir for another build), cc, hyperfine, python3. Work files go to WORK_DIR
 # (default a new directory under /tmp, removed at the end); the tables go to stdout and
-# bench/results/moordyn_compare.csv (+ _grid.csv). About 15 min with ROUNDS 5.
+# bench/results/moordyn_compare.csv (+ _grid.csv). About 10 min with ROUNDS 5.
 # Not part of ./test.sh: it needs a MoorDyn build, which CI does not have.
 set -euo pipefail
 usage() { echo "usage: bench/moordyn_compare.sh MOORDYN_PREFIX [ROUNDS]" >&2; exit 2; }
