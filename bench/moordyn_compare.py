@@ -24,7 +24,7 @@ Both are measured on the same runs, which start from the same state in both code
 at rest, straight down from the towing point and unstretched, the towing point moving at the
 tow speed from t = 0 (towsim: the scene's `initial: vertical` with zero initial velocities;
 MoorDyn: TmaxIC = 0, which skips its initial-condition solve: that solve stops at its default
-threshIC = 0.001 with the hanging line 0.05-0.28 m short of its static stretch at 50-400
+threshIC = 0.001 with the hanging line 0.04-0.28 m short of its static stretch at 50-400
 segments, and takes 18 s at 100 segments when converged).
 MoorDyn: 20, 50 and 100 segments, each at its largest stable dtM = 0.2 s / n (n bisected;
 stable = the driver ends, the state finite, the last 20 s steady to 1e-6 L and 1e-5 T, and the
