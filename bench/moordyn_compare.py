@@ -1,0 +1,464 @@
+#!/usr/bin/env python3
+"""towsim against MoorDyn v2 on the steady tow (docs/benchmarks.md, "Against MoorDyn").
+
+  bench/moordyn_compare.py --driver BIN --sim-node BIN --work DIR [--rounds N] [--runs R]
+
+Run by bench/moordyn_compare.sh, which builds BIN = bench/moordyn_driver.c against a MoorDyn
+install. The scene is config/scenes/steady_tow.yaml (200 m cable, 416 kg sphere, towing point
+at 6 m/s, 3.5 m deep, 300 s); MoorDyn gets it as an input file written here (point 1 Coupled,
+the towing point; point 2 Free, the sphere; one line between them).
+
+Drag. towsim has Choo & Casarella's laws (docs/physics.md) and no constant-coefficient option;
+MoorDyn has constant C_dn, C_dt only. MoorDyn gets the constants for which its normal and
+tangential drag on towsim's converged steady shape equal the Choo & Casarella drag there
+(weights: each element's share of the dynamic pressure). The two codes then solve nearby but
+different models, so each is measured against its OWN converged reference: the errors are each
+code's discretization error of its own model.
+
+Measures (each code against its reference, the sphere's position relative to the towing point,
+towsim's world frame):
+  steady   the state at t = 300 s: |r - r_ref| / L and |T - T_ref| / T_ref, T the force the
+           cable exerts on the towing point;
+  impulse  the whole run: max over t = 0, 0.2, ..., 300 s of |r(t) - r_ref(t)| / L.
+Both are measured on the same runs, which start from the same state in both codes: the cable
+at rest, straight down from the towing point and unstretched, the towing point moving at the
+tow speed from t = 0 (towsim: the scene's `initial: vertical` with zero initial velocities;
+MoorDyn: TmaxIC = 0, which skips its initial-condition solve: that solve stops at its default
+threshIC = 0.001 with the hanging line 0.04-0.28 m short of its static stretch at 50-400
+segments, and takes 18 s at 100 segments when converged).
+MoorDyn: 20, 50 and 100 segments, each at its largest stable dtM = 0.2 s / n (n bisected;
+stable = the driver ends, the state finite, the last 20 s steady to 1e-6 L and 1e-5 T, and the
+final state that of a run at a quarter of the transit time to the same tolerances);
+reference 400 segments at dtM = 0.2 s / (8 n_100) (0.55 of its transit time), checked against
+200 segments at that dtM (space) and 200 segments at twice it (time).
+towsim: a grid of elements x steps (GA 0.8 as the scene); for each MoorDyn row the cheapest
+grid run (CPU time, min of 3) with an error at most MoorDyn's (for the impulse error only the
+steps that write every 0.2 s, as the driver does, so that both maxima are over the same
+times). Each pair is then timed as whole processes by hyperfine (-N, --warmup 1, --runs R),
+ROUNDS times, the order swapped every round; the ratio of the means per round (wall time, and
+CPU time = user + system), reported as mean and range over the rounds.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+SCENE = os.path.join(ROOT, "config/scenes/steady_tow.yaml")
+
+# the scene (config/scenes/steady_tow.yaml, config/vehicles/sphere_416kg.yaml)
+LENGTH = 200.0           # unstretched [m]
+DIAMETER = 0.041         # [m]
+DENSITY = 1300.0         # cable [kg/m^3]
+YOUNGS = 7.0e8           # [Pa]
+RHO_W = 1025.0           # [kg/m^3]
+MU_W = 1.0e-3            # [Pa s]
+GRAVITY = 9.81
+TOW_DEPTH = 3.5          # [m], NED z of the towing point
+SPEED = 6.0              # [m/s]
+DURATION = 300.0         # [s]
+SPHERE_MASS, SPHERE_VOLUME, SPHERE_CD, SPHERE_CA = 416.0, 0.2, 0.5, 0.5
+OUTPUT_INTERVAL = 0.2    # [s], the driver's rows; towsim runs with time.output_rate = 5
+AREA = math.pi * DIAMETER ** 2 / 4.0
+EA = YOUNGS * AREA
+EI = YOUNGS * math.pi * DIAMETER ** 4 / 64.0
+MASS_PER_LENGTH = DENSITY * AREA
+WAVE_SPEED = math.sqrt(EA / MASS_PER_LENGTH)  # axial [m/s]
+# MoorDyn's internal damping as a ratio of the critical damping of a segment's axial mode
+# (MoorDyn's negative BA): 0.75 gives the largest stable dtM of 0.5 ... 1.5 (20 segments: dtM
+# 0.2 s / 14; 1.0: / 17, 1.5: / 39); it has no effect on the steady state
+MOORDYN_BA = -0.75
+SETTLE_WINDOW = 20.0     # [s] at the end of the run that must be steady
+SETTLE_POS = 1e-6        # of L
+SETTLE_TENSION = 1e-5    # relative
+
+TOWSIM_ELEMENTS = (4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 40)
+TOWSIM_STEPS = (0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.025)
+TOWSIM_REF = (80, 0.0125)
+MOORDYN_SEGMENTS = (20, 50, 100)
+MOORDYN_REF_SEGMENTS = 400
+MOORDYN_CHECK_SEGMENTS = 200
+
+
+def choo_casarella_cdn(re):
+    """C_Dn of Choo & Casarella (paper Eq. 18) above Re = 30, the value at 1e5 beyond."""
+    re = min(re, 1.0e5)
+    assert re > 30.0, re
+    return 1.1 + 4.0 / math.sqrt(re)
+
+
+def choo_casarella_nu(re):
+    """Nu of paper Eq. 19."""
+    return 0.55 * math.sqrt(re) + 0.084 * re ** (2.0 / 3.0)
+
+
+def read_rows(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def constant_drag(cable_csv):
+    """C_dn, C_dt for MoorDyn (normal drag 1/2 rho d C_dn |v_n| v_n, tangential
+    1/2 rho pi d C_dt |v_t| v_t per unstretched length) whose totals on towsim's last cable
+    shape equal towsim's drag there (per stretched length, docs/physics.md)."""
+    rows = read_rows(cable_csv)
+    t_end = rows[-1]["t"]
+    nodes = [tuple(float(r[k]) for k in ("x", "y", "z")) for r in rows if r["t"] == t_end]
+    l0 = LENGTH / (len(nodes) - 1)
+    fn = fn_unit = ft = ft_unit = 0.0
+    for a, b in zip(nodes, nodes[1:]):
+        chord = [bi - ai for ai, bi in zip(a, b)]
+        ls = math.sqrt(sum(c * c for c in chord))
+        vt = abs(SPEED * chord[0] / ls)
+        vn = math.sqrt(max(SPEED ** 2 - vt ** 2, 0.0))
+        re_n, re_t = (RHO_W * v * DIAMETER / MU_W for v in (vn, vt))
+        stretch = ls / l0
+        fn += 0.5 * RHO_W * DIAMETER * choo_casarella_cdn(re_n) * vn * vn * stretch
+        ft += math.pi * MU_W * choo_casarella_nu(re_t) * vt * stretch
+        fn_unit += 0.5 * RHO_W * DIAMETER * vn * vn
+        ft_unit += 0.5 * RHO_W * math.pi * DIAMETER * vt * vt
+    return fn / fn_unit, ft / ft_unit
+
+
+def moordyn_input(segments, steps_per_output, cdn, cdt):
+    sphere_r = (3.0 * SPHERE_VOLUME / (4.0 * math.pi)) ** (1.0 / 3.0)
+    cda = SPHERE_CD * math.pi * sphere_r ** 2
+    dt = OUTPUT_INTERVAL / steps_per_output
+    z_tow, z_sphere = -TOW_DEPTH, -(TOW_DEPTH + LENGTH)  # MoorDyn's z is up
+    return f"""--------------------- MoorDyn Input File ------------------------------------
+towsim steady tow (bench/moordyn_compare.py)
+----------------------- LINE TYPES ------------------------------------------
+TypeName   Diam    Mass/m     EA      BA/-zeta  EI      Cd      Ca    CdAx     CaAx
+(name)     (m)     (kg/m)     (N)     (N-s/-)   (N-m^2) (-)     (-)   (-)      (-)
+cable {DIAMETER:.9g} {MASS_PER_LENGTH:.9g} {EA:.9g} {MOORDYN_BA} {EI:.9g} {cdn:.9g} 1.0 {cdt:.9g} 0.0
+---------------------- POINTS --------------------------------
+ID  Attachment  X     Y     Z      M      V      CdA      CA
+(-) (-)        (m)   (m)   (m)    (kg)   (m^3)  (m^2)    (-)
+1 Coupled 0 0 {z_tow} 0 0 0 0
+2 Free 0 0 {z_sphere} {SPHERE_MASS} {SPHERE_VOLUME} {cda:.9g} {SPHERE_CA}
+---------------------- LINES --------------------------------------
+ID   LineType  AttachA  AttachB  UnstrLen  NumSegs   Outputs
+(-)  (-)       (-)      (-)      (m)       (-)       (-)
+1 cable 1 2 {LENGTH} {segments} pt
+---------------------- OPTIONS -----------------------------------------
+{dt:.12g} dtM
+RK2 tScheme
+{RHO_W} WtrDnsty
+{GRAVITY} g
+5000 WtrDpth
+{OUTPUT_INTERVAL} dtOut
+1 disableOutTime
+0 TmaxIC
+----------------------- OUTPUTS --------------------------------------------
+FairTen1
+------------------------- need this line -------------------------------------
+"""
+
+
+class Run:
+    """One run's sphere track (t -> r relative to the towing point, NED) and top force."""
+
+    def __init__(self, track, tension):
+        self.track, self.tension = track, tension
+        self.t_end = max(track)
+
+    def final(self):
+        return self.track[self.t_end], self.tension[self.t_end]
+
+    def settled(self):
+        r_end, f_end = self.final()
+        late = [t for t in self.track if t >= self.t_end - SETTLE_WINDOW]
+        dr = max(math.dist(self.track[t], r_end) for t in late) / LENGTH
+        df = max(abs(self.tension[t] - f_end) for t in late) / f_end
+        return dr <= SETTLE_POS and df <= SETTLE_TENSION
+
+    def steady_error(self, ref):
+        (r, f), (r_ref, f_ref) = self.final(), ref.final()
+        return math.dist(r, r_ref) / LENGTH, abs(f - f_ref) / f_ref
+
+    def track_error(self, ref):
+        common = [t for t in self.track if t in ref.track]
+        assert len(common) > 0.15 * len(ref.track), "output times do not match"
+        return max(math.dist(self.track[t], ref.track[t]) for t in common) / LENGTH
+
+
+def same_samples(h):
+    """Whether a towsim run with step h writes every 0.2 s, as the MoorDyn driver does: the
+    impulse error (a max over the sampled times) is compared only on equal samples."""
+    k = round(OUTPUT_INTERVAL / h)
+    return abs(k * h - OUTPUT_INTERVAL) < 1e-9
+
+
+def time_key(t):
+    """k for a row at t = k 0.2 s, None for a row between (towsim with h = 0.3 s writes every
+    step: the common times are then every 0.6 s; with 0.5 s every 1 s)."""
+    k = round(float(t) / OUTPUT_INTERVAL)
+    return k if abs(float(t) - k * OUTPUT_INTERVAL) < 1e-6 else None
+
+
+class MoorDyn:
+    def __init__(self, driver, work, cdn, cdt):
+        self.driver, self.work, self.cdn, self.cdt = driver, work, cdn, cdt
+
+    def files(self, segments, n):
+        base = os.path.join(self.work, f"md_{segments}_{n}")
+        return base + ".txt", base + ".csv"
+
+    def command(self, segments, n):
+        inp, out = self.files(segments, n)
+        with open(inp, "w") as f:
+            f.write(moordyn_input(segments, n, self.cdn, self.cdt))
+        return [self.driver, inp, str(n), f"{DURATION:g}", f"{SPEED:g}", out]
+
+    def run(self, segments, n):
+        """The run, or None when it is not stable (see the module text)."""
+        argv = self.command(segments, n)
+        done = subprocess.run(argv, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        if done.returncode != 0:
+            return None
+        rows = read_rows(argv[-1])
+        if not rows or abs(float(rows[-1]["t"]) - DURATION) > 1e-9:
+            return None
+        run = Run({time_key(r["t"]): (float(r["x"]), float(r["y"]), float(r["z"])) for r in rows},
+                  {time_key(r["t"]): float(r["tension"]) for r in rows})
+        return run if run.settled() else None
+
+    def largest_stable(self, segments):
+        """Smallest n (largest dtM = 0.2 s / n) whose run is stable, by bracketing and
+        bisection from the axial wave transit time of a segment."""
+        transit = LENGTH / segments / WAVE_SPEED
+        n = max(1, round(OUTPUT_INTERVAL / transit))
+        # MoorDyn's steady state does not depend on dtM (equal to 1e-9 m between 0.25 and 0.9
+        # transit times); a run that settles elsewhere is on a spurious branch, not converged
+        baseline = self.run(segments, 4 * n)
+        if baseline is None:
+            sys.exit(f"moordyn_compare: MoorDyn {segments} segments unstable at dtM = "
+                     f"{OUTPUT_INTERVAL / (4 * n):.3g} s")
+        runs = {}
+
+        def converged(run):
+            if run is None:
+                return None
+            dr, df = run.steady_error(baseline)
+            return run if dr <= SETTLE_POS and df <= SETTLE_TENSION else None
+
+        def stable(k):
+            if k not in runs:
+                runs[k] = converged(self.run(segments, k))
+                dt = OUTPUT_INTERVAL / k
+                print(f"  MoorDyn {segments} segments, dtM {dt:.6g} s ({dt / transit:.3f} x "
+                      f"transit): {'stable' if runs[k] else 'unstable'}", flush=True)
+            return runs[k] is not None
+
+        if stable(n):
+            hi = n
+            while hi > 1 and stable(max(1, hi // 2)):
+                hi = max(1, hi // 2)
+            lo = max(1, hi // 2) if hi > 1 else 0
+        else:
+            lo = n
+            hi = 2 * n
+            while not stable(hi):
+                lo, hi = hi, 2 * hi
+        while hi - lo > 1:
+            mid = (lo + hi) // 2
+            if stable(mid):
+                hi = mid
+            else:
+                lo = mid
+        return hi, runs[hi]
+
+
+class Towsim:
+    def __init__(self, sim_node, work):
+        self.sim_node, self.work = sim_node, work
+
+    def command(self, elements, h):
+        out = os.path.join(self.work, f"ts_{elements}_{h:g}")
+        argv = [self.sim_node, "--scene", SCENE, "--mode", "offline",
+                "--set", f"cable.elements={elements}", "--set", f"time.step={h:g}",
+                "--set", f"time.output_rate={1.0 / OUTPUT_INTERVAL:g}",
+                "--set", "cable.initial_velocity=[0,0,0]",
+                "--set", "bodies.towfish.velocity=[0,0,0]", "--csv", out]
+        return argv, out
+
+    def run(self, elements, h):
+        """The run, or None when it fails or its summary reports a strain beyond 20 %
+        (docs/scene_format.md: a transient no cable survives, seen at h >= 0.4 s)."""
+        argv, out = self.command(elements, h)
+        done = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+        if done.returncode != 0 or "max cable strain" in done.stdout:
+            return None
+        track, tension = {}, {}
+        for r in read_rows(os.path.join(out, "bodies.csv")):
+            if r["body"] == "towfish" and time_key(r["t"]) is not None:
+                t = float(r["t"])
+                track[time_key(t)] = (float(r["x"]) - SPEED * t, float(r["y"]),
+                                      float(r["z"]) - TOW_DEPTH)
+        for r in read_rows(os.path.join(out, "forces.csv")):
+            if r["body"] == "cable.start" and time_key(r["t"]) is not None:
+                tension[time_key(r["t"])] = math.hypot(float(r["fx"]), float(r["fy"]),
+                                                       float(r["fz"]))
+        return Run(track, tension)
+
+
+def cpu_seconds(argv, repeats=3):
+    best = math.inf
+    for _ in range(repeats):
+        pid = os.posix_spawn(argv[0], argv, os.environ,
+                             file_actions=[(os.POSIX_SPAWN_OPEN, 1, os.devnull, os.O_WRONLY, 0),
+                                           (os.POSIX_SPAWN_OPEN, 2, os.devnull, os.O_WRONLY, 0)])
+        _, status, usage = os.wait4(pid, 0)
+        if status != 0:
+            raise SystemExit(f"{' '.join(argv)}: exit status {status}")
+        best = min(best, usage.ru_utime + usage.ru_stime)
+    return best
+
+
+def hyperfine_pair(cmd_a, cmd_b, runs, rounds, work, tag):
+    """Mean wall time of each command per round and the ratio a / b per round."""
+    ratios, cpu_ratios, means_a, means_b = [], [], [], []
+    for k in range(rounds):
+        order = [cmd_a, cmd_b] if k % 2 == 0 else [cmd_b, cmd_a]
+        out = os.path.join(work, f"hyperfine_{tag}_{k}.json")
+        subprocess.run(["hyperfine", "-N", "--warmup", "1", "--runs", str(runs), "--style",
+                        "none", "--export-json", out] + [" ".join(c) for c in order],
+                       check=True, stdout=subprocess.DEVNULL)
+        with open(out) as f:
+            res = {r["command"]: r for r in json.load(f)["results"]}
+        a, b = res[" ".join(cmd_a)], res[" ".join(cmd_b)]
+        means_a.append(a["mean"])
+        means_b.append(b["mean"])
+        ratios.append(a["mean"] / b["mean"])
+        cpu_ratios.append((a["user"] + a["system"]) / (b["user"] + b["system"]))
+    return statistics.fmean(means_a), statistics.fmean(means_b), ratios, cpu_ratios
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--driver", required=True)
+    p.add_argument("--sim-node", required=True)
+    p.add_argument("--work", required=True)
+    p.add_argument("--rounds", type=int, default=5)
+    p.add_argument("--runs", type=int, default=5)
+    p.add_argument("--out", default=os.path.join(ROOT, "bench/results/moordyn_compare.csv"))
+    a = p.parse_args()
+    os.makedirs(a.work, exist_ok=True)
+    towsim = Towsim(a.sim_node, a.work)
+
+    print("towsim references (80 elements, h 0.0125 s) and the drag constants for MoorDyn",
+          flush=True)
+    ts_ref = towsim.run(*TOWSIM_REF)
+    if ts_ref is None or not ts_ref.settled():
+        sys.exit("moordyn_compare: the towsim reference run failed or did not settle")
+    cdn, cdt = constant_drag(towsim.command(*TOWSIM_REF)[1] + "/cable.csv")
+    print(f"  C_dn = {cdn:.5f}, C_dt = {cdt:.6f} (Choo & Casarella on the steady shape)")
+    md = MoorDyn(a.driver, a.work, cdn, cdt)
+
+    rows = []
+    for segments in MOORDYN_SEGMENTS:
+        n, run = md.largest_stable(segments)
+        rows.append({"segments": segments, "n": n, "run": run})
+    n_ref = 2 * rows[-1]["n"] * MOORDYN_REF_SEGMENTS // MOORDYN_SEGMENTS[-1]
+    md_ref = md.run(MOORDYN_REF_SEGMENTS, n_ref)
+    md_check = md.run(MOORDYN_CHECK_SEGMENTS, n_ref)
+    md_check_dt = md.run(MOORDYN_CHECK_SEGMENTS, n_ref // 2)
+    if md_ref is None or md_check is None or md_check_dt is None:
+        sys.exit("moordyn_compare: a MoorDyn reference run is not stable")
+    ts_check = towsim.run(TOWSIM_REF[0] // 2, TOWSIM_REF[1])
+    ts_check_dt = towsim.run(TOWSIM_REF[0], 2 * TOWSIM_REF[1])
+    if ts_check is None or ts_check_dt is None:
+        sys.exit("moordyn_compare: a towsim reference check run failed")
+    print(f"MoorDyn reference: {MOORDYN_REF_SEGMENTS} segments, dtM {OUTPUT_INTERVAL / n_ref:.6g} s;"
+          f" {MOORDYN_CHECK_SEGMENTS} segments against it: sphere "
+          f"{md_check.steady_error(md_ref)[0]:.2e} L, tension {md_check.steady_error(md_ref)[1]:.2e},"
+          f" impulsive track {md_check.track_error(md_ref):.2e} L; {MOORDYN_CHECK_SEGMENTS} "
+          f"segments at twice the dtM against {MOORDYN_CHECK_SEGMENTS} at the reference's: sphere "
+          f"{md_check_dt.steady_error(md_check)[0]:.2e} L, impulsive track "
+          f"{md_check_dt.track_error(md_check):.2e} L")
+    print(f"towsim reference: 40 elements against it: sphere {ts_check.steady_error(ts_ref)[0]:.2e} L,"
+          f" tension {ts_check.steady_error(ts_ref)[1]:.2e}, impulsive track "
+          f"{ts_check.track_error(ts_ref):.2e} L; at twice its step: sphere "
+          f"{ts_check_dt.steady_error(ts_ref)[0]:.2e} L, impulsive track "
+          f"{ts_check_dt.track_error(ts_ref):.2e} L")
+    r_md, f_md = md_ref.final()
+    r_ts, f_ts = ts_ref.final()
+    print(f"the two references (different drag models): sphere {math.dist(r_md, r_ts) / LENGTH:.2e} L"
+          f" apart, tension {f_md:.1f} N (MoorDyn) and {f_ts:.1f} N (towsim)")
+
+    print("towsim grid", flush=True)
+    grid = {}
+    for e in TOWSIM_ELEMENTS:
+        for h in TOWSIM_STEPS:
+            run = towsim.run(e, h)
+            if run is None or not run.settled():
+                continue
+            cost = cpu_seconds(towsim.command(e, h)[0])
+            grid[(False, e, h)] = (run.steady_error(ts_ref)[0], cost)
+            if same_samples(h):
+                grid[(True, e, h)] = (run.track_error(ts_ref), cost)
+
+    def cheapest(imp, limit):
+        ok = [(cost, e, h, err) for (i, e, h), (err, cost) in grid.items() if i == imp and err <= limit]
+        return min(ok) if ok else None
+
+    table, timings = [], {}
+    for row in rows:
+        s, n, run = row["segments"], row["n"], row["run"]
+        steady_err, tension_err = run.steady_error(md_ref)
+        impulse_err = run.track_error(md_ref)
+        for imp, err in ((False, steady_err), (True, impulse_err)):
+            pick = cheapest(imp, err)
+            if pick is None:
+                print(f"no towsim grid run beats MoorDyn {s} segments ({'impulse' if imp else 'steady'})")
+                continue
+            _, e, h, ts_err = pick
+            ts_tension = towsim.run(e, h).steady_error(ts_ref)[1]
+            md_cmd = md.command(s, n)
+            ts_cmd = towsim.command(e, h)[0]
+            print(f"timing MoorDyn {s} segments against towsim {e} elements, h {h:g} s "
+                  f"({'impulse' if imp else 'steady'})", flush=True)
+            if (s, e, h) not in timings:
+                timings[(s, e, h)] = hyperfine_pair(md_cmd, ts_cmd, a.runs, a.rounds, a.work,
+                                                    f"{s}_{e}_{h:g}")
+            t_md, t_ts, ratios, cpu_ratios = timings[(s, e, h)]
+            table.append({"case": "impulse" if imp else "steady", "segments": s,
+                          "dtM": OUTPUT_INTERVAL / n, "md_error": err,
+                          "md_tension_error": tension_err, "md_time": t_md, "elements": e,
+                          "h": h, "ts_error": ts_err, "ts_tension_error": ts_tension,
+                          "ts_time": t_ts, "ratio_mean": statistics.fmean(ratios),
+                          "ratio_min": min(ratios), "ratio_max": max(ratios),
+                          "cpu_ratio_mean": statistics.fmean(cpu_ratios),
+                          "cpu_ratio_min": min(cpu_ratios), "cpu_ratio_max": max(cpu_ratios)})
+
+    os.makedirs(os.path.dirname(a.out), exist_ok=True)
+    with open(a.out, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(table[0]))
+        w.writeheader()
+        w.writerows(table)
+    with open(os.path.splitext(a.out)[0] + "_grid.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["case", "elements", "h", "error", "cpu_s"])
+        for (imp, e, h), (err, cost) in sorted(grid.items()):
+            w.writerow(["impulse" if imp else "steady", e, h, f"{err:.4g}", f"{cost:.4f}"])
+    print(f"\n{a.rounds} rounds x {a.runs} runs per command (hyperfine -N --warmup 1), ratio "
+          f"= MoorDyn mean / towsim mean per round (wall; CPU = user + system): mean [min, max]")
+    print("| case | MoorDyn segments | dtM [s] | MoorDyn error (% L) | tension err (%) | MoorDyn "
+          "time [s] | towsim el. / h [s] | towsim error (% L) | tension err (%) | towsim time [s] "
+          "| ratio (wall) | ratio (CPU) |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for t in table:
+        print(f"| {t['case']} | {t['segments']} | {t['dtM']:.4g} | {100 * t['md_error']:.3g} | "
+              f"{100 * t['md_tension_error']:.3g} | {t['md_time']:.3f} | {t['elements']} / "
+              f"{t['h']:g} | {100 * t['ts_error']:.3g} | {100 * t['ts_tension_error']:.3g} | "
+              f"{t['ts_time']:.3f} | {t['ratio_mean']:.1f}x [{t['ratio_min']:.1f}, "
+              f"{t['ratio_max']:.1f}] | {t['cpu_ratio_mean']:.1f}x [{t['cpu_ratio_min']:.1f}, "
+              f"{t['cpu_ratio_max']:.1f}] |")
+
+
+if __name__ == "__main__":
+    main()
