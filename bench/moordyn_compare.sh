@@ -13,6 +13,8 @@ set -euo pipefail
 usage() { echo "usage: bench/moordyn_compare.sh MOORDYN_PREFIX [ROUNDS]" >&2; exit 2; }
 [[ $# -ge 1 && $# -le 2 ]] || usage
 prefix=$1
+# absolute, since the script changes to the repository below
+if [[ -d "$prefix" ]]; then prefix=$(cd "$prefix" && pwd); fi
 rounds=${2:-5}
 runs=${RUNS:-5}
 [[ "$rounds" =~ ^[1-9][0-9]*$ ]] || { echo "moordyn_compare: ROUNDS = $rounds: must be an integer >= 1" >&2; exit 2; }
@@ -33,6 +35,7 @@ sim_node="${BUILD_DIR:-build}/sim_node/app/sim_node"
 
 if [[ -n "${WORK_DIR:-}" ]]; then
   work=$WORK_DIR
+  [[ "$work" == /* ]] || work="$OLDPWD/$work"  # as given, from where the script was started
   mkdir -p "$work"
 else
   work=$(mktemp -d /tmp/moordyn_compare.XXXXXX)
