@@ -47,6 +47,8 @@ import statistics
 import subprocess
 import sys
 
+from compare_runs import body_track  # bench/compare_runs.py: a run's body track by time
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENE = os.path.join(ROOT, "config/scenes/steady_tow.yaml")
 
@@ -294,11 +296,9 @@ class Towsim:
         if done.returncode != 0 or "max cable strain" in done.stdout:
             return None
         track, tension = {}, {}
-        for r in read_rows(os.path.join(out, "bodies.csv")):
-            if r["body"] == "towfish" and time_key(r["t"]) is not None:
-                t = float(r["t"])
-                track[time_key(t)] = (float(r["x"]) - SPEED * t, float(r["y"]),
-                                      float(r["z"]) - TOW_DEPTH)
+        for t, (x, y, z) in body_track(os.path.join(out, "bodies.csv"), "towfish").items():
+            if time_key(t) is not None:
+                track[time_key(t)] = (x - SPEED * float(t), y, z - TOW_DEPTH)
         for r in read_rows(os.path.join(out, "forces.csv")):
             if r["body"] == "cable.start" and time_key(r["t"]) is not None:
                 tension[time_key(r["t"])] = math.hypot(float(r["fx"]), float(r["fy"]),
