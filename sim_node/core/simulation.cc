@@ -118,7 +118,7 @@ StepStatus Simulation::Impl::StepSystem(double h) {
 
 void Simulation::Impl::SolveBrakeSlip(double h, double slip, StepStatus* s) {
   const CableParams& c = system.model().cable;
-  const double stiffness_h = c.youngs_modulus * c.area() * h / system.drum_length();
+  const double stiffness_h = c.axial_stiffness * h / system.drum_length();
   const double first = state.winch.slip_slope < 0.0 ? state.winch.slip_slope : -stiffness_h;
   BrakeSlipIteration brake(c.winch->brake_tension, MaxSlip(h), first);
   int iterations = s->iterations;

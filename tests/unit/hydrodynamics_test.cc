@@ -47,7 +47,7 @@ TEST(ChooCasarella, DragStaysFiniteAndVanishesAsTheSpeedGoesToZero) {
   const Eigen::Vector3d a = Eigen::Vector3d::UnitX();
   for (double v : {1e-9, 1e-15, 1e-200, 0.0}) {
     const Eigen::Vector3d vel(0.3 * v, 0, v);
-    const DragResult d = CableDrag(fluid, 0.041, a, vel, true);
+    const DragResult d = CableDrag(fluid, {}, 0.041, a, vel, true);
     EXPECT_TRUE(d.f.allFinite() && d.df_dv.allFinite() && d.df_da.allFinite()) << v;
     // Re < 1 (Stokes-Oseen): |f| = mu G |V_n| / 2 with G = 8 pi (1/S - 0.87/S^3) < 10
     EXPECT_LE(d.f.norm(), 5.0 * fluid.viscosity * vel.norm()) << v;
@@ -60,16 +60,16 @@ TEST(CableDrag, JacobiansMatchFiniteDifferences) {
   for (const Eigen::Vector3d& v : {Eigen::Vector3d(0.5, -1.2, 2.0),        // Re ~ 1e5
                                    Eigen::Vector3d(1e-4, 2e-4, -1e-4),     // Re ~ 10
                                    Eigen::Vector3d(3e-6, -1e-6, 5e-6)}) {  // Re < 1
-    const DragResult d = CableDrag(fluid, 0.041, a, v, true);
+    const DragResult d = CableDrag(fluid, {}, 0.041, a, v, true);
     Eigen::Matrix3d fv, fa;
     for (int i = 0; i < 3; ++i) {
       const double hv = 1e-7 * v.norm(), ha = 1e-7;
       const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
-      fv.col(i) = (CableDrag(fluid, 0.041, a, v + hv * e, false).f -
-                   CableDrag(fluid, 0.041, a, v - hv * e, false).f) /
+      fv.col(i) = (CableDrag(fluid, {}, 0.041, a, v + hv * e, false).f -
+                   CableDrag(fluid, {}, 0.041, a, v - hv * e, false).f) /
                   (2 * hv);
-      fa.col(i) = (CableDrag(fluid, 0.041, a + ha * e, v, false).f -
-                   CableDrag(fluid, 0.041, a - ha * e, v, false).f) /
+      fa.col(i) = (CableDrag(fluid, {}, 0.041, a + ha * e, v, false).f -
+                   CableDrag(fluid, {}, 0.041, a - ha * e, v, false).f) /
                   (2 * ha);
     }
     constexpr double kJacRelTol = 1e-5;  // central differences on a smooth branch
