@@ -144,6 +144,8 @@ LineTypeFields ReadLineType(const MapReader& cable, const Field& line_types,
     type_name = name.String();
   }
   const Layers keys(cable, type, type_name);
+  // source: where the numbers come from (free text)
+  if (type && type->Has("source")) type->Get("source").String();
 
   // the hydrodynamic diameter d
   const MapReader* m = keys.For({"diameter"});
