@@ -125,7 +125,7 @@ core::CableDragLaw ReadDrag(const Field& field) {
   if (!field.node().IsMap()) {
     field.Fail("must be choo_casarella or {normal: C_n, tangential: C_t}");
   }
-  const MapReader map(field, MapKind::kDragCoefficients);
+  const MapReader map(field, MapKind::kLineDrag);
   law.kind = core::CableDragLaw::kConstant;
   law.normal = map.Number("normal", Range::AtLeast(0.0));
   law.tangential = map.Number("tangential", Range::AtLeast(0.0));
@@ -207,7 +207,7 @@ LineTypeFields ReadLineType(const MapReader& cable, const Field& line_types,
     if (layer->Has("added_mass")) {
       const Field field = layer->Get("added_mass");
       if (!field.node().IsMap()) field.Fail("must be a map {normal: C_an, tangential: C_at}");
-      const MapReader a(field, MapKind::kAddedMassCoefficients);
+      const MapReader a(field, MapKind::kLineAddMass);
       c->added_mass.normal = a.Number("normal", Range::AtLeast(0.0), c->added_mass.normal);
       c->added_mass.tangential =
           a.Number("tangential", Range::AtLeast(0.0), c->added_mass.tangential);

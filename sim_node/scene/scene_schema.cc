@@ -83,8 +83,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       // a line type's properties (docs/scene_format.md "Line types"), then its sources
       {MapKind::kLineTypes, {}},
       {MapKind::kLineType, join({}, {&kLineTypeKeys, &kSourceKey})},
-      {MapKind::kDragCoefficients, {"normal", "tangential"}},
-      {MapKind::kAddedMassCoefficients, {"normal", "tangential"}},
+      {MapKind::kLineDrag, {"normal", "tangential"}},
+      {MapKind::kLineAddMass, {"normal", "tangential"}},
       // the cable: a line type's properties inline (overriding cable.line_type's)
       {MapKind::kCable,
        join({"length", "elements", "line_type"}, {&kLineTypeKeys, &kCableKeys})},
@@ -153,8 +153,8 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       [[fallthrough]];
     case MapKind::kLineType:
       // drag may also be the name of a law (choo_casarella): --set it whole
-      if (key == "drag") return MapKind::kDragCoefficients;
-      if (key == "added_mass") return MapKind::kAddedMassCoefficients;
+      if (key == "drag") return MapKind::kLineDrag;
+      if (key == "added_mass") return MapKind::kLineAddMass;
       return std::nullopt;
     case MapKind::kLineTypes:
       return MapKind::kLineType;

@@ -22,8 +22,8 @@ enum class MapKind {
   kSeabed,       // environment.seabed
   kLineTypes,    // line_types: user-chosen names -> kLineType
   kLineType,     // line_types.<name>, a file of config/line_types/ (and the same keys in cable)
-  kDragCoefficients,  // <line type>.drag, when a map {normal, tangential}
-  kAddedMassCoefficients,  // <line type>.added_mass
+  kLineDrag,     // <line type>.drag, when a map {normal, tangential}
+  kLineAddMass,  // <line type>.added_mass {normal, tangential}
   kCable,        // cable
   kEnd,          // cable.start, cable.end
   kDriven,       // cable.<end>.driven

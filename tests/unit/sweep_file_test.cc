@@ -69,8 +69,9 @@ TEST(SweepFile, BadKeyPathsAreReportedWithTheSweepFilesLine) {
   // the --set rules of sim_node, located in the sweep file
   EXPECT_EQ(Error("scene: steady_tow.yaml\nparameters:\n  cable.lenght: [100, 200]\n"),
             "parameters.cable.lenght = [100, 200] (sweep.yaml:3): cable: unknown key; did you "
-            "mean length? (allowed: length, elements, diameter, density, youngs_modulus, loads, "
-            "axial_damping, added_mass_coefficient, initial, initial_velocity, start, end, "
+            "mean length? (allowed: length, elements, line_type, diameter, mass_per_length, "
+            "density, axial_stiffness, youngs_modulus, bending_stiffness, axial_damping, drag, "
+            "added_mass, added_mass_coefficient, loads, initial, initial_velocity, start, end, "
             "winch)");
   EXPECT_NE(Error("scene: steady_tow.yaml\nparameters:\n  bodies.fish.mass: [1, 2]\n")
                 .find("parameters.bodies.fish.mass = [1, 2] (sweep.yaml:3): no body named fish "
