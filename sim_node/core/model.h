@@ -90,8 +90,8 @@ struct CableParams {
   // section of d = 0.041 m, rho_c = 1300 kg/m^3, E = 7e8 Pa
   // hydrodynamic (volume-equivalent) diameter d: buoyancy rho_w A g, drag, added mass [m]
   double diameter = 0.041;
-  double mass_per_length = 1300.0 * (0.25 * kPi * 0.041 * 0.041);        // m [kg/m]
-  double axial_stiffness = 7.0e8 * (0.25 * kPi * 0.041 * 0.041);         // EA [N]
+  double mass_per_length = 1300.0 * (0.25 * kPi * 0.041 * 0.041);                   // m [kg/m]
+  double axial_stiffness = 7.0e8 * (0.25 * kPi * 0.041 * 0.041);                    // EA [N]
   double bending_stiffness = 7.0e8 * (kPi * 0.041 * 0.041 * 0.041 * 0.041 / 64.0);  // EI [N m^2]
   double axial_damping = 0.0;  // c in N = EA (eps + c deps/dt) [s]
   CableDragLaw drag;           // Choo & Casarella (default) or constant C_n, C_t

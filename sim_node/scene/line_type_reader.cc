@@ -14,8 +14,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // the largest physical values (docs/scene_format.md "Line types": the limits)
-constexpr double kMaxDiameter = 10.0;        // [m]
-constexpr double kMaxDensity = 1.0e5;        // [kg/m^3]
+constexpr double kMaxDiameter = 10.0;         // [m]
+constexpr double kMaxDensity = 1.0e5;         // [kg/m^3]
 constexpr double kMaxYoungsModulus = 1.0e13;  // [Pa]
 
 bool EndsWith(const std::string& s, const std::string& tail) {
@@ -67,7 +67,8 @@ MapReader FindLineType(const Field& name, const Field& line_types, const std::st
     }
   }
   std::string names, tried;
-  for (const auto& entry : scene_types.entries()) names += (names.empty() ? "" : ", ") + entry.first;
+  for (const auto& entry : scene_types.entries())
+    names += (names.empty() ? "" : ", ") + entry.first;
   for (const fs::path& path : candidates) tried += (tried.empty() ? "" : ", ") + path.string();
   name.Fail("no such line type: not in the scene's line_types (" +
             (names.empty() ? std::string("none") : names) + ") and no file " + tried);
@@ -91,8 +92,8 @@ class Layers {
   }
   // "is required" where the cable would give it
   [[noreturn]] void Missing(const std::string& key, const std::string& rule) const {
-    cable_.Get(key).Fail(rule + (type_ ? " (in cable or in its line type " + type_name_ + ")"
-                                       : std::string()));
+    cable_.Get(key).Fail(
+        rule + (type_ ? " (in cable or in its line type " + type_name_ + ")" : std::string()));
   }
   // exactly one of a pair: its field (from the cable, else the type)
   Field OneOf(const std::string& a, const std::string& b, const std::string& what) const {
@@ -160,9 +161,9 @@ LineTypeFields ReadLineType(const MapReader& cable, const Field& line_types,
     c->mass_per_length =
         Physical(mass, kMaxDensity, "kg/m^3 (the densest material, osmium, is 2.26e4)") * area;
   } else {
-    c->mass_per_length = Physical(mass, kMaxDensity * area,
-                                  "kg/m (a density of 1e5 kg/m^3 " + section +
-                                      "; the densest material, osmium, is 2.26e4)");
+    c->mass_per_length = Physical(
+        mass, kMaxDensity * area,
+        "kg/m (a density of 1e5 kg/m^3 " + section + "; the densest material, osmium, is 2.26e4)");
   }
 
   // axial stiffness: EA = E A, or EA; the solid section's E for the default EI

@@ -38,9 +38,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       "rudder", "elevator", "propeller",  "waterplane"};
   // a line type's properties (core::CableParams)
   static const std::vector<std::string> kLineTypeKeys = {
-      "diameter",       "mass_per_length",   "density",       "axial_stiffness",
-      "youngs_modulus", "bending_stiffness", "axial_damping", "drag",
-      "added_mass"};
+      "diameter",          "mass_per_length", "density", "axial_stiffness", "youngs_modulus",
+      "bending_stiffness", "axial_damping",   "drag",    "added_mass"};
   static const std::vector<std::string> kSourceKey = {"source"};
   // the cable's own keys after the line type's (added_mass_coefficient: C_an, before line types)
   static const std::vector<std::string> kCableKeys = {
@@ -86,8 +85,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kLineDrag, {"normal", "tangential"}},
       {MapKind::kLineAddMass, {"normal", "tangential"}},
       // the cable: a line type's properties inline (overriding cable.line_type's)
-      {MapKind::kCable,
-       join({"length", "elements", "line_type"}, {&kLineTypeKeys, &kCableKeys})},
+      {MapKind::kCable, join({"length", "elements", "line_type"}, {&kLineTypeKeys, &kCableKeys})},
       {MapKind::kWinch,
        {"min_length", "max_length", "max_speed", "max_acceleration", "brake_tension"}},
       {MapKind::kEnd, {"fixed", "slope", "driven", "free", "body", "at"}},

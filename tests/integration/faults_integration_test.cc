@@ -638,9 +638,10 @@ TEST_F(FaultsTest, CommandsOnAnUnknownBodysTopicAreCountedAsRejected) {
 
 TEST_F(FaultsTest, ExtremeCableStrainIsReported) {
   std::string out, err;
-  ASSERT_EQ(Run(Node(kSteadyTow, "offline", {"--duration", "5", "--set", "cable.youngs_modulus=1e7"}),
-                "offline", &out, &err),
-            0)
+  ASSERT_EQ(
+      Run(Node(kSteadyTow, "offline", {"--duration", "5", "--set", "cable.youngs_modulus=1e7"}),
+          "offline", &out, &err),
+      0)
       << err;
   EXPECT_TRUE(Contains(out, ", max cable strain ")) << out;
   EXPECT_TRUE(Contains(out, "extreme (> 0.2)")) << out;

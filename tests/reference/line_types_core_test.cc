@@ -40,11 +40,11 @@ constexpr double kTowRelTol = 5e-3;  // the issue's 0.5 %
 
 void CheckConstantDragTow(double speed) {
   const std::string v = "[" + std::to_string(speed) + ", 0, 0]";
-  const core::Model model = scene::LoadScene(
-      kScenesDir + "/steady_tow.yaml",
-      {"cable.initial=static", "cable.drag={normal: 1.5, tangential: 0.01}",
-       "cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
-       "bodies.towfish.velocity=" + v});
+  const core::Model model =
+      scene::LoadScene(kScenesDir + "/steady_tow.yaml",
+                       {"cable.initial=static", "cable.drag={normal: 1.5, tangential: 0.01}",
+                        "cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
+                        "bodies.towfish.velocity=" + v});
   ASSERT_EQ(model.cable.drag.kind, core::CableDragLaw::kConstant);
   const TowedCableProblem p = SteadyTowProblem(model);
   ASSERT_TRUE(p.drag_coefficients.has_value());
@@ -113,11 +113,12 @@ TEST(LineTypesCore, NoBendingStiffnessIsTheElasticCatenary) {
   const core::Simulation sim(m);
   const Vec3 f = sim.end_force(0);
   const double sag = sim.node_position(10).z() - 10.0;
-  std::printf("EI = 0: H %.4f N (ref %.4f, %+.2e), V %.4f N (ref %.4f, %+.2e), sag %.5f m "
-              "(ref %.5f, %+.2e)\n",
-              std::abs(f.x()), ref.horizontal_tension, std::abs(f.x()) / ref.horizontal_tension - 1,
-              std::abs(f.z()), ref.vertical_force_a, std::abs(f.z()) / ref.vertical_force_a - 1, sag,
-              ref.sag_mid_span, sag / ref.sag_mid_span - 1);
+  std::printf(
+      "EI = 0: H %.4f N (ref %.4f, %+.2e), V %.4f N (ref %.4f, %+.2e), sag %.5f m "
+      "(ref %.5f, %+.2e)\n",
+      std::abs(f.x()), ref.horizontal_tension, std::abs(f.x()) / ref.horizontal_tension - 1,
+      std::abs(f.z()), ref.vertical_force_a, std::abs(f.z()) / ref.vertical_force_a - 1, sag,
+      ref.sag_mid_span, sag / ref.sag_mid_span - 1);
   constexpr double kRelTol = 2e-3;  // 20 elements, as catenary_core_test
   EXPECT_NEAR(std::abs(f.x()), ref.horizontal_tension, kRelTol * ref.horizontal_tension);
   EXPECT_NEAR(std::abs(f.z()), ref.vertical_force_a, kRelTol * ref.vertical_force_a);
@@ -184,11 +185,12 @@ TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
   const core::Simulation sim(m);
   const Vec3 anchor = sim.end_force(0), fairlead = sim.end_force(1);
   constexpr double kH = 11.40e3, kVFairlead = 45.71e3, kVAnchor = 24.04e3;  // [N]
-  std::printf("jumper: fairlead H %.1f N (%+.2e), V %.1f N (%+.2e); anchor H %.1f N (%+.2e), "
-              "V %.1f N (%+.2e)\n",
-              std::abs(fairlead.x()), std::abs(fairlead.x()) / kH - 1, fairlead.z(),
-              fairlead.z() / kVFairlead - 1, std::abs(anchor.x()), std::abs(anchor.x()) / kH - 1,
-              anchor.z(), anchor.z() / kVAnchor - 1);
+  std::printf(
+      "jumper: fairlead H %.1f N (%+.2e), V %.1f N (%+.2e); anchor H %.1f N (%+.2e), "
+      "V %.1f N (%+.2e)\n",
+      std::abs(fairlead.x()), std::abs(fairlead.x()) / kH - 1, fairlead.z(),
+      fairlead.z() / kVFairlead - 1, std::abs(anchor.x()), std::abs(anchor.x()) / kH - 1,
+      anchor.z(), anchor.z() / kVAnchor - 1);
   constexpr double kJumperRelTol = 5e-3;  // the 0.5 %
   EXPECT_NEAR(std::abs(fairlead.x()), kH, kJumperRelTol * kH);
   EXPECT_NEAR(fairlead.z(), kVFairlead, kJumperRelTol * kVFairlead);

@@ -251,9 +251,8 @@ double DrumPower(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   const core::State& st = sim.state();
   const core::Model& m = sim.model();
-  const double w =
-      (m.cable.mass_per_length - m.environment.water_density * m.cable.area()) *
-      m.environment.gravity;
+  const double w = (m.cable.mass_per_length - m.environment.water_density * m.cable.area()) *
+                   m.environment.gravity;
   const core::Vec12 e = sys.ElementCoordinates(st.q, 0), e_dot = sys.ElementCoordinates(st.v, 0);
   auto lagrangian = [&](double l) {
     const core::AncfElement element = sys.DrumElement(l);

@@ -134,7 +134,7 @@ TEST(ConstantDrag, ForcesAreQuadraticOnDAndPiD) {
   // stretched 1 %: a = 1.01 e_x; V = (2, 0, -3): V_t = 2 e_x, V_n = -3 e_z
   const Eigen::Vector3d a(1.01, 0.0, 0.0), v(2.0, 0.0, -3.0);
   const DragResult r = CableDrag(fluid, law, d, a, v, false);
-  const double fn = 0.5 * 1025.0 * 1.5 * d * 3.0 * 3.0 * 1.01;       // 120.8 N/m, along +z
+  const double fn = 0.5 * 1025.0 * 1.5 * d * 3.0 * 3.0 * 1.01;         // 120.8 N/m, along +z
   const double ft = 0.5 * 1025.0 * 0.01 * kPi * d * 2.0 * 2.0 * 1.01;  // 1.125 N/m, along -x
   constexpr double kForceRelTol = 1e-14;
   EXPECT_NEAR(r.f.z(), fn, kForceRelTol * fn);
@@ -151,7 +151,8 @@ TEST(ConstantDrag, JacobiansMatchFiniteDifferences) {
   const FluidProperties fluid;
   const CableDragLaw law{CableDragLaw::kConstant, 1.2, 0.008};
   const Eigen::Vector3d a(1.003, 0.2, -0.1);
-  for (const Eigen::Vector3d& v : {Eigen::Vector3d(0.5, -1.2, 2.0), Eigen::Vector3d(-3.0, 0.1, 0.2)}) {
+  for (const Eigen::Vector3d& v :
+       {Eigen::Vector3d(0.5, -1.2, 2.0), Eigen::Vector3d(-3.0, 0.1, 0.2)}) {
     const DragResult d = CableDrag(fluid, law, 0.041, a, v, true);
     Eigen::Matrix3d fv, fa;
     for (int i = 0; i < 3; ++i) {

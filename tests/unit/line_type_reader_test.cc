@@ -91,8 +91,9 @@ TEST(LineTypeReader, TodaysKeysGiveTheSolidSection) {
           .cable;
   EXPECT_NEAR(d.bending_stiffness, 1.0e6 * 0.041 * 0.041 / 16.0, 1e-12);
   // 0 switches bending off
-  EXPECT_EQ(Load(Scene("", "  diameter: 0.041\n  density: 1300\n  youngs_modulus: 7.0e8\n"
-                           "  bending_stiffness: 0\n"))
+  EXPECT_EQ(Load(Scene("",
+                       "  diameter: 0.041\n  density: 1300\n  youngs_modulus: 7.0e8\n"
+                       "  bending_stiffness: 0\n"))
                 .cable.bending_stiffness,
             0.0);
 }
@@ -100,10 +101,10 @@ TEST(LineTypeReader, TodaysKeysGiveTheSolidSection) {
 TEST(LineTypeReader, TheLibraryTypeIsTheShippedCable) {
   // config/scenes/../line_types/park_kim_tow_cable.yaml: the steady tow's cable, to the bit
   const core::Model shipped = LoadScene(kScenesDir + "/steady_tow.yaml");
-  const core::Model typed = LoadScene(
-      kScenesDir + "/steady_tow.yaml", {"cable={line_type: park_kim_tow_cable, length: 200, "
-                                        "elements: 20, start: {driven: {position: [0, 0, 3.5], "
-                                        "velocity: [6, 0, 0]}}, end: {body: towfish}}"});
+  const core::Model typed = LoadScene(kScenesDir + "/steady_tow.yaml",
+                                      {"cable={line_type: park_kim_tow_cable, length: 200, "
+                                       "elements: 20, start: {driven: {position: [0, 0, 3.5], "
+                                       "velocity: [6, 0, 0]}}, end: {body: towfish}}"});
   const core::CableParams& a = shipped.cable;
   const core::CableParams& b = typed.cable;
   EXPECT_EQ(a.diameter, b.diameter);
@@ -279,9 +280,9 @@ TEST(LineTypeReader, AStiffnessTheWeightsWouldStretchBeyondHalfIsFlagged) {
             "(157.843 N: half the cable's weight in water and the spheres hanging on it) would "
             "stretch by 157.843 % (at most 50 %: no cable material stretches that far)");
   // at 400 N (39 %) it runs: the run's strain watch reports what the dynamics do
-  EXPECT_EQ(Load(Scene(kTether, "  line_type: tether\n  axial_stiffness: 400\n"))
-                .cable.axial_stiffness,
-            400.0);
+  EXPECT_EQ(
+      Load(Scene(kTether, "  line_type: tether\n  axial_stiffness: 400\n")).cable.axial_stiffness,
+      400.0);
 }
 
 }  // namespace

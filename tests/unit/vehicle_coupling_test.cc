@@ -74,8 +74,7 @@ TEST(VehicleCoupling, MomentumBalanceAcrossTheJoint) {
   for (const Coupling coupling : {Coupling::kStrong, Coupling::kStaggered}) {
     const Model m = FallingModel(coupling, 0.01);
     Simulation sim(m);
-    const double w_cable =
-        (m.cable.mass_per_length - kRho * m.cable.area()) * kG * m.cable.length;
+    const double w_cable = (m.cable.mass_per_length - kRho * m.cable.area()) * kG * m.cable.length;
     const double w_sphere = (m.bodies[0].mass - kRho * m.bodies[0].volume) * kG;
     const double force = w_cable + w_sphere;
     for (int k = 0; k < 300; ++k) ASSERT_TRUE(sim.Step().ok());
