@@ -116,20 +116,32 @@ double Physical(const Field& f, double max, const std::string& why) {
   return x;
 }
 
-// drag: choo_casarella, or {normal: C_n, tangential: C_t}
-core::CableDragLaw ReadDrag(const Field& field) {
+// drag: choo_casarella, or {normal: C_n, tangential: C_t}; the cable's `drag` over the type's,
+// a law name as a whole and a map per coefficient (`--set cable.drag.normal=1.2` keeps the
+// type's C_t)
+core::CableDragLaw ReadDrag(const MapReader* cable, const MapReader* type) {
   core::CableDragLaw law;
-  if (field.node().IsScalar()) {
-    field.Choice({"choo_casarella"});
-    return law;
+  std::optional<MapReader> maps[2];  // the cable's, the type's
+  for (int k = 0; k < 2; ++k) {
+    const MapReader* layer = k == 0 ? cable : type;
+    if (!layer || !layer->Has("drag")) continue;
+    const Field field = layer->Get("drag");
+    if (field.node().IsScalar()) {
+      field.Choice({"choo_casarella"});
+      if (k == 0 || !maps[0]) return law;  // a law: as a whole
+      break;
+    }
+    if (!field.node().IsMap()) field.Fail("must be choo_casarella or {normal: C_n, tangential: C_t}");
+    maps[k].emplace(field, MapKind::kLineDrag);
   }
-  if (!field.node().IsMap()) {
-    field.Fail("must be choo_casarella or {normal: C_n, tangential: C_t}");
-  }
-  const MapReader map(field, MapKind::kLineDrag);
+  if (!maps[0] && !maps[1]) return law;
   law.kind = core::CableDragLaw::kConstant;
-  law.normal = map.Number("normal", Range::AtLeast(0.0));
-  law.tangential = map.Number("tangential", Range::AtLeast(0.0));
+  const MapReader& own = maps[0] ? *maps[0] : *maps[1];
+  for (const auto& [key, value] : {std::pair{"normal", &law.normal},
+                                   std::pair{"tangential", &law.tangential}}) {
+    const MapReader& from = own.Has(key) || !maps[1] ? own : *maps[1];
+    *value = from.Number(key, Range::AtLeast(0.0));
+  }
   return law;
 }
 
@@ -194,7 +206,7 @@ LineTypeFields ReadLineType(const MapReader& cable, const Field& line_types,
 
   if ((m = keys.For({"axial_damping"})))
     c->axial_damping = m->Get("axial_damping").Number(Range::AtLeast(0.0));
-  if ((m = keys.For({"drag"}))) c->drag = ReadDrag(m->Get("drag"));
+  c->drag = ReadDrag(&cable, type ? &*type : nullptr);
 
   // added mass, per coefficient: normal from cable.added_mass, cable.added_mass_coefficient
   // (the key before line types) or the type; tangential from cable.added_mass or the type

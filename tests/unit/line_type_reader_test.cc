@@ -198,7 +198,10 @@ TEST(LineTypeReader, TheCablesKeysOverrideTheTypes) {
 
 TEST(LineTypeReader, SetTakesTheNewKeys) {
   const std::string yaml = Scene(kTether, "  line_type: tether\n");
-  EXPECT_EQ(Load(yaml, {"cable.drag.normal=1.2"}).cable.drag.normal, 1.2);
+  // a coefficient over the type's drag keeps the type's other one
+  const core::CableParams n = Load(yaml, {"cable.drag.normal=1.2"}).cable;
+  EXPECT_EQ(n.drag.normal, 1.2);
+  EXPECT_EQ(n.drag.tangential, 0.01);
   EXPECT_EQ(Load(yaml, {"line_types.tether.bending_stiffness=0"}).cable.bending_stiffness, 0.0);
   EXPECT_EQ(Load(yaml, {"cable.line_type=oc3_hywind_mooring"}).cable.mass_per_length, 77.7066);
   EXPECT_EQ(Load(yaml, {"cable.drag=choo_casarella"}).cable.drag.kind,
@@ -211,9 +214,9 @@ TEST(LineTypeReader, SetTakesTheNewKeys) {
   EXPECT_EQ(c.drag.tangential, 0.02);
   EXPECT_EQ(c.mass_per_length, 0.8);
   EXPECT_EQ(c.added_mass.tangential, 0.2);
-  EXPECT_EQ(Error(yaml, {"line_types.tether.stiffness=1"}),
-            "line_types.tether.stiffness = 1 (--set): line_types.tether: unknown key; did you "
-            "mean axial_stiffness? (allowed: diameter, mass_per_length, density, "
+  EXPECT_EQ(Error(yaml, {"line_types.tether.bending=1"}),
+            "line_types.tether.bending = 1 (--set): line_types.tether: unknown key; did you "
+            "mean bending_stiffness? (allowed: diameter, mass_per_length, density, "
             "axial_stiffness, youngs_modulus, bending_stiffness, axial_damping, drag, "
             "added_mass, source)");
 }
@@ -228,8 +231,7 @@ TEST(LineTypeReader, EveryRuleNamesItsKey) {
             "cable.axial_stiffness = <missing> (t.yaml:3): is required: give axial_stiffness or "
             "youngs_modulus (the line's stiffness)");
   EXPECT_EQ(Error(Scene(kTether, "  line_type: tether\n  density: 900\n  mass_per_length: 1\n")),
-            "cable.mass_per_length = 1 (t.yaml:15): give one of mass_per_length and density, "
-            "not both");
+            "cable.density = 900 (t.yaml:15): give one of mass_per_length and density, not both");
   EXPECT_EQ(Error(Scene("line_types:\n  bare: {mass_per_length: 1, axial_stiffness: 1e6}\n",
                         "  line_type: bare\n")),
             "cable.diameter = <missing> (t.yaml:5): is required (in cable or in its line type "
@@ -264,22 +266,22 @@ TEST(LineTypeReader, EveryRuleNamesItsKey) {
 TEST(LineTypeReader, AnUnknownNameSaysWhereItLooked) {
   const std::string dir = "/nowhere/scenes";
   EXPECT_EQ(Error(Scene(kTether, "  line_type: steel\n"), {}, dir),
-            "cable.line_type = steel (t.yaml:13): no such line type: not in the scene's "
+            "cable.line_type = steel (t.yaml:14): no such line type: not in the scene's "
             "line_types (tether) and no file /nowhere/scenes/line_types/steel.yaml, "
             "/nowhere/line_types/steel.yaml");
   EXPECT_EQ(Error(Scene("", "  line_type: 9lives\n")),
-            "cable.line_type = 9lives (t.yaml:5): line type names must match "
+            "cable.line_type = 9lives (t.yaml:6): line type names must match "
             "[A-Za-z_][A-Za-z0-9_]*");
 }
 
 TEST(LineTypeReader, AStiffnessTheWeightsWouldStretchBeyondHalfIsFlagged) {
-  // 100 m of 0.5 kg/m (d 0.02: 0.178 kg/m displaced) in water: weight in water 315.6 N; half
-  // of it, 157.8 N, on EA = 100 N is a strain of 158 %
+  // 100 m of 0.5 kg/m (d 0.02: 0.322 kg/m displaced) in water: weight in water 174.6 N; half
+  // of it, 87.3 N, on EA = 100 N is a strain of 87 %
   EXPECT_EQ(Error(Scene(kTether, "  line_type: tether\n  axial_stiffness: 100\n")),
-            "cable.axial_stiffness = 100 (t.yaml:14): gives EA = 100 N, which the weights alone "
-            "(157.843 N: half the cable's weight in water and the spheres hanging on it) would "
-            "stretch by 157.843 % (at most 50 %: no cable material stretches that far)");
-  // at 400 N (39 %) it runs: the run's strain watch reports what the dynamics do
+            "cable.axial_stiffness = 100 (t.yaml:15): gives EA = 100 N, which the weights alone "
+            "(87.3025 N: half the cable's weight in water and the spheres hanging on it) would "
+            "stretch by 87.3025 % (at most 50 %: no cable material stretches that far)");
+  // at 400 N (22 %) it runs: the run's strain watch reports what the dynamics do
   EXPECT_EQ(
       Load(Scene(kTether, "  line_type: tether\n  axial_stiffness: 400\n")).cable.axial_stiffness,
       400.0);
