@@ -173,8 +173,8 @@ TEST(LineTypesCore, OwnBendingStiffnessCantileverUnderItsOwnWeight) {
 // static end forces, as MoorDyn v2.7.1 holds itself to them (tests/lowe_and_langley_2006.cpp,
 // "Stationary"): at the fairlead horizontal 11.40 kN, vertical 45.71 kN; at the anchor
 // horizontal 11.40 kN, vertical 24.04 kN.
-TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
-  const core::Model m = Load(
+core::Model Jumper(const std::vector<std::string>& overrides = {}) {
+  return Load(
       "name: jumper\n"
       "time: {step: 0.01, duration: 1, output_rate: 10}\n"
       "environment: {water_density: 1000, gravity: 9.807}\n"
@@ -185,7 +185,12 @@ TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
       "  loads: [gravity, buoyancy, bending]\n"
       "  initial: static\n"
       "  start: {fixed: [-100, 0, 55]}\n"
-      "  end: {fixed: [0, 0, 5]}\n");
+      "  end: {fixed: [0, 0, 5]}\n",
+      overrides);
+}
+
+TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
+  const core::Model m = Jumper();
   ASSERT_EQ(m.cable.bending_stiffness, 120.8e3);
   const core::Simulation sim(m);
   const Vec3 anchor = sim.end_force(0), fairlead = sim.end_force(1);
@@ -201,6 +206,11 @@ TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
   EXPECT_NEAR(fairlead.z(), kVFairlead, kJumperRelTol * kVFairlead);
   EXPECT_NEAR(std::abs(anchor.x()), kH, kJumperRelTol * kH);
   EXPECT_NEAR(anchor.z(), kVAnchor, kJumperRelTol * kVAnchor);
+  // the jumper's EI matters at this tolerance: without it (a chain of the same EA and weight)
+  // the horizontal force is off by more than the tolerance
+  const double h0 = std::abs(core::Simulation(Jumper({"cable.bending_stiffness=0"})).end_force(1).x());
+  std::printf("jumper without EI: H %.1f N (%+.2e)\n", h0, h0 / kH - 1);
+  EXPECT_GT(std::abs(h0 / kH - 1), kJumperRelTol);
 }
 
 }  // namespace
