@@ -1,9 +1,9 @@
 // The documentation's links: every relative link of README.md and docs/*.md resolves to a file
 // and every #anchor to a heading of the page it names, every page of docs/ can be reached
 // from README.md, and no link or path in code leads outside the repository (the pages cite
-// only what a clone holds). The anchors are checked against GitHub's rendering rules (github-slugger, as
-// github.com shows README.md and docs/): the examples below are the anchors GitHub gives
-// those headings.
+// only what a clone holds). The anchors are checked against GitHub's rendering rules
+// (github-slugger, as github.com shows README.md and docs/): the examples below are the anchors
+// GitHub gives those headings.
 
 #include "markdown_links.h"
 

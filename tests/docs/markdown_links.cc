@@ -98,7 +98,7 @@ bool IsInside(const std::filesystem::path& path, const std::filesystem::path& ro
 // An absolute path in code names a file outside the machine's own folders: a last name with an
 // extension ("notes.md"), a first folder other than the system's.
 bool IsForeignAbsoluteFile(const std::filesystem::path& path) {
-  static const std::set<std::string> kSystemFolders = {"usr", "etc", "opt", "tmp",
+  static const std::set<std::string> kSystemFolders = {"usr", "etc",  "opt", "tmp",
                                                        "dev", "proc", "sys", "var"};
   if (!path.is_absolute() || !path.has_extension() || path.filename().string()[0] == '.') {
     return false;
@@ -206,8 +206,8 @@ std::vector<std::string> OutsideRepository(const std::filesystem::path& file,
   }
   for (const CodePath& code : CodePaths(markdown)) {
     const std::filesystem::path path = code.path;
-    const bool leaves = path.is_absolute() ? IsForeignAbsoluteFile(path)
-                                           : !IsInside(root / path, root);
+    const bool leaves =
+        path.is_absolute() ? IsForeignAbsoluteFile(path) : !IsInside(root / path, root);
     if (leaves) {
       found.emplace_back(code.line,
                          outside("`" + code.path + "`", path.is_absolute() ? path : root / path));
