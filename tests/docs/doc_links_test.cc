@@ -1,8 +1,9 @@
 // The documentation's links: every relative link of README.md and docs/*.md resolves to a file
-// and every #anchor to a heading of the page it names, and every page of docs/ can be reached
-// from README.md. The anchors are checked against GitHub's rendering rules (github-slugger, as
-// github.com shows README.md and docs/): the examples below are the anchors GitHub gives
-// those headings.
+// and every #anchor to a heading of the page it names, every page of docs/ can be reached
+// from README.md, and no link or path in code leads outside the repository (the pages cite
+// only what a clone holds). The anchors are checked against GitHub's rendering rules
+// (github-slugger, as github.com shows README.md and docs/): the examples below are the anchors
+// GitHub gives those headings.
 
 #include "markdown_links.h"
 
@@ -79,6 +80,51 @@ TEST(DocLinks, BrokenLinksAreFoundAndNamed) {
   EXPECT_EQ(broken[3].rfind(readme + ":5: #nowhere: no heading", 0), 0u) << broken[3];
 }
 
+TEST(DocLinks, CodePathsAreSingleWordsWithASlash) {
+  const std::vector<CodePath> paths = CodePaths(
+      "`docs/topics.md` and `sim_node --csv DIR` and `name`\n"
+      "`file://$PWD/config/cyclonedds.xml` ``../shared/x.md``\n"
+      "```\n`../in/fence.md`\n```\n`/clock`\n");
+  ASSERT_EQ(paths.size(), 3u);
+  EXPECT_EQ(paths[0].path, "docs/topics.md");
+  EXPECT_EQ(paths[0].line, 1);
+  EXPECT_EQ(paths[1].path, "../shared/x.md");
+  EXPECT_EQ(paths[1].line, 2);
+  EXPECT_EQ(paths[2].path, "/clock");
+  EXPECT_EQ(paths[2].line, 6);
+}
+
+TEST(DocLinks, PathsOutsideTheRepositoryAreFoundAndNamed) {
+  test::TempDir dir;
+  const fs::path root = dir.path() / "repo";
+  // the outside file exists on this machine: a clone elsewhere would not have it
+  Write(dir.path() / "shared/x.md", "# X\n");
+  Write(root / "docs/b.md", "# B\n");
+  Write(root / "docs/a.md",
+        "# A\n"
+        "[ok](b.md) [ok](../README.md#top) [ok](#a) [web](https://example.org/x.md)\n"
+        "`docs/b.md` `config/scenes/x.yaml` `/clock` `/usr/bin/python3` `/tmp/run/bodies.csv`\n"
+        "[bad](../../shared/x.md) and `../shared/x.md`\n"
+        "`/home/me/notes.md`\n");
+  Write(root / "README.md", "# Top\n(design: [bad](../shared/x.md#x))\n");
+
+  const std::vector<std::string> readme = OutsideRepository(root / "README.md", root);
+  ASSERT_EQ(readme.size(), 1u);
+  EXPECT_EQ(readme[0], (root / "README.md").string() + ":2: ../shared/x.md#x: outside the " +
+                           "repository (" + (dir.path() / "shared/x.md").string() + ")");
+
+  const std::vector<std::string> page = OutsideRepository(root / "docs/a.md", root);
+  const std::string a = (root / "docs/a.md").string();
+  ASSERT_EQ(page.size(), 3u);
+  EXPECT_EQ(page[0], a + ":4: ../../shared/x.md: outside the repository (" +
+                         (dir.path() / "shared/x.md").string() + ")");
+  EXPECT_EQ(page[1], a + ":4: `../shared/x.md`: outside the repository (" +
+                         (dir.path() / "shared/x.md").string() + ")");
+  EXPECT_EQ(page[2], a + ":5: `/home/me/notes.md`: outside the repository (/home/me/notes.md)");
+  // the link checker alone passes the outside link: its file exists
+  EXPECT_TRUE(BrokenLinks(root / "README.md").empty());
+}
+
 // The pages of the repository: README.md and every docs/*.md.
 std::vector<fs::path> Pages() {
   const fs::path root = TOWSIM_SOURCE_DIR;
@@ -100,6 +146,19 @@ TEST(DocLinks, EveryLinkOfTheReadmeAndDocsResolves) {
   }
   EXPECT_GE(links, kFewestLinks);
   std::printf("[doc_links] %zu pages, %zu relative links checked\n", Pages().size(), links);
+}
+
+TEST(DocLinks, NoPageCitesAPathOutsideTheRepository) {
+  // a checker that found no paths would pass anything: the pages write many repository paths
+  // in code (559 when this test was written)
+  constexpr std::size_t kFewestCodePaths = 300;
+  std::size_t paths = 0;
+  for (const fs::path& page : Pages()) {
+    paths += CodePaths(app::ReadTextFile(page.string())).size();
+    for (const std::string& o : OutsideRepository(page, TOWSIM_SOURCE_DIR)) ADD_FAILURE() << o;
+  }
+  EXPECT_GE(paths, kFewestCodePaths);
+  std::printf("[doc_links] %zu paths in code checked\n", paths);
 }
 
 TEST(DocLinks, EveryDocsPageCanBeReachedFromTheReadme) {

@@ -1,9 +1,13 @@
 #include "markdown_links.h"
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
+#include <utility>
 
 #include "app/text_file.h"
 
@@ -33,29 +37,44 @@ std::vector<std::pair<int, std::string>> ProseLines(const std::string& markdown)
   return lines;
 }
 
+// One code span of a line: [begin, end) including its backticks, and its text.
+struct CodeSpan {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  std::string text;
+};
+
+// The code spans of `line`: a run of backticks up to the next run of the same length (an
+// unmatched run is literal backticks).
+std::vector<CodeSpan> CodeSpans(const std::string& line) {
+  std::vector<CodeSpan> spans;
+  std::size_t i = line.find('`');
+  while (i != std::string::npos) {
+    std::size_t run = line.find_first_not_of('`', i);
+    if (run == std::string::npos) run = line.size();
+    const std::string ticks = line.substr(i, run - i);
+    const std::size_t close = line.find(ticks, run);
+    if (close == std::string::npos) {
+      i = line.find('`', run);
+      continue;
+    }
+    spans.push_back({i, close + ticks.size(), line.substr(run, close - run)});
+    i = line.find('`', close + ticks.size());
+  }
+  return spans;
+}
+
 // `line` with each code span replaced by its text (keep_text: a heading's anchor keeps the
 // code's text) or by a plain word (a link inside code is not a link).
 std::string WithoutCodeSpans(const std::string& line, bool keep_text) {
   std::string out;
   std::size_t i = 0;
-  while (i < line.size()) {
-    if (line[i] != '`') {
-      out += line[i++];
-      continue;
-    }
-    std::size_t run = line.find_first_not_of('`', i);
-    if (run == std::string::npos) run = line.size();
-    const std::string ticks = line.substr(i, run - i);
-    const std::size_t close = line.find(ticks, run);
-    if (close == std::string::npos) {  // an unmatched backtick is a literal backtick
-      out += ticks;
-      i = run;
-      continue;
-    }
-    out += keep_text ? line.substr(run, close - run) : "code";
-    i = close + ticks.size();
+  for (const CodeSpan& span : CodeSpans(line)) {
+    out += line.substr(i, span.begin - i);
+    out += keep_text ? span.text : "code";
+    i = span.end;
   }
-  return out;
+  return out + line.substr(i);
 }
 
 const std::regex& LinkPattern() {
@@ -66,6 +85,26 @@ const std::regex& LinkPattern() {
 bool IsAbsoluteUrl(const std::string& target) {
   static const std::regex scheme(R"(^[A-Za-z][A-Za-z0-9+.-]*:)");
   return std::regex_search(target, scheme);
+}
+
+// `path` lies in `root` or below it (both absolute; compared as written, after removing "."
+// and ".." lexically).
+bool IsInside(const std::filesystem::path& path, const std::filesystem::path& root) {
+  const std::filesystem::path relative =
+      path.lexically_normal().lexically_relative(root.lexically_normal());
+  return !relative.empty() && *relative.begin() != "..";
+}
+
+// An absolute path in code names a file outside the machine's own folders: a last name with an
+// extension ("notes.md"), a first folder other than the system's.
+bool IsForeignAbsoluteFile(const std::filesystem::path& path) {
+  static const std::set<std::string> kSystemFolders = {"usr", "etc",  "opt", "tmp",
+                                                       "dev", "proc", "sys", "var"};
+  if (!path.is_absolute() || !path.has_extension() || path.filename().string()[0] == '.') {
+    return false;
+  }
+  const auto first = std::next(path.begin());  // the component after "/"
+  return first == path.end() || kSystemFolders.count(first->string()) == 0;
 }
 
 }  // namespace
@@ -114,6 +153,20 @@ std::vector<Link> RelativeLinks(const std::string& markdown) {
   return links;
 }
 
+std::vector<CodePath> CodePaths(const std::string& markdown) {
+  static const std::regex path_word(R"(^[^\s]*/[^\s]*$)");
+  std::vector<CodePath> paths;
+  for (const auto& [n, line] : ProseLines(markdown)) {
+    for (const CodeSpan& span : CodeSpans(line)) {
+      if (!std::regex_match(span.text, path_word) || span.text.find("://") != std::string::npos) {
+        continue;
+      }
+      paths.push_back({n, span.text});
+    }
+  }
+  return paths;
+}
+
 std::vector<std::string> BrokenLinks(const std::filesystem::path& file) {
   std::vector<std::string> broken;
   for (const Link& link : RelativeLinks(app::ReadTextFile(file.string()))) {
@@ -136,6 +189,37 @@ std::vector<std::string> BrokenLinks(const std::filesystem::path& file) {
     }
   }
   return broken;
+}
+
+std::vector<std::string> OutsideRepository(const std::filesystem::path& file,
+                                           const std::filesystem::path& root) {
+  const std::string markdown = app::ReadTextFile(file.string());
+  std::vector<std::pair<int, std::string>> found;  // line, "<cited>: outside ... (<where>)"
+  const auto outside = [](const std::string& cited, const std::filesystem::path& where) {
+    return cited + ": outside the repository (" + where.lexically_normal().string() + ")";
+  };
+  for (const Link& link : RelativeLinks(markdown)) {
+    const std::string path = link.target.substr(0, link.target.find('#'));
+    if (path.empty()) continue;
+    const std::filesystem::path resolved = file.parent_path() / path;
+    if (!IsInside(resolved, root)) found.emplace_back(link.line, outside(link.target, resolved));
+  }
+  for (const CodePath& code : CodePaths(markdown)) {
+    const std::filesystem::path path = code.path;
+    const bool leaves =
+        path.is_absolute() ? IsForeignAbsoluteFile(path) : !IsInside(root / path, root);
+    if (leaves) {
+      found.emplace_back(code.line,
+                         outside("`" + code.path + "`", path.is_absolute() ? path : root / path));
+    }
+  }
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::string> lines;
+  for (const auto& [n, what] : found) {
+    lines.push_back(file.string() + ":" + std::to_string(n) + ": " + what);
+  }
+  return lines;
 }
 
 }  // namespace towsim::docs
