@@ -49,9 +49,8 @@ struct CableDragLaw {
 //   h_n = -1/2 mu G(Re_n) V_n,                h_t = -pi mu Nu(Re_t) V_t,
 // constant coefficients:
 //   h_n = -1/2 rho C_n d |V_n| V_n,           h_t = -1/2 rho C_t pi d |V_t| V_t.
-// Both are h = -s g(|V|) V per direction with s g and s |V| dg/d|V| from one table (a constant
-// coefficient is G = C_n Re, Nu = C_t Re / 2 in the first form). Jacobians df/dV and df/da
-// (3 x 3) when asked.
+// The constant law is the first form with G = C_n Re and Nu = C_t Re / 2 (one code for both).
+// Jacobians df/dV and df/da (3 x 3) when asked.
 // Why per stretched length: drag acts on the wetted surface, and a stretched cable of constant
 // diameter d presents d |a| dx of it per unstretched dx. MoorDyn 2.7.1 (Line.cpp) takes it per
 // unstretched segment length instead; the two differ by the strain (0.01-0.2 % here).
