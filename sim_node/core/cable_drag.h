@@ -3,9 +3,12 @@
 // false is Choo & Casarella's C_Dn(Re), Nu(Re) (paper Eq. 17-20), true the constant
 // coefficients of a line type in the same form with mu = 1:
 //   G = rho d C_n |V_n|,  Nu = 1/2 rho d C_t |V_t|,  Re G' = G,  Re Nu' = Nu,
-// so that h = -1/2 mu G V_n - pi mu Nu V_t is -1/2 rho C_n d |V_n| V_n - 1/2 rho C_t pi d |V_t| V_t.
+// so that h = -1/2 mu G V_n - pi mu Nu V_t is
+//   -1/2 rho C_n d |V_n| V_n - 1/2 rho C_t pi d |V_t| V_t.
 // One body for both; each law is instantiated in its own file (hydrodynamics.cc,
-// constant_drag.cc), so that the default law compiles to the code it had before line types.
+// constant_drag.cc), so that the default law compiles to the code it had before line types
+// (two instantiations in one file share Eigen's out-of-line helpers: 1.5 % more instructions
+// per Jacobian evaluation, measured).
 
 #include <cmath>
 
@@ -70,10 +73,8 @@ DragResult CableDragOf(const FluidProperties& fluid, const CableDragLaw& law, do
 }
 
 extern template DragResult CableDragOf<false>(const FluidProperties&, const CableDragLaw&, double,
-                                              const Eigen::Vector3d&, const Eigen::Vector3d&,
-                                              bool);
+                                              const Eigen::Vector3d&, const Eigen::Vector3d&, bool);
 extern template DragResult CableDragOf<true>(const FluidProperties&, const CableDragLaw&, double,
-                                             const Eigen::Vector3d&, const Eigen::Vector3d&,
-                                             bool);
+                                             const Eigen::Vector3d&, const Eigen::Vector3d&, bool);
 
 }  // namespace towsim::core

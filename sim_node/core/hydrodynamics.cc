@@ -1,11 +1,11 @@
 #include "core/hydrodynamics.h"
 
-#include "core/cable_drag.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+
+#include "core/cable_drag.h"
 
 namespace towsim::core {
 namespace {
