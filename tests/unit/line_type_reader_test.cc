@@ -11,6 +11,7 @@
 
 #include "core/model.h"
 #include "scene/config_error.h"
+#include "scene/line_type_reader.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::scene {
@@ -285,6 +286,22 @@ TEST(LineTypeReader, AStiffnessTheWeightsWouldStretchBeyondHalfIsFlagged) {
   EXPECT_EQ(
       Load(Scene(kTether, "  line_type: tether\n  axial_stiffness: 400\n")).cable.axial_stiffness,
       400.0);
+}
+
+// T_min of the check: half the cable's weight in water plus the spheres hanging on it; on a
+// seabed (which may carry the cable) the spheres only
+TEST(LineTypeReader, MinimumTensionOfTheSteadyTow) {
+  core::Model m = LoadScene(kScenesDir + "/steady_tow.yaml");
+  // cable: (1300 - 1025) kg/m^3 x 1.32025e-3 m^2 x 9.81 x 200 m / 2 = 356.17 N;
+  // sphere: (416 - 1025 x 0.2) kg x 9.81 = 2069.91 N
+  constexpr double kTol = 0.01;  // [N], the hand values' rounding
+  EXPECT_NEAR(internal::MinimumTension(m.cable, m), 356.17 + 2069.91, kTol);
+  m.environment.seabed = core::Seabed::Flat(300.0);
+  EXPECT_NEAR(internal::MinimumTension(m.cable, m), 2069.91, kTol);
+  // a free end carries nothing: the cable's half only
+  m.environment.seabed = core::Seabed();
+  m.cable.end.kind = core::EndKind::kFree;
+  EXPECT_NEAR(internal::MinimumTension(m.cable, m), 356.17, kTol);
 }
 
 }  // namespace
