@@ -1,6 +1,8 @@
 // Line types (scene/line_type_reader.h, docs/scene_format.md "Line types"): the keys, where a
 // name is looked up, the cable over the type, --set, and the messages of every rule.
 
+#include "scene/line_type_reader.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -11,7 +13,6 @@
 
 #include "core/model.h"
 #include "scene/config_error.h"
-#include "scene/line_type_reader.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::scene {
