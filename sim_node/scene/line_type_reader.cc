@@ -131,14 +131,15 @@ core::CableDragLaw ReadDrag(const MapReader* cable, const MapReader* type) {
       if (k == 0 || !maps[0]) return law;  // a law: as a whole
       break;
     }
-    if (!field.node().IsMap()) field.Fail("must be choo_casarella or {normal: C_n, tangential: C_t}");
+    if (!field.node().IsMap())
+      field.Fail("must be choo_casarella or {normal: C_n, tangential: C_t}");
     maps[k].emplace(field, MapKind::kLineDrag);
   }
   if (!maps[0] && !maps[1]) return law;
   law.kind = core::CableDragLaw::kConstant;
   const MapReader& own = maps[0] ? *maps[0] : *maps[1];
-  for (const auto& [key, value] : {std::pair{"normal", &law.normal},
-                                   std::pair{"tangential", &law.tangential}}) {
+  for (const auto& [key, value] :
+       {std::pair{"normal", &law.normal}, std::pair{"tangential", &law.tangential}}) {
     const MapReader& from = own.Has(key) || !maps[1] ? own : *maps[1];
     *value = from.Number(key, Range::AtLeast(0.0));
   }

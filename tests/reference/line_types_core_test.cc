@@ -208,7 +208,8 @@ TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
   EXPECT_NEAR(anchor.z(), kVAnchor, kJumperRelTol * kVAnchor);
   // the jumper's EI matters at this tolerance: without it (a chain of the same EA and weight)
   // the horizontal force is off by more than the tolerance
-  const double h0 = std::abs(core::Simulation(Jumper({"cable.bending_stiffness=0"})).end_force(1).x());
+  const double h0 =
+      std::abs(core::Simulation(Jumper({"cable.bending_stiffness=0"})).end_force(1).x());
   std::printf("jumper without EI: H %.1f N (%+.2e)\n", h0, h0 / kH - 1);
   EXPECT_GT(std::abs(h0 / kH - 1), kJumperRelTol);
 }
