@@ -13,8 +13,9 @@ line-type drag, docs/physics.md "Drag", given to it with --set cable.drag=...; M
 CdAx): the values that match Choo & Casarella's laws on this tow's steady shape (the scene's
 own drag law, docs/benchmarks.md "Against MoorDyn"). The two codes then solve the same model
 but for where the drag acts (towsim per stretched length, MoorDyn per unstretched length: the
-strain, 1e-4 here); each is still measured against its OWN converged reference, so that the
-errors are each code's discretization error.
+strain, 0.2-0.7 % along this cable: towsim's top tension is 0.25 % higher, --side-by-side);
+each is still measured against its OWN converged reference, so that the errors are each code's
+discretization error.
 
 Measures (each code against its reference, the sphere's position relative to the towing point,
 towsim's world frame):
@@ -307,6 +308,21 @@ def hyperfine_pair(cmd_a, cmd_b, runs, rounds, work, tag):
     return statistics.fmean(means_a), statistics.fmean(means_b), ratios, cpu_ratios
 
 
+def side_by_side(md, towsim):
+    """The end states of both codes with the same drag coefficients, each well resolved."""
+    md_run, ts_run = md.run(100, 160), towsim.run(*TOWSIM_REF)
+    if md_run is None or ts_run is None:
+        sys.exit("moordyn_compare: a side-by-side run failed or did not settle")
+    (r_md, f_md), (r_ts, f_ts) = md_run.final(), ts_run.final()
+    print(f"C_dn = {C_DN:g}, C_dt = {C_DT:g} in both codes, the state at t = {DURATION:g} s")
+    print(f"  MoorDyn 100 segments, dtM {OUTPUT_INTERVAL / 160:.4g} s: sphere "
+          f"({r_md[0]:.4f}, {r_md[1]:.4f}, {r_md[2]:.4f}) m, top tension {f_md:.2f} N")
+    print(f"  towsim {TOWSIM_REF[0]} elements, h {TOWSIM_REF[1]:g} s: sphere "
+          f"({r_ts[0]:.4f}, {r_ts[1]:.4f}, {r_ts[2]:.4f}) m, top tension {f_ts:.2f} N")
+    print(f"  apart: {math.dist(r_md, r_ts):.4f} m ({math.dist(r_md, r_ts) / LENGTH:.2e} L), "
+          f"tension {f_ts / f_md - 1.0:+.2e}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--driver", required=True)
@@ -315,9 +331,15 @@ def main():
     p.add_argument("--rounds", type=int, default=5)
     p.add_argument("--runs", type=int, default=5)
     p.add_argument("--out", default=os.path.join(ROOT, "bench/results/moordyn_compare.csv"))
+    p.add_argument("--side-by-side", action="store_true",
+                   help="only the two codes' end states with the same coefficients (MoorDyn 100 "
+                        "segments at dtM 0.2 s / 160, towsim 80 elements at 0.0125 s), no timing")
     a = p.parse_args()
     os.makedirs(a.work, exist_ok=True)
     towsim = Towsim(a.sim_node, a.work)
+    if a.side_by_side:
+        side_by_side(MoorDyn(a.driver, a.work), towsim)
+        return
 
     print(f"towsim reference (80 elements, h 0.0125 s); both codes: C_dn = {C_DN:g}, "
           f"C_dt = {C_DT:g}", flush=True)
