@@ -134,10 +134,10 @@ std::string FindSimNode() {
 
 int Run(const Options& o) {
   // the sweep file, its scene, its results (exit 2 for any rule broken)
-  towsim::scene::SweepSpec spec;
+  towsim::app::SweepSpec spec;
   std::vector<towsim::app::SweepCase> cases;
   try {
-    spec = towsim::scene::LoadSweepFile(o.file);
+    spec = towsim::app::LoadSweepFile(o.file);
     const towsim::core::Model model = towsim::scene::LoadScene(spec.scene);
     std::vector<std::string> bodies;
     for (const auto& s : model.bodies) bodies.push_back(s.name);
