@@ -81,26 +81,17 @@ struct Content {
 // the one dispatch of the content records: parses `r` into `out` if it is a schema, channel,
 // metadata or message record of a kind in `kinds`; false (nothing read) for any other record
 bool ParseContent(const std::string& b, const RecordView& r, unsigned kinds, Content& out) {
-  switch (r.op) {
-    case Op::kSchema:
-      if (!(kinds & kSchemas)) return false;
-      out.schemas.push_back(ParseSchema(b, r));
-      return true;
-    case Op::kChannel:
-      if (!(kinds & kChannels)) return false;
-      out.channels.push_back(ParseChannel(b, r));
-      return true;
-    case Op::kMetadata:
-      if (!(kinds & kMetadata)) return false;
-      out.metadata.push_back(ParseMetadata(b, r));
-      return true;
-    case Op::kMessage:
-      if (!(kinds & kMessages)) return false;
-      out.messages.push_back(ParseMessage(b, r));
-      return true;
-    default:
-      return false;
-  }
+  const unsigned kind = r.op == Op::kSchema     ? kSchemas
+                        : r.op == Op::kChannel  ? kChannels
+                        : r.op == Op::kMetadata ? kMetadata
+                        : r.op == Op::kMessage  ? kMessages
+                                                : 0u;
+  if ((kind & kinds) == 0u) return false;
+  if (kind == kSchemas) out.schemas.push_back(ParseSchema(b, r));
+  if (kind == kChannels) out.channels.push_back(ParseChannel(b, r));
+  if (kind == kMetadata) out.metadata.push_back(ParseMetadata(b, r));
+  if (kind == kMessages) out.messages.push_back(ParseMessage(b, r));
+  return true;
 }
 
 // keeps what was parsed: a schema or channel replaces one of the same id, metadata add up
