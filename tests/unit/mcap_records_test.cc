@@ -61,12 +61,12 @@ TEST(McapRecordsTest, WalksAWrittenFileRecordByRecord) {
   const std::string b = WrittenFile();
   const std::vector<RecordView> records = Walk(b);
   // the data section, the summary (one group per record kind), its offsets, the footer
-  const std::vector<Op> expected = {
-      Op::kHeader,        Op::kSchema,        Op::kChannel,       Op::kMetadata,
-      Op::kChunk,         Op::kMessageIndex,  Op::kDataEnd,       Op::kSchema,
-      Op::kChannel,       Op::kStatistics,    Op::kMetadataIndex, Op::kChunkIndex,
-      Op::kSummaryOffset, Op::kSummaryOffset, Op::kSummaryOffset, Op::kSummaryOffset,
-      Op::kSummaryOffset, Op::kFooter};
+  const std::vector<Op> expected = {Op::kHeader,        Op::kSchema,        Op::kChannel,
+                                    Op::kMetadata,      Op::kChunk,         Op::kMessageIndex,
+                                    Op::kDataEnd,       Op::kSchema,        Op::kChannel,
+                                    Op::kStatistics,    Op::kMetadataIndex, Op::kChunkIndex,
+                                    Op::kSummaryOffset, Op::kSummaryOffset, Op::kSummaryOffset,
+                                    Op::kSummaryOffset, Op::kSummaryOffset, Op::kFooter};
   ASSERT_EQ(records.size(), expected.size());
   std::uint64_t pos = kMagicSize;
   for (std::size_t i = 0; i < records.size(); ++i) {
@@ -112,9 +112,8 @@ TEST(McapRecordsTest, StopsAtTheLastWholeRecordOfACutFile) {
     EXPECT_EQ(e.offset(), chunk);
     EXPECT_EQ(std::string(e.what()), "record (opcode 0x6) of " +
                                          std::to_string(kChunkFields + 3 * kMessageRecord) +
-                                         " bytes runs past the end (" +
-                                         std::to_string(chunk + 30) + ") (at byte offset " +
-                                         std::to_string(chunk) + ")");
+                                         " bytes runs past the end (" + std::to_string(chunk + 30) +
+                                         ") (at byte offset " + std::to_string(chunk) + ")");
   }
   EXPECT_EQ(ops, (std::vector<Op>{Op::kHeader, Op::kSchema, Op::kChannel, Op::kMetadata}));
   EXPECT_EQ(it.pos(), chunk);  // the end of the last whole record
@@ -126,8 +125,9 @@ TEST(McapRecordsTest, StopsAtTheLastWholeRecordOfACutFile) {
     at_prefix.Next();
     FAIL() << "a 4-byte record prefix was read";
   } catch (const McapError& e) {
-    EXPECT_EQ(std::string(e.what()), "truncated record header: need 8 bytes, 3 left (at byte offset " +
-                                         std::to_string(chunk + 1) + ")");
+    EXPECT_EQ(std::string(e.what()),
+              "truncated record header: need 8 bytes, 3 left (at byte offset " +
+                  std::to_string(chunk + 1) + ")");
   }
   EXPECT_EQ(at_prefix.pos(), chunk);
 }
@@ -152,9 +152,9 @@ TEST(McapRecordsTest, ACorruptLengthIsAnErrorAtItsRecord) {
     FAIL() << "a schema of 2^40 bytes was returned";
   } catch (const McapError& e) {
     EXPECT_EQ(e.offset(), schema);
-    EXPECT_EQ(std::string(e.what()), "record (opcode 0x3) of 1099511627776 bytes runs past the end (" +
-                                         std::to_string(bad.size()) + ") (at byte offset " +
-                                         std::to_string(schema) + ")");
+    EXPECT_EQ(std::string(e.what()),
+              "record (opcode 0x3) of 1099511627776 bytes runs past the end (" +
+                  std::to_string(bad.size()) + ") (at byte offset " + std::to_string(schema) + ")");
   }
   EXPECT_EQ(it.pos(), schema);
 
@@ -182,11 +182,10 @@ TEST(McapRecordsTest, ACorruptLengthIsAnErrorAtItsRecord) {
     FAIL() << "a message past the chunk's end was returned";
   } catch (const McapError& e) {
     EXPECT_EQ(e.offset(), last);
-    EXPECT_EQ(std::string(e.what()), "record (opcode 0x5) of " +
-                                         std::to_string(kMessageRecord - kRecordPrefixSize + 1) +
-                                         " bytes runs past the end (" +
-                                         std::to_string(chunk.end()) + ") (at byte offset " +
-                                         std::to_string(last) + ")");
+    EXPECT_EQ(std::string(e.what()),
+              "record (opcode 0x5) of " + std::to_string(kMessageRecord - kRecordPrefixSize + 1) +
+                  " bytes runs past the end (" + std::to_string(chunk.end()) +
+                  ") (at byte offset " + std::to_string(last) + ")");
   }
   EXPECT_EQ(walked, (std::vector<std::uint64_t>{records_begin, records_begin + kMessageRecord}));
 }

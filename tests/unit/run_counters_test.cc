@@ -1,5 +1,5 @@
-// RunCounters (app/run_counters): the sum over a RESET, and the summary line's exact text.
-#include "app/run_counters.h"
+// RunCounters (app/node/run_counters): the sum over a RESET, and the summary line's exact text.
+#include "app/node/run_counters.h"
 
 #include <optional>
 #include <string>
