@@ -71,6 +71,12 @@ towsim_add_test(sweep_table_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_table_test.cc
   LIBS towsim_sweep_lib)
 
+# the DDS node's counters and its summary line (app/node/run_counters): pure
+towsim_add_test(run_counters_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/run_counters_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/node/run_counters.cc)
+target_include_directories(run_counters_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node)
+
 # the node's run control (app/node/run_control): a pure state machine, no DDS
 towsim_add_test(run_control_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/run_control_test.cc

@@ -1,5 +1,6 @@
 # MCAP writer / reader (sim_node/io/mcap_*), issue 6
 towsim_add_test(mcap_test LABEL unit SOURCES mcap_test.cc LIBS towsim::io)
+towsim_add_test(mcap_records_test LABEL unit SOURCES mcap_records_test.cc LIBS towsim::io)
 
 # independent readers (tests/mcap_js, Node.js): @mcap/core opens a file our writer wrote; and
 # @mcap/core + @foxglove/rosmsg + @foxglove/rosmsg2-serialization decode a real recording

@@ -17,6 +17,7 @@
 #include "app/node/dds_pacer.h"
 #include "app/node/node_setup.h"
 #include "app/node/run_control.h"
+#include "app/node/run_counters.h"
 #include "app/node/strain_watch.h"
 #include "dds/command_arbiter.h"
 #include "dds/topic_names.h"
@@ -101,6 +102,10 @@ class DdsNode {
   uint8_t RunningState() const;
   void Output(const core::StepStatus& status, long wall_us);
   void Summary(double wall) const;
+  // the counters of this run (since the start or the last RESET)
+  RunCounters ThisRun() const;
+  // the process's: the runs before the last RESET, this one, and what no RESET clears
+  RunCounters Totals() const;
   // a rejected or clamped command on stderr (dds::CheckedCommand, dds::CheckedWinchCommand)
   template <class Checked>
   void NoteCommand(const Checked& c, int i);
@@ -127,11 +132,7 @@ class DdsNode {
   Clock::time_point last_status_wall_;
   Clock::time_point rtf_wall_;
   double rtf_sim_ = 0.0, rtf_ = 0.0;
-  long total_steps_ = 0;
-  double total_sim_time_ = 0.0;  // of the runs before the last reset [s]
-  int resets_ = 0;
-  uint64_t prior_received_ = 0, prior_rejected_ = 0, prior_clamped_ = 0, prior_failsafes_ = 0,
-           prior_timeouts_ = 0;
+  RunCounters before_reset_;  // the runs before the last RESET, and the RESETs
   int command_notes_ = 0;
   std::string awaited_note_;  // the last NoteAwaited() line
   // --winch script: commands on the winch's topic, rejected (received and rejected in the
@@ -471,7 +472,6 @@ bool DdsNode::DoStep() {
   }
   last_status_ = status;
   ++step_;
-  ++total_steps_;
   control_.Stepped();
 
   n_.endpoints->PublishState(sim, step_, n_.strides, /*all=*/false);
@@ -480,7 +480,7 @@ bool DdsNode::DoStep() {
 
   // achieved real-time factor over the last window
   const double window = Seconds(t1 - rtf_wall_);
-  if (window >= kRtfWindow || total_steps_ == 1) {
+  if (window >= kRtfWindow || before_reset_.steps + static_cast<long>(step_) == 1) {
     rtf_ = window > 0.0 ? (sim.time() - rtf_sim_) / window : 0.0;
     if (window >= kRtfWindow) {
       rtf_wall_ = t1;
@@ -509,12 +509,8 @@ bool DdsNode::DoReset() {
     std::fprintf(stderr, "sim_node: solver failure: %s\n", control_.failure().c_str());
     return false;
   }
-  total_sim_time_ += n_.sim->time();
-  prior_received_ += n_.arbiter->received();
-  prior_rejected_ += n_.arbiter->rejected();
-  prior_clamped_ += n_.arbiter->clamped();
-  prior_failsafes_ += n_.arbiter->failsafe_count();
-  prior_timeouts_ += n_.arbiter->lockstep_timeouts();
+  before_reset_ += ThisRun();
+  ++before_reset_.resets;
   *n_.sim = std::move(*fresh);
   n_.script.emplace(model_);
   n_.arbiter->Reset();
@@ -524,7 +520,6 @@ bool DdsNode::DoReset() {
   last_output_ = -1;
   control_.Reset();
   run_id_ = NewRunId(model_.name);
-  ++resets_;
   rtf_wall_ = Clock::now();
   rtf_sim_ = n_.sim->time();
   PublishInitial();
@@ -542,37 +537,37 @@ void DdsNode::Output(const core::StepStatus& status, long wall_us) {
   last_output_ = static_cast<long>(step_);
 }
 
+RunCounters DdsNode::ThisRun() const {
+  RunCounters c;
+  c.steps = static_cast<long>(step_);
+  c.sim_time = n_.sim->time();
+  c.received = n_.arbiter->received();
+  c.rejected = n_.arbiter->rejected();
+  c.clamped = n_.arbiter->clamped();
+  c.failsafes = n_.arbiter->failsafe_count();
+  c.lockstep_timeouts = n_.arbiter->lockstep_timeouts();
+  return c;
+}
+
+RunCounters DdsNode::Totals() const {
+  RunCounters c = before_reset_;
+  c += ThisRun();
+  c.overruns = pacer_.overruns();
+  c.unknown_commands = n_.unknown->count() + winch_script_rejected_;
+  return c;
+}
+
 void DdsNode::Summary(double wall) const {
-  const double sim_time = total_sim_time_ + n_.sim->time();
-  const double rtf = wall > 0.0 ? sim_time / wall : 0.0;
-  char line[640];
-  int n = std::snprintf(
-      line, sizeof line,
-      "sim_node: %s: %s, %ld steps, %.6g s simulated in %.3f s (RTF %.*f), overruns %llu, "
-      "failsafes %llu, commands %llu (rejected %llu, clamped %llu), lockstep timeouts %llu, "
-      "resets %d",
-      model_.name.c_str(), ModeName(opt_.mode), total_steps_, sim_time, wall, rtf < 10.0 ? 2 : 0,
-      rtf, static_cast<unsigned long long>(pacer_.overruns()),
-      static_cast<unsigned long long>(prior_failsafes_ + n_.arbiter->failsafe_count()),
-      static_cast<unsigned long long>(prior_received_ + n_.arbiter->received() +
-                                      n_.unknown->count() + winch_script_rejected_),
-      static_cast<unsigned long long>(prior_rejected_ + n_.arbiter->rejected() +
-                                      n_.unknown->count() + winch_script_rejected_),
-      static_cast<unsigned long long>(prior_clamped_ + n_.arbiter->clamped()),
-      static_cast<unsigned long long>(prior_timeouts_ + n_.arbiter->lockstep_timeouts()), resets_);
-  if (strain_.extreme() && n > 0 && n < static_cast<int>(sizeof line)) {
-    n += std::snprintf(line + n, sizeof line - n, "%s", strain_.SummaryPart().c_str());
-  }
-  if (n_.peers && !n_.peers->run_ids().empty() && n > 0 && n < static_cast<int>(sizeof line)) {
-    n += std::snprintf(line + n, sizeof line - n, ", other nodes in the namespace: %s",
-                       n_.peers->Names().c_str());
-  }
-  if (realtime() && pacer_.stats().count() > 0 && n > 0 && n < static_cast<int>(sizeof line)) {
+  std::optional<std::string> other_nodes;
+  if (n_.peers && !n_.peers->run_ids().empty()) other_nodes = n_.peers->Names();
+  std::optional<SummaryLateness> lateness;
+  if (realtime() && pacer_.stats().count() > 0) {
     const LatenessStats& l = pacer_.stats();
-    std::snprintf(line + n, sizeof line - n, ", lateness p50 %.0f us p99 %.0f us max %.0f us",
-                  1e6 * l.Quantile(0.50), 1e6 * l.Quantile(0.99), 1e6 * l.max());
+    lateness = SummaryLateness{l.Quantile(0.50), l.Quantile(0.99), l.max()};
   }
-  std::printf("%s\n", line);
+  const std::string line = NodeSummaryLine(model_.name, ModeName(opt_.mode), Totals(), wall,
+                                           strain_.SummaryPart(), other_nodes, lateness);
+  std::printf("%s\n", line.c_str());
   std::fflush(stdout);
 }
 
