@@ -18,16 +18,16 @@ Qos& Qos::operator=(Qos&& other) noexcept {
   return *this;
 }
 
-Qos ProfileQos(wire::QosProfile profile, int state_depth) {
+Qos QosOf(wire::QosProfile profile, int state_depth) {
   return Qos(wire::ProfileQos(profile, state_depth));
 }
 
-Qos StateQos(int depth) { return ProfileQos(wire::QosProfile::kState, depth); }
+Qos StateQos(int depth) { return QosOf(wire::QosProfile::kState, depth); }
 
-Qos CommandQos() { return ProfileQos(wire::QosProfile::kCommand); }
+Qos CommandQos() { return QosOf(wire::QosProfile::kCommand); }
 
-Qos ControlQos() { return ProfileQos(wire::QosProfile::kControl); }
+Qos ControlQos() { return QosOf(wire::QosProfile::kControl); }
 
-Qos SceneInfoQos() { return ProfileQos(wire::QosProfile::kLatched); }
+Qos SceneInfoQos() { return QosOf(wire::QosProfile::kLatched); }
 
 }  // namespace towsim::dds

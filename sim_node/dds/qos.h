@@ -25,7 +25,7 @@ class Qos {
 };
 
 // the QoS of a profile (wire::ProfileQos); `state_depth`: the history of a kState reader
-Qos ProfileQos(wire::QosProfile profile, int state_depth = 1);
+Qos QosOf(wire::QosProfile profile, int state_depth = 1);
 // history depth of the reader side, for readers that must not lose samples (tests, loggers)
 Qos StateQos(int depth = 1);
 Qos CommandQos();
