@@ -89,7 +89,7 @@ Args Parse(int argc, char** argv) {
     } else if (flag == "--bodies") {
       std::stringstream s(v);
       for (std::string b; std::getline(s, b, ',');) {
-        if (const std::string e = tdds::CheckBodyName(b); !e.empty()) {
+        if (const std::string e = towsim::wire::CheckBodyName(b); !e.empty()) {
           Usage("--bodies = " + v + ": " + e);
         }
         a.bodies.push_back(b);

@@ -14,7 +14,7 @@
 
 #include "dds/entities.h"
 #include "dds/messages.h"
-#include "dds/topic_names.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
@@ -23,7 +23,7 @@ class PeerNodes {
   // wall time given at start to discover a node that runs already [s]
   static constexpr double kStartWindow = 0.3;
 
-  PeerNodes(const dds::Participant& participant, const dds::TopicNames& names);
+  PeerNodes(const dds::Participant& participant, const wire::TopicNames& names);
 
   // takes what arrived; true if a node not seen before is among it
   bool Poll();
