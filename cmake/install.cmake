@@ -13,7 +13,7 @@
 #   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::wire, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
 #                              towsim::<name>), towsim_SIM_NODE, towsim_DATA_DIR, towsim_DDS_URI
-# The programs find P/share/towsim from their own location (sim_node/app/installed_data.h).
+# The programs find P/share/towsim from their own location (sim_node/app/common/installed_data.h).
 
 include(CMakePackageConfigHelpers)
 
@@ -37,8 +37,8 @@ foreach(_program IN LISTS TOWSIM_INSTALLED_PROGRAMS)
 endforeach()
 install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# the programs only other programs run: sim_node's DDS modes (sim_node/app/node_main.h), found
-# by sim_node at P/libexec/towsim (kPrivateProgramDir in sim_node/app/installed_data.h)
+# the programs only other programs run: sim_node's DDS modes (sim_node/app/node/node_main.h), found
+# by sim_node at P/libexec/towsim (kPrivateProgramDir in sim_node/app/common/installed_data.h)
 install(TARGETS sim_node_dds RUNTIME DESTINATION libexec/towsim)
 
 # the libraries a user's controllers and tests link

@@ -5,7 +5,7 @@
 #include <regex>
 #include <sstream>
 
-#include "app/text_file.h"
+#include "app/common/text_file.h"
 
 namespace towsim::docs {
 namespace {

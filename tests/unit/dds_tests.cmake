@@ -1,5 +1,5 @@
-# tests of the DDS layer: msgs/ (wire contract types), sim_node/dds/ (adapter) and the node loop's
-# pure parts (sim_node/app/dds_*). Included from tests/unit/CMakeLists.txt.
+# tests of the DDS layer: msgs/ (wire contract types), sim_node/dds/ (adapter) and the node
+# loop's pure parts (sim_node/app/node/dds_*). Included from tests/unit/CMakeLists.txt.
 towsim_add_test(towsim_msgs_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/towsim_msgs_test.cc
   LIBS towsim::msgs)
@@ -25,7 +25,7 @@ towsim_add_test(dds_command_arbiter_test LABEL unit
 
 towsim_add_test(dds_pacer_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_pacer_test.cc
-          ${PROJECT_SOURCE_DIR}/sim_node/app/dds_pacer.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/node/dds_pacer.cc
   LIBS towsim::core)
 target_include_directories(dds_pacer_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node)
 

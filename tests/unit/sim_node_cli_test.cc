@@ -463,7 +463,7 @@ TEST(SimNodeCliTest, SigtermStopsCleanly) {
   }
 }
 
-// --- the offline node and its DDS program (app/node_main.h; docs/benchmarks.md "Start-up") ----
+// --- the offline node and its DDS program (app/node/node_main.h; docs/benchmarks.md "Start-up") --
 
 // an offline run loads no DDS, iceoryx or OpenSSL library: the dynamic loader's own list of the
 // libraries it loads (LD_DEBUG=libs, written to LD_DEBUG_OUTPUT.<pid> for the shell and for

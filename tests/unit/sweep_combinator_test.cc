@@ -1,6 +1,6 @@
 // app/sweep_combinator: the cases of a sweep, product (first parameter slowest) or zip.
 
-#include "app/sweep_combinator.h"
+#include "app/sweep/sweep_combinator.h"
 
 #include <stdexcept>
 

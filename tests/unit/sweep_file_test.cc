@@ -1,15 +1,15 @@
-// scene/sweep_file: a sweep file -> SweepSpec. Values written out, ranges and seeded draws;
+// app/sweep/sweep_file: a sweep file -> SweepSpec. Values written out, ranges and seeded draws;
 // broken files fail with the key path, the value, file:line and the rule.
 
-#include "scene/sweep_file.h"
+#include "app/sweep/sweep_file.h"
 
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "app/sweep/sweep_values.h"
 #include "scene/config_error.h"
-#include "scene/sweep_values.h"
 
 namespace towsim::scene {
 namespace {

@@ -1,7 +1,7 @@
 // app/sweep_signals: the results of a case from its CSV files and summary line. The files are
 // written here with values whose statistics are known by hand.
 
-#include "app/sweep_signals.h"
+#include "app/sweep/sweep_signals.h"
 
 #include <cmath>
 #include <fstream>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/run_stats.h"
+#include "app/common/run_stats.h"
 #include "io/csv_writer.h"
 #include "scene/config_error.h"
 #include "temp_dir.h"

@@ -1,15 +1,15 @@
 // app/sweep_table, app/sweep_progress, app/sweep_plot: the table's columns and quoting, the
 // summary's counts, the progress line, the plot's points.
 
-#include "app/sweep_table.h"
+#include "app/sweep/sweep_table.h"
 
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "app/sweep_plot.h"
-#include "app/sweep_progress.h"
-#include "app/text_file.h"
+#include "app/common/text_file.h"
+#include "app/sweep/sweep_plot.h"
+#include "app/sweep/sweep_progress.h"
 #include "io/csv_reader.h"
 #include "temp_dir.h"
 

@@ -1,7 +1,7 @@
 // sim_node/app/tool_flags: the command lines of towsim_record, towsim_replay and
 // towsim_foxglove: "--name value", "--name=value", lists and the domain range.
 
-#include "app/tool_flags.h"
+#include "app/common/tool_flags.h"
 
 #include <cstdint>
 #include <string>
