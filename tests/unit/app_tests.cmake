@@ -23,10 +23,20 @@ towsim_add_test(foxglove_protocol_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc
   LIBS towsim::foxglove)
 
-# the command lines of the DDS tools (app/common/tool_flags)
+# the tools' command lines (app/common/tool_flags, tool_command_line) and the options the DDS
+# tools share (app/common/dds_tool_options)
 towsim_add_test(tool_flags_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/tool_flags_test.cc
+  LIBS towsim::tool_main)
+towsim_add_test(tool_command_line_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/tool_command_line_test.cc
+  LIBS towsim::tool_main)
+towsim_add_test(dds_tool_options_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_tool_options_test.cc
   LIBS towsim::recording)
+foreach(t tool_flags_test tool_command_line_test dds_tool_options_test)
+  target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_LIST_DIR})  # tool_argv.h
+endforeach()
 # the installed-scene lookup of sim_node --scene
 towsim_add_test(installed_data_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc

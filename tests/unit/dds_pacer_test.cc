@@ -1,4 +1,4 @@
-// sim_node/app/dds_pacer: the lateness statistics (the pacing itself is measured by the
+// sim_node/app/node/dds_pacer: the lateness statistics (the pacing itself is measured by the
 // benchmark, never gated on wall time here).
 
 #include "app/node/dds_pacer.h"

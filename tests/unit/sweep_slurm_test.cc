@@ -1,4 +1,4 @@
-// app/sweep_slurm: the --array indices of the cases to run. (The Slurm runner itself runs
+// app/sweep/sweep_slurm: the --array indices of the cases to run. (The Slurm runner itself runs
 // against a real cluster in tests/integration/sweep_slurm_test.sh.)
 
 #include "app/sweep/sweep_slurm.h"

@@ -1,5 +1,5 @@
-// app/sweep_table, app/sweep_progress, app/sweep_plot: the table's columns and quoting, the
-// summary's counts, the progress line, the plot's points.
+// app/sweep/sweep_table, app/sweep/sweep_progress, app/sweep/sweep_plot: the table's columns and
+// quoting, the summary's counts, the progress line, the plot's points.
 
 #include "app/sweep/sweep_table.h"
 
@@ -16,11 +16,11 @@
 namespace towsim::app {
 namespace {
 
-scene::SweepSpec Spec() {
-  scene::SweepSpec spec;
+SweepSpec Spec() {
+  SweepSpec spec;
   spec.name = "s.yaml";
   spec.parameters = {{"cable.elements", {"10", "20"}, ""}, {"cable.start.at", {"[0, 0, 1]"}, ""}};
-  scene::SweepResult r;
+  SweepResult r;
   r.name = "depth";
   r.signal = "towfish.depth";
   r.stat = "final";

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-namespace towsim::scene {
+namespace towsim::app {
 namespace {
 
 TEST(SweepValues, RangesIncludeTheirEndAndDoNotAccumulate) {
@@ -68,4 +68,4 @@ TEST(SweepValues, DrawsHaveTheirDistributionsMoments) {
 }
 
 }  // namespace
-}  // namespace towsim::scene
+}  // namespace towsim::app

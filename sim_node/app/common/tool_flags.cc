@@ -1,14 +1,11 @@
 #include "app/common/tool_flags.h"
 
-#include <cstdlib>
-
-#include "wire/topic_names.h"
-
 namespace towsim::app {
 
 bool ToolFlags::Next() {
   if (++i_ >= argc_) return false;
   arg_ = argv_[i_];
+  raw_ = arg_;
   has_inline_ = false;
   inline_value_.clear();
   if (const auto eq = arg_.find('='); arg_.rfind("--", 0) == 0 && eq != std::string::npos) {
@@ -49,50 +46,15 @@ std::vector<std::string> ToolFlags::List() {
   return out;
 }
 
-std::string ParseDomain(const std::string& text, uint32_t* domain) {
-  char* end = nullptr;
-  const long d = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || d < 0 || d > 232) {
-    return "--domain " + text + ": must be an integer from 0 to 232";
-  }
-  *domain = static_cast<uint32_t>(d);
-  return "";
-}
-
 std::vector<std::string> TopicList(const std::vector<std::string>& values) {
   std::vector<std::string> out;
   for (const std::string& t : values) out.push_back(t[0] == '/' ? t : "/" + t);
   return out;
 }
 
-bool ReadDdsToolOption(ToolFlags& flags, const DdsToolFields& f, std::string* error) {
-  const std::string& arg = flags.arg();
-  std::string v;
-  if (arg == "--quiet") {
-    *f.quiet = true;
-  } else if (arg == "--security") {
-    if (!flags.Value(&v) || v.empty()) {
-      *error = "--security needs DIR/NAME";
-    } else {
-      *f.security = v;
-    }
-  } else if (arg == "--domain") {
-    if (!flags.Value(&v)) {
-      *error = "--domain needs a value";
-    } else {
-      *error = ParseDomain(v, f.domain);
-      if (error->empty() && f.has_domain != nullptr) *f.has_domain = true;
-    }
-  } else if (arg == "--namespace") {
-    if (!flags.Value(f.ns)) {
-      *error = "--namespace needs a value";
-    } else if (const std::string e = wire::CheckNamespace(*f.ns); !e.empty()) {
-      *error = "--namespace " + *f.ns + ": " + e;
-    }
-  } else {
-    return false;
-  }
-  return true;
+std::string ReadTopics(ToolFlags& flags, std::vector<std::string>* topics) {
+  for (const std::string& t : TopicList(flags.List())) topics->push_back(t);
+  return topics->empty() ? "--topics needs at least one topic" : "";
 }
 
 }  // namespace towsim::app

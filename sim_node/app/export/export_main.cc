@@ -8,10 +8,13 @@
 #include <cstring>
 #include <exception>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
+#include "app/common/exit_codes.h"
+#include "app/common/tool_command_line.h"
 #include "app/export/export_csv.h"
 #include "app/export/export_info.h"
 #include "io/cdr_reader.h"
@@ -20,10 +23,10 @@
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;
-constexpr int kExitBadInput = 2;
-constexpr int kExitRecoveredWithLosses = 4;
+using towsim::app::kExitBadInput;
+using towsim::app::kExitError;
+using towsim::app::kExitIncomplete;
+using towsim::app::kExitOk;
 
 constexpr char kUsage[] =
     "usage: towsim_export FILE.mcap [--csv DIR] [--info] [--namespace NS] [--recover]\n"
@@ -35,72 +38,69 @@ constexpr char kUsage[] =
     "  --help            print this and exit\n"
     "At least one of --csv and --info.\n";
 
-int Usage(const std::string& error) {
-  std::fprintf(stderr, "towsim_export: error: %s\n%s", error.c_str(), kUsage);
-  return kExitBadInput;
+struct Options {
+  std::string file, csv_dir, ns = "/towsim";
+  bool info = false, recover = false;
+};
+
+// the options, read into `o`; --help answers at once and "--info=1" is not --info, as before
+towsim::app::ToolCommandLine CommandLine(Options* o) {
+  towsim::app::ToolCommandLine line("towsim_export", kUsage);
+  line.HelpAtOnce()
+      .FlagsTakeNoValue()
+      .Value(
+          "--csv",
+          [o](const std::string& v) -> std::string {
+            o->csv_dir = v;
+            return v.empty() ? "--csv needs a directory" : "";
+          },
+          "--csv needs a directory")
+      .Value(
+          "--namespace",
+          [o](const std::string& v) -> std::string {
+            if (v.empty() || v[0] != '/') return "--namespace = '" + v + "': must start with '/'";
+            o->ns = v.size() > 1 && v.back() == '/' ? v.substr(0, v.size() - 1) : v;
+            return "";
+          },
+          "--namespace = '': must start with '/'")
+      .Flag("--info", &o->info)
+      .Flag("--recover", &o->recover)
+      .Others([o](const towsim::app::ToolFlags& flags) -> std::string {
+        const std::string& arg = flags.arg();
+        if (arg.rfind("-", 0) == 0) return towsim::app::UnknownOption(flags);
+        if (!o->file.empty()) return "more than one file: '" + o->file + "' and '" + arg + "'";
+        o->file = arg;
+        return "";
+      })
+      .Require([o]() -> std::string { return o->file.empty() ? "no recording given" : ""; })
+      .Require([o]() -> std::string {
+        return o->csv_dir.empty() && !o->info ? "nothing to do: give --csv DIR and / or --info"
+                                              : "";
+      });
+  return line;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string file, csv_dir, ns = "/towsim";
-  bool info = false, recover = false;
-  for (int i = 1; i < argc; ++i) {
-    std::string arg = argv[i], value;
-    bool has_value = false;
-    if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos) {
-      value = arg.substr(arg.find('=') + 1);
-      arg = arg.substr(0, arg.find('='));
-      has_value = true;
-    }
-    // the option's value: after '=' or the next argument
-    auto take = [&]() -> bool {
-      if (has_value) return true;
-      if (i + 1 >= argc) return false;
-      value = argv[++i];
-      return true;
-    };
-    if (arg == "--help" || arg == "-h") {
-      std::printf("%s", kUsage);
-      return kExitOk;
-    } else if (arg == "--csv") {
-      if (!take() || value.empty()) return Usage("--csv needs a directory");
-      csv_dir = value;
-    } else if (arg == "--namespace") {
-      if (!take() || value.empty() || value[0] != '/') {
-        return Usage("--namespace = '" + value + "': must start with '/'");
-      }
-      ns = value.size() > 1 && value.back() == '/' ? value.substr(0, value.size() - 1) : value;
-    } else if (arg == "--info" && !has_value) {
-      info = true;
-    } else if (arg == "--recover" && !has_value) {
-      recover = true;
-    } else if (arg.rfind("-", 0) == 0) {
-      return Usage("unknown option '" + arg + "'");
-    } else if (file.empty()) {
-      file = arg;
-    } else {
-      return Usage("more than one file: '" + file + "' and '" + arg + "'");
-    }
-  }
-  if (file.empty()) return Usage("no recording given");
-  if (csv_dir.empty() && !info) return Usage("nothing to do: give --csv DIR and / or --info");
-
+  Options o;
+  if (const std::optional<int> exit = CommandLine(&o).Read(argc, argv)) return *exit;
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec)) {
-    std::fprintf(stderr, "towsim_export: error: %s: not a readable file\n", file.c_str());
+  if (!std::filesystem::is_regular_file(o.file, ec)) {
+    std::fprintf(stderr, "towsim_export: error: %s: not a readable file\n", o.file.c_str());
     return kExitBadInput;
   }
   try {
     using towsim::io::McapReader;
-    const McapReader reader = recover ? McapReader::Recover(file) : McapReader::Open(file);
-    if (info) std::printf("%s", towsim::app::RecordingInfo(reader, file, recover).c_str());
-    if (!csv_dir.empty()) {
-      const auto n = towsim::app::ExportCsv(reader, csv_dir, ns);
+    const McapReader reader = o.recover ? McapReader::Recover(o.file) : McapReader::Open(o.file);
+    if (o.info) std::printf("%s", towsim::app::RecordingInfo(reader, o.file, o.recover).c_str());
+    if (!o.csv_dir.empty()) {
+      const auto n = towsim::app::ExportCsv(reader, o.csv_dir, o.ns);
       std::fprintf(stderr,
                    "towsim_export: %s -> %s: bodies %llu rows, cable %llu, forces %llu, status "
                    "%llu%s\n",
-                   file.c_str(), csv_dir.c_str(), static_cast<unsigned long long>(n.bodies_rows),
+                   o.file.c_str(), o.csv_dir.c_str(),
+                   static_cast<unsigned long long>(n.bodies_rows),
                    static_cast<unsigned long long>(n.cable_rows),
                    static_cast<unsigned long long>(n.forces_rows),
                    static_cast<unsigned long long>(n.status_rows),
@@ -110,21 +110,22 @@ int main(int argc, char** argv) {
     }
     if (!reader.skipped().empty()) {
       for (const towsim::io::McapSkipped& skipped : reader.skipped()) {
-        std::fprintf(stderr, "towsim_export: %s: skipped %s\n", file.c_str(),
+        std::fprintf(stderr, "towsim_export: %s: skipped %s\n", o.file.c_str(),
                      towsim::io::DescribeSkipped(skipped).c_str());
       }
       std::fprintf(stderr,
                    "towsim_export: %s: recovered %llu messages in %zu chunks; %zu byte ranges "
                    "lost (exit 4)\n",
-                   file.c_str(), static_cast<unsigned long long>(reader.statistics().message_count),
+                   o.file.c_str(),
+                   static_cast<unsigned long long>(reader.statistics().message_count),
                    reader.chunk_indexes().size(), reader.skipped().size());
-      return kExitRecoveredWithLosses;
+      return kExitIncomplete;
     }
   } catch (const towsim::io::mcap::McapError& e) {
-    std::fprintf(stderr, "towsim_export: error: %s: %s\n", file.c_str(), e.what());
+    std::fprintf(stderr, "towsim_export: error: %s: %s\n", o.file.c_str(), e.what());
     return kExitBadInput;
   } catch (const towsim::io::cdr::CdrError& e) {
-    std::fprintf(stderr, "towsim_export: error: %s: %s\n", file.c_str(), e.what());
+    std::fprintf(stderr, "towsim_export: error: %s: %s\n", o.file.c_str(), e.what());
     return kExitBadInput;
   } catch (const std::invalid_argument& e) {
     std::fprintf(stderr, "towsim_export: error: %s\n", e.what());

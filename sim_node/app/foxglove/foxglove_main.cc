@@ -28,7 +28,7 @@
 // positive angular.z, a positive rudder turns to starboard); elevator = linear.z [rad]; an
 // all-zero Twist stops (thrust 0, fins centred).
 //
-// With --security DIR/NAME its participant runs DDS Security with that identity (dds/security.h,
+// With --security DIR/NAME its participant runs DDS Security with that identity (wire/security.h,
 // docs/security.md); clientPublish then needs an identity allowed to command
 // (scripts/security.sh NAME:BODY,...,sim_control).
 // Binds 127.0.0.1 unless --address says otherwise. Prints on stdout, once listening:
@@ -46,13 +46,16 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/common/dds_tool_options.h"
 #include "app/common/dds_uri.h"
+#include "app/common/exit_codes.h"
 #include "app/common/mcap_recording.h"
 #include "app/common/stop_signal.h"
-#include "app/common/tool_flags.h"
+#include "app/common/tool_command_line.h"
 #include "app/common/topic_types.h"
 #include "app/foxglove/foxglove_commands.h"
 #include "app/foxglove/foxglove_server.h"
@@ -65,9 +68,9 @@
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;
-constexpr int kExitBadInput = 2;
+using towsim::app::kExitBadInput;
+using towsim::app::kExitError;
+using towsim::app::kExitOk;
 constexpr double kWaitSlice = 0.02;      // longest wait between checks [s]
 constexpr double kSceneHintAfter = 3.0;  // say what it waits for after [s]
 constexpr int kReaderDepth = 16;         // keep-last history of a bridge reader
@@ -95,46 +98,32 @@ struct Options {
   int port = -1;
   std::string address = "127.0.0.1";
   bool quiet = false;
-  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
+  std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
-int Bad(const std::string& message) {
-  std::fprintf(stderr, "towsim_foxglove: error: %s\n\n%s", message.c_str(), kUsage);
-  return kExitBadInput;
-}
-
-// "" on success, else the error
-std::string Parse(int argc, char** argv, Options* o, bool* help) {
-  towsim::app::ToolFlags flags(argc, argv);
-  const towsim::app::DdsToolFields dds_fields{&o->domain, &o->ns, &o->security, &o->quiet,
-                                              &o->has_domain};
-  while (flags.Next()) {
-    const std::string& arg = flags.arg();
-    std::string v;
-    if (std::string e; towsim::app::ReadDdsToolOption(flags, dds_fields, &e)) {
-      if (!e.empty()) return e;
-      continue;
-    }
-    if (arg == "--help" || arg == "-h") {
-      *help = true;
-    } else if (arg == "--port") {
-      if (!flags.Value(&v)) return "--port needs a value";
-      char* end = nullptr;
-      const long port = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end != '\0' || port < 0 || port > 65535) {
-        return "--port " + v + ": must be an integer from 0 to 65535";
-      }
-      o->port = static_cast<int>(port);
-    } else if (arg == "--address") {
-      if (!flags.Value(&o->address) || o->address.empty()) return "--address needs a value";
-    } else {
-      return "unknown option '" + arg + "'";
-    }
-  }
-  if (*help) return "";
-  if (!o->has_domain) return "missing --domain N";
-  if (o->port < 0) return "missing --port PORT";
-  return "";
+// the options, read into `o`
+towsim::app::ToolCommandLine CommandLine(Options* o) {
+  towsim::app::ToolCommandLine line("towsim_foxglove", kUsage);
+  line.Shared(towsim::app::DdsToolOptions(
+                  {&o->domain, &o->ns, &o->security, &o->quiet, &o->has_domain}))
+      .Value("--port",
+             [o](const std::string& v) -> std::string {
+               char* end = nullptr;
+               const long port = std::strtol(v.c_str(), &end, 10);
+               if (v.empty() || *end != '\0' || port < 0 || port > 65535) {
+                 return "--port " + v + ": must be an integer from 0 to 65535";
+               }
+               o->port = static_cast<int>(port);
+               return "";
+             })
+      .Value("--address",
+             [o](const std::string& v) -> std::string {
+               o->address = v;
+               return v.empty() ? "--address needs a value" : "";
+             })
+      .Require([o]() -> std::string { return o->has_domain ? "" : "missing --domain N"; })
+      .Require([o]() -> std::string { return o->port < 0 ? "missing --port PORT" : ""; });
+  return line;
 }
 
 // the simulation time of a sample [ns]: the stamp of its header (every towsim type starts
@@ -330,12 +319,7 @@ int Bridge::Run() {
 
 int main(int argc, char** argv) {
   Options options;
-  bool help = false;
-  if (const std::string e = Parse(argc, argv, &options, &help); !e.empty()) return Bad(e);
-  if (help) {
-    std::fputs(kUsage, stdout);
-    return kExitOk;
-  }
+  if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
   towsim::app::InstallStopHandlers();
   const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_foxglove");
   std::unique_ptr<Bridge> bridge;

@@ -9,6 +9,7 @@
 #include <string>
 #include <system_error>
 
+#include "app/common/exit_codes.h"
 #include "app/common/installed_data.h"
 
 namespace towsim::app {
@@ -31,7 +32,7 @@ int ExecDdsProgram(Mode mode, char** argv) {
     std::fprintf(stderr,
                  "sim_node: error: --mode %s: cannot find this program (/proc/self/exe: %s)\n",
                  ModeName(mode), ec.message().c_str());
-    return 1;
+    return kExitError;
   }
   std::string looked;
   for (const fs::path& program : DdsProgramCandidates(exe)) {
@@ -39,7 +40,7 @@ int ExecDdsProgram(Mode mode, char** argv) {
       ::execv(program.c_str(), argv);
       std::fprintf(stderr, "sim_node: error: --mode %s: cannot start %s: %s\n", ModeName(mode),
                    program.c_str(), std::strerror(errno));
-      return 1;
+      return kExitError;
     }
     looked += (looked.empty() ? "" : ", ") + program.string();
   }
@@ -48,7 +49,7 @@ int ExecDdsProgram(Mode mode, char** argv) {
       "sim_node: error: --mode %s: the DDS modes run in %s, which is not installed (looked "
       "for %s); --mode offline needs no DDS\n",
       ModeName(mode), kDdsProgramName, looked.c_str());
-  return 1;
+  return kExitError;
 }
 
 }  // namespace towsim::app

@@ -66,7 +66,7 @@ class NodeEndpoints {
   // blocks until a command or a control request is available, or `timeout` [s]
   void WaitForInput(double timeout);
 
-  // every reader and writer of the node's topics (its ROS 2 graph entry, dds/ros_graph.h)
+  // every reader and writer of the node's topics (its ROS 2 graph entry, wire/ros_graph.h)
   std::vector<dds_entity_t> readers() const;
   std::vector<dds_entity_t> writers() const;
 

@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "app/common/exit_codes.h"
 #include "app/common/installed_data.h"
 #include "app/common/stop_signal.h"
 #include "app/node/dds_program.h"
@@ -15,10 +16,6 @@
 
 namespace towsim::app {
 namespace {
-
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;  // unexpected (e.g. a CSV write failed: disk full)
-constexpr int kExitBadInput = 2;
 
 std::string FormatSeconds(double s) {
   char text[32];
@@ -60,8 +57,7 @@ int Run(const Options& options, DdsModeRunner run_dds) {
   }
   if (model.name.empty()) model.name = std::filesystem::path(scene).stem().string();
   if (options.winch && !model.cable.winch) {
-    std::fprintf(stderr,
-                 "sim_node: error: --winch %s: the scene %s has no winch (cable.winch)\n",
+    std::fprintf(stderr, "sim_node: error: --winch %s: the scene %s has no winch (cable.winch)\n",
                  options.winch->c_str(), scene.c_str());
     return kExitBadInput;
   }

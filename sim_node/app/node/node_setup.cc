@@ -22,7 +22,7 @@ namespace {
 // expired), stopping would take a second per writer. The node's exit waits 10 ms per writer.
 constexpr const char* kLingerConfig =
     "<Internal><WriterLingerDuration>10ms</WriterLingerDuration></Internal>";
-constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (dds/ros_graph.h)
+constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (wire/ros_graph.h)
 
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "app/common/exit_codes.h"
 #include "app/common/mcap_recording.h"
 #include "app/foxglove/foxglove_server.h"
 #include "app/node/dds_node.h"
@@ -26,10 +27,7 @@
 
 namespace towsim::app {
 
-inline constexpr int kExitOk = 0;
-inline constexpr int kExitError = 1;  // an output (CSV, recording) could not be written
-inline constexpr int kExitBadInput = 2;
-inline constexpr int kExitSolver = 3;
+// the exit codes are app/common/exit_codes.h's; this one never leaves the node
 inline constexpr int kExitStoppedInSetup = -1;  // a signal stopped the setup (the node exits 0)
 
 // the node's parts, in the order they are built (and destroyed in reverse)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <optional>
 
+#include "app/common/exit_codes.h"
 #include "app/common/run_stats.h"
 #include "app/common/stop_signal.h"
 #include "app/node/progress.h"
@@ -35,7 +36,7 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
   } catch (const core::SolverError& e) {
     std::fprintf(stderr, "sim_node: solver failure while building the initial state: %s\n",
                  e.what());
-    return 3;
+    return kExitSolver;
   }
 
   // steps and output stride: k = max(1, round(1 / (output_rate h)))
@@ -59,7 +60,7 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
   StrainWatch strain;       // at the output times
   strain.Observe(*sim);
   long written = 0;  // last step written to CSV
-  int exit_code = 0;
+  int exit_code = kExitOk;
   try {
     if (csv != nullptr) csv->Write(*sim, status, wall_us);
     for (long k = 1; k <= steps; ++k) {
@@ -78,7 +79,7 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
         progress.Finish();
         std::fprintf(stderr, "sim_node: solver failure at t = %.9g s (step %ld): %s\n", t_before, k,
                      step_status.message.c_str());
-        exit_code = 3;
+        exit_code = kExitSolver;
         break;
       }
       status = step_status;
@@ -98,14 +99,14 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
     }
 
     // the last state reached, unless already written or not trustworthy (failed step)
-    if (csv != nullptr && exit_code != 3 && written != stats.steps) {
+    if (csv != nullptr && exit_code != kExitSolver && written != stats.steps) {
       csv->Write(*sim, status, wall_us);
     }
   } catch (const io::OutputError& e) {
     // the CSV holds every row set written before (docs/command_line.md "Exit codes": 1)
     progress.Finish();
     std::fprintf(stderr, "sim_node: error: --csv: %s\n", e.what());
-    exit_code = 1;
+    exit_code = kExitError;
   }
   progress.Finish();
 

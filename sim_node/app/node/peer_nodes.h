@@ -42,7 +42,7 @@ class PeerNodes {
   std::vector<std::string> run_ids() const;
   // "run id a, run id b" for messages
   std::string Names() const;
-  // the scene_info reader (listed in the node's ROS 2 graph entry, dds/ros_graph.h)
+  // the scene_info reader (listed in the node's ROS 2 graph entry, wire/ros_graph.h)
   dds_entity_t reader() const { return reader_.get(); }
 
  private:

@@ -34,13 +34,17 @@
 #include <exception>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "app/common/dds_tool_options.h"
 #include "app/common/dds_uri.h"
+#include "app/common/exit_codes.h"
 #include "app/common/mcap_recording.h"
 #include "app/common/stop_signal.h"
+#include "app/common/tool_command_line.h"
 #include "app/common/tool_flags.h"
 #include "app/common/topic_types.h"
 #include "dds/entities.h"
@@ -51,9 +55,9 @@
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;
-constexpr int kExitBadInput = 2;
+using towsim::app::kExitBadInput;
+using towsim::app::kExitError;
+using towsim::app::kExitOk;
 constexpr double kWaitSlice = 0.02;      // longest wait between checks of signals [s]
 constexpr double kDrainAfterEnd = 0.3;   // keep taking after the node's last status [s]
 constexpr double kSceneHintAfter = 3.0;  // say what it waits for after [s]
@@ -86,7 +90,7 @@ struct Options {
   double duration = INFINITY;
   bool quiet = false;
   bool overwrite = false;
-  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
+  std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -94,39 +98,27 @@ int Bad(const std::string& message) {
   return kExitBadInput;
 }
 
-// "" on success, else the error
-std::string Parse(int argc, char** argv, Options* o, bool* help) {
-  towsim::app::ToolFlags flags(argc, argv);
-  const towsim::app::DdsToolFields dds_fields{&o->domain, &o->ns, &o->security, &o->quiet};
-  while (flags.Next()) {
-    const std::string& arg = flags.arg();
-    std::string v;
-    if (std::string e; towsim::app::ReadDdsToolOption(flags, dds_fields, &e)) {
-      if (!e.empty()) return e;
-      continue;
-    }
-    if (arg == "--help" || arg == "-h") {
-      *help = true;
-    } else if (arg == "--overwrite") {
-      o->overwrite = true;
-    } else if (arg == "--output") {
-      if (!flags.Value(&o->output)) return "--output needs a value";
-    } else if (arg == "--duration") {
-      if (!flags.Value(&v)) return "--duration needs a value";
-      char* end = nullptr;
-      o->duration = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end != '\0' || !(o->duration > 0.0)) {
-        return "--duration " + v + ": must be a number > 0 [s]";
-      }
-    } else if (arg == "--topics") {
-      for (const std::string& t : towsim::app::TopicList(flags.List())) o->topics.push_back(t);
-      if (o->topics.empty()) return "--topics needs at least one topic";
-    } else {
-      return "unknown option '" + arg + "'";
-    }
-  }
-  if (!*help && o->output.empty()) return "missing --output FILE.mcap";
-  return "";
+// the options, read into `o`
+towsim::app::ToolCommandLine CommandLine(Options* o) {
+  towsim::app::ToolCommandLine line("towsim_record", kUsage);
+  line.Shared(towsim::app::DdsToolOptions({&o->domain, &o->ns, &o->security, &o->quiet}))
+      .Flag("--overwrite", &o->overwrite)
+      .Value("--output", &o->output)
+      .Value("--duration",
+             [o](const std::string& v) -> std::string {
+               char* end = nullptr;
+               o->duration = std::strtod(v.c_str(), &end);
+               if (v.empty() || *end != '\0' || !(o->duration > 0.0)) {
+                 return "--duration " + v + ": must be a number > 0 [s]";
+               }
+               return "";
+             })
+      .Option(
+          "--topics",
+          [o](towsim::app::ToolFlags& flags) { return towsim::app::ReadTopics(flags, &o->topics); })
+      .Require(
+          [o]() -> std::string { return o->output.empty() ? "missing --output FILE.mcap" : ""; });
+  return line;
 }
 
 double Now() { return static_cast<double>(dds_time()) * 1e-9; }
@@ -344,15 +336,7 @@ int Recorder::Run() {
 
 int main(int argc, char** argv) {
   Options options;
-  bool help = false;
-  if (const std::string e = Parse(argc, argv, &options, &help); !e.empty()) {
-    std::fprintf(stderr, "towsim_record: error: %s\n\n%s", e.c_str(), kUsage);
-    return kExitBadInput;
-  }
-  if (help) {
-    std::fputs(kUsage, stdout);
-    return kExitOk;
-  }
+  if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
   towsim::app::InstallStopHandlers();
   const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_record");
   std::unique_ptr<Recorder> recorder;

@@ -36,13 +36,17 @@
 #include <exception>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
+#include "app/common/dds_tool_options.h"
 #include "app/common/dds_uri.h"
+#include "app/common/exit_codes.h"
 #include "app/common/mcap_recording.h"
 #include "app/common/stop_signal.h"
+#include "app/common/tool_command_line.h"
 #include "app/common/tool_flags.h"
 #include "app/common/topic_types.h"
 #include "dds/entities.h"
@@ -54,13 +58,13 @@
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;
-constexpr int kExitBadInput = 2;
-constexpr int kExitRecoveredWithLosses = 4;  // --recover skipped damaged byte ranges
-constexpr double kMaxSleepSlice = 0.05;      // wake at least this often for signals [s]
-constexpr double kProgressPeriod = 0.25;     // progress line redraw [s]
-constexpr double kAckTimeout = 1.0;          // at the end, for subscribers to acknowledge [s]
+using towsim::app::kExitBadInput;
+using towsim::app::kExitError;
+using towsim::app::kExitIncomplete;  // --recover skipped damaged byte ranges
+using towsim::app::kExitOk;
+constexpr double kMaxSleepSlice = 0.05;   // wake at least this often for signals [s]
+constexpr double kProgressPeriod = 0.25;  // progress line redraw [s]
+constexpr double kAckTimeout = 1.0;       // at the end, for subscribers to acknowledge [s]
 
 namespace dds = towsim::dds;
 namespace wire = towsim::wire;
@@ -95,7 +99,7 @@ struct Options {
   std::string ns;  // empty: as recorded
   bool quiet = false;
   bool recover = false;
-  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
+  std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -109,48 +113,35 @@ bool Number(const std::string& v, double* out) {
   return !v.empty() && *end == '\0' && std::isfinite(*out);
 }
 
-std::string Parse(int argc, char** argv, Options* o, bool* help) {
-  towsim::app::ToolFlags flags(argc, argv);
-  const towsim::app::DdsToolFields dds_fields{&o->domain, &o->ns, &o->security, &o->quiet};
-  while (flags.Next()) {
-    const std::string& arg = flags.arg();
-    std::string v;
-    if (std::string e; towsim::app::ReadDdsToolOption(flags, dds_fields, &e)) {
-      if (!e.empty()) return e;
-      continue;
-    }
-    if (arg == "--help" || arg == "-h") {
-      *help = true;
-    } else if (arg == "--loop") {
-      o->loop = true;
-    } else if (arg == "--recover") {
-      o->recover = true;
-    } else if (arg == "--fast") {
-      o->rate = 0.0;
-    } else if (arg == "--rate") {
-      if (!flags.Value(&v)) return "--rate needs a value";
-      if (!Number(v, &o->rate) || o->rate < 0.0) return "--rate " + v + ": must be a number >= 0";
-    } else if (arg == "--start") {
-      if (!flags.Value(&v)) return "--start needs a value";
-      if (!Number(v, &o->start) || o->start < 0.0) {
-        return "--start " + v + ": must be a number >= 0 [s]";
-      }
-    } else if (arg == "--delay") {
-      if (!flags.Value(&v)) return "--delay needs a value";
-      if (!Number(v, &o->delay) || o->delay < 0.0) {
-        return "--delay " + v + ": must be a number >= 0 [s]";
-      }
-    } else if (arg == "--topics") {
-      for (const std::string& t : towsim::app::TopicList(flags.List())) o->topics.push_back(t);
-      if (o->topics.empty()) return "--topics needs at least one topic";
-    } else if (arg.rfind("--", 0) == 0 || !o->file.empty()) {
-      return "unknown option '" + arg + "'";
-    } else {
-      o->file = arg;
-    }
-  }
-  if (!*help && o->file.empty()) return "missing FILE.mcap";
-  return "";
+// the options, read into `o`
+towsim::app::ToolCommandLine CommandLine(Options* o) {
+  // "--name V": V a number >= 0, `unit` after the rule in the error
+  auto at_least_zero = [](const char* name, double* out, const char* unit) {
+    return [=](const std::string& v) -> std::string {
+      if (Number(v, out) && *out >= 0.0) return "";
+      return std::string(name) + " " + v + ": must be a number >= 0" + unit;
+    };
+  };
+  towsim::app::ToolCommandLine line("towsim_replay", kUsage);
+  line.Shared(towsim::app::DdsToolOptions({&o->domain, &o->ns, &o->security, &o->quiet}))
+      .Flag("--loop", &o->loop)
+      .Flag("--recover", &o->recover)
+      .Flag("--fast", [o] { o->rate = 0.0; })
+      .Value("--rate", at_least_zero("--rate", &o->rate, ""))
+      .Value("--start", at_least_zero("--start", &o->start, " [s]"))
+      .Value("--delay", at_least_zero("--delay", &o->delay, " [s]"))
+      .Option(
+          "--topics",
+          [o](towsim::app::ToolFlags& flags) { return towsim::app::ReadTopics(flags, &o->topics); })
+      .Others([o](const towsim::app::ToolFlags& flags) -> std::string {
+        if (flags.arg().rfind("--", 0) == 0 || !o->file.empty()) {
+          return towsim::app::UnknownOption(flags);
+        }
+        o->file = flags.arg();
+        return "";
+      })
+      .Require([o]() -> std::string { return o->file.empty() ? "missing FILE.mcap" : ""; });
+  return line;
 }
 
 // the recorded namespace: the prefix of a channel ending in /scene_info or /status
@@ -199,7 +190,7 @@ int Replay(const Options& opt) {
     std::fprintf(stderr, "towsim_replay: %s: skipped %s\n", opt.file.c_str(),
                  io::DescribeSkipped(skipped).c_str());
   }
-  const int done = reader.skipped().empty() ? kExitOk : kExitRecoveredWithLosses;
+  const int done = reader.skipped().empty() ? kExitOk : kExitIncomplete;
 
   // channels -> outputs
   std::set<std::string> available;
@@ -369,15 +360,7 @@ int Replay(const Options& opt) {
 
 int main(int argc, char** argv) {
   Options options;
-  bool help = false;
-  if (const std::string e = Parse(argc, argv, &options, &help); !e.empty()) {
-    std::fprintf(stderr, "towsim_replay: error: %s\n\n%s", e.c_str(), kUsage);
-    return kExitBadInput;
-  }
-  if (help) {
-    std::fputs(kUsage, stdout);
-    return kExitOk;
-  }
+  if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
   towsim::app::InstallStopHandlers();
   try {
     return Replay(options);

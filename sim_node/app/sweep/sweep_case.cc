@@ -23,7 +23,7 @@ std::string ShellWord(const std::string& s) {
   return quoted + "'";
 }
 
-std::vector<std::string> CaseArguments(const scene::SweepSpec& spec, const SweepCase& c,
+std::vector<std::string> CaseArguments(const SweepSpec& spec, const SweepCase& c,
                                        const std::string& case_dir) {
   std::vector<std::string> args = {"--scene", fs::absolute(spec.scene).lexically_normal().string(),
                                    "--mode", "offline"};
@@ -120,7 +120,7 @@ std::string LastLine(const std::string& text) {
   return {};
 }
 
-std::optional<SweepRow> CollectCase(const scene::SweepSpec& spec, const SweepCase& c,
+std::optional<SweepRow> CollectCase(const SweepSpec& spec, const SweepCase& c,
                                     const std::string& case_dir) {
   const std::optional<CaseStatus> status = ReadCaseStatus(case_dir);
   // stopped by SIGINT / SIGTERM (the sweep stopped, the Slurm job cancelled): not finished

@@ -19,7 +19,7 @@ namespace towsim::app {
 
 // the sim_node arguments of a case (without the program): --scene, --mode offline,
 // [--duration], --set per parameter, --csv `case_dir`; paths absolute
-std::vector<std::string> CaseArguments(const scene::SweepSpec& spec, const SweepCase& c,
+std::vector<std::string> CaseArguments(const SweepSpec& spec, const SweepCase& c,
                                        const std::string& case_dir);
 
 // `s` as one shell word: single-quoted, a ' inside written '\''
@@ -59,7 +59,7 @@ struct SweepRow {
 // The row of a finished case (nullopt if it has not finished, or sim_node was stopped by
 // SIGINT / SIGTERM: exit 130 / 143): ok when sim_node exited 0 and every result could be
 // computed from its files.
-std::optional<SweepRow> CollectCase(const scene::SweepSpec& spec, const SweepCase& c,
+std::optional<SweepRow> CollectCase(const SweepSpec& spec, const SweepCase& c,
                                     const std::string& case_dir);
 
 // the last non-empty line of `text` (lines end at \n or \r: sim_node's progress line uses \r)

@@ -18,14 +18,14 @@ std::string CaseName(int index, int count) {
   return "case_" + digits;
 }
 
-std::vector<SweepCase> CombineParameters(const std::vector<scene::SweepParameter>& parameters,
-                                         scene::SweepCombine combine, long max_cases) {
+std::vector<SweepCase> CombineParameters(const std::vector<SweepParameter>& parameters,
+                                         SweepCombine combine, long max_cases) {
   // the number of cases
   long count = parameters.empty() ? 0 : 1;
-  if (combine == scene::SweepCombine::kZip) {
+  if (combine == SweepCombine::kZip) {
     count = parameters.empty() ? 0 : static_cast<long>(parameters.front().values.size());
   } else {
-    for (const scene::SweepParameter& p : parameters) {
+    for (const SweepParameter& p : parameters) {
       count *= static_cast<long>(p.values.size());
       if (count > max_cases) {
         throw std::invalid_argument("the product of the parameters' values has more than " +
@@ -40,7 +40,7 @@ std::vector<SweepCase> CombineParameters(const std::vector<scene::SweepParameter
     c.name = CaseName(c.index, static_cast<int>(count));
     // product: i in mixed radix, the last parameter the fastest digit
     std::vector<size_t> pick(parameters.size(), static_cast<size_t>(i));
-    if (combine == scene::SweepCombine::kProduct) {
+    if (combine == SweepCombine::kProduct) {
       long rest = i;
       for (size_t k = parameters.size(); k-- > 0;) {
         const long n = static_cast<long>(parameters[k].values.size());

@@ -24,8 +24,8 @@ struct SweepCase {
 };
 
 // Throws std::invalid_argument if the product has more than `max_cases` cases.
-std::vector<SweepCase> CombineParameters(const std::vector<scene::SweepParameter>& parameters,
-                                         scene::SweepCombine combine, long max_cases = 1000000);
+std::vector<SweepCase> CombineParameters(const std::vector<SweepParameter>& parameters,
+                                         SweepCombine combine, long max_cases = 1000000);
 
 // case_0007: `index` with max(4, digits of count - 1) digits
 std::string CaseName(int index, int count);

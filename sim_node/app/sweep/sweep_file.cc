@@ -14,11 +14,23 @@
 #include "scene/scene_schema.h"
 #include "scene/yaml_reader.h"
 
-namespace towsim::scene {
+namespace towsim::app {
 namespace {
 
-using internal::Field;
-using internal::Range;
+// the scene reader's YAML fields, key-path errors and overrides (scene/yaml_reader.h)
+using scene::ConfigError;
+using scene::internal::ApplyOverrides;
+using scene::internal::Field;
+using scene::internal::FormatNode;
+using scene::internal::IsValidName;
+using scene::internal::JoinPath;
+using scene::internal::kNameRule;
+using scene::internal::LoadYamlMap;
+using scene::internal::Range;
+using scene::internal::ReadTextFile;
+using scene::internal::Source;
+using scene::internal::Trim;
+using scene::internal::UnknownKeyRule;
 
 constexpr const char* kValuesRule =
     "must be a list of values, a range {from, to, step} or {from, to, count}, or seeded draws "
@@ -44,8 +56,8 @@ std::vector<std::pair<std::string, Field>> NamedEntries(const Field& map, const 
   if (!map.node().IsMap()) map.Fail(std::string("must be a map of ") + what);
   for (auto it = map.node().begin(); it != map.node().end(); ++it) {
     const YAML::Node key = it->first;
-    const std::string name = key.IsScalar() ? key.Scalar() : internal::FormatNode(key);
-    Field entry(it->second, key.Mark(), internal::JoinPath(map.path(), name), map.source());
+    const std::string name = key.IsScalar() ? key.Scalar() : FormatNode(key);
+    Field entry(it->second, key.Mark(), JoinPath(map.path(), name), map.source());
     if (!key.IsScalar()) entry.Fail("keys must be plain names");
     for (const auto& [seen, first] : entries) {
       if (seen == name) entry.Fail("duplicate key (first given at " + first.location() + ")");
@@ -61,7 +73,7 @@ std::vector<std::pair<std::string, Field>> CheckedEntries(const Field& map,
   std::vector<std::pair<std::string, Field>> entries = NamedEntries(map, "keys");
   for (const auto& [name, entry] : entries) {
     if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
-      entry.Fail(internal::UnknownKeyRule(name, allowed));
+      entry.Fail(UnknownKeyRule(name, allowed));
     }
   }
   return entries;
@@ -72,7 +84,7 @@ Field Get(const std::vector<std::pair<std::string, Field>>& entries, const std::
   for (const auto& [name, entry] : entries) {
     if (name == key) return entry;
   }
-  return Field::Missing(internal::JoinPath(parent.path(), key), parent);
+  return Field::Missing(JoinPath(parent.path(), key), parent);
 }
 
 bool IsIntegerText(const Field& f) {
@@ -176,7 +188,7 @@ SweepParameter ReadParameter(const std::string& path, const Field& field) {
 }
 
 SweepResult ReadResult(const std::string& name, const Field& field) {
-  if (!internal::IsValidName(name)) field.Fail(std::string("result names ") + internal::kNameRule);
+  if (!IsValidName(name)) field.Fail(std::string("result names ") + kNameRule);
   if (std::find(kFixedColumns.begin(), kFixedColumns.end(), name) != kFixedColumns.end()) {
     field.Fail("is a column of results.csv already; choose another name");
   }
@@ -185,7 +197,7 @@ SweepResult ReadResult(const std::string& name, const Field& field) {
   r.location = field.location();
   if (!field.node().IsMap()) field.Fail("must be a map {signal: S, stat: final|max|...}");
   const auto entries = CheckedEntries(field, {"signal", "stat", "from", "to"});
-  r.signal = internal::Trim(Get(entries, "signal", field).String());
+  r.signal = Trim(Get(entries, "signal", field).String());
   if (r.signal.empty()) Get(entries, "signal", field).Fail("must name a signal");
   const Field stat = Get(entries, "stat", field);
   if (stat.present()) r.stat = SweepStats()[stat.Choice(SweepStats())];
@@ -201,7 +213,7 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
                        const std::vector<Field>& fields) {
   std::string text;
   std::string why;
-  if (!internal::ReadTextFile(spec.scene, &text, &why)) {
+  if (!ReadTextFile(spec.scene, &text, &why)) {
     throw ConfigError("scene", spec.scene, scene_location,
                       "cannot read the scene file (" + why +
                           "; the path is relative to the "
@@ -209,16 +221,16 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
   }
   YAML::Node root;
   try {
-    root = internal::LoadYamlMap(text, spec.scene, "a scene must be a map of keys");
+    root = LoadYamlMap(text, spec.scene, "a scene must be a map of keys");
   } catch (const ConfigError& e) {
     throw ConfigError("scene", spec.scene, scene_location, e.what());
   }
   for (size_t i = 0; i < spec.parameters.size(); ++i) {
     const SweepParameter& p = spec.parameters[i];
-    internal::Source source;
+    Source source;
     source.name = std::filesystem::path(spec.scene).filename().string();
     try {
-      internal::ApplyOverrides({p.path + "=" + p.values.front()}, root, &source);
+      ApplyOverrides({p.path + "=" + p.values.front()}, root, &source);
     } catch (const ConfigError& e) {
       fields[i].Fail(e.rule());
     }
@@ -236,7 +248,7 @@ const std::vector<std::string>& SweepStats() {
 SweepSpec LoadSweepFile(const std::string& path) {
   std::string text;
   std::string why;
-  if (!internal::ReadTextFile(path, &text, &why)) {
+  if (!ReadTextFile(path, &text, &why)) {
     throw ConfigError("sweep", path, path, "cannot read the sweep file (" + why + ")");
   }
   const std::filesystem::path file(path);
@@ -246,9 +258,9 @@ SweepSpec LoadSweepFile(const std::string& path) {
 
 SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_for_messages,
                               const std::string& base_dir) {
-  auto source = std::make_shared<internal::Source>();
+  auto source = std::make_shared<Source>();
   source->name = name_for_messages;
-  const YAML::Node root = internal::LoadYamlMap(
+  const YAML::Node root = LoadYamlMap(
       yaml, name_for_messages,
       "a sweep file must be a map of keys (scene, duration, combine, parameters, results)");
   const Field top(root, root.Mark(), "", source);
@@ -299,4 +311,4 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
   return spec;
 }
 
-}  // namespace towsim::scene
+}  // namespace towsim::app

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-namespace towsim::scene {
+namespace towsim::app {
 
 // one parameter: a scene key path and its values, each a YAML value in flow style ("200",
 // "[3, 0, 0]", "trapezoidal") as it is passed to sim_node (--set path=value) and written to
@@ -60,4 +60,4 @@ SweepSpec LoadSweepFile(const std::string& path);
 SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_for_messages,
                               const std::string& base_dir);
 
-}  // namespace towsim::scene
+}  // namespace towsim::app

@@ -16,8 +16,10 @@
 #include <thread>
 #include <vector>
 
+#include "app/common/exit_codes.h"
 #include "app/common/stop_signal.h"
 #include "app/common/text_file.h"
+#include "app/common/tool_command_line.h"
 #include "app/sweep/sweep_case.h"
 #include "app/sweep/sweep_combinator.h"
 #include "app/sweep/sweep_file.h"
@@ -35,15 +37,15 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr int kExitOk = 0;
-constexpr int kExitError = 1;
-constexpr int kExitBadInput = 2;
-constexpr int kExitCasesFailed = 4;  // the sweep ran; some cases failed (see results.csv)
+using towsim::app::kExitBadInput;
+using towsim::app::kExitError;
+using towsim::app::kExitIncomplete;  // the sweep ran; some cases failed (see results.csv)
+using towsim::app::kExitOk;
 
 struct Options {
   std::string file, out;
   int workers = 0;  // 0: the number of cores (locally); no limit on Slurm
-  bool slurm = false, resume = false, no_wait = false, collect = false, help = false;
+  bool slurm = false, resume = false, no_wait = false, collect = false;
 };
 
 std::string Usage() {
@@ -67,61 +69,43 @@ std::string Usage() {
          "1 unexpected error (e.g. sbatch failed), 130 / 143 stopped by SIGINT / SIGTERM\n";
 }
 
-// "--name value" or "--name=value"
-bool TakeValue(int argc, char** argv, int* i, const std::string& name, std::string* value) {
-  const std::string arg = argv[*i];
-  if (arg == name) {
-    if (*i + 1 >= argc) throw std::invalid_argument(name + " needs a value");
-    *value = argv[++*i];
-    return true;
-  }
-  if (arg.rfind(name + "=", 0) == 0) {
-    *value = arg.substr(name.size() + 1);
-    return true;
-  }
-  return false;
-}
-
-Options Parse(int argc, char** argv) {
-  Options o;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    std::string value;
-    if (arg == "--help" || arg == "-h") {
-      o.help = true;
-    } else if (TakeValue(argc, argv, &i, "--out", &value)) {
-      o.out = value;
-    } else if (TakeValue(argc, argv, &i, "--workers", &value)) {
-      char* end = nullptr;
-      const long n = std::strtol(value.c_str(), &end, 10);
-      if (value.empty() || *end != '\0' || n < 1 || n > 4096) {
-        throw std::invalid_argument("--workers " + value + ": must be an integer >= 1");
-      }
-      o.workers = static_cast<int>(n);
-    } else if (arg == "--slurm") {
-      o.slurm = true;
-    } else if (arg == "--resume") {
-      o.resume = true;
-    } else if (arg == "--no-wait") {
-      o.no_wait = true;
-    } else if (arg == "--collect") {
-      o.collect = true;
-    } else if (arg.rfind("-", 0) == 0) {
-      throw std::invalid_argument("unknown option " + arg);
-    } else if (o.file.empty()) {
-      o.file = arg;
-    } else {
-      throw std::invalid_argument("one sweep file only (" + o.file + ", then " + arg + ")");
-    }
-  }
-  if (o.help) return o;
-  if (o.file.empty()) throw std::invalid_argument("the sweep file FILE is required");
-  if (o.out.empty()) throw std::invalid_argument("--out DIR is required");
-  if (o.no_wait && !o.slurm) throw std::invalid_argument("--no-wait needs --slurm");
-  if (o.collect && (o.slurm || o.resume)) {
-    throw std::invalid_argument("--collect runs nothing: not with --slurm or --resume");
-  }
-  return o;
+// the options, read into `o`; "--slurm=1" is not --slurm, as before
+towsim::app::ToolCommandLine CommandLine(Options* o) {
+  towsim::app::ToolCommandLine line("towsim_sweep", Usage());
+  line.FlagsTakeNoValue()
+      .Value("--out", &o->out)
+      .Value("--workers",
+             [o](const std::string& v) -> std::string {
+               char* end = nullptr;
+               const long n = std::strtol(v.c_str(), &end, 10);
+               if (v.empty() || *end != '\0' || n < 1 || n > 4096) {
+                 return "--workers " + v + ": must be an integer >= 1";
+               }
+               o->workers = static_cast<int>(n);
+               return "";
+             })
+      .Flag("--slurm", &o->slurm)
+      .Flag("--resume", &o->resume)
+      .Flag("--no-wait", &o->no_wait)
+      .Flag("--collect", &o->collect)
+      .Others([o](const towsim::app::ToolFlags& flags) -> std::string {
+        const std::string& arg = flags.raw();
+        if (arg.rfind("-", 0) == 0) return "unknown option " + arg;
+        if (!o->file.empty()) return "one sweep file only (" + o->file + ", then " + arg + ")";
+        o->file = arg;
+        return "";
+      })
+      .Require(
+          [o]() -> std::string { return o->file.empty() ? "the sweep file FILE is required" : ""; })
+      .Require([o]() -> std::string { return o->out.empty() ? "--out DIR is required" : ""; })
+      .Require(
+          [o]() -> std::string { return o->no_wait && !o->slurm ? "--no-wait needs --slurm" : ""; })
+      .Require([o]() -> std::string {
+        return o->collect && (o->slurm || o->resume)
+                   ? "--collect runs nothing: not with --slurm or --resume"
+                   : "";
+      });
+  return line;
 }
 
 // sim_node: TOWSIM_SIM_NODE, else beside this executable, else on the PATH
@@ -150,10 +134,10 @@ std::string FindSimNode() {
 
 int Run(const Options& o) {
   // the sweep file, its scene, its results (exit 2 for any rule broken)
-  towsim::scene::SweepSpec spec;
+  towsim::app::SweepSpec spec;
   std::vector<towsim::app::SweepCase> cases;
   try {
-    spec = towsim::scene::LoadSweepFile(o.file);
+    spec = towsim::app::LoadSweepFile(o.file);
     const towsim::core::Model model = towsim::scene::LoadScene(spec.scene);
     std::vector<std::string> bodies;
     for (const auto& s : model.bodies) bodies.push_back(s.name);
@@ -267,7 +251,7 @@ int Run(const Options& o) {
   std::fflush(stdout);
   if (code != 0) return code;  // stopped by a signal
   for (const auto& row : rows) {
-    if (!row || !row->ok) return kExitCasesFailed;
+    if (!row || !row->ok) return kExitIncomplete;
   }
   return kExitOk;
 }
@@ -276,16 +260,7 @@ int Run(const Options& o) {
 
 int main(int argc, char** argv) {
   Options options;
-  try {
-    options = Parse(argc, argv);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "towsim_sweep: error: %s\n\n%s", e.what(), Usage().c_str());
-    return kExitBadInput;
-  }
-  if (options.help) {
-    std::fputs(Usage().c_str(), stdout);
-    return kExitOk;
-  }
+  if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
   try {
     return Run(options);
   } catch (const std::exception& e) {

@@ -53,8 +53,7 @@ std::pair<double, double> Span(double lo, double hi) {
 
 }  // namespace
 
-std::string SweepPlotSvg(const scene::SweepSpec& spec,
-                         const std::vector<std::optional<SweepRow>>& rows) {
+std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<SweepRow>>& rows) {
   const size_t panels = std::max<size_t>(1, spec.results.size());
   const double height = kPanelHeight * static_cast<double>(panels);
   std::string svg =
@@ -113,7 +112,7 @@ std::string SweepPlotSvg(const scene::SweepSpec& spec,
     auto px = [&](double x) { return x0 + (x - xa) / (xb - xa) * (x1 - x0); };
     auto py = [&](double y) { return y1 - (y - ya) / (yb - ya) * (y1 - y0); };
 
-    const scene::SweepResult& r = spec.results[i];
+    const SweepResult& r = spec.results[i];
     std::string title = r.name + " (" + r.signal + (r.stat.empty() ? "" : ", " + r.stat) + ")";
     if (failed > 0) title += ", " + std::to_string(failed) + " failed case(s) not shown";
     svg += "<text x=\"" + Fmt("%.1f", x0) + "\" y=\"" + Fmt("%.1f", top + 18) +

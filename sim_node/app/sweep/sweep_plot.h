@@ -14,7 +14,6 @@
 namespace towsim::app {
 
 // the SVG text
-std::string SweepPlotSvg(const scene::SweepSpec& spec,
-                         const std::vector<std::optional<SweepRow>>& rows);
+std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<SweepRow>>& rows);
 
 }  // namespace towsim::app

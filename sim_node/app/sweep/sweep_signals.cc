@@ -220,9 +220,9 @@ double RunTotal(const std::string& signal, const RunSummary& r) {
 
 }  // namespace
 
-void CheckSweepResults(std::vector<scene::SweepResult>* results,
+void CheckSweepResults(std::vector<SweepResult>* results,
                        const std::vector<std::string>& body_names) {
-  for (scene::SweepResult& r : *results) {
+  for (SweepResult& r : *results) {
     const std::string key = "results." + r.name + ".signal";
     auto fail = [&](const std::string& rule) {
       throw scene::ConfigError(key, r.signal, r.location, rule);
@@ -254,13 +254,13 @@ void CheckSweepResults(std::vector<scene::SweepResult>* results,
   }
 }
 
-std::vector<double> ComputeSweepResults(const std::vector<scene::SweepResult>& results,
+std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
                                         const std::string& case_dir,
                                         const std::string& sim_node_stdout) {
   CaseFiles files(case_dir);
   std::optional<RunSummary> summary;
   std::vector<double> values;
-  for (const scene::SweepResult& r : results) {
+  for (const SweepResult& r : results) {
     const auto [body, quantity] = Split(r.signal);
     if (body.empty() && In(kRunTotals, quantity)) {
       if (!summary) summary = ParseSummaryLine(sim_node_stdout);

@@ -30,13 +30,13 @@ namespace towsim::app {
 // Checks every result's signal and statistic against the scene's body names; a time signal
 // without a statistic takes `final`. Throws scene::ConfigError (key results.<name>.signal,
 // the result's location, the rule with the allowed names).
-void CheckSweepResults(std::vector<scene::SweepResult>* results,
+void CheckSweepResults(std::vector<SweepResult>* results,
                        const std::vector<std::string>& body_names);
 
 // The value of each result for the case whose CSV files are in `case_dir`; `sim_node_stdout`
 // holds its summary line. Throws std::runtime_error naming the file, or the result and window
 // with no rows.
-std::vector<double> ComputeSweepResults(const std::vector<scene::SweepResult>& results,
+std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
                                         const std::string& case_dir,
                                         const std::string& sim_node_stdout);
 

@@ -19,14 +19,14 @@ std::string Number(double x, const char* format = "%.9g") {
 
 }  // namespace
 
-std::string ResultsHeader(const scene::SweepSpec& spec) {
+std::string ResultsHeader(const SweepSpec& spec) {
   std::string header = "case,status,exit_code,message,wall_s";
-  for (const scene::SweepParameter& p : spec.parameters) header += "," + io::CsvField(p.path);
-  for (const scene::SweepResult& r : spec.results) header += "," + io::CsvField(r.name);
+  for (const SweepParameter& p : spec.parameters) header += "," + io::CsvField(p.path);
+  for (const SweepResult& r : spec.results) header += "," + io::CsvField(r.name);
   return header;
 }
 
-void WriteResultsTable(const std::string& path, const scene::SweepSpec& spec,
+void WriteResultsTable(const std::string& path, const SweepSpec& spec,
                        const std::vector<std::optional<SweepRow>>& rows) {
   std::string text = ResultsHeader(spec) + "\n";
   for (const std::optional<SweepRow>& row : rows) {
@@ -44,7 +44,7 @@ void WriteResultsTable(const std::string& path, const scene::SweepSpec& spec,
   WriteTextFileAtomically(path, text);
 }
 
-std::string SweepSummary(const scene::SweepSpec& spec, const std::vector<SweepCase>& cases,
+std::string SweepSummary(const SweepSpec& spec, const std::vector<SweepCase>& cases,
                          const std::vector<std::optional<SweepRow>>& rows,
                          const SweepTiming& timing) {
   int ok = 0, failed = 0, missing = 0;

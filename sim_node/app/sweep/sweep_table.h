@@ -16,11 +16,11 @@
 namespace towsim::app {
 
 // the header line of results.csv for `spec`
-std::string ResultsHeader(const scene::SweepSpec& spec);
+std::string ResultsHeader(const SweepSpec& spec);
 
 // writes `rows` (the finished ones; nullopt = not finished) to `path` atomically; throws
 // std::runtime_error if it cannot be written
-void WriteResultsTable(const std::string& path, const scene::SweepSpec& spec,
+void WriteResultsTable(const std::string& path, const SweepSpec& spec,
                        const std::vector<std::optional<SweepRow>>& rows);
 
 struct SweepTiming {
@@ -32,7 +32,7 @@ struct SweepTiming {
 
 // the summary: counts, the failed cases with their messages, the range of each result over
 // the ok cases with the cases where it is reached; lines end with '\n'
-std::string SweepSummary(const scene::SweepSpec& spec, const std::vector<SweepCase>& cases,
+std::string SweepSummary(const SweepSpec& spec, const std::vector<SweepCase>& cases,
                          const std::vector<std::optional<SweepRow>>& rows,
                          const SweepTiming& timing);
 

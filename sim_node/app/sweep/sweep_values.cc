@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <random>
 
-namespace towsim::scene {
+namespace towsim::app {
 namespace {
 
 constexpr double kTwoPi = 6.283185307179586476925286766559;
@@ -80,4 +80,4 @@ std::string FormatSweepNumber(double x) {
   return buffer;
 }
 
-}  // namespace towsim::scene
+}  // namespace towsim::app

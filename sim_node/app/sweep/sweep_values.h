@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace towsim::scene {
+namespace towsim::app {
 
 // from, from + step, ... up to `to` inclusive (an end within 1e-9 |step| of `to` counts);
 // step != 0 and pointing from `from` towards `to` (the caller checks)
@@ -29,4 +29,4 @@ std::vector<long long> IntegerDraws(long long low, long long high, int count, st
 // a number as a sweep value (and --set value): "%.9g", the CSV precision
 std::string FormatSweepNumber(double x);
 
-}  // namespace towsim::scene
+}  // namespace towsim::app
