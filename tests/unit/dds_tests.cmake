@@ -1,12 +1,8 @@
-# tests of the DDS layer: msgs/ (wire contract), sim_node/dds/ (adapter) and the node loop's
-# pure parts (sim_node/app/node/dds_*). Included from tests/unit/CMakeLists.txt.
+# tests of the DDS layer: msgs/ (wire contract types), sim_node/dds/ (adapter) and the node
+# loop's pure parts (sim_node/app/node/dds_*). Included from tests/unit/CMakeLists.txt.
 towsim_add_test(towsim_msgs_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/towsim_msgs_test.cc
   LIBS towsim::msgs)
-
-towsim_add_test(dds_topic_names_test LABEL unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_topic_names_test.cc
-  LIBS towsim::dds)
 
 towsim_add_test(dds_translators_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_translators_test.cc
@@ -55,8 +51,3 @@ towsim_add_test(dds_markers_test LABEL unit
 towsim_add_test(dds_port_mapping_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc
   LIBS towsim::dds)
-# DDS Security setup (sim_node/dds/security): files, properties, key check; no participant
-towsim_add_test(dds_security_test LABEL unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_security_test.cc
-  LIBS towsim::dds_security)
-target_include_directories(dds_security_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})

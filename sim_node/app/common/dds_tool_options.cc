@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "dds/topic_names.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
@@ -37,7 +37,7 @@ bool ReadDdsToolOption(ToolFlags& flags, const DdsToolFields& f, std::string* er
   } else if (arg == "--namespace") {
     if (!flags.Value(f.ns)) {
       *error = "--namespace needs a value";
-    } else if (const std::string e = dds::CheckNamespace(*f.ns); !e.empty()) {
+    } else if (const std::string e = wire::CheckNamespace(*f.ns); !e.empty()) {
       *error = "--namespace " + *f.ns + ": " + e;
     }
   } else {

@@ -15,7 +15,7 @@ namespace towsim::app {
 std::string ParseDomain(const std::string& text, uint32_t* domain);
 
 // The options every DDS tool shares, read into the tool's own fields: --domain N (sets
-// *has_domain when given), --namespace NS (checked with dds::CheckNamespace), --security
+// *has_domain when given), --namespace NS (checked with wire::CheckNamespace), --security
 // DIR/NAME (not empty), --quiet.
 struct DdsToolFields {
   uint32_t* domain;

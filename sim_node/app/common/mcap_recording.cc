@@ -4,17 +4,9 @@
 #include <string>
 
 #include "io/ros2_schemas.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
-
-std::string RosTopicName(const std::string& dds_topic) {
-  if (dds_topic.rfind("rt/", 0) == 0) return dds_topic.substr(2);
-  return dds_topic.empty() || dds_topic[0] != '/' ? "/" + dds_topic : dds_topic;
-}
-
-std::string DdsTopicName(const std::string& ros_topic) {
-  return "rt" + (ros_topic.empty() || ros_topic[0] != '/' ? "/" + ros_topic : ros_topic);
-}
 
 std::string OfferedQosYaml(bool transient_local, int depth) {
   // rmw enums: history 1 = keep last; reliability 1 = reliable; durability 1 = transient
@@ -67,7 +59,7 @@ std::uint16_t McapRecording::AddTopic(const std::string& dds_topic,
     it = schemas_.emplace(type, writer_.AddSchema(type, "ros2msg", io::Ros2MsgSchema(type))).first;
   }
   const std::uint16_t channel =
-      writer_.AddChannel(it->second, RosTopicName(dds_topic), "cdr",
+      writer_.AddChannel(it->second, wire::RosTopicName(dds_topic), "cdr",
                          {{"offered_qos_profiles", OfferedQosYaml(transient_local, depth)}});
   sequences_[channel] = 0;
   return channel;

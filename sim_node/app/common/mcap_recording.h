@@ -22,11 +22,6 @@
 
 namespace towsim::app {
 
-// "rt/towsim/towfish/odom" -> "/towsim/towfish/odom" (a name without "rt/" gets a "/")
-std::string RosTopicName(const std::string& dds_topic);
-// "/towsim/towfish/odom" -> "rt/towsim/towfish/odom"
-std::string DdsTopicName(const std::string& ros_topic);
-
 // rosbag2's offered_qos_profiles YAML of a reliable keep-last writer, volatile or transient
 // local (the towsim topics, DESIGN §3)
 std::string OfferedQosYaml(bool transient_local, int depth);

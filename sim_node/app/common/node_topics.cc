@@ -14,7 +14,6 @@ namespace towsim::app {
 namespace {
 
 using core::PublishRate;
-using dds::TopicNames;
 
 // a state topic whose message `Holder` (a dds/translators.h *Message: its C struct in .msg)
 // is filled by Translate(sim, body, step, holder)
@@ -23,7 +22,7 @@ class Translated final : public StateTopic {
  public:
   Translated(const dds::Participant& participant, const TopicRow& row, const std::string& name,
              std::unique_ptr<Holder> holder, int body)
-      : StateTopic(participant, row.type, name, QosOf(row.qos), *row.rate),
+      : StateTopic(participant, row.spec().type, name, dds::QosOf(row.spec().qos), row.rate),
         holder_(std::move(holder)),
         body_(body) {}
   const void* Fill(const core::Simulation& sim, uint64_t step) override {
@@ -77,67 +76,35 @@ std::unique_ptr<StateTopic> Make(const dds::Participant& participant, const Topi
                                                          body);
 }
 
-// the name of each row
-std::string ClockName(const TopicNames& n, const std::string&) { return n.clock(); }
-std::string StatusName(const TopicNames& n, const std::string&) { return n.status(); }
-std::string CableStateName(const TopicNames& n, const std::string&) { return n.cable_state(); }
-std::string SimControlName(const TopicNames& n, const std::string&) { return n.sim_control(); }
-std::string WinchCommandName(const TopicNames& n, const std::string&) {
-  return n.winch_command();
-}
-std::string SceneInfoName(const TopicNames& n, const std::string&) { return n.scene_info(); }
-std::string TfName(const TopicNames& n, const std::string&) { return n.tf(); }
-std::string TfStaticName(const TopicNames& n, const std::string&) { return n.tf_static(); }
-std::string MarkersName(const TopicNames& n, const std::string&) { return n.markers(); }
-std::string OdomName(const TopicNames& n, const std::string& b) { return n.odom(b); }
-std::string CableForceName(const TopicNames& n, const std::string& b) { return n.cable_force(b); }
-std::string AltitudeName(const TopicNames& n, const std::string& b) { return n.altitude(b); }
-std::string PressureName(const TopicNames& n, const std::string& b) { return n.pressure(b); }
-std::string EnvironmentName(const TopicNames& n, const std::string& b) {
-  return n.environment(b);
-}
-std::string CommandName(const TopicNames& n, const std::string& b) { return n.command(b); }
-
 std::vector<TopicRow> BuildTable() {
-  constexpr bool kNode = false, kBody = true, kOut = true, kIn = false;
   using P = const dds::Participant&;
   using S = const core::Simulation&;
   using N = const std::string&;
+  using T = wire::Topic;
   return {
-      {kNode, SceneInfoName, &towsim_msgs_msg_dds__SceneInfo__desc, TopicQos::kLatched, kOut},
-      {kNode, ClockName, &rosgraph_msgs_msg_dds__Clock__desc, TopicQos::kState, kOut,
-       PublishRate::kClock,
+      {T::kClock, PublishRate::kClock,
        [](P p, const TopicRow& row, N name, S, int) {
          return Make<ClockHolder, Clock>(p, row, name, std::make_unique<ClockHolder>(), -1);
        }},
-      {kNode, StatusName, &towsim_msgs_msg_dds__SimStatus__desc, TopicQos::kState, kOut},
-      {kNode, CableStateName, &towsim_msgs_msg_dds__CableState__desc, TopicQos::kState, kOut,
-       PublishRate::kCableState,
+      {T::kCableState, PublishRate::kCableState,
        [](P p, const TopicRow& row, N name, S sim, int) {
          return Make<dds::CableStateMessage, CableState>(
              p, row, name,
              std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim)),
              -1);
        }},
-      {kNode, SimControlName, &towsim_msgs_msg_dds__SimControl__desc, TopicQos::kControl, kIn},
-      // the winch's command (docs/winch_dds.md); the node reads it only for a scene with a winch
-      {kNode, WinchCommandName, &towsim_msgs_msg_dds__WinchCommand__desc, TopicQos::kCommand, kIn},
       // /tf: the same state as the odometry, at its rate
-      {kNode, TfName, &tf2_msgs_msg_dds__TFMessage__desc, TopicQos::kState, kOut,
-       PublishRate::kOdom,
+      {T::kTf, PublishRate::kOdom,
        [](P p, const TopicRow& row, N name, S sim, int) {
          return Make<dds::TransformsMessage, Transforms>(p, row, name, dds::BodyTransforms(sim),
                                                          -1);
        }},
-      {kNode, TfStaticName, &tf2_msgs_msg_dds__TFMessage__desc, TopicQos::kLatched, kOut},
-      {kNode, MarkersName, &visualization_msgs_msg_dds__MarkerArray__desc, TopicQos::kState, kOut,
-       PublishRate::kMarkers,
+      {T::kMarkers, PublishRate::kMarkers,
        [](P p, const TopicRow& row, N name, S sim, int) {
          return Make<dds::SceneMarkers, Markers>(p, row, name,
                                                  std::make_unique<dds::SceneMarkers>(sim), -1);
        }},
-      {kBody, OdomName, &nav_msgs_msg_dds__Odometry__desc, TopicQos::kState, kOut,
-       PublishRate::kOdom,
+      {T::kOdom, PublishRate::kOdom,
        [](P p, const TopicRow& row, N name, S sim, int b) {
          return Make<dds::OdometryMessage, Odometry>(
              p, row, name,
@@ -145,53 +112,34 @@ std::vector<TopicRow> BuildTable() {
                                                     dds::FrdFrame(sim.body_name(b))),
              b);
        }},
-      {kBody, CableForceName, &geometry_msgs_msg_dds__WrenchStamped__desc, TopicQos::kState, kOut,
-       PublishRate::kCableForce,
+      {T::kCableForce, PublishRate::kCableForce,
        [](P p, const TopicRow& row, N name, S sim, int b) {
          return Make<dds::WrenchStampedMessage, CableForce>(
              p, row, name,
              std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(sim.body_name(b))), b);
        }},
-      {kBody, AltitudeName, &sensor_msgs_msg_dds__Range__desc, TopicQos::kState, kOut,
-       PublishRate::kSensors,
+      {T::kAltitude, PublishRate::kSensors,
        [](P p, const TopicRow& row, N name, S sim, int b) {
          return Make<dds::RangeMessage, Altitude>(
              p, row, name, std::make_unique<dds::RangeMessage>(sim.body_name(b)), b);
        }},
-      {kBody, PressureName, &sensor_msgs_msg_dds__FluidPressure__desc, TopicQos::kState, kOut,
-       PublishRate::kSensors,
+      {T::kPressure, PublishRate::kSensors,
        [](P p, const TopicRow& row, N name, S sim, int b) {
          return Make<dds::FluidPressureMessage, Pressure>(
              p, row, name, std::make_unique<dds::FluidPressureMessage>(sim.body_name(b)), b);
        }},
       // the sea at each body, as environment.csv: only in a scene with waves, a current or a
       // seabed (io::HasSea; a calm scene's node has no such topic)
-      {kBody, EnvironmentName, &towsim_msgs_msg_dds__BodyEnvironment__desc, TopicQos::kState, kOut,
-       PublishRate::kSensors,
+      {T::kEnvironment, PublishRate::kSensors,
        [](P p, const TopicRow& row, N name, S sim, int b) -> std::unique_ptr<StateTopic> {
          if (!io::HasSea(sim.model().environment)) return nullptr;
          return Make<dds::BodyEnvironmentMessage, Environment>(
              p, row, name, std::make_unique<dds::BodyEnvironmentMessage>(dds::kWorldFrame), b);
        }},
-      {kBody, CommandName, &towsim_msgs_msg_dds__ActuatorCommand__desc, TopicQos::kCommand, kIn},
   };
 }
 
 }  // namespace
-
-dds::Qos QosOf(TopicQos qos) {
-  switch (qos) {
-    case TopicQos::kLatched:
-      return dds::SceneInfoQos();
-    case TopicQos::kCommand:
-      return dds::CommandQos();
-    case TopicQos::kControl:
-      return dds::ControlQos();
-    case TopicQos::kState:
-      break;
-  }
-  return dds::StateQos();
-}
 
 StateTopic::StateTopic(const dds::Participant& participant, const dds_topic_descriptor_t* type,
                        const std::string& name, const dds::Qos& qos, core::PublishRate rate)

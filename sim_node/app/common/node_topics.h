@@ -1,10 +1,11 @@
 #pragma once
-// The node's topics in one table (DESIGN §3, docs/frames.md): one row per topic with its name,
-// type, QoS, direction, rate key (core/publish_rates.h) and, for the per-step state topics,
-// the translator that fills its message from the simulation. The node's endpoints
-// (app/node/dds_publisher.h), its recording and Foxglove channels, and the tools that subscribe
-// to a node by name (towsim_record, towsim_foxglove: NodeTopics) all read this table, so a new
-// state topic is one row here, its rate key and its translator.
+// The node's per-step state topics in one table (DESIGN §3, docs/frames.md, docs/app_layer.md):
+// one row per topic with its wire row (wire/topic_table.h: name, type, QoS, direction), its rate
+// key (core/publish_rates.h) and the translator that fills its message from the simulation. The
+// node's state writers (app/node/dds_publisher.h) with their recording and Foxglove channels read
+// this table; the tools that subscribe to a node by name (towsim_record, towsim_foxglove:
+// NodeTopics) read the wire's. A new state topic is one row there, one row here, its rate key
+// and its translator.
 
 #include <cstdint>
 #include <memory>
@@ -16,13 +17,9 @@
 #include "core/simulation.h"
 #include "dds/entities.h"
 #include "dds/qos.h"
-#include "dds/topic_names.h"
+#include "wire/topic_table.h"
 
 namespace towsim::app {
-
-// the QoS of a topic (dds/qos.h)
-enum class TopicQos { kState, kLatched, kCommand, kControl };
-dds::Qos QosOf(TopicQos qos);
 
 // one per-step state topic of a running node: its writer and the message its translator fills
 class StateTopic {
@@ -49,24 +46,18 @@ class StateTopic {
 };
 
 struct TopicRow {
-  bool per_body;  // one topic per body (name(names, body))
-  std::string (*name)(const dds::TopicNames& names, const std::string& body);
-  const dds_topic_descriptor_t* type;
-  TopicQos qos;
-  bool outbound;  // the node writes it (else: the node reads it)
-  // the per-step state topics: their rate key and their writer with its translator (body: the
-  // body index for per-body rows, else -1); the others (scene_info, status, sim_control,
-  // commands, /tf_static) are written or read by the node's run itself. `make` returns
-  // nullptr where the scene has no such topic (the environment of a calm scene)
-  std::optional<core::PublishRate> rate = std::nullopt;
+  wire::Topic topic;  // its name, type and QoS: wire/topic_table.h
+  core::PublishRate rate;
+  // its writer with its translator (body: the body index for per-body rows, else -1); nullptr
+  // where the scene has no such topic (the environment of a calm scene)
   std::unique_ptr<StateTopic> (*make)(const dds::Participant& participant, const TopicRow& row,
                                       const std::string& name, const core::Simulation& sim,
-                                      int body) = nullptr;
-  bool transient_local() const { return qos == TopicQos::kLatched; }
+                                      int body);
+  const wire::TopicSpec& spec() const { return wire::SpecOf(topic); }
+  bool per_body() const { return spec().scope == wire::Scope::kBody; }
 };
 
-// every topic of a node, scene_info first, then the topics of the node, then those of each
-// body
+// every per-step state topic of a node: those of the node, then those of each body
 const std::vector<TopicRow>& NodeTopicTable();
 
 }  // namespace towsim::app

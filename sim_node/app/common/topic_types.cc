@@ -3,17 +3,16 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "app/common/node_topics.h"
 #include "dds/messages.h"
 #include "io/ros2_schemas.h"
 
 namespace towsim::app {
 
 const std::vector<const dds_topic_descriptor_t*>& ContractTypes() {
-  // the types of the node's topic table (app/common/node_topics.h), each once
+  // the types of the wire's topic table (wire/topic_table.h), each once
   static const std::vector<const dds_topic_descriptor_t*> types = [] {
     std::vector<const dds_topic_descriptor_t*> all;
-    for (const TopicRow& row : NodeTopicTable()) {
+    for (const wire::TopicSpec& row : wire::TopicTable()) {
       if (std::find(all.begin(), all.end(), row.type) == all.end()) all.push_back(row.type);
     }
     return all;
@@ -31,17 +30,20 @@ const dds_topic_descriptor_t* DescriptorOfRos2Type(const std::string& ros2_type)
   return nullptr;
 }
 
-std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
+std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
                                   const std::vector<std::string>& bodies, bool with_scene_info) {
   std::vector<NodeTopic> all;
-  for (const TopicRow& row : NodeTopicTable()) {
-    if (row.per_body) continue;
-    if (!with_scene_info && row.type == &towsim_msgs_msg_dds__SceneInfo__desc) continue;
-    all.push_back({row.name(names, ""), row.type, row.transient_local()});
+  auto add = [&](const wire::TopicSpec& row, const std::string& owner) {
+    all.push_back({names.Name(row.topic, owner), row.type, row.qos == wire::QosProfile::kLatched});
+  };
+  for (const wire::TopicSpec& row : wire::TopicTable()) {
+    if (row.scope == wire::Scope::kBody) continue;
+    if (!with_scene_info && row.topic == wire::Topic::kSceneInfo) continue;
+    add(row, "");
   }
   for (const std::string& b : bodies) {
-    for (const TopicRow& row : NodeTopicTable()) {
-      if (row.per_body) all.push_back({row.name(names, b), row.type, row.transient_local()});
+    for (const wire::TopicSpec& row : wire::TopicTable()) {
+      if (row.scope == wire::Scope::kBody) add(row, b);
     }
   }
   return all;

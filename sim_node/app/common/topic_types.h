@@ -8,11 +8,11 @@
 #include <vector>
 
 #include "dds/dds.h"
-#include "dds/topic_names.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
-// every topic type of DESIGN §3 (those of app/common/node_topics.h)
+// every topic type of DESIGN §3 (those of wire/topic_table.h)
 const std::vector<const dds_topic_descriptor_t*>& ContractTypes();
 
 // the descriptor of a ROS 2 type name ("nav_msgs/msg/Odometry"); nullptr if not a contract type
@@ -26,10 +26,10 @@ struct NodeTopic {
 };
 
 // every topic of a towsim node of namespace `names` with these bodies (the table of
-// app/common/node_topics.h: /clock, status, cable/state, sim_control, /tf, /tf_static, markers,
-// and per body odom, cable_force, altitude, pressure and command); scene_info first when
+// wire/topic_table.h: /clock, status, cable/state, sim_control, /tf, /tf_static, markers, and per
+// body odom, cable_force, altitude, pressure and command); scene_info first when
 // `with_scene_info`
-std::vector<NodeTopic> NodeTopics(const dds::TopicNames& names,
+std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
                                   const std::vector<std::string>& bodies,
                                   bool with_scene_info = false);
 

@@ -23,7 +23,7 @@ dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t, u
 }
 
 FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
-                                   const dds::TopicNames& names,
+                                   const wire::TopicNames& names,
                                    const std::vector<std::string>& bodies, bool winch,
                                    std::string program, bool quiet)
     : participant_(participant),
@@ -34,19 +34,19 @@ FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
       twist_type_(participant, &geometry_msgs_msg_dds__Twist__desc),
       winch_type_(participant, &towsim_msgs_msg_dds__WinchCommand__desc) {
   for (const std::string& b : bodies) {
-    Inbound& in = inbound_[RosTopicName(names.command(b))];
+    Inbound& in = inbound_[wire::RosTopicName(names.Name(wire::Topic::kCommand, b))];
     in.schema_name = "towsim_msgs/msg/ActuatorCommand";
     in.descriptor = &towsim_msgs_msg_dds__ActuatorCommand__desc;
     in.type = &command_type_;
     in.teleop = true;
   }
   if (winch) {  // the winch's own command (docs/winch_dds.md), checked by the node like any
-    Inbound& in = inbound_[RosTopicName(names.winch_command())];
+    Inbound& in = inbound_[wire::RosTopicName(names.Name(wire::Topic::kWinchCommand))];
     in.schema_name = "towsim_msgs/msg/WinchCommand";
     in.descriptor = &towsim_msgs_msg_dds__WinchCommand__desc;
     in.type = &winch_type_;
   }
-  Inbound& control = inbound_[RosTopicName(names.sim_control())];
+  Inbound& control = inbound_[wire::RosTopicName(names.Name(wire::Topic::kSimControl))];
   control.schema_name = "towsim_msgs/msg/SimControl";
   control.descriptor = &towsim_msgs_msg_dds__SimControl__desc;
   control.type = &control_type_;
@@ -78,7 +78,7 @@ std::string FoxgloveCommands::Advertise(const foxglove::ClientChannel& c) {
            (in.teleop ? " or geometry_msgs/msg/Twist" : "");
   }
   if (!in.writer.valid()) {
-    const std::string dds_name = DdsTopicName(c.topic);
+    const std::string dds_name = wire::DdsTopicName(c.topic);
     const dds_entity_t t =
         dds_create_topic(participant_.get(), in.descriptor, dds_name.c_str(), nullptr, nullptr);
     if (t < 0) return "creating topic " + dds_name + ": " + dds_strretcode(t);

@@ -25,7 +25,7 @@
 #include "dds/entities.h"
 #include "dds/messages.h"
 #include "dds/raw_cdr.h"
-#include "dds/topic_names.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
@@ -41,7 +41,7 @@ class FoxgloveCommands {
  public:
   // `program` names the notes on stderr ("towsim_foxglove: rejected a malformed ...");
   // `winch`: the scene has a winch (SceneInfo.has_winch), so clients may command it
-  FoxgloveCommands(const dds::Participant& participant, const dds::TopicNames& names,
+  FoxgloveCommands(const dds::Participant& participant, const wire::TopicNames& names,
                    const std::vector<std::string>& bodies, bool winch, std::string program,
                    bool quiet);
   FoxgloveCommands(const FoxgloveCommands&) = delete;

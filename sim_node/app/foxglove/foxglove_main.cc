@@ -28,7 +28,7 @@
 // positive angular.z, a positive rudder turns to starboard); elevator = linear.z [rad]; an
 // all-zero Twist stops (thrust 0, fins centred).
 //
-// With --security DIR/NAME its participant runs DDS Security with that identity (dds/security.h,
+// With --security DIR/NAME its participant runs DDS Security with that identity (wire/security.h,
 // docs/security.md); clientPublish then needs an identity allowed to command
 // (scripts/security.sh NAME:BODY,...,sim_control).
 // Binds 127.0.0.1 unless --address says otherwise. Prints on stdout, once listening:
@@ -63,8 +63,8 @@
 #include "dds/messages.h"
 #include "dds/qos.h"
 #include "dds/raw_cdr.h"
-#include "dds/topic_names.h"
 #include "io/ros2_schemas.h"
+#include "wire/topic_names.h"
 
 namespace {
 
@@ -76,6 +76,7 @@ constexpr double kSceneHintAfter = 3.0;  // say what it waits for after [s]
 constexpr int kReaderDepth = 16;         // keep-last history of a bridge reader
 
 namespace dds = towsim::dds;
+namespace wire = towsim::wire;
 using towsim::app::FoxgloveServer;
 
 const char* kUsage =
@@ -93,11 +94,11 @@ const char* kUsage =
 struct Options {
   uint32_t domain = 0;
   bool has_domain = false;
-  std::string ns = dds::kDefaultNamespace;
+  std::string ns = wire::kDefaultNamespace;
   int port = -1;
   std::string address = "127.0.0.1";
   bool quiet = false;
-  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
+  std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
 // the options, read into `o`
@@ -175,7 +176,7 @@ class Bridge {
   void TakeAll();
 
   Options opt_;
-  dds::TopicNames names_;
+  wire::TopicNames names_;
   dds::Participant participant_;
   dds::WaitSet waitset_;
   FoxgloveServer server_;
@@ -190,8 +191,8 @@ void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
     auto s = std::make_unique<Served>();
     s->topic = t;
     const std::string type = towsim::io::Ros2TypeName(t.descriptor->m_typename);
-    s->channel = server_.AddChannel(towsim::app::RosTopicName(t.dds_name), type,
-                                    towsim::io::Ros2MsgSchema(type));
+    s->channel =
+        server_.AddChannel(wire::RosTopicName(t.dds_name), type, towsim::io::Ros2MsgSchema(type));
     s->sequence_first = t.descriptor == &tf2_msgs_msg_dds__TFMessage__desc ||
                         t.descriptor == &visualization_msgs_msg_dds__MarkerArray__desc;
     s->is_clock = t.descriptor == &rosgraph_msgs_msg_dds__Clock__desc;
@@ -257,7 +258,8 @@ void Bridge::TakeAll() {
 
 int Bridge::Run() {
   // the bodies first (scene_info is transient local: also when the node started first)
-  dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc, names_.scene_info());
+  dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc,
+                         names_.Name(wire::Topic::kSceneInfo));
   dds::Reader<dds::SceneInfoMsg> scene(participant_, scene_topic, dds::SceneInfoQos());
   std::vector<std::string> bodies;
   bool have_scene = false, hinted = false, winch = false;
@@ -273,7 +275,7 @@ int Bridge::Run() {
     if (!hinted && static_cast<double>(dds_time()) * 1e-9 - start > kSceneHintAfter) {
       hinted = true;
       std::fprintf(stderr, "towsim_foxglove: waiting for a node's %s (domain %u)\n",
-                   towsim::app::RosTopicName(names_.scene_info()).c_str(), opt_.domain);
+                   wire::RosTopicName(names_.Name(wire::Topic::kSceneInfo)).c_str(), opt_.domain);
     }
   }
   if (!have_scene) return kExitOk;  // stopped while waiting
@@ -323,7 +325,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<Bridge> bridge;
   try {
     bridge = std::make_unique<Bridge>(options, uri);
-  } catch (const dds::SecurityError& e) {
+  } catch (const wire::SecurityError& e) {
     std::fprintf(stderr, "towsim_foxglove: error: %s\n", e.what());
     return kExitBadInput;
   } catch (const dds::DdsError& e) {

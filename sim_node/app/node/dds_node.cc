@@ -20,9 +20,9 @@
 #include "app/node/run_counters.h"
 #include "app/node/strain_watch.h"
 #include "dds/command_arbiter.h"
-#include "dds/topic_names.h"
 #include "dds/translators.h"
 #include "io/output_error.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 namespace {
@@ -159,8 +159,8 @@ int DdsNode::Run() {
     if (realtime()) pacer_.Start(period());
     exit_code = Loop();
   } catch (const io::OutputError& e) {
-    // an output failed (docs/command_line.md "Exit codes"): the run ends, FAILED with the reason, and what
-    // still works (DDS, the other output) ends cleanly
+    // an output failed (docs/command_line.md "Exit codes"): the run ends, FAILED with the reason,
+    // and what still works (DDS, the other output) ends cleanly
     exit_code = kExitError;
     control_.Fail(std::string("output failed: ") + e.what());
     std::fprintf(stderr, "sim_node: %s\n", control_.failure().c_str());
@@ -422,11 +422,12 @@ bool DdsNode::AllCommanded() const {
 }
 
 std::string DdsNode::Describe(const std::vector<int>& entries) const {
-  const dds::TopicNames names(opt_.ns);
+  const wire::TopicNames names(opt_.ns);
   std::string text;
   for (int i : entries) {
     const std::string& name = n_.arbiter->vehicle(i).name;
-    const std::string topic = i == n_.winch_entry ? names.winch_command() : names.command(name);
+    const std::string topic = i == n_.winch_entry ? names.Name(wire::Topic::kWinchCommand)
+                                                  : names.Name(wire::Topic::kCommand, name);
     text += (text.empty() ? "" : ", ") + name + " (" + topic + ")";
   }
   return text;

@@ -52,14 +52,14 @@ struct DdsNodeOptions {
   uint32_t domain = 0;            // DDS domain id
   std::string ns = "/towsim";     // ROS 2 namespace of the topics (/clock stays at the root)
   std::string dds_config;         // CYCLONEDDS_URI-style config; empty: $CYCLONEDDS_URI
-  std::string security;           // DDS Security identity DIR/NAME (dds/security.h); "": none
+  std::string security;           // DDS Security identity DIR/NAME (wire/security.h); "": none
   bool open_outputs = false;      // with security: readers without a certificate see the outputs
   double command_timeout = 0.5;   // failsafe after this much simulation time without command [s]
   double lockstep_timeout = 1.0;  // lockstep: wall time to wait for a step's commands [s]
   // lockstep: the vehicles (and "winch") waited for; empty: every vehicle that takes commands
   // and the winch
   std::vector<std::string> lockstep_bodies;
-  core::PublishRates rates;  // the scene's publish.* (core/publish_rates.h)
+  core::PublishRates rates;   // the scene's publish.* (core/publish_rates.h)
   bool use_script = true;     // the scene's script drives the vehicles between commands
   bool start_paused = false;  // wait for SimControl RESUME / STEP before the first step
   // MCAP recording of every message the node publishes (sim_node --record); empty: none.

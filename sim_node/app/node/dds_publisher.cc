@@ -16,12 +16,16 @@ uint64_t SimNs(double t) { return t > 0.0 ? static_cast<uint64_t>(std::llround(t
 
 }  // namespace
 
-NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
+NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::TopicNames& names,
                              const core::Simulation& sim, const std::vector<int>& command_vehicles)
-    : status_topic_(participant, &towsim_msgs_msg_dds__SimStatus__desc, names.status()),
-      scene_topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc, names.scene_info()),
-      control_topic_(participant, &towsim_msgs_msg_dds__SimControl__desc, names.sim_control()),
-      tf_static_topic_(participant, &tf2_msgs_msg_dds__TFMessage__desc, names.tf_static()),
+    : status_topic_(participant, &towsim_msgs_msg_dds__SimStatus__desc,
+                    names.Name(wire::Topic::kStatus)),
+      scene_topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc,
+                   names.Name(wire::Topic::kSceneInfo)),
+      control_topic_(participant, &towsim_msgs_msg_dds__SimControl__desc,
+                     names.Name(wire::Topic::kSimControl)),
+      tf_static_topic_(participant, &tf2_msgs_msg_dds__TFMessage__desc,
+                       names.Name(wire::Topic::kTfStatic)),
       status_(participant, status_topic_, dds::StateQos()),
       scene_(participant, scene_topic_, dds::SceneInfoQos()),
       tf_static_(participant, tf_static_topic_, dds::SceneInfoQos()),
@@ -34,31 +38,33 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const dds::Top
   const std::vector<TopicRow>& table = NodeTopicTable();
   for (int b = 0; b < sim.num_bodies(); ++b) {
     for (const TopicRow& row : table) {
-      if (!row.per_body || row.make == nullptr) continue;
+      if (!row.per_body()) continue;
       std::unique_ptr<StateTopic> topic =
-          row.make(participant, row, row.name(names, body_names_[b]), sim, b);
+          row.make(participant, row, names.Name(row.topic, body_names_[b]), sim, b);
       if (topic != nullptr) state_.push_back({std::move(topic), {}});  // else not in this scene
     }
   }
   for (bool clock : {false, true}) {
     for (const TopicRow& row : table) {
-      if (row.per_body || row.make == nullptr) continue;
-      if ((*row.rate == core::PublishRate::kClock) != clock) continue;
-      std::unique_ptr<StateTopic> topic = row.make(participant, row, row.name(names, ""), sim, -1);
+      if (row.per_body()) continue;
+      if ((row.rate == core::PublishRate::kClock) != clock) continue;
+      std::unique_ptr<StateTopic> topic =
+          row.make(participant, row, names.Name(row.topic), sim, -1);
       if (topic != nullptr) state_.push_back({std::move(topic), {}});
     }
   }
   const int num_spheres = sim.num_spheres();
   for (int v : command_vehicles) {
     command_topics_.emplace_back(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc,
-                                 names.command(sim.body_name(num_spheres + v)));
+                                 names.Name(wire::Topic::kCommand, sim.body_name(num_spheres + v)));
     command_readers_.push_back(std::make_unique<dds::Reader<dds::ActuatorCommandMsg>>(
         participant, command_topics_.back(), dds::CommandQos()));
     waitset_.Attach(command_readers_.back()->condition());
   }
   if (sim.has_winch()) {
-    winch_topic_ = std::make_unique<dds::Topic>(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
-                                                names.winch_command());
+    winch_topic_ =
+        std::make_unique<dds::Topic>(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
+                                     names.Name(wire::Topic::kWinchCommand));
     winch_reader_ = std::make_unique<dds::Reader<dds::WinchCommandMsg>>(participant, *winch_topic_,
                                                                         dds::CommandQos());
     waitset_.Attach(winch_reader_->condition());
@@ -122,7 +128,8 @@ void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveS
                  Recorded* r, bool latched) {
     r->type = TypeOf(participant, descriptor);  // the recording's, if it has one
     const std::string type = io::Ros2TypeName(descriptor->m_typename);
-    r->fox = server->AddChannel(RosTopicName(dds_topic), type, io::Ros2MsgSchema(type), latched);
+    r->fox =
+        server->AddChannel(wire::RosTopicName(dds_topic), type, io::Ros2MsgSchema(type), latched);
   };
   add(scene_.topic_name(), &towsim_msgs_msg_dds__SceneInfo__desc, &scene_rec_, true);
   add(status_.topic_name(), &towsim_msgs_msg_dds__SimStatus__desc, &status_rec_, false);
@@ -135,21 +142,20 @@ void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveS
   for (const char* type : {"towsim_msgs/msg/ActuatorCommand", "towsim_msgs/msg/SimControl"}) {
     const bool control = std::string(type).find("SimControl") != std::string::npos;
     if (control) {
-      server->AddChannel(RosTopicName(control_topic_.name()), type, io::Ros2MsgSchema(type));
+      server->AddChannel(wire::RosTopicName(control_topic_.name()), type, io::Ros2MsgSchema(type));
       continue;
     }
     for (const dds::Topic& t : command_topics_) {
-      server->AddChannel(RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
+      server->AddChannel(wire::RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
     }
   }
   if (winch_topic_) {
     const char* type = "towsim_msgs/msg/WinchCommand";
-    server->AddChannel(RosTopicName(winch_topic_->name()), type, io::Ros2MsgSchema(type));
+    server->AddChannel(wire::RosTopicName(winch_topic_->name()), type, io::Ros2MsgSchema(type));
   }
   // clients publish through writers of the node's participant: its own readers take them
-  fox_commands_ =
-      std::make_unique<FoxgloveCommands>(participant, names_, body_names_, winch_topic_ != nullptr,
-                                         "sim_node", false);
+  fox_commands_ = std::make_unique<FoxgloveCommands>(participant, names_, body_names_,
+                                                     winch_topic_ != nullptr, "sim_node", false);
   fox_commands_->Attach(server);
 }
 

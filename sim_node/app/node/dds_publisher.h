@@ -23,8 +23,8 @@
 #include "dds/messages.h"
 #include "dds/raw_cdr.h"
 #include "dds/sensor_translators.h"
-#include "dds/topic_names.h"
 #include "dds/translators.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
@@ -32,7 +32,7 @@ class NodeEndpoints {
  public:
   // topics for every body of `sim` and commands for `command_vehicles` (vehicle indices);
   // throws dds::DdsError
-  NodeEndpoints(const dds::Participant& participant, const dds::TopicNames& names,
+  NodeEndpoints(const dds::Participant& participant, const wire::TopicNames& names,
                 const core::Simulation& sim, const std::vector<int>& command_vehicles);
 
   // the state of `sim` after `step` steps: the topics whose stride divides `step` (all of
@@ -66,7 +66,7 @@ class NodeEndpoints {
   // blocks until a command or a control request is available, or `timeout` [s]
   void WaitForInput(double timeout);
 
-  // every reader and writer of the node's topics (its ROS 2 graph entry, dds/ros_graph.h)
+  // every reader and writer of the node's topics (its ROS 2 graph entry, wire/ros_graph.h)
   std::vector<dds_entity_t> readers() const;
   std::vector<dds_entity_t> writers() const;
 
@@ -124,7 +124,7 @@ class NodeEndpoints {
   std::vector<std::uint8_t> buffer_;  // the bytes of the message being recorded
   FoxgloveServer* fox_ = nullptr;
   std::unique_ptr<FoxgloveCommands> fox_commands_;
-  dds::TopicNames names_;
+  wire::TopicNames names_;
   std::vector<std::string> body_names_;
   std::uint64_t sim_ns_ = 0;  // simulation time of the messages being published [ns]
 };

@@ -10,9 +10,9 @@
 #include "app/common/dds_uri.h"
 #include "app/common/stop_signal.h"
 #include "dds/port_mapping.h"
-#include "dds/topic_names.h"
 #include "dds/translators.h"
 #include "io/output_error.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 namespace {
@@ -22,7 +22,7 @@ namespace {
 // expired), stopping would take a second per writer. The node's exit waits 10 ms per writer.
 constexpr const char* kLingerConfig =
     "<Internal><WriterLingerDuration>10ms</WriterLingerDuration></Internal>";
-constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (dds/ros_graph.h)
+constexpr const char* kNodeName = "sim_node";  // its ROS 2 node name (wire/ros_graph.h)
 
 }  // namespace
 
@@ -36,18 +36,18 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
   };
   if (opt.mode == Mode::kOffline) return bad("RunDdsNode: --mode offline has no DDS");
   if (!(std::isfinite(opt.rate) && opt.rate > 0.0)) return bad("--rate must be a number > 0");
-  if (const std::string e = dds::CheckNamespace(opt.ns); !e.empty()) {
+  if (const std::string e = wire::CheckNamespace(opt.ns); !e.empty()) {
     return bad("--namespace " + opt.ns + ": " + e);
   }
   if (!(opt.command_timeout > 0.0)) return bad("command_timeout must be > 0 s");
   if (!(opt.lockstep_timeout > 0.0)) return bad("lockstep timeout must be > 0 s");
   for (const core::SphereBody& b : model.bodies) {
-    if (const std::string e = dds::CheckBodyName(b.name); !e.empty()) {
+    if (const std::string e = wire::CheckBodyName(b.name); !e.empty()) {
       return bad("body " + b.name + ": " + e + " (it names DDS topics)");
     }
   }
   for (const core::Vehicle& v : model.vehicles) {
-    if (const std::string e = dds::CheckBodyName(v.name); !e.empty()) {
+    if (const std::string e = wire::CheckBodyName(v.name); !e.empty()) {
       return bad("body " + v.name + ": " + e + " (it names DDS topics)");
     }
   }
@@ -70,8 +70,9 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
   if (model.cable.winch) {
     for (const auto& v : vehicles) {
       if (v.name == dds::kWinchName) {
-        return bad("body winch: the name is taken by the winch's topic rt/<ns>/winch/command "
-                   "(rename the vehicle)");
+        return bad(
+            "body winch: the name is taken by the winch's topic rt/<ns>/winch/command "
+            "(rename the vehicle)");
       }
     }
   }
@@ -117,8 +118,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
   try {
     n.participant = std::make_unique<dds::Participant>(
         opt.domain, config, opt.security,
-        opt.open_outputs ? dds::Admit::kOpenOutputs : dds::Admit::kAuthenticated);
-    n.endpoints = std::make_unique<NodeEndpoints>(*n.participant, dds::TopicNames(opt.ns), *n.sim,
+        opt.open_outputs ? wire::Admit::kOpenOutputs : wire::Admit::kAuthenticated);
+    n.endpoints = std::make_unique<NodeEndpoints>(*n.participant, wire::TopicNames(opt.ns), *n.sim,
                                                   n.command_vehicles);
     std::vector<std::string> commanded;
     // the vehicles' names (the winch's topic carries another type)
@@ -128,7 +129,7 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     n.unknown = std::make_unique<UnknownCommands>(*n.participant, opt.ns, commanded);
     // another node in this domain and namespace: refused (docs/topics.md); nothing of
     // this node is published yet
-    n.peers = std::make_unique<PeerNodes>(*n.participant, dds::TopicNames(opt.ns));
+    n.peers = std::make_unique<PeerNodes>(*n.participant, wire::TopicNames(opt.ns));
     if (n.peers->WaitForAny(PeerNodes::kStartWindow, [] { return StopRequested() != 0; })) {
       const std::string where = "DDS domain " + std::to_string(opt.domain) + ", namespace " +
                                 opt.ns + " (" + n.peers->Names() + ")";
@@ -144,9 +145,9 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     // commands on topics of no commandable body are not listed)
     std::vector<dds_entity_t> readers = n.endpoints->readers();
     readers.push_back(n.peers->reader());
-    n.graph = std::make_unique<dds::RosGraphNode>(n.participant->get(), opt.ns, kNodeName, readers,
-                                                  n.endpoints->writers());
-  } catch (const dds::SecurityError& e) {
+    n.graph = std::make_unique<wire::RosGraphNode>(n.participant->get(), opt.ns, kNodeName, readers,
+                                                   n.endpoints->writers());
+  } catch (const wire::SecurityError& e) {
     return bad(e.what());
   } catch (const std::runtime_error& e) {  // dds::DdsError, the ROS 2 graph entry
     std::fprintf(stderr, "sim_node: error: DDS setup failed: %s\n", e.what());

@@ -23,7 +23,7 @@
 #include "core/simulation.h"
 #include "dds/command_arbiter.h"
 #include "dds/entities.h"
-#include "dds/ros_graph.h"
+#include "wire/ros_graph.h"
 
 namespace towsim::app {
 
@@ -43,11 +43,11 @@ struct NodeParts {
   std::unique_ptr<dds::Participant> participant;
   std::unique_ptr<McapRecording> recording;  // declared first: outlives the endpoints
   std::unique_ptr<NodeEndpoints> endpoints;
-  std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node /<ns>/sim_node
-  std::unique_ptr<FoxgloveServer> foxglove;  // after endpoints: stops before them
-  std::unique_ptr<PeerNodes> peers;          // other nodes in the namespace
-  std::unique_ptr<UnknownCommands> unknown;  // commands on topics of no commandable body
-  std::string peer_note;                     // the warning about them, for the status
+  std::unique_ptr<wire::RosGraphNode> graph;  // the ROS 2 node /<ns>/sim_node
+  std::unique_ptr<FoxgloveServer> foxglove;   // after endpoints: stops before them
+  std::unique_ptr<PeerNodes> peers;           // other nodes in the namespace
+  std::unique_ptr<UnknownCommands> unknown;   // commands on topics of no commandable body
+  std::string peer_note;                      // the warning about them, for the status
   core::PublishStrides strides;
   long output_stride = 1;
   long steps_to_run = -1;  // < 0: no end

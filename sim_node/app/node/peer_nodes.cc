@@ -13,8 +13,9 @@ dds::Qos PeerQos() {
 
 }  // namespace
 
-PeerNodes::PeerNodes(const dds::Participant& participant, const dds::TopicNames& names)
-    : topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc, names.scene_info()),
+PeerNodes::PeerNodes(const dds::Participant& participant, const wire::TopicNames& names)
+    : topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc,
+             names.Name(wire::Topic::kSceneInfo)),
       reader_(participant, topic_, PeerQos()),
       waitset_(participant) {
   waitset_.Attach(reader_.condition());

@@ -14,7 +14,7 @@
 
 #include "dds/entities.h"
 #include "dds/messages.h"
-#include "dds/topic_names.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
@@ -23,7 +23,7 @@ class PeerNodes {
   // wall time given at start to discover a node that runs already [s]
   static constexpr double kStartWindow = 0.3;
 
-  PeerNodes(const dds::Participant& participant, const dds::TopicNames& names);
+  PeerNodes(const dds::Participant& participant, const wire::TopicNames& names);
 
   // takes what arrived; true if a node not seen before is among it
   bool Poll();
@@ -42,7 +42,7 @@ class PeerNodes {
   std::vector<std::string> run_ids() const;
   // "run id a, run id b" for messages
   std::string Names() const;
-  // the scene_info reader (listed in the node's ROS 2 graph entry, dds/ros_graph.h)
+  // the scene_info reader (listed in the node's ROS 2 graph entry, wire/ros_graph.h)
   dds_entity_t reader() const { return reader_.get(); }
 
  private:

@@ -1,6 +1,5 @@
 #include "app/node/unknown_commands.h"
 
-#include <cstring>
 #include <utility>
 
 #include "dds/qos.h"
@@ -9,9 +8,7 @@ namespace towsim::app {
 
 UnknownCommands::UnknownCommands(const dds::Participant& participant, const std::string& ns,
                                  std::vector<std::string> known)
-    : participant_(participant),
-      prefix_(ns == "/" ? "rt/" : "rt" + ns + "/"),
-      known_(known.begin(), known.end()) {
+    : participant_(participant), names_(ns), known_(known.begin(), known.end()) {
   const dds_entity_t r =
       dds_create_reader(participant.get(), DDS_BUILTIN_TOPIC_DCPSPUBLICATION, nullptr, nullptr);
   if (r < 0) throw dds::DdsError("creating a reader of DCPSPublication", r);
@@ -19,9 +16,8 @@ UnknownCommands::UnknownCommands(const dds::Participant& participant, const std:
 }
 
 int UnknownCommands::Poll() {
-  // writers announced since the last call: an ActuatorCommand writer on <prefix><body>/command
+  // writers announced since the last call: an ActuatorCommand writer on a body's command topic
   constexpr int kBatch = 16;
-  constexpr const char* kSuffix = "/command";
   for (;;) {
     void* samples[kBatch] = {};
     dds_sample_info_t infos[kBatch];
@@ -33,12 +29,9 @@ int UnknownCommands::Poll() {
       const std::string topic = e->topic_name != nullptr ? e->topic_name : "";
       const std::string type = e->type_name != nullptr ? e->type_name : "";
       if (type != towsim_msgs_msg_dds__ActuatorCommand__desc.m_typename) continue;
-      if (topic.rfind(prefix_, 0) != 0 || topic.size() <= prefix_.size() + std::strlen(kSuffix) ||
-          topic.compare(topic.size() - std::strlen(kSuffix), std::string::npos, kSuffix) != 0) {
-        continue;
-      }
-      const std::string body =
-          topic.substr(prefix_.size(), topic.size() - prefix_.size() - std::strlen(kSuffix));
+      const std::optional<std::string> owner = names_.Owner(wire::Topic::kCommand, topic);
+      if (!owner) continue;
+      const std::string& body = *owner;
       if (known_.count(body) || watched_names_.count(body)) continue;
       watched_names_.insert(body);
       Watched w;

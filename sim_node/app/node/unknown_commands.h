@@ -15,6 +15,7 @@
 
 #include "dds/entities.h"
 #include "dds/messages.h"
+#include "wire/topic_names.h"
 
 namespace towsim::app {
 
@@ -40,7 +41,7 @@ class UnknownCommands {
   };
 
   const dds::Participant& participant_;
-  std::string prefix_;  // "rt<ns>/"
+  wire::TopicNames names_;
   std::set<std::string> known_;
   dds::Entity publications_;  // reader of DCPSPublication
   std::set<std::string> watched_names_;

@@ -51,7 +51,7 @@
 #include "dds/messages.h"
 #include "dds/qos.h"
 #include "dds/raw_cdr.h"
-#include "dds/topic_names.h"
+#include "wire/topic_names.h"
 
 namespace {
 
@@ -65,6 +65,7 @@ constexpr double kProgressPeriod = 0.5;  // progress line redraw [s]
 
 using towsim::app::McapRecording;
 namespace dds = towsim::dds;
+namespace wire = towsim::wire;
 
 const char* kUsage =
     "usage: towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]\n"
@@ -84,12 +85,12 @@ const char* kUsage =
 struct Options {
   std::string output;
   uint32_t domain = 0;
-  std::string ns = dds::kDefaultNamespace;
+  std::string ns = wire::kDefaultNamespace;
   std::vector<std::string> topics;
   double duration = INFINITY;
   bool quiet = false;
   bool overwrite = false;
-  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
+  std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -153,7 +154,7 @@ class Recorder {
   void Progress(bool final);
 
   Options opt_;
-  dds::TopicNames names_;
+  wire::TopicNames names_;
   dds::Participant participant_;
   dds::WaitSet waitset_;
   std::unique_ptr<McapRecording> recording_;
@@ -257,11 +258,12 @@ int Recorder::Run() {
   const bool want_scene =
       !explicit_topics ||
       std::find(opt_.topics.begin(), opt_.topics.end(),
-                towsim::app::RosTopicName(names_.scene_info())) != opt_.topics.end();
+                wire::RosTopicName(names_.Name(wire::Topic::kSceneInfo))) != opt_.topics.end();
   // scene_info first: it names the bodies
   Subscription* scene = nullptr;
   if (want_scene || !explicit_topics) {
-    scene = &Subscribe(names_.scene_info(), &towsim_msgs_msg_dds__SceneInfo__desc, true);
+    scene = &Subscribe(names_.Name(wire::Topic::kSceneInfo), &towsim_msgs_msg_dds__SceneInfo__desc,
+                       true);
   }
   start_ = Now();
   double end_seen = -1.0;
@@ -288,14 +290,15 @@ int Recorder::Run() {
       }
       std::set<std::string> known;
       for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies)) {
-        const std::string ros = towsim::app::RosTopicName(t.dds_name);
+        const std::string ros = wire::RosTopicName(t.dds_name);
         if (known.count(ros)) continue;
         known.insert(ros);
         if (explicit_topics && !wanted.count(ros)) continue;
         Subscribe(t.dds_name, t.descriptor, t.transient_local);
       }
       if (explicit_topics) {
-        if (scene != nullptr) known.insert(towsim::app::RosTopicName(names_.scene_info()));
+        if (scene != nullptr)
+          known.insert(wire::RosTopicName(names_.Name(wire::Topic::kSceneInfo)));
         for (const std::string& t : opt_.topics) {
           if (!known.count(t)) {
             std::string list;
@@ -312,7 +315,7 @@ int Recorder::Run() {
     if (!subscribed && !hinted && now - start_ > kSceneHintAfter) {
       hinted = true;
       std::fprintf(stderr, "towsim_record: waiting for a node's %s (domain %u)\n",
-                   towsim::app::RosTopicName(names_.scene_info()).c_str(), opt_.domain);
+                   wire::RosTopicName(names_.Name(wire::Topic::kSceneInfo)).c_str(), opt_.domain);
     }
     if (ended && end_seen < 0.0) end_seen = now;
     if (end_seen >= 0.0 && now - end_seen >= kDrainAfterEnd) break;
@@ -339,7 +342,7 @@ int main(int argc, char** argv) {
   std::unique_ptr<Recorder> recorder;
   try {
     recorder = std::make_unique<Recorder>(options, uri);
-  } catch (const dds::SecurityError& e) {
+  } catch (const wire::SecurityError& e) {
     return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());

@@ -53,8 +53,8 @@
 #include "dds/messages.h"
 #include "dds/qos.h"
 #include "dds/raw_cdr.h"
-#include "dds/topic_names.h"
 #include "io/mcap_reader.h"
+#include "wire/topic_names.h"
 
 namespace {
 
@@ -67,6 +67,7 @@ constexpr double kProgressPeriod = 0.25;  // progress line redraw [s]
 constexpr double kAckTimeout = 1.0;       // at the end, for subscribers to acknowledge [s]
 
 namespace dds = towsim::dds;
+namespace wire = towsim::wire;
 namespace io = towsim::io;
 
 const char* kUsage =
@@ -98,7 +99,7 @@ struct Options {
   std::string ns;  // empty: as recorded
   bool quiet = false;
   bool recover = false;
-  std::string security;  // --security DIR/NAME (dds/security.h); empty: none
+  std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
 int Bad(const std::string& message) {
@@ -206,7 +207,7 @@ int Replay(const Options& opt) {
   std::unique_ptr<dds::Participant> participant;
   try {
     participant = std::make_unique<dds::Participant>(opt.domain, uri, opt.security);
-  } catch (const dds::SecurityError& e) {
+  } catch (const wire::SecurityError& e) {
     return Bad(e.what());
   } catch (const dds::DdsError& e) {
     return Bad(std::string("DDS setup failed: ") + e.what());
@@ -235,7 +236,7 @@ int Replay(const Options& opt) {
     if (!opt.ns.empty() && !recorded_ns.empty() && topic.rfind(recorded_ns + "/", 0) == 0) {
       topic = (opt.ns == "/" ? "" : opt.ns) + topic.substr(recorded_ns.size());
     }
-    out->dds_topic = towsim::app::DdsTopicName(topic);
+    out->dds_topic = wire::DdsTopicName(topic);
     out->descriptor = d;
     out->scene_info = d == &towsim_msgs_msg_dds__SceneInfo__desc;
     for (const auto& t : types) {

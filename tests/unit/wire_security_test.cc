@@ -1,4 +1,4 @@
-// sim_node/dds/security: the files of an identity, the QoS properties handed to Cyclone's
+// wire/security: the files of an identity, the QoS properties handed to Cyclone's
 // plugins, and the refusal of a key that is not the certificate's, all before any DDS traffic
 // (no participant is created here; tests/integration/security_integration_test.cc runs them).
 // Identities from scripts/security.sh in a temp dir. The gtest names avoid the word that
@@ -10,10 +10,10 @@
 
 #include <gtest/gtest.h>
 
-#include "dds/security.h"
 #include "temp_dir.h"
+#include "wire/security.h"
 
-namespace towsim::dds {
+namespace towsim::wire {
 namespace {
 
 namespace fs = std::filesystem;
@@ -114,4 +114,4 @@ TEST_F(IdentityFilesTest, KeyOfAnotherIdentityIsRefused) {
 }
 
 }  // namespace
-}  // namespace towsim::dds
+}  // namespace towsim::wire

@@ -1,4 +1,4 @@
-#include "dds/security.h"
+#include "wire/security.h"
 
 #include <openssl/bio.h>
 #include <openssl/err.h>
@@ -20,7 +20,7 @@
 #define TOWSIM_DDS_SECURITY_PLUGIN_DIR ""
 #endif
 
-namespace towsim::dds {
+namespace towsim::wire {
 namespace {
 
 bool IsDirectory(const std::string& path) {
@@ -263,4 +263,4 @@ dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identit
   return p;
 }
 
-}  // namespace towsim::dds
+}  // namespace towsim::wire

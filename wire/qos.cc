@@ -1,6 +1,6 @@
-#include "common/dds_qos.h"
+#include "wire/qos.h"
 
-namespace towsim::controllers {
+namespace towsim::wire {
 
 dds_qos_t* ReliableQos(int depth, bool transient_local) {
   dds_qos_t* q = dds_create_qos();
@@ -13,4 +13,18 @@ dds_qos_t* ReliableQos(int depth, bool transient_local) {
   return q;
 }
 
-}  // namespace towsim::controllers
+dds_qos_t* ProfileQos(QosProfile profile, int state_depth) {
+  switch (profile) {
+    case QosProfile::kLatched:
+      return ReliableQos(1, true);
+    case QosProfile::kCommand:
+      return ReliableQos(kCommandDepth, false);
+    case QosProfile::kControl:
+      return ReliableQos(kControlDepth, false);
+    case QosProfile::kState:
+      break;
+  }
+  return ReliableQos(state_depth, false);
+}
+
+}  // namespace towsim::wire

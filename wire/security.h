@@ -25,7 +25,7 @@
 
 #include "dds/dds.h"
 
-namespace towsim::dds {
+namespace towsim::wire {
 
 // bad --security input; the programs exit 2 with what() on stderr
 class SecurityError : public std::runtime_error {
@@ -68,4 +68,4 @@ dds_entity_t CreateSecureParticipant(uint32_t domain, const std::string& identit
 // the directory of Cyclone's security plugins found at build time ("" if none)
 const char* SecurityPluginDirectory();
 
-}  // namespace towsim::dds
+}  // namespace towsim::wire

@@ -1,11 +1,11 @@
-#include "dds/ros_graph.h"
+#include "wire/ros_graph.h"
 
 #include <cstring>
 #include <stdexcept>
 
 #include "rmw_dds_common.h"
 
-namespace towsim::dds {
+namespace towsim::wire {
 namespace {
 
 dds_entity_t Check(dds_entity_t e, const std::string& what) {
@@ -88,4 +88,4 @@ RosGraphNode::~RosGraphNode() {
   if (topic_ > 0) dds_delete(topic_);
 }
 
-}  // namespace towsim::dds
+}  // namespace towsim::wire

@@ -10,7 +10,7 @@
 //     GIDs of the node's readers and writers);
 //   - a GID is the 16-byte DDS GUID of the entity (dds_get_guid), Jazzy's Gid layout.
 //
-// Only the C API of Cyclone DDS: used by sim_node and by the controllers (controllers/common).
+// Only the C API of Cyclone DDS: used by sim_node, the controllers, the tests and the tools.
 
 #include <array>
 #include <cstdint>
@@ -19,7 +19,7 @@
 
 #include "dds/dds.h"
 
-namespace towsim::dds {
+namespace towsim::wire {
 
 inline constexpr const char* kDiscoveryTopic = "ros_discovery_info";
 inline constexpr const char* kEnclaveUserData = "enclave=/;";
@@ -50,4 +50,4 @@ class RosGraphNode {
   dds_entity_t topic_ = 0, writer_ = 0;
 };
 
-}  // namespace towsim::dds
+}  // namespace towsim::wire
