@@ -93,9 +93,7 @@ TEST(StepSampler, SamplesTheVehiclesAtTheStartAndThePredictedEnd) {
   EXPECT_EQ(in.vehicle_flow_end[0].elevation, end.elevation);
   EXPECT_NE(in.vehicle_flow_start[0].origin.velocity, in.vehicle_flow_end[0].origin.velocity);
   // the previous step ended at t_0: its end is this step's start
-  VehicleFlow kept;
-  kept.origin.velocity = Vec3(0.25, -0.5, 0.125);
-  s.coupling.flow_end[0] = kept;
+  s.coupling.flow_end[0] = UniformFlow(Vec3(0.25, -0.5, 0.125));
   s.coupling.flow_time = 2.0;
   sampler.SampleVehicleFlows(s, h, &in);
   EXPECT_EQ(in.vehicle_flow_start[0].origin.velocity, Vec3(0.25, -0.5, 0.125));
