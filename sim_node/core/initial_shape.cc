@@ -30,8 +30,8 @@ void BuildInitialState(const System& sys, State* s) {
   s->a_alpha.setZero(n);
   s->lambda.setZero(sys.num_lambda());
   for (int b = 0; b < sys.num_spheres(); ++b) {
-    s->q.segment<3>(sys.sphere_dof(b)) = m.spheres[b].position;
-    s->v.segment<3>(sys.sphere_dof(b)) = m.spheres[b].velocity;
+    s->q.segment<3>(sys.SphereDof(b)) = m.spheres[b].position;
+    s->v.segment<3>(sys.SphereDof(b)) = m.spheres[b].velocity;
   }
   s->vehicles.clear();
   for (const Vehicle& v : m.vehicles) {
@@ -72,9 +72,9 @@ void BuildInitialState(const System& sys, State* s) {
       r = p0 + u * chord + (4.0 * sag * u * (1.0 - u)) * sag_dir;
       dr = (chord + (4.0 * sag * (1.0 - 2.0 * u)) * sag_dir) / c.length;
     }
-    s->q.segment<3>(sys.cable_dof(i)) = r;
-    s->q.segment<3>(sys.cable_dof(i) + 3) = dr;
-    s->v.segment<3>(sys.cable_dof(i)) = c.initial_velocity;
+    s->q.segment<3>(sys.CableDof(i)) = r;
+    s->q.segment<3>(sys.CableDof(i) + 3) = dr;
+    s->v.segment<3>(sys.CableDof(i)) = c.initial_velocity;
   }
 }
 

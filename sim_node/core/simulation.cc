@@ -126,7 +126,7 @@ void Simulation::Impl::SolveBrakeSlip(double h, double slip, StepStatus* s) {
   int iterations = s->iterations;
   double next = 0.0;
   while (s->ok() && winch_step.length < c.winch->max_length &&
-         brake.Next(slip, state.lambda.segment<3>(system.end_lambda(0)).norm(), &next)) {
+         brake.Next(slip, state.lambda.segment<3>(system.EndLambda(0)).norm(), &next)) {
     // again from the step's start, keeping the kept Newton matrix the attempt left (the
     // integrator's cache of it, integrator.h)
     brake_start.newton = state.newton;
@@ -252,8 +252,8 @@ void Simulation::StartFrom(const State& state) {
     throw SolverError("StartFrom: accelerations could not be computed for the given state");
 }
 
-int Simulation::cable_dof(int node) const { return impl_->system.cable_dof(node); }
-int Simulation::sphere_dof(int sphere) const { return impl_->system.sphere_dof(sphere); }
+int Simulation::cable_dof(int node) const { return impl_->system.CableDof(node); }
+int Simulation::sphere_dof(int sphere) const { return impl_->system.SphereDof(sphere); }
 int Simulation::num_nodes() const { return impl_->system.num_nodes(); }
 int Simulation::num_spheres() const { return impl_->system.num_spheres(); }
 int Simulation::num_vehicles() const { return static_cast<int>(model().vehicles.size()); }
@@ -353,7 +353,7 @@ double Simulation::drum_tension() const { return node_tension(0); }
 Vec3 Simulation::end_force(int end) const {
   const System& sys = impl_->system;
   if (sys.end_lambda_count(end) == 0) return Vec3::Zero();
-  return impl_->state.lambda.segment<3>(sys.end_lambda(end));
+  return impl_->state.lambda.segment<3>(sys.EndLambda(end));
 }
 
 double Simulation::KineticEnergy() const {

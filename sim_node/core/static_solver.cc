@@ -18,7 +18,7 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, cons
   const Environment& env = m.environment;
   double rel = 0.0;
   for (int i = 0; i < sys.num_nodes(); ++i) {
-    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.cable_dof(i)), s.t);
+    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.CableDof(i)), s.t);
     rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
   }
   double f = std::abs(c.density - env.water_density) * c.area() * env.gravity * c.length;
@@ -40,8 +40,8 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
   const double q_scale = std::max(1.0, sys.model().cable.length);
   s->v.setZero(n);
-  for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.cable_dof(i)) = frame_velocity;
-  for (int b = 0; b < sys.num_spheres(); ++b) s->v.segment<3>(sys.sphere_dof(b)) = frame_velocity;
+  for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.CableDof(i)) = frame_velocity;
+  for (int b = 0; b < sys.num_spheres(); ++b) s->v.segment<3>(sys.SphereDof(b)) = frame_velocity;
   s->a.setZero(n);
   s->lambda.setZero(m);
 

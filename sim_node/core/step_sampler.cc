@@ -14,11 +14,11 @@ void StepSampler::SampleWaves(const Eigen::VectorXd& q, double t, StepInputs* in
   const EnvironmentField& sea = system_.sea();
   // nodes: the waves at r and their derivative along r' (= d/dx, x the unstretched arc length)
   for (int n = 0; n < system_.num_nodes(); ++n) {
-    const int o = system_.cable_dof(n);
+    const int o = system_.CableDof(n);
     in->waves.nodes[n] = sea.Waves(q.segment<3>(o), q.segment<3>(o + 3), t);
   }
   for (int s = 0; s < system_.num_spheres(); ++s)
-    in->waves.spheres[s] = sea.Waves(q.segment<3>(system_.sphere_dof(s)), Vec3::Zero(), t);
+    in->waves.spheres[s] = sea.Waves(q.segment<3>(system_.SphereDof(s)), Vec3::Zero(), t);
   in->has_waves = true;
 }
 

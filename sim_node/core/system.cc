@@ -109,14 +109,14 @@ void System::BuildLayout() {
   const int sphere_at[2] = {ends[0]->kind == EndKind::kSphere ? ends[0]->body : -1,
                             ends[1]->kind == EndKind::kSphere ? ends[1]->body : -1};
   auto place_sphere = [&](int b, int block, int* local) {
-    for (int i = 0; i < 3; ++i) q_index_[sphere_dof(b) + i] = {block, (*local)++};
+    for (int i = 0; i < 3; ++i) q_index_[SphereDof(b) + i] = {block, (*local)++};
   };
   auto place_lambda = [&](int end, int block, int* local) {
     for (int i = 0; i < lambda_count_[end]; ++i)
-      lambda_index_[end_lambda(end) + i] = {block, (*local)++};
+      lambda_index_[EndLambda(end) + i] = {block, (*local)++};
   };
   auto place_node = [&](int node, int block, int* local) {
-    for (int i = 0; i < 6; ++i) q_index_[cable_dof(node) + i] = {block, (*local)++};
+    for (int i = 0; i < 6; ++i) q_index_[CableDof(node) + i] = {block, (*local)++};
   };
   const int nn = num_nodes_;
   block_sizes_.assign(max_nodes_, 0);  // same size after the first call: no allocation
@@ -194,7 +194,7 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
     case EndKind::kDriven:
       return e.position + t * e.velocity;
     case EndKind::kSphere:
-      return q.segment<3>(sphere_dof(e.body)) + e.at_B;  // sphere frames stay world-aligned
+      return q.segment<3>(SphereDof(e.body)) + e.at_B;  // sphere frames stay world-aligned
     case EndKind::kVehicle: {
       if (!supports) break;
       const SupportMotion& s = supports[end];
@@ -237,7 +237,7 @@ void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
   ElementWaves ew;
   const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
                                double drum_rate) {
-    const int o = cable_dof(e);
+    const int o = CableDof(e);
     const Mat12& mass = element.mass();
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
     if (waves) {
@@ -295,7 +295,7 @@ void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
     add_element(0, drum, UniformLoad(loads_.weight_per_length, drum_l), drum_rate);
     first_plain = 1;
   }
-  for (int e = first_plain; e < num_elements(); ++e) add_element(e, element_, weight_load_, 0.0);
+  for (int e = first_plain; e < NumElements(); ++e) add_element(e, element_, weight_load_, 0.0);
 }
 
 void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
@@ -309,7 +309,7 @@ void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
   const Environment& env = model_.environment;
   for (int b = 0; b < num_spheres(); ++b) {
     const SphereBody& sphere = model_.spheres[b];
-    const int o = sphere_dof(b);
+    const int o = SphereDof(b);
     Vec3 shear = Vec3::Zero();
     FlowSample flow;
     if (sea_.uniform()) {
@@ -363,8 +363,8 @@ void System::AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
   VectorXd* residual = out.residual;
   VectorXd* phi = out.phi;
   const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
-  const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
-  const int lo = end_lambda(end);
+  const int nd = CableDof(end == 0 ? 0 : num_nodes() - 1);
+  const int lo = EndLambda(end);
   phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, x.t, in.supports);
   // a support that answers the force (state.h, vehicle_coupling.h):
   //   Phi -= f C (lambda - lambda1), f the fraction of its motion at t
@@ -376,7 +376,7 @@ void System::AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
   }
   residual->segment<3>(nd) += lambda.segment<3>(lo);
   const bool sphere = ce.kind == EndKind::kSphere;
-  if (sphere) residual->segment<3>(sphere_dof(ce.body)) -= lambda.segment<3>(lo);
+  if (sphere) residual->segment<3>(SphereDof(ce.body)) -= lambda.segment<3>(lo);
   if (ce.clamped) {
     // direction held: n_k . r' = 0 for the two normals of the slope
     for (int i = 0; i < 2; ++i) {
@@ -389,7 +389,7 @@ void System::AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
   if (!jac) return;
   for (int i = 0; i < 3; ++i) {
     AddQL(jac, nd, lo + i, Vec3::Unit(i));
-    if (sphere) AddQL(jac, sphere_dof(ce.body), lo + i, -Vec3::Unit(i));
+    if (sphere) AddQL(jac, SphereDof(ce.body), lo + i, -Vec3::Unit(i));
   }
   if (ce.clamped)
     for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
@@ -440,8 +440,8 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
   am_only.weight_per_length.setZero();
   std::optional<AncfElement> drum;
   if (winch_) drum.emplace(DrumElement(drum_length_));
-  for (int e = 0; e < num_elements(); ++e) {
-    const int o = cable_dof(e);
+  for (int e = 0; e < NumElements(); ++e) {
+    const int o = CableDof(e);
     const AncfElement& element = winch_ && e == 0 ? *drum : element_;
     const Vec12 ed = v.segment<12>(o);
     Mat12 m = element.mass();
@@ -453,7 +453,7 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
     ke += 0.5 * ed.dot(m * ed);
   }
   for (int b = 0; b < num_spheres(); ++b)
-    ke += 0.5 * sphere_mass_eff_[b] * v.segment<3>(sphere_dof(b)).squaredNorm();
+    ke += 0.5 * sphere_mass_eff_[b] * v.segment<3>(SphereDof(b)).squaredNorm();
   return ke;
 }
 
@@ -461,15 +461,15 @@ double System::PotentialEnergy(const VectorXd& q) const {
   // V = - int w . r dx (uniform load) - sum (m - rho V) g z_b
   double pe = 0.0;
   const Vec12 qw = UniformLoad(loads_.weight_per_length, element_.props().length);
-  for (int e = 0; e < num_elements(); ++e) {
+  for (int e = 0; e < NumElements(); ++e) {
     const Vec12 qe =
         winch_ && e == 0 ? UniformLoad(loads_.weight_per_length, drum_length_) : Vec12(qw);
-    pe -= qe.dot(q.segment<12>(cable_dof(e)));
+    pe -= qe.dot(q.segment<12>(CableDof(e)));
   }
   const Environment& env = model_.environment;
   for (int b = 0; b < num_spheres(); ++b) {
     const SphereBody& sphere = model_.spheres[b];
-    pe -= (sphere.mass - env.water_density * sphere.volume) * env.gravity * q(sphere_dof(b) + 2);
+    pe -= (sphere.mass - env.water_density * sphere.volume) * env.gravity * q(SphereDof(b) + 2);
   }
   return pe;
 }
@@ -478,9 +478,9 @@ double System::StrainEnergy(const VectorXd& q) const {
   double u = 0.0;
   std::optional<AncfElement> drum;
   if (winch_) drum.emplace(DrumElement(drum_length_));
-  for (int e = 0; e < num_elements(); ++e) {
+  for (int e = 0; e < NumElements(); ++e) {
     const AncfElement& element = winch_ && e == 0 ? *drum : element_;
-    u += element.StrainEnergy(q.segment<12>(cable_dof(e)));
+    u += element.StrainEnergy(q.segment<12>(CableDof(e)));
   }
   return u;
 }
@@ -492,13 +492,13 @@ double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const
   std::optional<AncfElement> drum;
   if (winch_) drum.emplace(DrumElement(drum_length_));
   if (node > 0) {
-    const int o = cable_dof(node - 1);
+    const int o = CableDof(node - 1);
     const AncfElement& element = winch_ && node == 1 ? *drum : element_;
     sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
     ++n;
   }
-  if (node < num_elements()) {
-    const int o = cable_dof(node);
+  if (node < NumElements()) {
+    const int o = CableDof(node);
     const AncfElement& element = winch_ && node == 0 ? *drum : element_;
     sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
     ++n;
@@ -513,7 +513,7 @@ std::string System::DescribeDof(int i, const VectorXd& q) const {
     return s.str();
   }
   const int node = (i - cable_offset_) / 6 - first_node_;
-  const Vec3 r = q.segment<3>(cable_dof(node));
+  const Vec3 r = q.segment<3>(CableDof(node));
   s << "cable node " << node << " (s = " << node * element_.props().length << " m, at [" << r.x()
     << ", " << r.y() << ", " << r.z() << "])";
   return s.str();

@@ -83,15 +83,15 @@ class System {
   int num_lambda() const { return num_lambda_; }
   // the nodes and elements in use (node 0 at the cable's start)
   int num_nodes() const { return num_nodes_; }
-  int num_elements() const { return num_nodes_ - 1; }
+  int NumElements() const { return num_nodes_ - 1; }
   int num_spheres() const { return static_cast<int>(model_.spheres.size()); }
   // node i in use -> its coordinates in q (the array node first_node() + i)
-  int cable_dof(int node) const { return cable_offset_ + 6 * (first_node_ + node); }
+  int CableDof(int node) const { return cable_offset_ + 6 * (first_node_ + node); }
   // the preallocated nodes (elements + 1 without a winch) and the array index of node 0
   int max_nodes() const { return max_nodes_; }
   int first_node() const { return first_node_; }
   // q offset of array node k (in use or parked)
-  int array_dof(int k) const { return cable_offset_ + 6 * k; }
+  int ArrayDof(int k) const { return cable_offset_ + 6 * k; }
   // the nominal element rest length cable.length / cable.elements [m]
   double element_length() const { return element_.props().length; }
   // with a winch: `nodes` in use and the paid-out length L, so the drum element's rest length
@@ -101,9 +101,9 @@ class System {
   bool has_winch() const { return winch_; }
   // the element e in use with rest length l (drum element) or the shared one
   AncfElement DrumElement(double length) const;
-  int sphere_dof(int sphere) const { return 3 * sphere; }
+  int SphereDof(int sphere) const { return 3 * sphere; }
   // multiplier offset and count of a cable end (0 = start, 1 = end)
-  int end_lambda(int end) const { return end == 0 ? 0 : lambda_count_[0]; }
+  int EndLambda(int end) const { return end == 0 ? 0 : lambda_count_[0]; }
   int end_lambda_count(int end) const { return lambda_count_[end]; }
   const AncfElement& element() const { return element_; }
 
@@ -125,7 +125,7 @@ class System {
 
   // element e's 12 coordinates from q
   Vec12 ElementCoordinates(const Eigen::VectorXd& q, int e) const {
-    return q.segment<12>(cable_dof(e));
+    return q.segment<12>(CableDof(e));
   }
   // world position of the support of a cable end at time t (fixed / driven / sphere point; a
   // vehicle point from `supports`, the motion the coupling scheme set for the step: the

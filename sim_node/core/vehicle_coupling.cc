@@ -53,7 +53,7 @@ Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
 Vec3 VehicleCoupling::JointForce(const State& state, int v) const {
   Vec3 f = Vec3::Zero();
   for (int e = 0; e < 2; ++e)
-    if (vehicle_end_[e] == v) f += state.lambda.segment<3>(system_.end_lambda(e));
+    if (vehicle_end_[e] == v) f += state.lambda.segment<3>(system_.EndLambda(e));
   return f;
 }
 
@@ -187,7 +187,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       state->supports[e] = {p0,   AttachmentPoint(vehicles[v], e), t0, t0 + h, point_compliance[e],
                             f1[v]};
       // Newton starts from the predicted joint force
-      if (!point_compliance[e].isZero()) state->lambda.segment<3>(system_.end_lambda(e)) = f1[v];
+      if (!point_compliance[e].isZero()) state->lambda.segment<3>(system_.EndLambda(e)) = f1[v];
     }
     const StepStatus cable = integrator_->Step(state, h, warm ? &previous_pass_ : nullptr);
     previous_pass_substeps_ = cable.substeps;

@@ -66,7 +66,7 @@ core::Model HangingWeight() {
 double CableMass(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   double mass = 0.0;
-  for (int e = 0; e < sys.num_elements(); ++e) {
+  for (int e = 0; e < sys.NumElements(); ++e) {
     const core::AncfElement element =
         e == 0 ? sys.DrumElement(sys.drum_length()) : sys.DrumElement(sys.element_length());
     const core::Mat12& m = element.mass();

@@ -155,7 +155,7 @@ StepStatus StepAged(const System& system, const State& start, int age, double ki
   *out = start;
   EXPECT_TRUE(integrator.RestoreNewtonMatrix(*out));
   out->newton.theta_age = age;
-  out->v(system.cable_dof(10)) += kick;
+  out->v(system.CableDof(10)) += kick;
   const StepStatus st = integrator.Step(out, 0.05);
   *refreshes = integrator.tangent_refreshes();
   return st;

@@ -55,7 +55,7 @@ TEST(StepSampler, SamplesTheWavesAtTheNodesAndSpheres) {
   EXPECT_TRUE(in.has_waves);
   // each node: the sea's waves at r with their derivative along r' (exactly those bits)
   for (int n = 0; n < sys.num_nodes(); ++n) {
-    const int o = sys.cable_dof(n);
+    const int o = sys.CableDof(n);
     const WaveSample w = sys.sea().Waves(s.q.segment<3>(o), s.q.segment<3>(o + 3), t);
     EXPECT_EQ(in.waves.nodes[n].velocity, w.velocity) << n;
     EXPECT_EQ(in.waves.nodes[n].d_velocity, w.d_velocity) << n;

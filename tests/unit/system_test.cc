@@ -144,7 +144,7 @@ TEST(System, ConstraintHoldsTheEndAtTheSupport) {
   // the driven start has moved 2 s * 1.5 m/s along x since t = 0
   EXPECT_NEAR(phi(0), 0.0 - 3.0, 1e-12);
   // body end: cable end at the body initially
-  const Vec3 end = s.q.segment<3>(sys.cable_dof(sys.num_nodes() - 1));
+  const Vec3 end = s.q.segment<3>(sys.CableDof(sys.num_nodes() - 1));
   EXPECT_TRUE((end - Vec3(-12, 1, 28)).norm() < 1e-12);
 }
 
