@@ -108,9 +108,10 @@ class System {
   const AncfElement& element() const { return element_; }
 
   // Evaluates R and Phi at x, and the Newton matrix when out.jac != nullptr: the cable
-  // (AssembleCable), the spheres (AssembleSpheres) and the joints (AssembleJoints). The waves
-  // come from in.waves (calm water without in.has_waves), the current is evaluated here; a
-  // cable end on a vehicle follows in.supports[end], the drum element in.drum (step_inputs.h).
+  // (AssembleCable), the spheres (AssembleSpheres) and each cable end's joint (AssembleJoint).
+  // The waves come from in.waves (calm water without in.has_waves), the current is evaluated
+  // here; a cable end on a vehicle follows in.supports[end], the drum element in.drum
+  // (step_inputs.h).
   void Evaluate(const SystemPoint& x, const StepInputs& in, const EvaluateOptions& options,
                 const SystemResidual& out) const;
 

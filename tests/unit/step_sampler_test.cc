@@ -13,7 +13,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kHeight = 2.0, kPeriod = 8.0, kG = 9.81, kRho = 1025.0;
 
-// a vertical cable from a vehicle at 3 m depth down to a sphere, in a regular deep-water wave
+// a vertical cable from a vehicle at 3 m depth (2 m/s ahead) down to a sphere, in a regular
+// deep-water wave
 Model WavyModel() {
   Model m;
   m.environment.waves = WaveField::Regular(kHeight, kPeriod, 0.0, 0.0,
@@ -21,15 +22,13 @@ Model WavyModel() {
   m.cable.length = 40.0;
   m.cable.elements = 4;
   m.cable.initial = InitialShape::kVertical;
+  // from the vehicle (the cable's start) down to the sphere (its end)
+  for (CableEnd* end : {&m.cable.start, &m.cable.end}) end->body = 0;
   m.cable.start.kind = EndKind::kVehicle;
-  m.cable.start.body = 0;
   m.cable.end.kind = EndKind::kSphere;
-  m.cable.end.body = 0;
   Vehicle v;
-  v.name = "vehicle";
-  v.params.length = 5.0;
-  v.params.mass = 1000.0;
-  v.params.volume = v.params.mass / kRho;
+  v.name = "tow";
+  v.params.length = 5.0;  // the hull stations the water is sampled at: x_B in [-2.5, 2.5] m
   v.position = Vec3(0, 0, 3.0);
   v.nu << 2.0, 0, 0, 0, 0, 0;
   m.vehicles.push_back(v);
