@@ -65,6 +65,8 @@
 #include "core/block_tridiagonal.h"
 #include "core/simulation.h"
 #include "core/state.h"
+#include "core/step_inputs.h"
+#include "core/step_sampler.h"
 #include "core/system.h"
 
 namespace towsim::core {
@@ -76,7 +78,9 @@ struct AlphaParameters {
 
 class Integrator {
  public:
-  explicit Integrator(const System& system);
+  // reads the sea and the supports from *inputs, which it sizes (StepSampler::Resize) and
+  // fills with the waves and the State's motions (step_inputs.h); *inputs outlives it
+  Integrator(const System& system, StepInputs* inputs);
 
   // advance *state by h (sub-stepping on Newton failure). `guess`, if given, is a solution of
   // a nearby problem over the same step (the previous vehicle-coupling pass, whose supports
@@ -140,19 +144,20 @@ class Integrator {
   StepStatus Advance(State* state, double h, int level, const State* guess);
 
   const System& system_;
+  StepSampler sampler_;
+  StepInputs* inputs_;  // the step's inputs (step_inputs.h), shared with the vehicle coupling
   AlphaParameters ap_;
   double q_scale_;
   BlockTridiagonal jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
   std::vector<State> backup_;                          // one saved state per sub-stepping level
-  // the waves, sampled once per (sub)step at t_{n+1} at the predicted positions (and kept for
-  // the later vehicle-coupling passes over the same step); calm water: never sampled
+  // the waves in inputs_, sampled once per (sub)step at t_{n+1} at the predicted positions (and
+  // kept for the later vehicle-coupling passes over the same step); calm water: never sampled
   bool waves_ = false;
-  WaveSamples wave_samples_;
-  double wave_time_ = -1.0;  // t of wave_samples_ (< 0: none yet)
+  double wave_time_ = -1.0;  // t of the waves in inputs_ (< 0: none yet)
   Attempt last_failure_;
-  Eigen::VectorXd wave_q_;  // positions wave_samples_ were sampled at
+  Eigen::VectorXd wave_q_;  // positions the waves in inputs_ were sampled at
   long tangent_refreshes_ = 0;
 };
 

@@ -49,11 +49,11 @@ struct CableLoads {
 };
 
 enum class EndKind {
-  kFree,    // no constraint
-  kFixed,   // r = position (Eq. 24 against the ground)
-  kDriven,  // r = position + velocity * t
-  kBody,    // r = p_WB + at_B on a sphere body (Eq. 24)
-  kVehicle, // r = p_WB + R_WB * at_B on a 6-DOF vehicle (Eq. 24)
+  kFree,     // no constraint
+  kFixed,    // r = position (Eq. 24 against the ground)
+  kDriven,   // r = position + velocity * t
+  kSphere,   // r = p_WB + at_B on a sphere (Eq. 24)
+  kVehicle,  // r = p_WB + R_WB * at_B on a 6-DOF vehicle (Eq. 24)
 };
 
 struct CableEnd {
@@ -63,7 +63,7 @@ struct CableEnd {
   // clamped ends also hold the cable direction: r' x slope = 0 (cantilever roots).
   bool clamped = false;
   Vec3 slope = Vec3::UnitX();  // unit direction, used when clamped
-  int body = -1;  // index into Model::bodies (kBody) or Model::vehicles (kVehicle)
+  int body = -1;               // index into Model::spheres (kSphere) or Model::vehicles (kVehicle)
   Vec3 at_B = Vec3::Zero();    // attachment point in the body frame [m]
 };
 
@@ -188,7 +188,7 @@ struct Model {
   TimeSettings time;
   Environment environment;
   CableParams cable;
-  std::vector<SphereBody> bodies;  // simple bodies, coupled in the cable's Newton solve
+  std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cable's Newton solve
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;

@@ -18,8 +18,10 @@
 namespace towsim::core {
 
 struct Simulation::Impl {
-  explicit Impl(const Model& m) : system(m), integrator(system), coupling(&system, &integrator) {}
+  explicit Impl(const Model& m)
+      : system(m), integrator(system, &inputs), coupling(system, &integrator, &inputs) {}
   System system;
+  StepInputs inputs;  // what a step reads besides its unknowns (step_inputs.h)
   Integrator integrator;
   VehicleCoupling coupling;
   State state;
@@ -124,7 +126,7 @@ void Simulation::Impl::SolveBrakeSlip(double h, double slip, StepStatus* s) {
   int iterations = s->iterations;
   double next = 0.0;
   while (s->ok() && winch_step.length < c.winch->max_length &&
-         brake.Next(slip, state.lambda.segment<3>(system.end_lambda(0)).norm(), &next)) {
+         brake.Next(slip, state.lambda.segment<3>(system.EndLambda(0)).norm(), &next)) {
     // again from the step's start, keeping the kept Newton matrix the attempt left (the
     // integrator's cache of it, integrator.h)
     brake_start.newton = state.newton;
@@ -190,7 +192,7 @@ void CheckSize(const char* what, long n, long m, const std::string& why) {
 void Simulation::CheckStateShape(const State& s) const {
   const System& sys = impl_->system;
   std::ostringstream why;
-  why << "3 per sphere body and 6 per cable node: " << sys.num_bodies() << " bodies, "
+  why << "3 per sphere body and 6 per cable node: " << sys.num_spheres() << " bodies, "
       << sys.max_nodes() << " nodes";
   const long n = sys.num_q();
   CheckSize("q", s.q.size(), n, why.str());
@@ -250,16 +252,16 @@ void Simulation::StartFrom(const State& state) {
     throw SolverError("StartFrom: accelerations could not be computed for the given state");
 }
 
-int Simulation::cable_dof(int node) const { return impl_->system.cable_dof(node); }
-int Simulation::body_dof(int body) const { return impl_->system.body_dof(body); }
+int Simulation::cable_dof(int node) const { return impl_->system.CableDof(node); }
+int Simulation::sphere_dof(int sphere) const { return impl_->system.SphereDof(sphere); }
 int Simulation::num_nodes() const { return impl_->system.num_nodes(); }
-int Simulation::num_spheres() const { return impl_->system.num_bodies(); }
+int Simulation::num_spheres() const { return impl_->system.num_spheres(); }
 int Simulation::num_vehicles() const { return static_cast<int>(model().vehicles.size()); }
 int Simulation::num_bodies() const { return num_spheres() + num_vehicles(); }
 bool Simulation::body_is_vehicle(int b) const { return b >= num_spheres(); }
 
 const std::string& Simulation::body_name(int b) const {
-  return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().bodies[b].name;
+  return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().spheres[b].name;
 }
 
 Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
@@ -274,7 +276,7 @@ double Simulation::node_tension(int i) const {
 
 Vec3 Simulation::body_position(int b) const {
   if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).p_W;
-  return impl_->state.q.segment<3>(body_dof(b));
+  return impl_->state.q.segment<3>(sphere_dof(b));
 }
 
 Vec3 Simulation::body_velocity(int b) const {
@@ -282,7 +284,7 @@ Vec3 Simulation::body_velocity(int b) const {
     const VehicleState& vs = vehicle_state(b - num_spheres());
     return vs.q_WB * Vec3(vs.nu.head<3>());
   }
-  return impl_->state.v.segment<3>(body_dof(b));
+  return impl_->state.v.segment<3>(sphere_dof(b));
 }
 
 Eigen::Quaterniond Simulation::body_attitude(int b) const {
@@ -301,7 +303,7 @@ Vec3 Simulation::body_cable_force(int b) const {
   const CableParams& c = model().cable;
   const bool vehicle = body_is_vehicle(b);
   const int index = vehicle ? b - num_spheres() : b;
-  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kBody;
+  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kSphere;
   Vec3 f = Vec3::Zero();
   for (int end = 0; end < 2; ++end) {
     const CableEnd& e = end == 0 ? c.start : c.end;
@@ -315,7 +317,7 @@ void Simulation::body_cable_wrench(int b, Vec3* force_B, Vec3* moment_B) const {
   const CableParams& c = model().cable;
   const bool vehicle = body_is_vehicle(b);
   const int index = vehicle ? b - num_spheres() : b;
-  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kBody;
+  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kSphere;
   const Eigen::Quaterniond q = body_attitude(b);
   force_B->setZero();
   moment_B->setZero();
@@ -351,7 +353,7 @@ double Simulation::drum_tension() const { return node_tension(0); }
 Vec3 Simulation::end_force(int end) const {
   const System& sys = impl_->system;
   if (sys.end_lambda_count(end) == 0) return Vec3::Zero();
-  return impl_->state.lambda.segment<3>(sys.end_lambda(end));
+  return impl_->state.lambda.segment<3>(sys.EndLambda(end));
 }
 
 double Simulation::KineticEnergy() const {

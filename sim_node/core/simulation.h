@@ -75,7 +75,7 @@ class Simulation {
   // SetState
   void StartFrom(const State& state);
   int cable_dof(int node) const;  // offset of node's e = [r, r'] in q
-  int body_dof(int body) const;   // offset of body's p_WB in q
+  int sphere_dof(int sphere) const;  // offset of sphere's p_WB in q
   double time() const;
   long step_count() const;
 
@@ -87,7 +87,7 @@ class Simulation {
   Vec3 node_velocity(int i) const;  // dr/dt at node i [m/s]
   double node_tension(
       int i) const;  // axial force [N]: element average; |joint force| at a held end
-  // bodies: the spheres (Model::bodies) first, then the vehicles (Model::vehicles)
+  // bodies: the spheres (Model::spheres) first, then the vehicles (Model::vehicles)
   int num_bodies() const;
   int num_spheres() const;
   int num_vehicles() const;

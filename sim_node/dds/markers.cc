@@ -133,7 +133,7 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const std::string& name = sim.body_name(b);
     if (!sim.body_is_vehicle(b)) {
-      const core::SphereBody& s = model.bodies[static_cast<size_t>(b)];
+      const core::SphereBody& s = model.spheres[static_cast<size_t>(b)];
       const double d = 2.0 * std::cbrt(3.0 * s.volume / (4.0 * kPi));
       MarkerMsg& m = Add("hull", b, visualization_msgs_msg_dds__Marker_Constants_SPHERE, name);
       m.scale.x = m.scale.y = m.scale.z = d;

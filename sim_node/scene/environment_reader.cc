@@ -234,7 +234,7 @@ void CheckBodiesAboveSeabed(const Field& bodies, const core::Model& model) {
                 " m at x = " + FormatNumber(p.x()) + ", y = " + FormatNumber(p.y()) + ")");
     }
   };
-  for (const core::SphereBody& b : model.bodies) check(b.name, b.position);
+  for (const core::SphereBody& b : model.spheres) check(b.name, b.position);
   for (const core::Vehicle& v : model.vehicles) check(v.name, v.position);
 }
 

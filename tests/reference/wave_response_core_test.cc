@@ -78,7 +78,7 @@ TEST(WaveResponseCore, NeutralSphereMovesOnTheLinearOrbit) {
   s.drag_coefficient = 0.5;
   s.added_mass_coefficient = 0.5;
   s.position = Vec3(0.0, 0.0, kDepth);
-  m.bodies.push_back(s);
+  m.spheres.push_back(s);
   Simulation sim(m);
   const double omega = 2.0 * kPi / kPeriod;
   const double k = omega * omega / env.gravity;

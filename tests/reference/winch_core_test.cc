@@ -47,14 +47,14 @@ core::Model HangingWeight() {
   m.cable.elements = 10;
   m.cable.initial = core::InitialShape::kStatic;
   m.cable.start.kind = core::EndKind::kFixed;
-  m.cable.end.kind = core::EndKind::kBody;
+  m.cable.end.kind = core::EndKind::kSphere;
   m.cable.end.body = 0;
   core::SphereBody b;
   b.name = "weight";
   b.mass = 416;
   b.volume = 0.2;
   b.position = Vec3(0, 0, 100);
-  m.bodies.push_back(b);
+  m.spheres.push_back(b);
   // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
   core::WinchParams w{50, 150, 0.1, 0.0025};
   m.cable.winch = w;
@@ -66,7 +66,7 @@ core::Model HangingWeight() {
 double CableMass(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   double mass = 0.0;
-  for (int e = 0; e < sys.num_elements(); ++e) {
+  for (int e = 0; e < sys.NumElements(); ++e) {
     const core::AncfElement element =
         e == 0 ? sys.DrumElement(sys.drum_length()) : sys.DrumElement(sys.element_length());
     const core::Mat12& m = element.mass();
@@ -82,7 +82,7 @@ TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
   const double g = m.environment.gravity, rho = m.environment.water_density;
   // submerged weights: the cable per unstretched metre, the sphere
   const double w_cable = (c.density - rho) * c.area() * g;
-  const double w_body = (m.bodies[0].mass - rho * m.bodies[0].volume) * g;
+  const double w_body = (m.spheres[0].mass - rho * m.spheres[0].volume) * g;
   // issue requirement; the slow drum's drag (0.1 m/s: under 3 N) and inertia (0.0025 m/s^2 on
   // about 700 kg: 1.8 N) are each under 0.1 % of the 2400 N, and so is the bounce of the weight on
   // the elastic cable (period 1.6 s) that the start and stop of the drum excite
@@ -149,7 +149,7 @@ TEST(WinchCore, SteadyTowAfterPayoutMatchesTheSteadySolutionAtTheNewLength) {
   core::Model started = model;
   started.cable.length = 250.0;
   started.cable.elements = 25;
-  started.bodies[0].position.z() = 253.5;
+  started.spheres[0].position.z() = 253.5;
   started.script.clear();
   // payout from 20 s to about 125 s, then settled: the payout leaves the sphere deeper
   // (+29 % at the end of the payout), and its depth relaxes with a time constant of about
@@ -292,10 +292,10 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme, bool sphere_drag) {
   core::Model m = HangingWeight();
   m.cable.loads.drag = false;
   m.cable.loads.added_mass = false;
-  if (!sphere_drag) m.bodies[0].drag_coefficient = 0.0;
+  if (!sphere_drag) m.spheres[0].drag_coefficient = 0.0;
   m.integrator.scheme = scheme;
   // the sphere's drag power -k |v|^3 (Morison, still water), k = rho C_D pi r^2 / 2
-  const core::SphereBody& body = m.bodies[0];
+  const core::SphereBody& body = m.spheres[0];
   const double radius = std::cbrt(3.0 * body.volume / (4.0 * M_PI));
   const double k =
       0.5 * m.environment.water_density * body.drag_coefficient * M_PI * radius * radius;

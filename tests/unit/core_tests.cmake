@@ -3,6 +3,7 @@ towsim_add_test(hydrodynamics_test LABEL unit SOURCES hydrodynamics_test.cc LIBS
 towsim_add_test(block_tridiagonal_test LABEL unit SOURCES block_tridiagonal_test.cc LIBS towsim::core)
 towsim_add_test(system_test LABEL unit SOURCES system_test.cc LIBS towsim::core)
 towsim_add_test(integrator_test LABEL unit SOURCES integrator_test.cc LIBS towsim::core)
+towsim_add_test(step_sampler_test LABEL unit SOURCES step_sampler_test.cc LIBS towsim::core)
 towsim_add_test(vehicle_coupling_test LABEL unit SOURCES vehicle_coupling_test.cc LIBS towsim::core)
 towsim_add_test(no_allocation_test LABEL unit SOURCES no_allocation_test.cc LIBS towsim_core_nomalloc)
 towsim_add_test(simulation_test LABEL unit SOURCES simulation_test.cc LIBS towsim::core)

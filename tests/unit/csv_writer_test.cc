@@ -74,7 +74,7 @@ core::Model TinyModel() {
   model.cable.initial = core::InitialShape::kVertical;
   model.cable.start.kind = core::EndKind::kFixed;
   model.cable.start.position = core::Vec3(0.0, 0.0, 0.0);
-  model.cable.end.kind = core::EndKind::kBody;
+  model.cable.end.kind = core::EndKind::kSphere;
   model.cable.end.body = 0;
   model.cable.end.at_B = core::Vec3::Zero();
   core::SphereBody sphere;
@@ -82,7 +82,7 @@ core::Model TinyModel() {
   sphere.mass = 50.0;
   sphere.volume = 0.01;
   sphere.position = core::Vec3(0.0, 0.0, 10.0);
-  model.bodies.push_back(sphere);
+  model.spheres.push_back(sphere);
   return model;
 }
 
@@ -190,7 +190,7 @@ core::Model VehicleModel() {
   model.cable.start.at_B = core::Vec3(-1.0, 0.0, 0.2);  // astern: the cable makes a moment
   const core::Vec3 top =
       boat.position + core::QuaternionFromEulerZYX(boat.euler) * model.cable.start.at_B;
-  model.bodies[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
+  model.spheres[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
   return model;
 }
 

@@ -44,7 +44,7 @@ TEST(Integrator, SphereReachesItsTerminalSpeed) {
   b.volume = 0.05;
   b.drag_coefficient = 0.5;
   b.position = Vec3(5, 0, 0);
-  m.bodies.push_back(b);
+  m.spheres.push_back(b);
   m.time.step = 0.05;
   Simulation sim(m);
   for (int k = 0; k < 1200; ++k) ASSERT_TRUE(sim.Step().ok());
@@ -110,7 +110,8 @@ TEST(Integrator, KeepsTheNewtonMatrixAndConvergesToTheTolerance) {
   for (int k = 0; k < 2; ++k) {
     const Model m = SteadyTowFromVertical(tolerances[k]);
     const System system(m);
-    Integrator integrator(system);
+    StepInputs inputs;
+    Integrator integrator(system, &inputs);
     State& s = states[k];
     BuildInitialState(system, &s);
     ASSERT_TRUE(integrator.InitializeAcceleration(&s));
@@ -149,11 +150,12 @@ State SettledSteadyTow(const System& system, Integrator* integrator) {
 // matrices it factored, *out the state after it
 StepStatus StepAged(const System& system, const State& start, int age, double kick, long* refreshes,
                     State* out) {
-  Integrator integrator(system);
+  StepInputs inputs;
+  Integrator integrator(system, &inputs);
   *out = start;
   EXPECT_TRUE(integrator.RestoreNewtonMatrix(*out));
   out->newton.theta_age = age;
-  out->v(system.cable_dof(10)) += kick;
+  out->v(system.CableDof(10)) += kick;
   const StepStatus st = integrator.Step(out, 0.05);
   *refreshes = integrator.tangent_refreshes();
   return st;
@@ -162,7 +164,8 @@ StepStatus StepAged(const System& system, const State& start, int age, double ki
 TEST(Integrator, ReplacesAMatrixOfUnknownRateForTheSecondEvaluation) {
   const Model m = SteadyTowFromVertical(1e-8);
   const System system(m);
-  Integrator integrator(system);
+  StepInputs inputs;
+  Integrator integrator(system, &inputs);
   const State settled = SettledSteadyTow(system, &integrator);
   ASSERT_TRUE(settled.newton.valid);
   ASSERT_LT(settled.newton.theta, Integrator::kRefreshRate);  // kept at the next step
@@ -195,7 +198,8 @@ TEST(Integrator, ReplacesAMatrixOfUnknownRateForTheSecondEvaluation) {
 TEST(Integrator, ReMeasuresASmallRateLessOften) {
   const Model m = SteadyTowFromVertical(1e-8);
   const System system(m);
-  Integrator integrator(system);
+  StepInputs inputs;
+  Integrator integrator(system, &inputs);
   const State settled = SettledSteadyTow(system, &integrator);
   long refreshes = 0;
   State after;

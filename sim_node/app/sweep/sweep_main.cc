@@ -140,7 +140,7 @@ int Run(const Options& o) {
     spec = towsim::app::LoadSweepFile(o.file);
     const towsim::core::Model model = towsim::scene::LoadScene(spec.scene);
     std::vector<std::string> bodies;
-    for (const auto& s : model.bodies) bodies.push_back(s.name);
+    for (const auto& s : model.spheres) bodies.push_back(s.name);
     for (const auto& v : model.vehicles) bodies.push_back(v.name);
     towsim::app::CheckSweepResults(&spec.results, bodies);
     cases = towsim::app::CombineParameters(spec.parameters, spec.combine);
