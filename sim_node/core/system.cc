@@ -83,9 +83,9 @@ System::System(const Model& model)
 
   for (const SphereBody& b : model_.bodies) {
     const double rho = model_.environment.water_density;
-    const double radius = std::cbrt(3.0 * b.volume / (4.0 * CableParams::kPi));
+    const double radius = std::cbrt(3.0 * b.volume / (4.0 * kPi));
     body_mass_eff_.push_back(b.mass + b.added_mass_coefficient * rho * b.volume);
-    body_drag_k_.push_back(0.5 * rho * b.drag_coefficient * CableParams::kPi * radius * radius);
+    body_drag_k_.push_back(0.5 * rho * b.drag_coefficient * kPi * radius * radius);
     body_radius_.push_back(radius);
   }
   q_index_.assign(num_q_, {-1, -1});
@@ -335,7 +335,7 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     if (sea_.has_seabed()) {
       const Vec3 p_b = q.segment<3>(o);
       const Vec3 low = p_b - body_radius_[b] * sea_.SeabedNormal(p_b.x(), p_b.y());
-      const double area = CableParams::kPi * body_radius_[b] * body_radius_[b];
+      const double area = kPi * body_radius_[b] * body_radius_[b];
       contact = SeabedContactLoad(sea_, area, low, v.segment<3>(o), Vec3::Zero(), jac != nullptr);
       if (contact.active) r -= contact.f;
     }

@@ -1,6 +1,7 @@
 // scene/: YAML scene -> core::Model. Broken scenes must fail with the key path, the value,
 // file:line and the rule in the message; the shipped scenes must load with the right numbers.
 
+#include "core/constants.h"
 #include "scene/scene_loader.h"
 
 #include <unistd.h>
@@ -19,7 +20,7 @@ namespace {
 namespace fs = std::filesystem;
 using Model = core::Model;
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = core::kPi / 180.0;
 
 const std::string kConfigDir = std::string(TOWSIM_SOURCE_DIR) + "/config";
 const std::string kSteadyTow = kConfigDir + "/scenes/steady_tow.yaml";
