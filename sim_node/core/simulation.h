@@ -118,7 +118,7 @@ class Simulation {
   const WinchCommand& winch_command() const;
   double cable_length() const;  // paid-out unstretched length now [m] (no winch: cable.length)
   double winch_speed() const;   // dL/dt now [m/s], + pays out (no winch: 0)
-  double DrumTension() const;  // axial tension at the cable's start (the drum) [N]
+  double DrumTension() const;   // axial tension at the cable's start (the drum) [N]
 
   // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end

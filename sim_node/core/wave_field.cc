@@ -9,7 +9,6 @@
 namespace towsim::core {
 namespace {
 
-
 // 2 k h above which tanh(k h) = 1 and exp(-2 k h) = 0 to double precision
 constexpr double kDeepWaterTwoKh = 80.0;
 

@@ -25,7 +25,6 @@
 namespace towsim::core {
 namespace {
 
-
 std::string Scene(const char* name) {
   return std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/" + name;
 }

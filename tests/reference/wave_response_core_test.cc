@@ -32,7 +32,6 @@
 namespace towsim::core {
 namespace {
 
-
 struct Harmonic {
   double mean;       // c0 + c1 t at the record's middle
   double amplitude;  // sqrt(A^2 + B^2)

@@ -89,7 +89,7 @@ TEST(Actuator, VehicleActuatorRatesFollowTheTable) {
   EXPECT_EQ(rate[kThrust], 100.0);     // (400 - 200) / 2
   EXPECT_EQ(rate[kRudder], 0.25);      // 0.5 / 0.05 = 10, limited to 0.25
   EXPECT_EQ(rate[kElevator], -0.125);  // -0.25 / 0.05 = -5, limited to -0.125
-  p.has_propeller = false;  // no propeller: its state does not move
+  p.has_propeller = false;             // no propeller: its state does not move
   EXPECT_EQ(ActuatorRates(p, cmd, s)[kThrust], 0.0);
 }
 

@@ -17,8 +17,8 @@
 namespace towsim::scene {
 namespace {
 
-using core::Vec3;
 using core::kPi;
+using core::Vec3;
 
 // A 40 m cable hanging from a fixed point with a sphere 40 m down; the environment block is
 // line 3 onward. Line numbers matter to the assertions.

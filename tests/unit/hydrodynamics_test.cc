@@ -11,7 +11,6 @@
 namespace towsim::core {
 namespace {
 
-
 // paper Eq. 18, written out independently
 double Eq18(double re) {
   if (re <= 1.0) {

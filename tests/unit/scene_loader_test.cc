@@ -1,7 +1,6 @@
 // scene/: YAML scene -> core::Model. Broken scenes must fail with the key path, the value,
 // file:line and the rule in the message; the shipped scenes must load with the right numbers.
 
-#include "core/constants.h"
 #include "scene/scene_loader.h"
 
 #include <unistd.h>
@@ -13,6 +12,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+
+#include "core/constants.h"
 
 namespace towsim::scene {
 namespace {

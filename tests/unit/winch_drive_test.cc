@@ -72,10 +72,11 @@ TEST(WinchDrive, WithoutAWinchOnlyTheCablesStep) {
   drive.SetCommand({WinchCommand::Mode::kSpeed, 1.0});
   EXPECT_EQ(drive.command().value, 0.0);
   int calls = 0;
-  EXPECT_TRUE(drive.Step(0.1, &state, [&](double) {
-                     ++calls;
-                     return StepStatus();
-                   }).ok());
+  auto step_system = [&](double) {
+    ++calls;
+    return StepStatus();
+  };
+  EXPECT_TRUE(drive.Step(0.1, &state, step_system).ok());
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(state.winch.length, model.cable.length);
 }
