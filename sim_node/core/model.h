@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "core/constants.h"
 #include "core/current_field.h"
 #include "core/publish_rates.h"
 #include "core/seabed.h"
@@ -94,7 +95,6 @@ struct CableParams {
 
   double area() const { return 0.25 * kPi * diameter * diameter; }
   double second_moment() const { return kPi * diameter * diameter * diameter * diameter / 64.0; }
-  static constexpr double kPi = 3.14159265358979323846;
 };
 
 // A point-mass body: translational dynamics with weight, buoyancy, quadratic drag and added

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/drum_element.h"
 #include "core/environment_field.h"
 #include "core/initial_shape.h"
 #include "core/integrator.h"
@@ -14,37 +13,26 @@
 #include "core/static_solver.h"
 #include "core/system.h"
 #include "core/vehicle_coupling.h"
+#include "core/winch_drive.h"
 
 namespace towsim::core {
 
 struct Simulation::Impl {
   explicit Impl(const Model& m)
-      : system(m), integrator(system, &inputs), coupling(system, &integrator, &inputs) {}
+      : system(m),
+        integrator(system, &inputs),
+        coupling(system, &integrator, &inputs),
+        winch(&system) {}
   System system;
   StepInputs inputs;  // what a step reads besides its unknowns (step_inputs.h)
   Integrator integrator;
   VehicleCoupling coupling;
+  WinchDrive winch;
   State state;
   std::vector<VehicleCommand> commands;
-  WinchCommand winch_command;
-  WinchStep winch_step;  // the drum's motion over the step being taken
-  State brake_start;     // a slipping brake's step start, for its repeated attempts (winch.h)
   int coupling_iterations = 0;
-  // the drum's motion for the step h from the current state with the brake's slip `slip`,
-  // with the split or merge of the drum element it needs (winch.h, drum_element.h)
-  void PrepareWinch(double h, double slip);
-  // winch_step and the drum element's motion over the step h with the slip `slip`
-  void MoveDrum(double h, double slip);
   // the cable (and the vehicles) over h from the current state
   StepStatus StepSystem(double h);
-  // the brake's tension band (winch.h): the step repeated from brake_start with the slips of
-  // BrakeSlipIteration, *s the last attempt's status, its iterations summed over the attempts
-  void SolveBrakeSlip(double h, double slip, StepStatus* s);
-  // the largest slip the scene's step rule allows (winch.h): (kSplitLength - 1 - kMergeLength)
-  // l_e a step
-  double MaxSlip(double h) const {
-    return (kSplitLength - 1.0 - kMergeLength) * system.element_length() / h;
-  }
 };
 
 Simulation::Simulation(const Model& model, const std::function<bool()>& stop_requested)
@@ -52,13 +40,7 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
-  s.winch.length = model.cable.length;
-  s.winch.speed = 0.0;
-  s.winch.nodes = sys.num_nodes();
-  s.winch.drum.length = sys.drum_length();
-  if (model.cable.winch && std::isfinite(model.cable.winch->brake_tension)) {
-    impl_->brake_start = s;  // sized once: its copies in Step do not allocate
-  }
+  impl_->winch.Initialize(&s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
@@ -81,33 +63,6 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); }
 
-void Simulation::Impl::MoveDrum(double h, double slip) {
-  WinchState& w = state.winch;
-  winch_step =
-      AdvanceWinch(*system.model().cable.winch, winch_command, w.length, w.drive_speed, slip, h);
-  // l_0(t) over the step: from l_0 at rate V_n, reaching l_0 + dL at t + h
-  const double dl = winch_step.length - w.length;
-  w.drum.t0 = state.t;
-  w.drum.length = system.drum_length();
-  w.drum.rate = w.speed;
-  w.drum.accel = 2.0 * (dl - w.speed * h) / (h * h);
-}
-
-void Simulation::Impl::PrepareWinch(double h, double slip) {
-  const double l0 = system.drum_length();
-  MoveDrum(h, slip);
-  const double dl = winch_step.length - state.winch.length;
-  // keep l_0 at the step's end within [kMergeLength, kSplitLength] l_e (drum_element.h)
-  const double le = system.element_length();
-  bool changed = false;
-  if (l0 + dl > kSplitLength * le) {
-    changed = SplitDrumElement(&system, &state);
-  } else if (l0 + dl < kMergeLength * le) {
-    changed = MergeDrumElement(&system, &state);
-  }
-  if (changed) MoveDrum(h, slip);  // from the new drum element's l_0
-}
-
 StepStatus Simulation::Impl::StepSystem(double h) {
   if (system.model().vehicles.empty()) {
     coupling_iterations = 0;
@@ -118,52 +73,11 @@ StepStatus Simulation::Impl::StepSystem(double h) {
   return s;
 }
 
-void Simulation::Impl::SolveBrakeSlip(double h, double slip, StepStatus* s) {
-  const CableParams& c = system.model().cable;
-  const double stiffness_h = c.youngs_modulus * c.area() * h / system.drum_length();
-  const double first = state.winch.slip_slope < 0.0 ? state.winch.slip_slope : -stiffness_h;
-  BrakeSlipIteration brake(c.winch->brake_tension, MaxSlip(h), first);
-  int iterations = s->iterations;
-  double next = 0.0;
-  while (s->ok() && winch_step.length < c.winch->max_length &&
-         brake.Next(slip, state.lambda.segment<3>(system.EndLambda(0)).norm(), &next)) {
-    // again from the step's start, keeping the kept Newton matrix the attempt left (the
-    // integrator's cache of it, integrator.h)
-    brake_start.newton = state.newton;
-    state = brake_start;
-    slip = next;
-    MoveDrum(h, slip);
-    *s = StepSystem(h);
-    iterations += s->iterations;
-  }
-  s->iterations = iterations;
-  if (brake.attempts() > 1) state.winch.slip_slope = brake.slope();
-}
-
 StepStatus Simulation::StepBy(double h) {
-  StepStatus s;
-  const bool winch = has_winch();
-  // a brake (winch.h): the first attempt slips as the last step did
-  const bool brake = winch && std::isfinite(model().cable.winch->brake_tension) &&
-                     impl_->system.end_lambda_count(0) > 0;
-  const double slip =
-      brake ? std::clamp(impl_->state.winch.slip_speed, 0.0, impl_->MaxSlip(h)) : 0.0;
-  if (winch) impl_->PrepareWinch(h, slip);
-  if (brake) impl_->brake_start = impl_->state;
-  s = impl_->StepSystem(h);
-  if (brake) impl_->SolveBrakeSlip(h, slip, &s);
-  if (s.ok()) {
-    ++impl_->state.step;
-    if (winch) {
-      WinchState& w = impl_->state.winch;
-      w.length = impl_->winch_step.length;
-      w.speed = impl_->winch_step.speed;
-      w.drive_speed = impl_->winch_step.drive_speed;
-      w.slip_speed = impl_->winch_step.slip_speed;
-      w.slipping = impl_->winch_step.slipping;
-      impl_->system.SetLayout(w.nodes, w.length);
-    }
-  }
+  // the winch's drum around the cable's step (winch_drive.h)
+  const StepStatus s =
+      impl_->winch.Step(h, &impl_->state, [this](double dt) { return impl_->StepSystem(dt); });
+  if (s.ok()) ++impl_->state.step;
   return s;
 }
 
@@ -266,7 +180,7 @@ const std::string& Simulation::body_name(int b) const {
 
 Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
 Vec3 Simulation::node_velocity(int i) const { return impl_->state.v.segment<3>(cable_dof(i)); }
-double Simulation::node_tension(int i) const {
+double Simulation::NodeTension(int i) const {
   // at a held end the joint force is the force the cable transmits there (exact, where the
   // element's interpolated strain misses a bend sharper than the element, e.g. at a towfish)
   const int end = i == 0 ? 0 : (i == num_nodes() - 1 ? 1 : -1);
@@ -299,7 +213,7 @@ Vec6 Simulation::body_twist(int b) const {
   return t;
 }
 
-Vec3 Simulation::body_cable_force(int b) const {
+Vec3 Simulation::BodyCableForce(int b) const {
   const CableParams& c = model().cable;
   const bool vehicle = body_is_vehicle(b);
   const int index = vehicle ? b - num_spheres() : b;
@@ -312,7 +226,7 @@ Vec3 Simulation::body_cable_force(int b) const {
   return f;
 }
 
-void Simulation::body_cable_wrench(int b, Vec3* force_B, Vec3* moment_B) const {
+void Simulation::BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const {
   // F_B = R_WB^T lambda, M_B = r_attach x F_B (Eq. 29-30)
   const CableParams& c = model().cable;
   const bool vehicle = body_is_vehicle(b);
@@ -336,19 +250,12 @@ void Simulation::SetVehicleCommand(int v, const VehicleCommand& command) {
   impl_->commands[v] = command;
 }
 
-bool Simulation::has_winch() const { return model().cable.winch.has_value(); }
-
-void Simulation::SetWinchCommand(const WinchCommand& command) {
-  if (!has_winch() || !std::isfinite(command.value)) return;
-  WinchCommand c = command;
-  ClampWinchCommand(*model().cable.winch, &c);
-  impl_->winch_command = c;
-}
-
-const WinchCommand& Simulation::winch_command() const { return impl_->winch_command; }
+bool Simulation::has_winch() const { return impl_->winch.has_winch(); }
+void Simulation::SetWinchCommand(const WinchCommand& command) { impl_->winch.SetCommand(command); }
+const WinchCommand& Simulation::winch_command() const { return impl_->winch.command(); }
 double Simulation::cable_length() const { return impl_->state.winch.length; }
 double Simulation::winch_speed() const { return impl_->state.winch.speed; }
-double Simulation::drum_tension() const { return node_tension(0); }
+double Simulation::DrumTension() const { return NodeTension(0); }
 
 Vec3 Simulation::end_force(int end) const {
   const System& sys = impl_->system;
@@ -381,30 +288,30 @@ double Simulation::PotentialEnergy() const {
 
 double Simulation::StrainEnergy() const { return impl_->system.StrainEnergy(impl_->state.q); }
 
-double Simulation::body_altitude(int b) const {
+double Simulation::BodyAltitude(int b) const {
   const EnvironmentField& sea = impl_->system.sea();
   if (!sea.has_seabed()) return std::numeric_limits<double>::quiet_NaN();
   const Vec3 p = body_position(b);
   return sea.SeabedDepth(p.x(), p.y()) - p.z();
 }
 
-double Simulation::body_altimeter_range(int b, double max_range) const {
+double Simulation::BodyAltimeterRange(int b, double max_range) const {
   // beam u = R_WB e_z, the body's z axis in the world
   const Vec3 beam = body_attitude(b) * Vec3::UnitZ();
   return impl_->system.sea().SeabedRayRange(body_position(b), beam, max_range);
 }
 
-double Simulation::body_depth(int b) const {
+double Simulation::BodyDepth(int b) const {
   const Vec3 p = body_position(b);
-  return p.z() + surface_elevation_at(b);
+  return p.z() + SurfaceElevationAt(b);
 }
 
-double Simulation::surface_elevation_at(int b) const {
+double Simulation::SurfaceElevationAt(int b) const {
   const Vec3 p = body_position(b);
   return impl_->system.sea().Elevation(p.x(), p.y(), time());
 }
 
-Vec3 Simulation::water_velocity_at(int b) const {
+Vec3 Simulation::WaterVelocityAt(int b) const {
   return impl_->system.sea().Flow(body_position(b), time()).velocity;
 }
 

@@ -83,9 +83,9 @@ System::System(const Model& model)
 
   for (const SphereBody& b : model_.spheres) {
     const double rho = model_.environment.water_density;
-    const double radius = std::cbrt(3.0 * b.volume / (4.0 * CableParams::kPi));
+    const double radius = std::cbrt(3.0 * b.volume / (4.0 * kPi));
     sphere_mass_eff_.push_back(b.mass + b.added_mass_coefficient * rho * b.volume);
-    sphere_drag_k_.push_back(0.5 * rho * b.drag_coefficient * CableParams::kPi * radius * radius);
+    sphere_drag_k_.push_back(0.5 * rho * b.drag_coefficient * kPi * radius * radius);
     sphere_radius_.push_back(radius);
   }
   q_index_.assign(num_q_, {-1, -1});
@@ -334,7 +334,7 @@ void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
     if (sea_.has_seabed()) {
       const Vec3 p_b = q.segment<3>(o);
       const Vec3 low = p_b - sphere_radius_[b] * sea_.SeabedNormal(p_b.x(), p_b.y());
-      const double area = CableParams::kPi * sphere_radius_[b] * sphere_radius_[b];
+      const double area = kPi * sphere_radius_[b] * sphere_radius_[b];
       contact =
           SeabedContactLoad(sea_, area, low, v.segment<3>(o), Vec3::Zero(), out.jac != nullptr);
       if (contact.active) r -= contact.f;

@@ -5,13 +5,14 @@
 
 #include <Eigen/Geometry>
 
+#include "core/constants.h"
 #include "dds/frames.h"
 #include "dds/translators.h"
 
 namespace towsim::dds {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 void SetPoint(const core::Vec3& p, geometry_msgs_msg_dds__Point_* out) {
   out->x = p.x();
@@ -276,7 +277,7 @@ void SceneMarkers::Update(const core::Simulation& sim) {
   cable.colors = {capacity, static_cast<uint32_t>(n), cable_colors_.data(), false};
   for (size_t i = 0; i < n; ++i) {
     SetPoint(NedToEnu(sim.node_position(static_cast<int>(i))), &cable_points_[i]);
-    cable_colors_[i] = TensionColor(sim.node_tension(static_cast<int>(i)));
+    cable_colors_[i] = TensionColor(sim.NodeTension(static_cast<int>(i)));
   }
   for (const Arrow& a : arrows_) {
     const core::Vec3 p = sim.node_position(a.end == 0 ? 0 : sim.num_nodes() - 1);

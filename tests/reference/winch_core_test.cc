@@ -23,6 +23,7 @@
 
 #include "core/ancf_element.h"
 #include "core/cable_loads.h"
+#include "core/constants.h"
 #include "core/model.h"
 #include "core/script.h"
 #include "core/simulation.h"
@@ -100,7 +101,7 @@ TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
     most_nodes = std::max(most_nodes, sim.num_nodes());
     fewest_nodes = std::min(fewest_nodes, sim.num_nodes());
     const double expected = w_cable * sim.cable_length() + w_body;
-    const double err = std::abs(sim.drum_tension() / expected - 1.0);
+    const double err = std::abs(sim.DrumTension() / expected - 1.0);
     if (err > worst) {
       worst = err;
       worst_at = sim.time();
@@ -201,7 +202,7 @@ TEST(WinchCore, DrumTensionSmoothAcrossSplitsAndMerges) {
   core::ScriptRunner script(model);
   script.Apply(&sim);
   const int steps = static_cast<int>(std::lround(330.0 / model.time.step));
-  double previous = sim.drum_tension(), steady_since = 0.0;
+  double previous = sim.DrumTension(), steady_since = 0.0;
   // the largest step-to-step change within 3 steps of a split or merge, and elsewhere
   double worst_jump = 0.0, worst_at = 0.0, worst_other = 0.0;
   int splits = 0, merges = 0, nodes = sim.num_nodes(), since_event = 1000;
@@ -212,7 +213,7 @@ TEST(WinchCore, DrumTensionSmoothAcrossSplitsAndMerges) {
     merges += sim.num_nodes() < nodes;
     since_event = sim.num_nodes() != nodes ? 0 : since_event + 1;
     nodes = sim.num_nodes();
-    const double t = sim.drum_tension();
+    const double t = sim.DrumTension();
     // only while the drum has run at constant speed for kSettle (its accelerations change the
     // tension by design: 0.2 m/s^2 on some 700 kg is 5 % of it), jumps relative to the tension
     // itself (the quasi-static tension, within 2 %)
@@ -270,7 +271,7 @@ double DrumPower(const core::Simulation& sim) {
 double DrumFluxPower(const core::Simulation& sim) {
   const core::CableParams& c = sim.model().cable;
   const double ea = c.youngs_modulus * c.area(), rate = sim.winch_speed();
-  const double t = sim.drum_tension(), eps = t / ea;
+  const double t = sim.DrumTension(), eps = t / ea;
   const double v = rate * (1.0 + eps);
   return rate * (-t * (1.0 + eps) + 0.5 * ea * eps * eps + 0.5 * c.density * c.area() * v * v);
 }
@@ -296,9 +297,9 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme, bool sphere_drag) {
   m.integrator.scheme = scheme;
   // the sphere's drag power -k |v|^3 (Morison, still water), k = rho C_D pi r^2 / 2
   const core::SphereBody& body = m.spheres[0];
-  const double radius = std::cbrt(3.0 * body.volume / (4.0 * M_PI));
+  const double radius = std::cbrt(3.0 * body.volume / (4.0 * core::kPi));
   const double k =
-      0.5 * m.environment.water_density * body.drag_coefficient * M_PI * radius * radius;
+      0.5 * m.environment.water_density * body.drag_coefficient * core::kPi * radius * radius;
   core::Simulation sim(m);
   auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
   const double e0 = energy(), h = m.time.step;
@@ -402,9 +403,9 @@ TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
     if (i == 100) v_start = sim.winch_speed();
     if (sim.state().winch.slipping) {
       ++slipping;
-      worst = std::max(worst, std::abs(sim.drum_tension() - 2000.0));
+      worst = std::max(worst, std::abs(sim.DrumTension() - 2000.0));
     } else {
-      worst_grip = std::max(worst_grip, sim.drum_tension() - 2000.0);
+      worst_grip = std::max(worst_grip, sim.DrumTension() - 2000.0);
     }
   }
   std::printf(

@@ -136,7 +136,7 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
   for (int i = 0; i < nodes; ++i) {
     const auto& row = cable[nodes + i];
     for (int k = 0; k < 3; ++k) ExpectNear(row[2 + k], sim.node_position(i)[k], "node position");
-    ExpectNear(row[5], sim.node_tension(i), "tension");
+    ExpectNear(row[5], sim.NodeTension(i), "tension");
   }
 
   // the sphere (attached at the end) and the fixed start support
@@ -152,7 +152,7 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
     for (int c : {5, 6, 7}) EXPECT_EQ(std::stod(row[c]), 0.0) << "sphere moment column " << c;
   }
   for (int k = 0; k < 3; ++k) {
-    ExpectNear(forces[2][2 + k], sim.body_cable_force(0)[k], "force on the body");
+    ExpectNear(forces[2][2 + k], sim.BodyCableForce(0)[k], "force on the body");
     ExpectNear(forces[3][2 + k], sim.end_force(0)[k], "force on the start support");
   }
 
@@ -255,7 +255,7 @@ TEST(CsvWriterTest, VehicleRowsFollowTheSpheres) {
   EXPECT_EQ(forces[0][1], "ball");
   EXPECT_EQ(forces[1][1], "boat");
   core::Vec3 f_B, m_B;
-  sim.body_cable_wrench(b, &f_B, &m_B);
+  sim.BodyCableWrench(b, &f_B, &m_B);
   for (int k = 0; k < 3; ++k) {
     ExpectNear(forces[1][2 + k], f_B[k], "force on the vehicle");
     ExpectNear(forces[1][5 + k], m_B[k], "moment on the vehicle");
@@ -332,9 +332,9 @@ TEST(CsvWriterTest, EnvironmentRowsAreTheCoreAccessorsAtTheWrittenTimes) {
   std::vector<std::vector<double>> expected;
   auto write = [&](const core::StepStatus& status) {
     csv.Write(sim, status, 0);
-    const core::Vec3 u = sim.water_velocity_at(0);
-    expected.push_back({sim.time(), sim.surface_elevation_at(0), sim.body_altitude(0),
-                        sim.body_depth(0), u.x(), u.y(), u.z()});
+    const core::Vec3 u = sim.WaterVelocityAt(0);
+    expected.push_back({sim.time(), sim.SurfaceElevationAt(0), sim.BodyAltitude(0),
+                        sim.BodyDepth(0), u.x(), u.y(), u.z()});
   };
   write(core::StepStatus{});
   for (int k = 0; k < 10; ++k) {
@@ -458,7 +458,7 @@ TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
   std::vector<std::vector<double>> expected;
   auto write = [&](const core::StepStatus& status) {
     csv.Write(sim, status, 0);
-    expected.push_back({sim.time(), sim.cable_length(), sim.winch_speed(), sim.drum_tension(),
+    expected.push_back({sim.time(), sim.cable_length(), sim.winch_speed(), sim.DrumTension(),
                         static_cast<double>(sim.num_nodes())});
   };
   write(core::StepStatus{});

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/initial_shape.h"
 #include "core/simulation.h"
 #include "core/state.h"
@@ -48,7 +49,7 @@ TEST(Integrator, SphereReachesItsTerminalSpeed) {
   m.time.step = 0.05;
   Simulation sim(m);
   for (int k = 0; k < 1200; ++k) ASSERT_TRUE(sim.Step().ok());
-  const double rho = 1025, g = 9.81, pi = 3.14159265358979323846;
+  const double rho = 1025, g = 9.81, pi = kPi;
   const double r = std::cbrt(3 * b.volume / (4 * pi));
   const double v = std::sqrt(2 * (b.mass - rho * b.volume) * g / (rho * 0.5 * pi * r * r));
   constexpr double kTerminalRelTol = 1e-6;  // 60 s >> the e-folding time of ~0.5 s

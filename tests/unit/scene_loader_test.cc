@@ -13,13 +13,15 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
+
 namespace towsim::scene {
 namespace {
 
 namespace fs = std::filesystem;
 using Model = core::Model;
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = core::kPi / 180.0;
 
 const std::string kConfigDir = std::string(TOWSIM_SOURCE_DIR) + "/config";
 const std::string kSteadyTow = kConfigDir + "/scenes/steady_tow.yaml";

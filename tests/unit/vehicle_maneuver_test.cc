@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 #include "core/vehicle_model.h"
 #include "vehicle_file.h"
@@ -18,7 +19,6 @@
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kSpeed = 6.0;  // the paper's steady speed [m/s]
 // the towfish tow point: its bow, on the axis (paper: "attached to the bow")
@@ -31,7 +31,7 @@ VehicleState Running(double speed, double thrust) {
   VehicleState s;
   s.p_W.z() = kDepth;
   s.nu(0) = speed;
-  s.thrust = thrust;
+  s.actuator[kThrust] = thrust;
   return s;
 }
 
@@ -57,7 +57,7 @@ Mat9 Linearize(const VehicleParams& p, const Environment& env, const VehicleComm
     VehicleState s;
     s.p_W.z() = kDepth;
     s.nu = x.head<6>();
-    s.thrust = cmd.thrust;
+    s.actuator[kThrust] = cmd.thrust;
     const Vec3 rpy = x.tail<3>();
     s.q_WB = QuaternionFromEulerZYX(rpy);
     const Vec3 f_b = s.q_WB.toRotationMatrix().transpose() * force_W;
