@@ -1,4 +1,4 @@
-// Cost of each feature of a scene (issue 7, "a scene pays only for what it uses").
+// Cost of each feature of a scene: a scene pays only for what it uses.
 //   ./build/bench/feature_cost                    # benchmarks, then a Markdown table of ratios
 //   ./build/bench/feature_cost --profile NAME N   # N steps of variant NAME, no timing, then N
 //                                                 # residual + Newton-matrix evaluations and N

@@ -1,5 +1,5 @@
 #pragma once
-// DDS topic names of the towsim node (DESIGN §3). A ROS 2 topic /a/b travels on DDS as "rt/a/b";
+// DDS topic names of the towsim node (docs/contract.md §3). A ROS 2 topic /a/b travels on DDS as "rt/a/b";
 // the node's topics live under a namespace (default /towsim) so that several systems share a
 // domain, except the root topics (/clock, /tf), which ROS 2 tools expect at the root. The names
 // come from the rows of wire/topic_table.h; the prefix "rt" is written here only.

@@ -1,5 +1,5 @@
 #pragma once
-// The topics of the wire contract (DESIGN §3 and §7, docs/topics.md) in one table: one row per
+// The topics of the wire contract (docs/contract.md §3 and §7, docs/topics.md) in one table: one row per
 // topic with its scope, its name below the scope, its type and its QoS profile. The node
 // (sim_node/app/node_topics.cc adds the translator and the rate of each row it publishes), the
 // controllers' client, the test fixture, the tests and the benchmarks name topics through it

@@ -1,5 +1,5 @@
 #pragma once
-// The controllers' DDS client (issue 5): one participant on the node's domain that
+// The controllers' DDS client: one participant on the node's domain that
 //   - reads rt/<ns>/scene_info (which bodies exist and take commands),
 //   - subscribes to rt/<ns>/<body>/odom and rt/<ns>/status (and, with `altitude`, to
 //     rt/<ns>/<body>/altitude),

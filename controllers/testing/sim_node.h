@@ -44,7 +44,7 @@ struct SimNodeOptions {
   std::vector<std::string> extra_args;  // further sim_node flags, e.g. --wait-for-controllers
   std::string ns = "/towsim";           // --namespace
   int domain = -1;                      // -1: a free one (DomainLease), else exactly this id
-  bool csv = true;                      // --csv <log dir>/csv (bodies.csv, ... of DESIGN §5)
+  bool csv = true;                      // --csv <log dir>/csv (bodies.csv, ... of docs/contract.md §5)
   bool start_paused = false;            // stay paused after start-up (Resume() starts)
   double startup_timeout = 30.0;        // [s] for scene_info and the first state
   // where the installation is: the defaults come from find_package(towsim)

@@ -174,7 +174,7 @@ struct ScriptEntry {
   WinchCommand winch;
 };
 
-// What a DDS node publishes and when (DESIGN §3-4); plain scene data, unused offline.
+// What a DDS node publishes and when (docs/contract.md §3-4); plain scene data, unused offline.
 struct Publishing {
   PublishRates rates;            // per-topic rates (core/publish_rates.h)
   double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]

@@ -1,5 +1,5 @@
 #pragma once
-// The dynamic state: a copyable value (DESIGN §1: Model / State / Workspace kept apart), and
+// The dynamic state: a copyable value (docs/contract.md §1: Model / State / Workspace kept apart), and
 // complete: everything a step reads from the steps before it is here, so that a State taken
 // with Simulation::GetState and given back with Simulation::SetState continues bit for bit as
 // if the run had never stopped (tests/unit/simulation_state_test.cc).

@@ -166,7 +166,7 @@ class System {
   CableLoadContext loads_;
   // without drag and added mass the load on an element is its weight in water alone, the same
   // uniform load on every element with no Jacobian: a scene without those terms pays nothing
-  // for them (issue 7)
+  // for them
   bool state_dependent_loads_ = false;
   Vec12 weight_load_ = Vec12::Zero();  // UniformLoad(weight_per_length, l)
   unsigned load_fields_ = 0;  // the fields the loads read at the Gauss points (LoadFields)

@@ -5,7 +5,7 @@
 // the centre of buoyancy; r_g, r_b are the CG and CB in B. nu = [u v w p q r] is the velocity
 // of O in W expressed in B, and the angular velocity of B in W expressed in B.
 // Equations (Fossen 2011 form, identical to Kirchhoff's, see
-// ../shared/reference/vehicle_hydrodynamics.md §6):
+// docs/vehicles.md §1):
 //   (M_RB + M_A) nu_dot + C_RB(nu) nu + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta)
 //       = tau_prop + tau_surfaces + tau_cable,
 //   p_dot_W = R_WB nu_lin,  q_dot_WB = 1/2 q_WB (x) [0, omega_B],

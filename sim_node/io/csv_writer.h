@@ -1,5 +1,5 @@
 #pragma once
-// CSV output of a run (DESIGN §5): four files in one directory, one row set per Write(), and
+// CSV output of a run (docs/contract.md §5): four files in one directory, one row set per Write(), and
 // a fifth, environment.csv, when the scene has a sea (HasSea below).
 //
 //   bodies.csv  t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r

@@ -1,4 +1,4 @@
-// The DDS node as processes over loopback (issue 4): the node (TOWSIM_DDS_NODE, the final
+// The DDS node as processes over loopback: the node (TOWSIM_DDS_NODE, the final
 // `sim_node --mode ... --domain N` command line), the test controller (msgs/ only) and this
 // test, itself a DDS participant that watches the status and sends control requests and raw
 // commands. Every test uses its own DDS domain (README.md in this folder).
@@ -42,7 +42,7 @@ const std::string kSteadyTow = kSource + "/config/scenes/steady_tow.yaml";
 constexpr double kProcessTimeout = 60.0;  // [s] a run that takes longer has hung
 constexpr double kEventTimeout = 20.0;    // [s] for a status the test waits for
 constexpr double kLockstepTimeout = 1.0;  // [s] the node's default lockstep timeout
-// a signal stops the node within one step period + 100 ms (issue 4); a loaded CI machine
+// a signal stops the node within one step period + 100 ms; a loaded CI machine
 // gets a margin on top
 constexpr double kStopMargin = 1.0;  // [s]
 

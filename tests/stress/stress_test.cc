@@ -1,4 +1,4 @@
-// Numerical stability under stress (issue 7): the shipped scenes pushed beyond their defaults
+// Numerical stability under stress: the shipped scenes pushed beyond their defaults
 // through the public core API. Every run must converge at every step, keep a finite state and
 // keep its mechanical energy within the work put in (stress_run.h); where an independent
 // reference exists the numbers are held to it. Deterministic: fixed scenes, a seeded

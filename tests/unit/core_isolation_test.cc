@@ -1,4 +1,4 @@
-// The core depends on the standard library and Eigen only (DESIGN §1, STYLE "the engine never
+// The core depends on the standard library and Eigen only (docs/contract.md §1, STYLE "the engine never
 // sees the parser"): no DDS, no yaml-cpp, no threads or clocks, nothing from io/, scene/, app/.
 // This test reads every file under sim_node/core/ and names the file and line of each include
 // (or use of a thread / clock facility) that breaks the rule.

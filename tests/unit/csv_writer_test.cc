@@ -1,4 +1,4 @@
-// CsvWriter writes the four files of DESIGN §5 with exactly the documented headers and one row
+// CsvWriter writes the four files of docs/contract.md §5 with exactly the documented headers and one row
 // set per Write(): a row per body, per cable node, per body and held end, and a status row; and
 // environment.csv (a row per body: the sea at the body) only for a scene with a sea.
 

@@ -35,7 +35,7 @@ towsim_add_test(dds_entities_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_entities_test.cc
   LIBS towsim::dds)
 
-# raw CDR plumbing (sim_node/dds/raw_cdr, issue 6): one participant, domain 80
+# raw CDR plumbing (sim_node/dds/raw_cdr): one participant, domain 80
 towsim_add_test(raw_cdr_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/raw_cdr_test.cc
   LIBS towsim::dds)

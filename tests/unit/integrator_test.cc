@@ -94,7 +94,7 @@ TEST(Integrator, SubsteppingRescuesAHardStep) {
   EXPECT_NEAR(sim.node_position(0).x(), 5.0, 1e-6);
 }
 
-// Modified Newton (issue 7): the factored Newton matrix is kept across steps, and the states it
+// Modified Newton: the factored Newton matrix is kept across steps, and the states it
 // accepts agree with a run converged far tighter. The steady tow from vertical (the towing
 // point jerks to 6 m/s, the cable swings back) over its first 10 s, 20 elements, h = 0.05 s.
 Model SteadyTowFromVertical(double tolerance) {

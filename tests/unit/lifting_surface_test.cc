@@ -39,7 +39,8 @@ Vec3 Flow(double speed, double alpha) {
 
 TEST(LiftingSurface, HelmboldSlope) {
   constexpr double kTol = 1e-12;
-  // 2 pi AR / (2 + sqrt(AR^2 + 4)): AR 4.8 -> 4.19 /rad (ref §3.2); -> 2 pi as AR -> infinity;
+  // 2 pi AR / (2 + sqrt(AR^2 + 4)): AR 4.8 -> 4.19 /rad (docs/vehicle_coefficients.md §5); -> 2 pi
+  // as AR -> infinity;
   // -> pi AR / 2 (slender wing) as AR -> 0
   EXPECT_NEAR(HelmboldLiftSlope(4.8), 2 * kPi * 4.8 / (2 + std::sqrt(4.8 * 4.8 + 4)), kTol);
   EXPECT_NEAR(HelmboldLiftSlope(4.8), 4.19, 0.005);

@@ -1,4 +1,4 @@
-// Step does not allocate (DESIGN §1: a preallocated Workspace; issue 7). Built against a core
+// Step does not allocate (docs/contract.md §1: a preallocated Workspace). Built against a core
 // compiled with EIGEN_RUNTIME_NO_MALLOC and asserts on, so any Eigen heap allocation while
 // allocation is forbidden aborts; std containers are caught by counting the global operator new.
 // The first steps may size work space (the sub-stepping backups, the first copies); after them

@@ -1,4 +1,4 @@
-// The sim_node command line as scripts and users meet it (DESIGN §5): the real binary runs as
+// The sim_node command line as scripts and users meet it (docs/contract.md §5): the real binary runs as
 // a process; exit codes, messages and the CSV files are checked.
 //   0 ok, 2 bad input (the message names the key), 3 solver failure, 128 + signal when stopped.
 

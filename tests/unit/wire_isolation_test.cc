@@ -1,4 +1,4 @@
-// The wire has one home (DESIGN §7, docs/app_layer.md "The wire"): sim_node/ and controllers/
+// The wire has one home (docs/contract.md §7, docs/app_layer.md "The wire"): sim_node/ and controllers/
 // meet only in wire/ (and msgs/). This test reads every source file under sim_node/ and
 // controllers/ and names the file and line of each include that crosses:
 //   - a file of sim_node/ includes nothing of controllers/ ("common/...", "testing/...",

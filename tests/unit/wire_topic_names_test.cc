@@ -1,6 +1,6 @@
 // wire/topic_names and wire/topic_table: ROS 2 topic names on DDS ("rt/" prefix), namespaces,
 // scopes. Every name the node uses, exactly, for the default namespace, the root and a nested
-// one: these are the wire contract (DESIGN §3, docs/topics.md) and must not change.
+// one: these are the wire contract (docs/contract.md §3, docs/topics.md) and must not change.
 
 #include <string>
 

@@ -1,5 +1,5 @@
 #pragma once
-// An MCAP recording of DDS topics as rosbag2 writes one (DESIGN §6, issue 6), shared by
+// An MCAP recording of DDS topics as rosbag2 writes one (docs/contract.md §6), shared by
 // `sim_node --record` and `towsim_record`: profile "ros2", one channel per topic named in ROS
 // form ("/towsim/towfish/odom" for the DDS topic "rt/towsim/towfish/odom"), message encoding
 // "cdr" (the serialized payload with its 4-byte encapsulation header, as published), one
@@ -23,7 +23,7 @@
 namespace towsim::app {
 
 // rosbag2's offered_qos_profiles YAML of a reliable keep-last writer, volatile or transient
-// local (the towsim topics, DESIGN §3)
+// local (the towsim topics, docs/contract.md §3)
 std::string OfferedQosYaml(bool transient_local, int depth);
 
 class McapRecording {

@@ -1,5 +1,5 @@
 #pragma once
-// The node's per-step state topics in one table (DESIGN §3, docs/frames.md, docs/app_layer.md):
+// The node's per-step state topics in one table (docs/contract.md §3, docs/frames.md, docs/app_layer.md):
 // one row per topic with its wire row (wire/topic_table.h: name, type, QoS, direction), its rate
 // key (core/publish_rates.h) and the translator that fills its message from the simulation. The
 // node's state writers (app/node/dds_publisher.h) with their recording and Foxglove channels read

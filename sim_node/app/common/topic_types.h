@@ -12,7 +12,7 @@
 
 namespace towsim::app {
 
-// every topic type of DESIGN §3 (those of wire/topic_table.h)
+// every topic type of docs/contract.md §3 (those of wire/topic_table.h)
 const std::vector<const dds_topic_descriptor_t*>& ContractTypes();
 
 // the descriptor of a ROS 2 type name ("nav_msgs/msg/Odometry"); nullptr if not a contract type

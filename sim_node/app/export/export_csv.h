@@ -1,6 +1,6 @@
 #pragma once
 // towsim_export --csv: a recording of a towsim node (MCAP, CDR payloads) back into the CSV
-// files of DESIGN §5, with the columns and number formatting of io/csv_writer ("%.9g"), so
+// files of docs/contract.md §5, with the columns and number formatting of io/csv_writer ("%.9g"), so
 // that scripts (plot_paper.py, summarize.py) work on recordings as on `sim_node --csv` output.
 //
 // Topics used, under the namespace NS (default /towsim):

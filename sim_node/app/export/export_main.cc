@@ -1,4 +1,4 @@
-// towsim_export: a towsim recording (MCAP) to the CSV files of DESIGN §5 (--csv DIR) and / or a
+// towsim_export: a towsim recording (MCAP) to the CSV files of docs/contract.md §5 (--csv DIR) and / or a
 // summary like `ros2 bag info` (--info). Exit codes: 0 done, 1 unexpected error (e.g. a CSV
 // file could not be written), 2 bad input (command line, unreadable or corrupt recording: the
 // reader's message names the byte offset), 4 --recover read the file but skipped damaged or

@@ -1,5 +1,5 @@
 #pragma once
-// The sim_node command line (DESIGN §5):
+// The sim_node command line (docs/contract.md §5):
 //
 //   sim_node --scene FILE [--mode realtime|fast|lockstep|offline] [--duration S] [--rate R]
 //            [--set key.path=value ...] [--csv DIR] [--record FILE.mcap] [--help] [--version]

@@ -1,4 +1,4 @@
-// sim_node_dds: sim_node with its DDS modes (DESIGN §3-4, app/node/node_main.h): the program that
+// sim_node_dds: sim_node with its DDS modes (docs/contract.md §3-4, app/node/node_main.h): the program that
 // sim_node becomes for --mode realtime, fast and lockstep. It runs every mode, offline too,
 // and prints as sim_node.
 

@@ -1,6 +1,6 @@
 #pragma once
-// The DDS modes of sim_node (DESIGN §3-4, issue 4): realtime, fast and lockstep. The node
-// steps a core::Simulation and publishes on the ROS-2-compatible topics of DESIGN §3; external
+// The DDS modes of sim_node (docs/contract.md §3-4): realtime, fast and lockstep. The node
+// steps a core::Simulation and publishes on the ROS-2-compatible topics of docs/contract.md §3; external
 // controllers drive the vehicles over rt/<ns>/<body>/command, run control comes over
 // rt/<ns>/sim_control.
 //

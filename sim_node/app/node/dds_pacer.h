@@ -1,5 +1,5 @@
 #pragma once
-// Wall-clock pacing of the realtime mode (DESIGN §4): step k of a run paced from wall time
+// Wall-clock pacing of the realtime mode (docs/contract.md §4): step k of a run paced from wall time
 // `epoch` starts at its deadline epoch + k * period, period = h / rate. Each step's lateness
 // (start - deadline) is measured; a step that ends after the next deadline is an overrun, and
 // the schedule then restarts from the end of that step (no burst of catch-up steps).

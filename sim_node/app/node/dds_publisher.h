@@ -1,5 +1,5 @@
 #pragma once
-// The DDS endpoints of the node (DESIGN §3): the writers of the per-step state topics of
+// The DDS endpoints of the node (docs/contract.md §3): the writers of the per-step state topics of
 // app/common/node_topics.h (odometry, cable force, altitude and pressure of each body; cable state,
 // /tf, markers, /clock), of status, scene info and /tf_static (docs/frames.md); readers of the
 // vehicles' commands and of sim_control. A message is built and serialized only when its

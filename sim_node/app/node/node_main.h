@@ -1,5 +1,5 @@
 #pragma once
-// main() of sim_node (DESIGN §4-5): the command line, the scene, the CSV files and the run.
+// main() of sim_node (docs/contract.md §4-5): the command line, the scene, the CSV files and the run.
 // Two executables share it, so that an offline run loads no DDS library (docs/benchmarks.md,
 // "Start-up"):
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The offline mode (DESIGN §4): no DDS; the simulation is stepped as fast as it goes, commands
+// The offline mode (docs/contract.md §4): no DDS; the simulation is stepped as fast as it goes, commands
 // come from the scene's script, output goes to CSV.
 
 #include "core/model.h"

@@ -1,4 +1,4 @@
-// towsim_record: records the topics of a towsim node from DDS into MCAP (issue 6).
+// towsim_record: records the topics of a towsim node from DDS into MCAP.
 //
 //   towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]
 //                 [--duration S] [--overwrite] [--quiet]
@@ -9,7 +9,7 @@
 // the same file is refused too.
 //
 // It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
-// first), then subscribes to every towsim topic of the namespace (DESIGN §3: per body odom,
+// first), then subscribes to every towsim topic of the namespace (docs/contract.md §3: per body odom,
 // cable_force and command; cable/state, status, scene_info, sim_control, markers), /clock, /tf
 // and /tf_static, or to the
 // --topics given (ROS names, "/towsim/towfish/odom"). The payloads are stored as received

@@ -1,4 +1,4 @@
-// towsim_replay: republishes an MCAP recording on DDS with its recorded timing (issue 6).
+// towsim_replay: republishes an MCAP recording on DDS with its recorded timing.
 //
 //   towsim_replay FILE.mcap [--rate X | --fast] [--topics T ...] [--start S] [--loop]
 //                 [--delay S] [--domain N] [--namespace NS] [--recover] [--quiet]
@@ -7,7 +7,7 @@
 // Every message of the chosen channels is written raw (the recorded CDR bytes, dds/raw_cdr;
 // Cyclone validates them against the type) on a writer of the channel's type (the schema name,
 // "nav_msgs/msg/Odometry", mapped to the generated descriptor of msgs/) with the QoS of the
-// towsim topics (DESIGN §3: reliable keep-last 1; scene_info transient local). Timing: message
+// towsim topics (docs/contract.md §3: reliable keep-last 1; scene_info transient local). Timing: message
 // i is written at t0 + (log_time_i - log_time_first) / rate of wall time (log time = receive
 // time of towsim_record, publish time of sim_node --record); --rate 0 or --fast: as fast as
 // possible. /clock is replayed like any topic, so nodes with use_sim_time follow it.
