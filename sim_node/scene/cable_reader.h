@@ -1,6 +1,6 @@
 #pragma once
 // cable: material, loads, ends and the initial shape, with the geometric rules that let the
-// core build the initial state (DESIGN.md §5).
+// core build the initial state (docs/contract.md §5).
 
 #include "core/model.h"
 #include "scene/yaml_reader.h"

@@ -21,7 +21,7 @@ inline TowedCableProblem SteadyTowProblem(const core::Model& m) {
   p.diameter = c.diameter;
   p.density = c.density;
   p.youngs_modulus = c.youngs_modulus;
-  const core::SphereBody& b = m.bodies.at(0);
+  const core::SphereBody& b = m.spheres.at(0);
   p.sphere_mass = b.mass;
   p.sphere_volume = b.volume;
   p.sphere_cd = b.drag_coefficient;
