@@ -1,4 +1,4 @@
-// Cost of each feature of a scene (issue 7, "a scene pays only for what it uses").
+// Cost of each feature of a scene: a scene pays only for what it uses.
 //   ./build/bench/feature_cost                    # benchmarks, then a Markdown table of ratios
 //   ./build/bench/feature_cost --profile NAME N   # N steps of variant NAME, no timing, then N
 //                                                 # residual + Newton-matrix evaluations and N
@@ -26,6 +26,7 @@
 #include "core/script.h"
 #include "core/simulation.h"
 #include "core/state.h"
+#include "core/step_sampler.h"
 #include "core/system.h"
 #include "scene/scene_loader.h"
 
@@ -229,27 +230,41 @@ __attribute__((noinline)) long ProfileSteps(Simulation* sim, towsim::core::Scrip
   return newton;
 }
 
+// the inputs of an evaluation at the simulation's state: calm water (the waves are sampled
+// once per step, not per evaluation), the supports and the drum as the state holds them
+towsim::core::StepInputs CalmInputs(const Simulation& sim) {
+  towsim::core::StepInputs in;
+  towsim::core::StepSampler(sim.system()).TakeMotions(sim.state(), &in);
+  return in;
+}
+
+// the options of an evaluation at the scene's step h (trapezoidal coefficients)
+towsim::core::EvaluateOptions ProfileOptions(const Simulation& sim) {
+  const double h = sim.model().time.step;
+  return {1.0, {1.0, 0.5 / h, 1.0 / (0.25 * h * h)}};
+}
+
 // N evaluations of the residual and the Newton matrix (jac) or of the residual alone, at one
 // fixed state: the per-evaluation cost of a variant without its dynamics mixed in
 __attribute__((noinline)) void ProfileEvaluateJacobian(const Simulation& sim, int n) {
   const towsim::core::System& sys = sim.system();
   const towsim::core::State& s = sim.state();
+  const towsim::core::StepInputs in = CalmInputs(sim);
+  const towsim::core::EvaluateOptions options = ProfileOptions(sim);
   towsim::core::BlockTridiagonal jac = sys.MakeMatrix();
   Eigen::VectorXd r, phi;
-  const double h = sim.model().time.step;
-  const towsim::core::JacobianCoefficients cf{1.0, 0.5 / h, 1.0 / (0.25 * h * h)};
-  for (int i = 0; i < n; ++i) sys.Evaluate(s.q, s.v, s.a, s.lambda, s.t, 1.0, cf, &r, &phi, &jac);
+  for (int i = 0; i < n; ++i)
+    sys.Evaluate({s.q, s.v, s.a, s.lambda, s.t}, in, options, {&r, &phi, &jac});
   benchmark::DoNotOptimize(r.data());
 }
 
 __attribute__((noinline)) void ProfileEvaluateResidual(const Simulation& sim, int n) {
   const towsim::core::System& sys = sim.system();
   const towsim::core::State& s = sim.state();
+  const towsim::core::StepInputs in = CalmInputs(sim);
+  const towsim::core::EvaluateOptions options = ProfileOptions(sim);
   Eigen::VectorXd r, phi;
-  const double h = sim.model().time.step;
-  const towsim::core::JacobianCoefficients cf{1.0, 0.5 / h, 1.0 / (0.25 * h * h)};
-  for (int i = 0; i < n; ++i)
-    sys.Evaluate(s.q, s.v, s.a, s.lambda, s.t, 1.0, cf, &r, &phi, nullptr);
+  for (int i = 0; i < n; ++i) sys.Evaluate({s.q, s.v, s.a, s.lambda, s.t}, in, options, {&r, &phi});
   benchmark::DoNotOptimize(r.data());
 }
 

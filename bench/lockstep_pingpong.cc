@@ -34,8 +34,8 @@
 #include "dds/messages.h"
 #include "dds/qos.h"
 #include "dds/raw_cdr.h"
-#include "dds/topic_names.h"
 #include "dds/translators.h"
+#include "wire/topic_names.h"
 
 namespace {
 
@@ -89,7 +89,7 @@ Args Parse(int argc, char** argv) {
     } else if (flag == "--bodies") {
       std::stringstream s(v);
       for (std::string b; std::getline(s, b, ',');) {
-        if (const std::string e = tdds::CheckBodyName(b); !e.empty()) {
+        if (const std::string e = towsim::wire::CheckBodyName(b); !e.empty()) {
           Usage("--bodies = " + v + ": " + e);
         }
         a.bodies.push_back(b);
@@ -142,9 +142,10 @@ struct PingBody {
 
 int Ping(const Args& a) {
   constexpr double kStep = 0.05;  // Case 1's step [s]: the stamps only
-  const tdds::TopicNames names("/towsim");
+  const towsim::wire::TopicNames names(towsim::wire::kDefaultNamespace);
   tdds::Participant participant(a.domain, "");
-  tdds::Topic status_topic(participant, &towsim_msgs_msg_dds__SimStatus__desc, names.status());
+  tdds::Topic status_topic(participant, &towsim_msgs_msg_dds__SimStatus__desc,
+                           names.Name(towsim::wire::Topic::kStatus));
   tdds::Writer<tdds::SimStatusMsg> status(participant, status_topic, tdds::StateQos());
   tdds::WaitSet waitset(participant);
   std::vector<PingBody> bodies(a.bodies.size());
@@ -152,9 +153,10 @@ int Ping(const Args& a) {
     PingBody& p = bodies[b];
     const std::string& name = a.bodies[b];
     p.odom_topic = std::make_unique<tdds::Topic>(participant, &nav_msgs_msg_dds__Odometry__desc,
-                                                 names.odom(name));
-    p.command_topic = std::make_unique<tdds::Topic>(
-        participant, &towsim_msgs_msg_dds__ActuatorCommand__desc, names.command(name));
+                                                 names.Name(towsim::wire::Topic::kOdom, name));
+    p.command_topic =
+        std::make_unique<tdds::Topic>(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc,
+                                      names.Name(towsim::wire::Topic::kCommand, name));
     p.odom = std::make_unique<tdds::Writer<tdds::OdometryMsg>>(participant, *p.odom_topic,
                                                                tdds::StateQos());
     p.command = std::make_unique<tdds::Reader<tdds::ActuatorCommandMsg>>(
@@ -250,9 +252,10 @@ int Ping(const Args& a) {
 }
 
 int Pong(const Args& a) {
-  const tdds::TopicNames names("/towsim");
+  const towsim::wire::TopicNames names(towsim::wire::kDefaultNamespace);
   tdds::Participant participant(a.domain, "");
-  tdds::Topic status_topic(participant, &towsim_msgs_msg_dds__SimStatus__desc, names.status());
+  tdds::Topic status_topic(participant, &towsim_msgs_msg_dds__SimStatus__desc,
+                           names.Name(towsim::wire::Topic::kStatus));
   tdds::Reader<tdds::SimStatusMsg> status(participant, status_topic, tdds::StateQos(16));
   tdds::WaitSet waitset(participant);
   waitset.Attach(status.condition());
@@ -265,10 +268,12 @@ int Pong(const Args& a) {
   std::vector<PongBody> bodies(a.bodies.size());
   for (size_t b = 0; b < bodies.size(); ++b) {
     PongBody& p = bodies[b];
-    p.odom_topic = std::make_unique<tdds::Topic>(participant, &nav_msgs_msg_dds__Odometry__desc,
-                                                 names.odom(a.bodies[b]));
-    p.command_topic = std::make_unique<tdds::Topic>(
-        participant, &towsim_msgs_msg_dds__ActuatorCommand__desc, names.command(a.bodies[b]));
+    p.odom_topic =
+        std::make_unique<tdds::Topic>(participant, &nav_msgs_msg_dds__Odometry__desc,
+                                      names.Name(towsim::wire::Topic::kOdom, a.bodies[b]));
+    p.command_topic =
+        std::make_unique<tdds::Topic>(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc,
+                                      names.Name(towsim::wire::Topic::kCommand, a.bodies[b]));
     p.odom = std::make_unique<tdds::Reader<tdds::OdometryMsg>>(participant, *p.odom_topic,
                                                                tdds::StateQos(16));
     p.command = std::make_unique<tdds::Writer<tdds::ActuatorCommandMsg>>(

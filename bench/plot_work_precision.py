@@ -20,7 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-POS_TARGET = 0.01  # towfish-track error target of issue 7: 1 % of the cable length
+POS_TARGET = 0.01  # towfish-track error target: 1 % of the cable length
 ROOT = os.path.dirname(HERE)
 
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cost of DDS publishing with and without subscribers (issue 7): sim_node --mode fast (as fast
+# Cost of DDS publishing with and without subscribers: sim_node --mode fast (as fast
 # as possible, publishing every topic) on the steady-tow and Case 1 scenes, alone and with a
 # subscriber process of every topic attached (bench/publish_cost_subscriber), against the same
 # run offline (no DDS at all). Steps per second from sim_node's summary line; median of RUNS.

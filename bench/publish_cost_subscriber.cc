@@ -1,6 +1,6 @@
 // publish_cost_subscriber: a plain DDS subscriber of every topic sim_node publishes, for
-// bench/publish_cost.sh (cost of publishing with and without a matched reader). Uses msgs/
-// and the Cyclone C API only.
+// bench/publish_cost.sh (cost of publishing with and without a matched reader). Uses msgs/,
+// the wire library (topic names, QoS) and the Cyclone C API only.
 //
 //   publish_cost_subscriber --domain N --bodies a,b [--namespace /towsim] [--idle S]
 //
@@ -18,10 +18,8 @@
 
 #include <dds/dds.h>
 
-#include "geometry_msgs.h"
-#include "nav_msgs.h"
-#include "rosgraph_msgs.h"
-#include "towsim_msgs.h"
+#include "wire/qos.h"
+#include "wire/topic_names.h"
 
 namespace {
 
@@ -56,26 +54,27 @@ int main(int argc, char** argv) {
 
   const dds_entity_t participant = dds_create_participant(domain, nullptr, nullptr);
   if (participant < 0) Fail(std::string("participant: ") + dds_strretcode(-participant));
-  dds_qos_t* qos = dds_create_qos();
-  dds_qset_reliability(qos, DDS_RELIABILITY_RELIABLE, DDS_SECS(1));
-  dds_qset_history(qos, DDS_HISTORY_KEEP_LAST, 1);
+  const towsim::wire::TopicNames names(ns);
+  dds_qos_t* qos = towsim::wire::ProfileQos(towsim::wire::QosProfile::kState);
 
   std::vector<dds_entity_t> readers;
-  auto subscribe = [&](const dds_topic_descriptor_t* desc, const std::string& name) {
-    const dds_entity_t topic = dds_create_topic(participant, desc, name.c_str(), nullptr, nullptr);
+  auto subscribe = [&](towsim::wire::Topic t, const std::string& owner = "") {
+    const std::string name = names.Name(t, owner);
+    const dds_entity_t topic =
+        dds_create_topic(participant, towsim::wire::SpecOf(t).type, name.c_str(), nullptr, nullptr);
     if (topic < 0) Fail("topic " + name + ": " + dds_strretcode(-topic));
     const dds_entity_t reader = dds_create_reader(participant, topic, qos, nullptr);
     if (reader < 0) Fail("reader " + name + ": " + dds_strretcode(-reader));
     readers.push_back(reader);
   };
-  subscribe(&rosgraph_msgs_msg_dds__Clock__desc, "rt/clock");
-  subscribe(&towsim_msgs_msg_dds__SimStatus__desc, "rt" + ns + "/status");
-  subscribe(&towsim_msgs_msg_dds__CableState__desc, "rt" + ns + "/cable/state");
+  subscribe(towsim::wire::Topic::kClock);
+  subscribe(towsim::wire::Topic::kStatus);
+  subscribe(towsim::wire::Topic::kCableState);
   std::stringstream list(bodies);
   for (std::string b; std::getline(list, b, ',');) {
     if (b.empty()) continue;
-    subscribe(&nav_msgs_msg_dds__Odometry__desc, "rt" + ns + "/" + b + "/odom");
-    subscribe(&geometry_msgs_msg_dds__WrenchStamped__desc, "rt" + ns + "/" + b + "/cable_force");
+    subscribe(towsim::wire::Topic::kOdom, b);
+    subscribe(towsim::wire::Topic::kCableForce, b);
   }
   dds_delete_qos(qos);
 

@@ -5,7 +5,7 @@
 #                           bench/results/work_precision.csv, draws
 #                           docs/figures/work_precision_*.png and prints the Pareto fronts
 #   bench/run.sh targets    the shipped scenes at their own settings: real-time factor and the
-#                           towfish-track error against a run 4x finer (issue 7's targets)
+#                           towfish-track error against a run 4x finer (the accuracy targets of docs/benchmarks.md)
 #   bench/run.sh startup [SIM_NODE] [ARGS]
 #                           sim_node offline as a whole process against its stepping loop in
 #                           process (Case 1, 100 s, 10 pairs; ~5 s): both RTFs and their ratio

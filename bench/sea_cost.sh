@@ -4,7 +4,7 @@
 # 100 components, seed 1, 20 s ramp, bottomless (deep water).
 #   1. instructions (callgrind, repeatable): STEPS steps of each (bench/feature_cost --profile
 #      two_vehicles_strong / case1_waves), the stepping only; per step the whole, the wave
-#      sampling at the cable nodes (System::SampleWaves) and at the vehicles
+#      sampling at the cable nodes (StepSampler::SampleWaves) and at the vehicles
 #      (SampleVehicleFlow), and the Newton iterations;
 #   2. wall time: sim_node --mode offline --duration 100 of both scenes, alternated: ROUNDS
 #      rounds of hyperfine (3 runs each after a warm-up), the ratio of the means per round.
@@ -63,7 +63,7 @@ print("|---|---|---|---|---|---|")
 for v, name in ((calm, "Case 1, calm"), (sea, "Case 1, JONSWAP-100")):
     t = total(v)
     print(f"| {name} | {t/steps:,.0f} | {t/total(calm):.3f} | {newton(v)/steps:.2f} | "
-          f"{inclusive(v, 'System::SampleWaves')/steps:,.0f} | "
+          f"{inclusive(v, 'StepSampler::SampleWaves')/steps:,.0f} | "
           f"{inclusive(v, 'core::SampleVehicleFlow(')/steps:,.0f} |")
 ratios, means = [], []
 for r in range(1, rounds + 1):

@@ -65,7 +65,7 @@ double Seconds(const timeval& t) {
   return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
 }
 
-// the stepping loop of sim_node offline (app/offline_run.cc) without its output; false if a
+// the stepping loop of sim_node offline (app/node/offline_run.cc) without its output; false if a
 // step failed
 bool StepInProcess(const towsim::core::Model& model, double duration, Cost* cost) {
   towsim::core::Simulation sim(model);

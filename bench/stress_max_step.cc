@@ -1,4 +1,4 @@
-// Largest stable step per scene (issue 7, "report the largest stable step per scene").
+// Largest stable step per scene.
 //   ./build/bench/stress_max_step            # Markdown table on stdout, ~1 min
 //
 // For each scene, the step h runs over a grid (0.05 ... 1.0 s) for the scene's duration

@@ -1,4 +1,4 @@
-// Accuracy against run time (issue 7): sweeps the time step, the number of elements, the
+// Accuracy against run time: sweeps the time step, the number of elements, the
 // integrator (generalized-alpha with several rho_inf, trapezoidal) and, with vehicles, the
 // coupling scheme (staggered, strong) on the steady-tow, Case 1, Case 3 (waves) and winch-payout
 // scenes, and writes one CSV row per run.

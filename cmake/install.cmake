@@ -6,15 +6,15 @@
 #                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
 #                              cyclonedds_two_hosts.xml, idl/*.idl,
 #                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/
-#   P/include/towsim/          msgs/*.h (generated from the IDL), common/*.h (client library),
+#   P/include/towsim/          msgs/*.h (generated from the IDL), wire/*.h (topic names, QoS,
+#                              Security, ROS 2 graph, decoders), common/*.h (client library),
 #                              testing/*.h (test fixture)
-#   P/lib/                     libtowsim_msgs.a, libtowsim_client.a (+ laws, dds_security,
-#                              ros_graph),
+#   P/lib/                     libtowsim_msgs.a, libtowsim_wire.a, libtowsim_client.a (+ laws),
 #                              libtowsim_testing.a
-#   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::client,
+#   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::wire, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
 #                              towsim::<name>), towsim_SIM_NODE, towsim_DATA_DIR, towsim_DDS_URI
-# The programs find P/share/towsim from their own location (sim_node/app/installed_data.h).
+# The programs find P/share/towsim from their own location (sim_node/app/common/installed_data.h).
 
 include(CMakePackageConfigHelpers)
 
@@ -38,21 +38,20 @@ foreach(_program IN LISTS TOWSIM_INSTALLED_PROGRAMS)
 endforeach()
 install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# the programs only other programs run: sim_node's DDS modes (sim_node/app/node_main.h), found
-# by sim_node at P/libexec/towsim (kPrivateProgramDir in sim_node/app/installed_data.h)
+# the programs only other programs run: sim_node's DDS modes (sim_node/app/node/node_main.h), found
+# by sim_node at P/libexec/towsim (kPrivateProgramDir in sim_node/app/common/installed_data.h)
 install(TARGETS sim_node_dds RUNTIME DESTINATION libexec/towsim)
 
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
-install(TARGETS towsim_msgs towsim_controller_laws towsim_controller_common towsim_dds_security
-                towsim_ros_graph towsim_dds_qos towsim_testing
+install(TARGETS towsim_msgs towsim_wire towsim_controller_laws towsim_controller_common
+                towsim_testing
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)
-install(FILES controllers/common/client.h controllers/common/dds_qos.h controllers/common/flags.h
-              controllers/common/laws.h
+install(FILES ${TOWSIM_WIRE_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/wire)
+install(FILES controllers/common/client.h controllers/common/flags.h controllers/common/laws.h
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/common)
-install(FILES sim_node/dds/security.h sim_node/dds/ros_graph.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/dds)
 install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/testing
         FILES_MATCHING PATTERN "*.h")
 

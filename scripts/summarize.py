@@ -3,7 +3,7 @@
 
     python3 scripts/summarize.py out/steady_tow [--towfish NAME]
 
-Reads bodies.csv, cable.csv and forces.csv (DESIGN §5) and, when present, summary.txt (the
+Reads bodies.csv, cable.csv and forces.csv (docs/contract.md §5) and, when present, summary.txt (the
 stdout of sim_node, for its real-time factor). Reports at the last written time:
   - the towfish position (body named "towfish", else --towfish, else the last body),
   - the tow point (cable node 0), and the towfish's layback (horizontal distance behind the

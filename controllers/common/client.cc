@@ -9,15 +9,17 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <vector>
 
-#include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
-#include "dds/ros_graph.h"
 #include "nav_msgs.h"
 #include "sensor_msgs.h"
 #include "towsim_msgs.h"
+#include "wire/qos.h"
+#include "wire/ros_graph.h"
+#include "wire/topic_names.h"
 
 namespace towsim::controllers {
 namespace {
@@ -34,14 +36,13 @@ dds_entity_t Check(dds_entity_t e, const std::string& what) {
   return e;
 }
 
-double StampSeconds(int32_t sec, uint32_t nanosec) { return sec + 1e-9 * nanosec; }
+// the namespace of --namespace: "" is the root, "towsim" is /towsim
+std::string RootedNamespace(const std::string& ns) {
+  if (ns.empty()) return "/";
+  return ns[0] == '/' ? ns : "/" + ns;
+}
 
 }  // namespace
-
-std::string TopicPrefix(const std::string& ns) {
-  if (ns.empty() || ns == "/") return "rt/";
-  return ns[0] == '/' ? "rt" + ns + "/" : "rt/" + ns + "/";
-}
 
 std::string RequireDdsUri() {
   const char* uri = std::getenv("CYCLONEDDS_URI");
@@ -96,7 +97,7 @@ void TakeQueued(dds_entity_t reader, Fn fn) {
   for (int j = 0; j < k; ++j) {
     if (!infos[j].valid_data) continue;
     const auto* m = static_cast<const Msg*>(samples[j]);
-    fn(*m, StampSeconds(m->header.stamp.sec, m->header.stamp.nanosec));
+    fn(*m, wire::StampSeconds(m->header.stamp));
   }
   if (k > 0) dds_return_loan(reader, samples, k);
 }
@@ -117,7 +118,7 @@ void WaitForStep(Track* track, double t, const ClientOptions& opt) {
 struct OdomTrack {
   dds_entity_t reader = 0;
   dds_entity_t waitset = 0;  // on `reader`
-  nav_msgs_msg_dds__Odometry_ odom{};
+  wire::Odometry odom;
   bool have = false;
   double time = -1.0;
   // after a RESET (a new run id): the time of the new run's first status; odometry stamped
@@ -138,9 +139,7 @@ struct OdomTrack {
         reset_time = -1.0;
       }
       if (t >= time || !have) {  // a RESET goes back in time: see below
-        odom = o;
-        odom.header.frame_id = nullptr;
-        odom.child_frame_id = nullptr;
+        odom = wire::DecodeOdometry(o);
         time = t;
         have = true;
       }
@@ -180,9 +179,9 @@ struct LockstepClient::Impl {
   dds_entity_t participant = 0;
   dds_entity_t status_reader = 0, command_writer = 0;
   dds_entity_t waitset = 0;
-  dds_entity_t winch_writer = 0;     // 0: no winch commands
-  dds_entity_t cable_reader = 0;     // 0: not subscribed
-  std::unique_ptr<dds::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
+  dds_entity_t winch_writer = 0;              // 0: no winch commands
+  dds_entity_t cable_reader = 0;              // 0: not subscribed
+  std::unique_ptr<wire::RosGraphNode> graph;  // the ROS 2 node <ns>/<name>
   double step_size = 0.05;
   WinchInfo winch;
   OdomTrack own, observed;  // the commanded body's odometry, ClientOptions::observe's
@@ -198,13 +197,9 @@ struct LockstepClient::Impl {
       for (int j = 0; j < k; ++j) {
         if (!ci[j].valid_data) continue;
         const auto* c = static_cast<const towsim_msgs_msg_dds__CableState_*>(cs[j]);
-        const double stamp = StampSeconds(c->header.stamp.sec, c->header.stamp.nanosec);
+        const double stamp = wire::StampSeconds(c->header.stamp);
         if (stamp > t + 1e-9 || stamp < cable.t) continue;
-        cable.t = stamp;
-        cable.paid_out_length = c->paid_out_length;
-        cable.winch_speed = c->winch_speed;
-        cable.drum_tension = c->drum_tension;
-        cable.node_count = c->node_count;
+        cable = wire::DecodeCableState(*c);
       }
       if (k > 0) dds_return_loan(cable_reader, cs, k);
       if (k < 4) break;
@@ -217,9 +212,9 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   m.opt = options;
   RequireDdsUri();
   if (options.body.empty()) throw std::runtime_error("no body to command (--body)");
-  const std::string prefix = TopicPrefix(options.ns);
-  // a ROS 2 participant: USER_DATA enclave=/; (dds/ros_graph.h)
-  dds_qos_t* participant_qos = towsim::dds::NewParticipantQos();
+  const wire::TopicNames names(RootedNamespace(options.ns));
+  // a ROS 2 participant: USER_DATA enclave=/; (wire/ros_graph.h)
+  dds_qos_t* participant_qos = wire::NewParticipantQos();
   try {
     if (options.security.empty()) {
       m.participant =
@@ -227,81 +222,51 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
                 "creating the DDS participant (domain " + std::to_string(options.domain) + ")");
     } else {
       m.participant =
-          towsim::dds::CreateSecureParticipant(options.domain, options.security, participant_qos);
+          wire::CreateSecureParticipant(options.domain, options.security, participant_qos);
     }
   } catch (...) {
     dds_delete_qos(participant_qos);
     throw;
   }
   dds_delete_qos(participant_qos);
-  dds_qos_t* state_qos = ReliableQos(16, false);
-  dds_qos_t* cable_qos = ReliableQos(4, false);
-  dds_qos_t* command_qos = ReliableQos(kCommandDepth, false);
-  dds_qos_t* scene_qos = ReliableQos(1, true);
+  // the readers of the node's state keep a few samples (the step answered may not be the newest)
+  dds_qos_t* state_qos = wire::ProfileQos(wire::QosProfile::kState, 16);
+  dds_qos_t* cable_qos = wire::ProfileQos(wire::QosProfile::kState, 4);
   try {
-    const dds_entity_t scene_topic =
-        Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__SceneInfo__desc,
-                               (prefix + "scene_info").c_str(), nullptr, nullptr),
-              "scene_info topic");
-    const dds_entity_t scene_reader = Check(
-        dds_create_reader(m.participant, scene_topic, scene_qos, nullptr), "scene_info reader");
-    const dds_entity_t status_topic =
-        Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimStatus__desc,
-                               (prefix + "status").c_str(), nullptr, nullptr),
-              "status topic");
-    m.status_reader =
-        Check(dds_create_reader(m.participant, status_topic, state_qos, nullptr), "status reader");
-    const dds_entity_t odom_topic =
-        Check(dds_create_topic(m.participant, &nav_msgs_msg_dds__Odometry__desc,
-                               (prefix + options.body + "/odom").c_str(), nullptr, nullptr),
-              "odom topic");
-    m.own.reader =
-        Check(dds_create_reader(m.participant, odom_topic, state_qos, nullptr), "odom reader");
-    std::vector<dds_entity_t> readers{scene_reader, m.status_reader, m.own.reader};
-    std::vector<dds_entity_t> writers{0};  // the command writer, below
-    const dds_entity_t command_topic =
-        Check(dds_create_topic(m.participant, &towsim_msgs_msg_dds__ActuatorCommand__desc,
-                               (prefix + options.body + "/command").c_str(), nullptr, nullptr),
-              "command topic");
-    m.command_writer = Check(dds_create_writer(m.participant, command_topic, command_qos, nullptr),
-                             "command writer");
-    if (options.altitude) {
-      const dds_entity_t altitude_topic =
-          Check(dds_create_topic(m.participant, &sensor_msgs_msg_dds__Range__desc,
-                                 (prefix + options.body + "/altitude").c_str(), nullptr, nullptr),
-                "altitude topic");
-      m.altitude.reader = Check(
-          dds_create_reader(m.participant, altitude_topic, state_qos, nullptr), "altitude reader");
-      readers.push_back(m.altitude.reader);
-    }
-    writers[0] = m.command_writer;
-    // the optional endpoints: a reader or writer of `type` on prefix + `name`
-    auto endpoint = [&](bool writer, const dds_topic_descriptor_t* type, const std::string& name,
-                        const dds_qos_t* qos) {
-      const dds_entity_t topic = Check(
-          dds_create_topic(m.participant, type, (prefix + name).c_str(), nullptr, nullptr),
-          name + " topic");
-      const dds_entity_t e = writer ? dds_create_writer(m.participant, topic, qos, nullptr)
-                                    : dds_create_reader(m.participant, topic, qos, nullptr);
+    std::vector<dds_entity_t> readers, writers;
+    // a reader or writer of `topic` (of `owner`, wire/topic_names.h), with the QoS of its row
+    // (`qos`: a deeper reader history)
+    auto endpoint = [&](bool writer, wire::Topic topic, const std::string& owner,
+                        const dds_qos_t* qos = nullptr) {
+      const wire::TopicSpec& spec = wire::SpecOf(topic);
+      const std::string name = names.Name(topic, owner);
+      const dds_entity_t t =
+          Check(dds_create_topic(m.participant, spec.type, name.c_str(), nullptr, nullptr),
+                name + " topic");
+      dds_qos_t* own = qos == nullptr ? wire::ProfileQos(spec.qos) : nullptr;
+      const dds_qos_t* q = qos == nullptr ? own : qos;
+      const dds_entity_t e = writer ? dds_create_writer(m.participant, t, q, nullptr)
+                                    : dds_create_reader(m.participant, t, q, nullptr);
+      if (own != nullptr) dds_delete_qos(own);
       Check(e, name + (writer ? " writer" : " reader"));
       (writer ? writers : readers).push_back(e);
       return e;
     };
-    if (options.winch) {
-      m.winch_writer =
-          endpoint(true, &towsim_msgs_msg_dds__WinchCommand__desc, "winch/command", command_qos);
+    const dds_entity_t scene_reader = endpoint(false, wire::Topic::kSceneInfo, "");
+    m.status_reader = endpoint(false, wire::Topic::kStatus, "", state_qos);
+    m.own.reader = endpoint(false, wire::Topic::kOdom, options.body, state_qos);
+    m.command_writer = endpoint(true, wire::Topic::kCommand, options.body);
+    if (options.altitude) {
+      m.altitude.reader = endpoint(false, wire::Topic::kAltitude, options.body, state_qos);
     }
-    if (options.cable) {
-      m.cable_reader =
-          endpoint(false, &towsim_msgs_msg_dds__CableState__desc, "cable/state", cable_qos);
-    }
+    if (options.winch) m.winch_writer = endpoint(true, wire::Topic::kWinchCommand, "");
+    if (options.cable) m.cable_reader = endpoint(false, wire::Topic::kCableState, "", cable_qos);
     if (!options.observe.empty()) {
-      m.observed.reader = endpoint(false, &nav_msgs_msg_dds__Odometry__desc,
-                                   options.observe + "/odom", state_qos);
+      m.observed.reader = endpoint(false, wire::Topic::kOdom, options.observe, state_qos);
     }
     // the controller as a ROS 2 node <ns>/<name> with these endpoints (ros2 node list)
-    m.graph = std::make_unique<dds::RosGraphNode>(m.participant, options.ns, options.name,
-                                                  readers, writers);
+    m.graph = std::make_unique<wire::RosGraphNode>(m.participant, options.ns, options.name, readers,
+                                                   writers);
 
     // the node's scene: the body must take commands
     const Clock::time_point begin = Clock::now();
@@ -311,33 +276,33 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
       void* samples[1] = {nullptr};
       dds_sample_info_t info;
       const dds_return_t n = dds_take(scene_reader, samples, &info, 1, 1);
+      std::optional<wire::SceneInfo> s;
       if (n > 0 && info.valid_data) {
-        const auto* s = static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]);
+        s = wire::DecodeSceneInfo(*static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]));
+      }
+      if (n > 0) dds_return_loan(scene_reader, samples, n);
+      if (s) {
         m.step_size = s->step_size;
         m.winch.present = s->has_winch;
         m.winch.min_length = s->winch_min_length;
         m.winch.max_length = s->winch_max_length;
         m.winch.max_speed = s->winch_max_speed;
         m.winch.max_acceleration = s->winch_max_acceleration;
-        std::string names;
-        for (uint32_t i = 0; i < s->commanded_bodies._length; ++i) {
-          names += std::string(i ? ", " : "") + s->commanded_bodies._buffer[i];
-          if (options.body == s->commanded_bodies._buffer[i]) known = true;
+        std::string bodies;
+        for (size_t i = 0; i < s->commanded_bodies.size(); ++i) {
+          bodies += std::string(i ? ", " : "") + s->commanded_bodies[i];
+          if (options.body == s->commanded_bodies[i]) known = true;
         }
         if (!known) {
-          const std::string scene = s->scene;
-          dds_return_loan(scene_reader, samples, n);
-          throw std::runtime_error("body " + options.body + " takes no commands in scene " + scene +
-                                   " (commanded bodies: " + names + ")");
+          throw std::runtime_error("body " + options.body + " takes no commands in scene " +
+                                   s->scene + " (commanded bodies: " + bodies + ")");
         }
         if (options.winch && !m.winch.present) {
-          const std::string scene = s->scene;
-          dds_return_loan(scene_reader, samples, n);
-          throw std::runtime_error("scene " + scene +
-                                   " has no winch (cable.winch) to command on winch/command");
+          throw std::runtime_error(
+              "scene " + s->scene + " has no winch (cable.winch) to command on " +
+              names.Name(wire::Topic::kWinchCommand).substr(names.prefix().size()));
         }
       }
-      if (n > 0) dds_return_loan(scene_reader, samples, n);
       if (!known) {
         if (Seconds(Clock::now() - begin) > options.timeout) {
           throw std::runtime_error("no scene_info from a node on domain " +
@@ -374,16 +339,12 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
   } catch (...) {
     dds_delete_qos(state_qos);
     dds_delete_qos(cable_qos);
-    dds_delete_qos(command_qos);
-    dds_delete_qos(scene_qos);
     dds_delete(m.participant);
     delete impl_;
     throw;
   }
   dds_delete_qos(state_qos);
   dds_delete_qos(cable_qos);
-  dds_delete_qos(command_qos);
-  dds_delete_qos(scene_qos);
 }
 
 const WinchInfo& LockstepClient::winch() const { return impl_->winch; }
@@ -410,21 +371,21 @@ int LockstepClient::Run(const Law& law) {
       return 1;
     }
     // only the newest status matters
-    const towsim_msgs_msg_dds__SimStatus_* s = nullptr;
+    const towsim_msgs_msg_dds__SimStatus_* newest = nullptr;
     for (int i = 0; i < n; ++i) {
-      if (infos[i].valid_data) s = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
+      if (infos[i].valid_data) {
+        newest = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
+      }
     }
     bool done = false;
-    if (s != nullptr) {
-      const bool terminal = s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED ||
-                            s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED ||
-                            s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
-      const bool new_run = run_id != s->run_id;
-      const bool fresh = new_run || last_step != s->step;
-      if (terminal) {
+    if (newest != nullptr) {
+      const wire::SimStatus s = wire::DecodeStatus(*newest);
+      const bool new_run = run_id != s.run_id;
+      const bool fresh = new_run || last_step != s.step;
+      if (s.terminal()) {
         done = true;
       } else if (fresh) {
-        const double t = s->sim_time;
+        const double t = s.t;
         if (new_run) {
           // a RESET, not the first run seen: the old run's samples still queued are dropped
           m.own.NewRun(!run_id.empty(), t);
@@ -436,25 +397,24 @@ int LockstepClient::Run(const Law& law) {
         // short wait otherwise
         m.own.WaitFor(t, m.opt);
         if (m.own.have) {
-          const auto& o = m.own.odom;
-          const auto& pq = o.pose.pose.orientation;
+          const wire::Odometry& o = m.own.odom;
           BodyState b;
-          b.step = s->step;
+          b.step = s.step;
           b.t = t;
-          b.x = o.pose.pose.position.x;
-          b.y = o.pose.pose.position.y;
-          b.z = o.pose.pose.position.z;
-          const Euler e = EulerFromQuaternion(pq.x, pq.y, pq.z, pq.w);
+          b.x = o.x;
+          b.y = o.y;
+          b.z = o.z;
+          const Euler e = EulerFromQuaternion(o.qx, o.qy, o.qz, o.qw);
           b.roll = e.roll;
           b.pitch = e.pitch;
           b.yaw = e.yaw;
-          b.u = o.twist.twist.linear.x;
-          b.v = o.twist.twist.linear.y;
-          b.w = o.twist.twist.linear.z;
-          b.p = o.twist.twist.angular.x;
-          b.q = o.twist.twist.angular.y;
-          b.r = o.twist.twist.angular.z;
-          const Vec3 vw = BodyToWorld(pq.x, pq.y, pq.z, pq.w, {b.u, b.v, b.w});
+          b.u = o.u;
+          b.v = o.v;
+          b.w = o.w;
+          b.p = o.p;
+          b.q = o.q;
+          b.r = o.r;
+          const Vec3 vw = BodyToWorld(o.qx, o.qy, o.qz, o.qw, {b.u, b.v, b.w});
           b.x_dot = vw.x;
           b.y_dot = vw.y;
           b.z_dot = vw.z;
@@ -467,11 +427,9 @@ int LockstepClient::Run(const Law& law) {
           if (m.observed.reader != 0) {
             m.observed.WaitFor(t, m.opt);
             if (m.observed.have && m.observed.time >= t - 1e-9) {
-              const auto& op = m.observed.odom.pose.pose;
-              const Euler oe = EulerFromQuaternion(op.orientation.x, op.orientation.y,
-                                                   op.orientation.z, op.orientation.w);
-              b.observed = {true,     op.position.x, op.position.y, op.position.z,
-                            oe.roll, oe.pitch,      oe.yaw};
+              const wire::Odometry& op = m.observed.odom;
+              const Euler oe = EulerFromQuaternion(op.qx, op.qy, op.qz, op.qw);
+              b.observed = {true, op.x, op.y, op.z, oe.roll, oe.pitch, oe.yaw};
             }
           }
           if (m.cable_reader != 0) {
@@ -480,9 +438,9 @@ int LockstepClient::Run(const Law& law) {
           }
           const Actuation a = law(b);
           towsim_msgs_msg_dds__ActuatorCommand_ cmd{};
-          cmd.header.stamp = s->header.stamp;
+          cmd.header.stamp = newest->header.stamp;
           cmd.header.frame_id = const_cast<char*>(m.opt.body.c_str());
-          cmd.step = s->step;
+          cmd.step = s.step;
           cmd.thrust = a.thrust;
           cmd.rudder = a.rudder;
           cmd.elevator = a.elevator;
@@ -491,7 +449,7 @@ int LockstepClient::Run(const Law& law) {
             towsim_msgs_msg_dds__WinchCommand_ w{};
             w.header = cmd.header;
             w.header.frame_id = const_cast<char*>("");
-            w.step = s->step;
+            w.step = s.step;
             w.mode = a.winch.mode == WinchDemand::Mode::kLength
                          ? towsim_msgs_msg_dds__WinchCommand_Constants_LENGTH
                          : towsim_msgs_msg_dds__WinchCommand_Constants_SPEED;
@@ -504,8 +462,8 @@ int LockstepClient::Run(const Law& law) {
             dds_return_loan(m.status_reader, samples, n);
             return 1;
           }
-          run_id = s->run_id;
-          last_step = s->step;
+          run_id = s.run_id;
+          last_step = s.step;
           last_time = t;
           ++answered_;
           last_progress = Clock::now();

@@ -1,5 +1,5 @@
 #pragma once
-// The controllers' DDS client (issue 5): one participant on the node's domain that
+// The controllers' DDS client: one participant on the node's domain that
 //   - reads rt/<ns>/scene_info (which bodies exist and take commands),
 //   - subscribes to rt/<ns>/<body>/odom and rt/<ns>/status (and, with `altitude`, to
 //     rt/<ns>/<body>/altitude),
@@ -12,11 +12,12 @@
 //     step, call the control law, publish; it ends when the node reports the end of its run
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
 //     after a RESET (a new run id) it drops the old run's odometry still queued.
-// It is a ROS 2 node `<ns>/<name>` (name: ClientOptions::name; dds/ros_graph.h), so
+// The topic names, QoS, decoders and the ROS 2 graph entry are the wire library's (wire/).
+// It is a ROS 2 node `<ns>/<name>` (name: ClientOptions::name; wire/ros_graph.h), so
 // `ros2 node list` shows it next to /towsim/sim_node.
 // It needs CYCLONEDDS_URI (config/cyclonedds.xml: loopback only); without it the constructor
 // throws with a clear message. With `security` (--security DIR/NAME) the participant runs DDS
-// Security with that identity (docs/security.md; the setup is dds/security.h, shared with
+// Security with that identity (docs/security.md; the setup is wire/security.h, shared with
 // sim_node and the recording tools); an identity the plugins refuse throws SecurityError. Works in
 // every DDS mode (realtime and fast answer each status they see; lockstep waits for the answer).
 
@@ -27,12 +28,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "dds/security.h"
+#include "wire/decoders.h"
+#include "wire/security.h"
 
 namespace towsim::controllers {
 
 // --security DIR/NAME refused (a missing file, a bad certificate or document): exit 2
-using SecurityError = towsim::dds::SecurityError;
+using SecurityError = towsim::wire::SecurityError;
 
 // the flag every controller takes for its DDS Security identity
 inline constexpr const char* kSecurityFlag = "security";
@@ -68,14 +70,9 @@ struct WinchInfo {
   double max_acceleration = 0.0;              // [m/s^2]
 };
 
-// the newest cable state (ClientOptions::cable); t < 0: none yet
-struct CableSample {
-  double t = -1.0;                // its sim time [s]
-  double paid_out_length = 0.0;   // [m]
-  double winch_speed = 0.0;       // [m/s], + pays out
-  double drum_tension = 0.0;      // [N]
-  unsigned node_count = 0;
-};
+// the newest cable state (ClientOptions::cable: t, paid_out_length, winch_speed,
+// drum_tension, node_count, the nodes); t < 0: none yet
+using CableSample = wire::CableState;
 
 // another body's pose at the step answered (ClientOptions::observe); valid = false: none came
 struct ObservedBody {
@@ -117,9 +114,6 @@ struct Actuation {
   double elevator = 0.0;  // [rad]
   WinchDemand winch;      // published only with ClientOptions::winch
 };
-
-// "rt/" + ns without its leading slash + "/" ("/" -> "rt/")
-std::string TopicPrefix(const std::string& ns);
 
 // CYCLONEDDS_URI, or throws std::runtime_error saying how to set it
 std::string RequireDdsUri();

@@ -1,5 +1,5 @@
 #pragma once
-// CSV files as the node writes them (DESIGN §5: a header line, then rows of comma-separated
+// CSV files as the node writes them (docs/contract.md §5: a header line, then rows of comma-separated
 // fields; names are never quoted in the files tests compare), read as text.
 
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // A trajectory held to a golden CSV file (docs/testing_controllers.md, "Golden trajectories"):
-// typically the node's bodies.csv (t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r, DESIGN §5) of a run
+// typically the node's bodies.csv (t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r, docs/contract.md §5) of a run
 // against a copy checked into the user's repository.
 //
 // The files must have the same header and the same rows; the first `key_columns` columns

@@ -14,12 +14,13 @@
 
 #include <gtest/gtest.h>
 
-#include "common/dds_qos.h"
 #include "common/laws.h"
 #include "dds/dds.h"
 #include "geometry_msgs.h"
 #include "nav_msgs.h"
 #include "towsim_msgs.h"
+#include "wire/qos.h"
+#include "wire/topic_names.h"
 
 namespace towsim::testing {
 namespace {
@@ -28,10 +29,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
-double Stamp(const builtin_interfaces_msg_dds__Time_& s) { return s.sec + 1e-9 * s.nanosec; }
-
-std::string Prefix(const std::string& ns) { return ns == "/" ? "rt/" : "rt" + ns + "/"; }
-
 std::string DefaultLogDir(int domain) {
   std::string name = "towsim";
   if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info()) {
@@ -78,28 +75,11 @@ struct RunCounter {
 
 }  // namespace
 
-bool StatusSample::running() const {
-  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_RUNNING ||
-         state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_WAITING;
-}
-bool StatusSample::paused() const {
-  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_PAUSED;
-}
-bool StatusSample::finished() const {
-  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED;
-}
-bool StatusSample::terminal() const {
-  return finished() || state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED ||
-         state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
-}
-bool StatusSample::failsafe() const {
-  return health == towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_FAILSAFE;
-}
-
 struct SimNode::Impl {
   SimNodeOptions opt;
   std::unique_ptr<DomainLease> lease;
-  std::string dds_uri, prefix;
+  std::string dds_uri;
+  std::unique_ptr<wire::TopicNames> names;  // of SimNodeOptions::ns
   std::unique_ptr<Process> process;
   SceneInfo scene;
   dds_entity_t participant = 0, control_writer = 0;
@@ -136,91 +116,49 @@ struct SimNode::Impl {
 
   void Store(dds_entity_t reader, const void* sample) {
     if (reader == status_reader) {
-      const auto* m = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(sample);
-      StatusSample s;
-      s.run_id = m->run_id;
-      s.mode = m->mode;
-      s.message = m->message;
-      s.state = m->state;
-      s.health = m->health;
-      s.step = m->step;
-      s.t = m->sim_time;
-      s.failsafe_count = m->failsafe_count;
-      s.commands_received = m->commands_received;
-      s.commands_rejected = m->commands_rejected;
-      s.commands_clamped = m->commands_clamped;
-      s.lockstep_timeouts = m->lockstep_timeouts;
-      for (uint32_t k = 0; k < m->failsafe_bodies._length; ++k) {
-        s.failsafe_bodies.push_back(m->failsafe_bodies._buffer[k]);
-      }
-      statuses.push_back(std::move(s));
+      statuses.push_back(
+          wire::DecodeStatus(*static_cast<const towsim_msgs_msg_dds__SimStatus_*>(sample)));
     } else if (reader == cable_reader) {
-      const auto* m = static_cast<const towsim_msgs_msg_dds__CableState_*>(sample);
       CableSample c;
-      c.step = m->step;
-      c.t = Stamp(m->header.stamp);
+      static_cast<wire::CableState&>(c) =
+          wire::DecodeCableState(*static_cast<const towsim_msgs_msg_dds__CableState_*>(sample));
       c.run = cable_runs.Next(c.t);
       TensionSample top{c.run, c.t, -HUGE_VAL, 0};
-      for (uint32_t k = 0; k < m->positions._length; ++k) {
-        c.x.push_back(m->positions._buffer[k].x);
-        c.y.push_back(m->positions._buffer[k].y);
-        c.z.push_back(m->positions._buffer[k].z);
-      }
-      for (uint32_t k = 0; k < m->tensions._length; ++k) {
-        c.tension.push_back(m->tensions._buffer[k]);
-        if (m->tensions._buffer[k] > top.max) top = {c.run, c.t, m->tensions._buffer[k], int(k)};
+      for (size_t k = 0; k < c.tension.size(); ++k) {
+        if (c.tension[k] > top.max) top = {c.run, c.t, c.tension[k], int(k)};
       }
       tensions.push_back(top);
       cable = std::move(c);
     } else if (const auto it = odom_readers.find(reader); it != odom_readers.end()) {
-      const auto* m = static_cast<const nav_msgs_msg_dds__Odometry_*>(sample);
       OdometrySample o;
-      o.t = Stamp(m->header.stamp);
+      static_cast<wire::Odometry&>(o) =
+          wire::DecodeOdometry(*static_cast<const nav_msgs_msg_dds__Odometry_*>(sample));
       o.run = odom_runs[it->second].Next(o.t);
-      const auto& p = m->pose.pose;
-      o.x = p.position.x;
-      o.y = p.position.y;
-      o.z = p.position.z;
-      o.qx = p.orientation.x;
-      o.qy = p.orientation.y;
-      o.qz = p.orientation.z;
-      o.qw = p.orientation.w;
       const controllers::Euler e = controllers::EulerFromQuaternion(o.qx, o.qy, o.qz, o.qw);
       o.roll = e.roll;
       o.pitch = e.pitch;
       o.yaw = e.yaw;
-      const auto& tw = m->twist.twist;
-      o.u = tw.linear.x;
-      o.v = tw.linear.y;
-      o.w = tw.linear.z;
-      o.p = tw.angular.x;
-      o.q = tw.angular.y;
-      o.r = tw.angular.z;
       AppendState(odom[it->second], o);
     } else if (const auto jt = force_readers.find(reader); jt != force_readers.end()) {
-      const auto* m = static_cast<const geometry_msgs_msg_dds__WrenchStamped_*>(sample);
       WrenchSample f;
-      f.t = Stamp(m->header.stamp);
+      static_cast<wire::Wrench&>(f) =
+          wire::DecodeWrench(*static_cast<const geometry_msgs_msg_dds__WrenchStamped_*>(sample));
       f.run = force_runs[jt->second].Next(f.t);
-      f.fx = m->wrench.force.x;
-      f.fy = m->wrench.force.y;
-      f.fz = m->wrench.force.z;
-      f.mx = m->wrench.torque.x;
-      f.my = m->wrench.torque.y;
-      f.mz = m->wrench.torque.z;
       AppendState(forces[jt->second], f);
     }
   }
 
-  dds_entity_t Reader(const dds_topic_descriptor_t* type, const std::string& name, int depth,
-                      bool transient_local, bool listen) {
-    const dds_entity_t topic =
-        dds_create_topic(participant, type, (prefix + name).c_str(), nullptr, nullptr);
-    if (topic < 0) Fail("topic " + prefix + name + ": " + dds_strretcode(topic));
-    dds_qos_t* qos = controllers::ReliableQos(depth, transient_local);
-    const dds_entity_t r = dds_create_reader(participant, topic, qos, listen ? listener : nullptr);
+  // a reader of `topic` (of `owner`, wire/topic_names.h) with the QoS of its row; a kState
+  // reader keeps `depth` samples
+  dds_entity_t Reader(wire::Topic topic, const std::string& owner, int depth, bool listen) {
+    const wire::TopicSpec& spec = wire::SpecOf(topic);
+    const std::string name = names->Name(topic, owner);
+    const dds_entity_t t = dds_create_topic(participant, spec.type, name.c_str(), nullptr, nullptr);
+    if (t < 0) Fail("topic " + name + ": " + dds_strretcode(t));
+    dds_qos_t* qos = wire::ProfileQos(spec.qos, depth);
+    const dds_entity_t r = dds_create_reader(participant, t, qos, listen ? listener : nullptr);
     dds_delete_qos(qos);
-    if (r < 0) Fail("reader " + prefix + name + ": " + dds_strretcode(r));
+    if (r < 0) Fail("reader " + name + ": " + dds_strretcode(r));
     return r;
   }
 
@@ -277,7 +215,7 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   if (m.opt.log_dir.empty()) m.opt.log_dir = DefaultLogDir(domain);
   fs::remove_all(o.log_dir);
   fs::create_directories(o.log_dir);
-  m.prefix = Prefix(o.ns);
+  m.names = std::make_unique<wire::TopicNames>(o.ns);
 
   // the project's loopback configuration, for this process and the node
   const std::string xml = o.data_dir + "/cyclonedds.xml";
@@ -293,19 +231,18 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   }
   m.listener = dds_create_listener(&m);
   dds_lset_data_available(m.listener, &Impl::OnData);
-  const dds_entity_t scene_reader =
-      m.Reader(&towsim_msgs_msg_dds__SceneInfo__desc, "scene_info", 1, true, false);
+  const dds_entity_t scene_reader = m.Reader(wire::Topic::kSceneInfo, "", 1, false);
   {
     std::lock_guard<std::mutex> lock(m.mutex);
-    m.status_reader = m.Reader(&towsim_msgs_msg_dds__SimStatus__desc, "status", 1000, false, true);
-    m.cable_reader =
-        m.Reader(&towsim_msgs_msg_dds__CableState__desc, "cable/state", 1000, false, true);
+    m.status_reader = m.Reader(wire::Topic::kStatus, "", 1000, true);
+    m.cable_reader = m.Reader(wire::Topic::kCableState, "", 1000, true);
   }
   {
+    const wire::TopicSpec& control = wire::SpecOf(wire::Topic::kSimControl);
     const dds_entity_t topic =
-        dds_create_topic(m.participant, &towsim_msgs_msg_dds__SimControl__desc,
-                         (m.prefix + "sim_control").c_str(), nullptr, nullptr);
-    dds_qos_t* qos = controllers::ReliableQos(controllers::kControlDepth, false);
+        dds_create_topic(m.participant, control.type,
+                         m.names->Name(wire::Topic::kSimControl).c_str(), nullptr, nullptr);
+    dds_qos_t* qos = wire::ProfileQos(control.qos);
     m.control_writer = dds_create_writer(m.participant, topic, qos, nullptr);
     dds_delete_qos(qos);
     if (m.control_writer < 0)
@@ -346,19 +283,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
     dds_sample_info_t info;
     const dds_return_t n = dds_take(scene_reader, samples, &info, 1, 1);
     if (n > 0 && info.valid_data) {
-      const auto* s = static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]);
-      m.scene.run_id = s->run_id;
-      m.scene.scene = s->scene;
-      m.scene.mode = s->mode;
-      m.scene.step_size = s->step_size;
-      m.scene.duration = s->duration;
-      m.scene.command_timeout = s->command_timeout;
-      for (uint32_t k = 0; k < s->bodies._length; ++k)
-        m.scene.bodies.push_back(s->bodies._buffer[k]);
-      for (uint32_t k = 0; k < s->commanded_bodies._length; ++k) {
-        m.scene.commanded_bodies.push_back(s->commanded_bodies._buffer[k]);
-      }
-      m.scene.cable_nodes = s->cable_nodes;
+      m.scene =
+          wire::DecodeSceneInfo(*static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]));
       have = true;
     }
     if (n > 0) dds_return_loan(scene_reader, samples, n);
@@ -370,10 +296,8 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     for (const std::string& b : m.scene.bodies) {
-      m.odom_readers[m.Reader(&nav_msgs_msg_dds__Odometry__desc, b + "/odom", 1000, false, true)] =
-          b;
-      m.force_readers[m.Reader(&geometry_msgs_msg_dds__WrenchStamped__desc, b + "/cable_force",
-                               1000, false, true)] = b;
+      m.odom_readers[m.Reader(wire::Topic::kOdom, b, 1000, true)] = b;
+      m.force_readers[m.Reader(wire::Topic::kCableForce, b, 1000, true)] = b;
     }
   }
   // the step-0 state of every body (repeated by the paused node) and a status

@@ -23,6 +23,7 @@
 
 #include "testing/dds_domain.h"
 #include "testing/process.h"
+#include "wire/decoders.h"
 
 #ifndef TOWSIM_TESTING_SIM_NODE
 #error "TOWSIM_TESTING_SIM_NODE is not defined: link towsim::testing (find_package(towsim))"
@@ -43,7 +44,7 @@ struct SimNodeOptions {
   std::vector<std::string> extra_args;  // further sim_node flags, e.g. --wait-for-controllers
   std::string ns = "/towsim";           // --namespace
   int domain = -1;                      // -1: a free one (DomainLease), else exactly this id
-  bool csv = true;                      // --csv <log dir>/csv (bodies.csv, ... of DESIGN §5)
+  bool csv = true;                      // --csv <log dir>/csv (bodies.csv, ... of docs/contract.md §5)
   bool start_paused = false;            // stay paused after start-up (Resume() starts)
   double startup_timeout = 30.0;        // [s] for scene_info and the first state
   // where the installation is: the defaults come from find_package(towsim)
@@ -53,52 +54,25 @@ struct SimNodeOptions {
   std::string log_dir;
 };
 
-struct SceneInfo {
-  std::string run_id, scene, mode;
-  double step_size = 0.0, duration = 0.0, command_timeout = 0.0;  // [s]
-  std::vector<std::string> bodies, commanded_bodies;
-  uint32_t cable_nodes = 0;
-};
+// the node's messages as the wire library decodes them (wire/decoders.h); `run` counts the
+// RESETs seen on that topic
+using SceneInfo = wire::SceneInfo;
 
-struct OdometrySample {
+struct OdometrySample : wire::Odometry {  // t, x, y, z, qx..qw, u, v, w, p, q, r
   int run = 0;
-  double t = 0.0;                         // sim time [s]
-  double x = 0, y = 0, z = 0;             // world NED [m]
-  double qx = 0, qy = 0, qz = 0, qw = 1;  // attitude, body -> world NED
-  double roll = 0, pitch = 0, yaw = 0;    // ZYX [rad]
-  double u = 0, v = 0, w = 0;             // body frame [m/s]
-  double p = 0, q = 0, r = 0;             // body frame [rad/s]
+  double roll = 0, pitch = 0, yaw = 0;  // ZYX [rad]
 };
 
-struct CableSample {
+struct CableSample : wire::CableState {  // step, t, x, y, z, tension, paid_out_length, ...
   int run = 0;
-  uint64_t step = 0;
-  double t = 0.0;
-  std::vector<double> x, y, z;  // node positions, world NED [m]
-  std::vector<double> tension;  // axial force at each node [N]
 };
 
-struct WrenchSample {  // the cable's force and moment on a body, body frame
+struct WrenchSample : wire::Wrench {  // t, fx, fy, fz, mx, my, mz: on a body, body frame
   int run = 0;
-  double t = 0.0;
-  double fx = 0, fy = 0, fz = 0;  // [N]
-  double mx = 0, my = 0, mz = 0;  // [N m]
 };
 
-struct StatusSample {
-  std::string run_id, mode, message;
-  uint8_t state = 0, health = 0;  // towsim_msgs SimStatus STATE_*, HEALTH_*
-  uint64_t step = 0;
-  double t = 0.0;
-  uint64_t failsafe_count = 0, commands_received = 0, commands_rejected = 0, commands_clamped = 0,
-           lockstep_timeouts = 0;
-  std::vector<std::string> failsafe_bodies;
-  bool running() const;
-  bool paused() const;
-  bool finished() const;  // duration reached
-  bool terminal() const;  // finished, failed or stopped: the last status of the run
-  bool failsafe() const;  // a body is in failsafe
-};
+// run_id, mode, message, state, health, step, t, the counters; running(), terminal(), ...
+using StatusSample = wire::SimStatus;
 
 // how the node ended
 struct NodeResult {

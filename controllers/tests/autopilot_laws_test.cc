@@ -1,4 +1,4 @@
-// The autopilot's pure laws (issue 5): the speed and heading loops on first-order plants
+// The autopilot's pure laws: the speed and heading loops on first-order plants
 // (settling, saturation, anti-windup recovery, rate limits, heading wrap), the depth loop's
 // sign, LOS geometry, waypoint switching and the lawn-mower legs; the setpoint schedule.
 

@@ -1,4 +1,4 @@
-// The controllers' configuration (issue 5): manoeuvre and autopilot settings from flags and
+// The controllers' configuration: manoeuvre and autopilot settings from flags and
 // YAML files, with errors that name the key or flag, its value, file:line and the rule; the
 // shipped files in config/maneuvers and config/autopilot load.
 

@@ -1,4 +1,4 @@
-// The controllers' pure control laws (issue 5): angles, the PID (step response, saturation,
+// The controllers' pure control laws: angles, the PID (step response, saturation,
 // anti-windup, rate limit), the Case 2 U-turn decision and the towfish depth law.
 
 #include <cmath>

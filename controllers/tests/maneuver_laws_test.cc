@@ -1,4 +1,4 @@
-// The manoeuvre runner's pure logic (issue 5): the zig-zag state machine and its trials sheet
+// The manoeuvre runner's pure logic: the zig-zag state machine and its trials sheet
 // against hand-computed sequences, the turning circle's decision and sheet against a circle
 // of known geometry, Kasa's circle fit.
 

@@ -1,4 +1,4 @@
-// The towfish depth controller's altitude mode (issue 5): target depth = seabed - altitude,
+// The towfish depth controller's altitude mode: target depth = seabed - altitude,
 // flat or piecewise-linear along track, the profile parser's rules, along-track distance.
 
 #include "towfish_depth/seabed.h"

@@ -20,7 +20,8 @@ double Actuator::Rate(double u, double x) const {
 
 Actuator ThrustActuator(const VehicleParams& p) {
   Actuator a;
-  if (!p.has_propeller) return a;
+  a.fitted = p.has_propeller;
+  if (!a.fitted) return a;
   a.min = -kAsternThrustFraction * p.max_thrust;
   a.max = p.max_thrust;
   a.time_constant = p.thrust_time_constant;
@@ -34,6 +35,21 @@ Actuator FinActuator(const ActuatorLimits& limits) {
   a.max_rate = limits.max_rate;
   a.time_constant = kFinServoTimeConstant;
   return a;
+}
+
+Actuator RudderActuator(const VehicleParams& p) { return FinActuator(p.rudder); }
+
+Actuator ElevatorActuator(const VehicleParams& p) { return FinActuator(p.elevator); }
+
+std::array<double, kVehicleActuatorCount> ActuatorRates(const VehicleParams& p,
+                                                        const VehicleCommand& cmd,
+                                                        const VehicleState& s) {
+  std::array<double, kVehicleActuatorCount> rate{};
+  for (int i = 0; i < kVehicleActuatorCount; ++i) {
+    const Actuator a = kVehicleActuators[i].law(p);
+    if (a.fitted) rate[i] = a.Rate(cmd.*kVehicleActuators[i].command, s.actuator[i]);
+  }
+  return rate;
 }
 
 }  // namespace towsim::core

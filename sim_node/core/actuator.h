@@ -11,6 +11,7 @@
 //            ahead thrust), no rate limit, T = thrust_time_constant (vehicle file);
 //   fins:    range +-max_deflection, rate +-max_rate (vehicle file), T = kFinServoTimeConstant.
 
+#include <array>
 #include <limits>
 
 #include "core/vehicle_model.h"
@@ -26,6 +27,7 @@ constexpr double kFinServoTimeConstant = 0.05;  // [s]
 constexpr double kAsternThrustFraction = 0.25;
 
 struct Actuator {
+  bool fitted = true;           // false: the vehicle has none (its state does not move)
   double min = 0.0, max = 0.0;  // range of the command and the state [unit]
   double max_rate = std::numeric_limits<double>::infinity();  // |x_dot| [unit/s]
   double time_constant = 1.0;                                 // T [s], > 0
@@ -38,9 +40,28 @@ struct Actuator {
   double Rate(double u, double x) const;
 };
 
-// the propeller of a vehicle (a vehicle without one: range [0, 0])
+// the propeller of a vehicle (a vehicle without one: not fitted, range [0, 0])
 Actuator ThrustActuator(const VehicleParams& p);
 // a fin channel's servo with its limits from the vehicle file
 Actuator FinActuator(const ActuatorLimits& limits);
+Actuator RudderActuator(const VehicleParams& p);    // FinActuator(p.rudder)
+Actuator ElevatorActuator(const VehicleParams& p);  // FinActuator(p.elevator)
+
+// One row per vehicle actuator, in the order of VehicleActuator (vehicle_model.h): the command
+// that drives it and its law.
+struct VehicleActuatorRow {
+  double VehicleCommand::*command;
+  Actuator (*law)(const VehicleParams&);
+};
+inline constexpr std::array<VehicleActuatorRow, kVehicleActuatorCount> kVehicleActuators = {{
+    {&VehicleCommand::thrust, ThrustActuator},      // kThrust
+    {&VehicleCommand::rudder, RudderActuator},      // kRudder
+    {&VehicleCommand::elevator, ElevatorActuator},  // kElevator
+}};
+
+// the actuators' rates x_dot (the law above; 0 for one not fitted), indexed by VehicleActuator
+std::array<double, kVehicleActuatorCount> ActuatorRates(const VehicleParams& p,
+                                                        const VehicleCommand& cmd,
+                                                        const VehicleState& s);
 
 }  // namespace towsim::core

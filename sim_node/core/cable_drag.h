@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+#include "core/constants.h"
 #include "core/hydrodynamics.h"
 
 namespace towsim::core {
@@ -23,7 +24,6 @@ DragResult CableDragOf(const FluidProperties& fluid, const CableDragLaw& law, do
                        const Eigen::Vector3d& a, const Eigen::Vector3d& v_rel, bool jacobians) {
   using Vec3 = Eigen::Vector3d;
   using Mat3 = Eigen::Matrix3d;
-  constexpr double kPi = 3.14159265358979323846;
   DragResult out;
   const double stretch = a.norm();
   const Vec3 t = a / stretch;

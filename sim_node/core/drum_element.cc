@@ -9,7 +9,7 @@ bool SplitDrumElement(System* system, State* state) {
   // r, r' of the new node from element 0's cubic, for each of q, v, a, a_alpha
   const double xi = (l0 - le) / l0;
   const ShapeAtPoint shape = EvaluateShape(xi, l0);
-  const int drum = system->array_dof(first), added = system->array_dof(first - 1);
+  const int drum = system->ArrayDof(first), added = system->ArrayDof(first - 1);
   const Vec12 e = state->q.segment<12>(drum), e_dot = state->v.segment<12>(drum);
   const Vec3 r0 = e.segment<3>(0), d0 = e.segment<3>(3), r1 = e.segment<3>(6), d1 = e.segment<3>(9);
   // the material velocity there (drum_element.h): the rate at fixed xi plus the material's
@@ -43,7 +43,7 @@ bool SplitDrumElement(System* system, State* state) {
 bool MergeDrumElement(System* system, State* state) {
   if (state->winch.nodes < 3) return false;
   const int first = system->first_node();
-  const int drum = system->array_dof(first), next = system->array_dof(first + 1);
+  const int drum = system->ArrayDof(first), next = system->ArrayDof(first + 1);
   Eigen::VectorXd* vectors[4] = {&state->q, &state->v, &state->a, &state->a_alpha};
   for (Eigen::VectorXd* x : vectors) {
     x->segment<6>(next) = x->segment<6>(drum);  // the drum node replaces node 1

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/constants.h"
+
 // Pack4 values by value inside always-inlined code (packet_math.h); the warning comes at the
 // end of the file, where the templates are compiled, so it is off for the whole file
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -18,7 +20,6 @@
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // a point at depth stops summing at the first component whose depth factor
 // cosh k(zeta + h) / sinh kh (deep: e^{k zeta}) has fallen below this: the components are
 // sorted by k, so every later one is smaller still (their sum stays below N times this of

@@ -6,12 +6,12 @@
 #include <cstring>
 
 #include "core/cable_drag.h"
+#include "core/constants.h"
 
 namespace towsim::core {
 namespace {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kReMax = 1.0e5;    // upper end of Eq. 18's range
 constexpr double kReMin = 1.0e-12;  // guard: below, the Re -> 0 limit of G is used
 

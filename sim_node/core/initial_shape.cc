@@ -5,10 +5,11 @@
 namespace towsim::core {
 namespace {
 
-// start (end = 0) or end support position at t = 0, using the bodies' initial positions
+// start (end = 0) or end support position at t = 0, using the spheres' and vehicles' initial
+// positions
 Vec3 SupportAtStart(const Model& m, int end) {
   const CableEnd& e = end == 0 ? m.cable.start : m.cable.end;
-  if (e.kind == EndKind::kBody) return m.bodies[e.body].position + e.at_B;
+  if (e.kind == EndKind::kSphere) return m.spheres[e.body].position + e.at_B;
   if (e.kind == EndKind::kVehicle) {
     const Vehicle& v = m.vehicles[e.body];
     return v.position + QuaternionFromEulerZYX(v.euler) * e.at_B;
@@ -28,9 +29,9 @@ void BuildInitialState(const System& sys, State* s) {
   s->a.setZero(n);
   s->a_alpha.setZero(n);
   s->lambda.setZero(sys.num_lambda());
-  for (int b = 0; b < sys.num_bodies(); ++b) {
-    s->q.segment<3>(sys.body_dof(b)) = m.bodies[b].position;
-    s->v.segment<3>(sys.body_dof(b)) = m.bodies[b].velocity;
+  for (int b = 0; b < sys.num_spheres(); ++b) {
+    s->q.segment<3>(sys.SphereDof(b)) = m.spheres[b].position;
+    s->v.segment<3>(sys.SphereDof(b)) = m.spheres[b].velocity;
   }
   s->vehicles.clear();
   for (const Vehicle& v : m.vehicles) {
@@ -71,9 +72,9 @@ void BuildInitialState(const System& sys, State* s) {
       r = p0 + u * chord + (4.0 * sag * u * (1.0 - u)) * sag_dir;
       dr = (chord + (4.0 * sag * (1.0 - 2.0 * u)) * sag_dir) / c.length;
     }
-    s->q.segment<3>(sys.cable_dof(i)) = r;
-    s->q.segment<3>(sys.cable_dof(i) + 3) = dr;
-    s->v.segment<3>(sys.cable_dof(i)) = c.initial_velocity;
+    s->q.segment<3>(sys.CableDof(i)) = r;
+    s->q.segment<3>(sys.CableDof(i) + 3) = dr;
+    s->v.segment<3>(sys.CableDof(i)) = c.initial_velocity;
   }
 }
 

@@ -18,8 +18,10 @@ AlphaParameters AlphaParameters::FromSettings(const IntegratorSettings& s) {
   return p;
 }
 
-Integrator::Integrator(const System& system)
+Integrator::Integrator(const System& system, StepInputs* inputs)
     : system_(system),
+      sampler_(system),
+      inputs_(inputs),
       ap_(AlphaParameters::FromSettings(system.model().integrator)),
       q_scale_(std::max(1.0, system.model().cable.length)),
       jac_(system.MakeMatrix()) {
@@ -34,11 +36,9 @@ Integrator::Integrator(const System& system)
   dq_.setZero(n);
   dl_.setZero(m);
   backup_.resize(system.model().integrator.max_substep_level + 1);
+  sampler_.Resize(inputs_);
   waves_ = system.sea().has_waves();
-  if (waves_) {
-    system.ResizeWaveSamples(&wave_samples_);
-    wave_q_.setZero(n);
-  }
+  if (waves_) wave_q_.setZero(n);
 }
 
 bool Integrator::InitializeAcceleration(State* s) {
@@ -47,10 +47,10 @@ bool Integrator::InitializeAcceleration(State* s) {
   s->lambda.setZero(m);
   JacobianCoefficients cf{0.0, 0.0, 1.0};
   s->newton.valid = false;  // jac_ now holds the mass matrix, not a Newton matrix
-  if (waves_) system_.SampleWaves(s->q, s->t, &wave_samples_);
+  if (waves_) sampler_.SampleWaves(s->q, s->t, inputs_);
   wave_time_ = -1.0;
-  system_.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr, s->supports, &s->winch.drum);
+  sampler_.TakeMotions(*s, inputs_);
+  system_.Evaluate({s->q, s->v, s->a, s->lambda, s->t}, *inputs_, {1.0, cf}, {&r_, &phi_, &jac_});
   // acceleration-level constraints: Phi_q a = 0 (linear joints, constant driven velocity)
   phi_.setZero();
   system_.ToBlocks(-r_, phi_, &rhs_);
@@ -95,11 +95,12 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   // the waves at t_{n+1} at the predicted positions, once per step (see the header)
   const bool waves_each_iteration = waves_ && settings.waves_per_iteration;
   if (waves_ && (t1 != wave_time_ || full) && !waves_each_iteration) {
-    system_.SampleWaves(st.q, t1, &wave_samples_);
+    sampler_.SampleWaves(st.q, t1, inputs_);
     wave_q_ = st.q;  // copies in place
     wave_time_ = t1;
   }
-  const WaveSamples* waves = waves_ ? &wave_samples_ : nullptr;
+  // the supports and the drum the vehicle coupling and the winch set for the step
+  sampler_.TakeMotions(st, inputs_);
   ++kept.theta_age;  // one more step since the kept matrix's rate was measured
   // steps a first iteration may be accepted on the last measured rate (see the header)
   const int rate_age_limit = kept.theta_steady ? kMaxThetaAgeSteady : kMaxThetaAge;
@@ -109,9 +110,9 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   for (int it = 1; it <= settings.max_iterations; ++it) {
     at.iterations = it;
     // residual always; the Newton matrix only when it is refreshed
-    if (waves_each_iteration) system_.SampleWaves(st.q, t1, &wave_samples_);
-    system_.Evaluate(st.q, st.v, st.a, st.lambda, t1, 1.0, cf, &r_, &phi_,
-                     refresh ? &jac_ : nullptr, waves, st.supports, &st.winch.drum);
+    if (waves_each_iteration) sampler_.SampleWaves(st.q, t1, inputs_);
+    system_.Evaluate({st.q, st.v, st.a, st.lambda, t1}, *inputs_, {1.0, cf},
+                     {&r_, &phi_, refresh ? &jac_ : nullptr});
     if (!r_.allFinite() || !phi_.allFinite()) {
       at.non_finite = true;
       return at;
@@ -246,22 +247,24 @@ bool Integrator::RestoreNewtonMatrix(const State& s) {
   const double h = kept.h, h2 = h * h;
   const double a_fac = (1.0 - ap_.alpha_m) / (1.0 - ap_.alpha_f);
   const JacobianCoefficients cf{1.0, ap_.gamma / (ap_.beta * h), a_fac / (ap_.beta * h2)};
-  if (waves_) system_.SampleWaves(kept.wave_q, kept.t, &wave_samples_);
+  if (waves_) sampler_.SampleWaves(kept.wave_q, kept.t, inputs_);
   // the supports' compliances it was formed with, over a step ending at kept.t (the matrix
   // depends on nothing else of the supports), and the drum element as it was then (a constant
   // motion at its length and rate)
-  SupportMotion supports[2] = {s.supports[0], s.supports[1]};
+  sampler_.TakeMotions(s, inputs_);
   for (int e = 0; e < 2; ++e) {
-    supports[e].compliance = kept.support_compliance[e];
-    supports[e].t0 = kept.t - h;
-    supports[e].t1 = kept.t;
+    SupportMotion& support = inputs_->supports[e];
+    support.compliance = kept.support_compliance[e];
+    support.t0 = kept.t - h;
+    support.t1 = kept.t;
   }
-  DrumMotion drum;
+  DrumMotion& drum = inputs_->drum;
+  drum = DrumMotion();
   drum.t0 = kept.t;
   drum.length = kept.drum_length;
   drum.rate = kept.drum_rate;
-  system_.Evaluate(kept.q, kept.v, kept.a, s.lambda, kept.t, 1.0, cf, &r_, &phi_, &jac_,
-                   waves_ ? &wave_samples_ : nullptr, supports, &drum);
+  system_.Evaluate({kept.q, kept.v, kept.a, s.lambda, kept.t}, *inputs_, {1.0, cf},
+                   {&r_, &phi_, &jac_});
   return jac_.Factor();
 }
 

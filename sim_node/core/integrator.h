@@ -27,30 +27,27 @@
 // too slowly: with theta = |dq_k| / |dq_{k-1}| the contraction rate of the kept matrix, the
 // error left after an increment dq is about theta / (1 - theta) |dq| (Hairer & Wanner, Solving
 // ODEs II, IV.8), so an iterate x + dq is accepted when that estimate is within the tolerance,
-// with theta taken at least kMaxContraction (the rates measured on the large first increments
-// of a step understate those of the smaller ones after them: a first increment of 400 tol with
-// theta 0.01 is followed by rates of 0.1-0.5 in Case 1's start), i.e. |dq| <= 2.3 tol; a fresh
+// with theta taken at least kMaxContraction (the rates measured on a step's large first
+// increments understate those of the smaller ones after them), i.e. |dq| <= 2.3 tol; a fresh
 // matrix is accepted by the same test (its rate ~ 0, taken as kMaxContraction). A matrix with
 // theta > kMaxContraction is replaced at the current iterate, and one whose last measured rate
 // exceeds kRefreshRate at the next step's first evaluation (the matrix is formed with the
 // residual that step evaluates anyway: a refresh there costs the tangent but no evaluation).
 // A kept matrix whose first increment fails the test and whose rate was measured more than
-// kMaxKeepAge steps ago is replaced for the second evaluation (its rate grows with its age: in
-// Case 1 0.2-0.3 three steps after it was formed, 0.4-0.6 after 8-11; such a matrix was
-// replaced within that step or at the next step's start anyway in 157 of 162 cases over the
-// five shipped scenes, so this moves a refresh forward and saves the third evaluation). A
-// first iteration is accepted on a rate measured at most kMaxThetaAge steps ago, or
-// kMaxThetaAgeSteady after a re-measurement found it below kSteadyRate (Case 1's re-measured
-// rates were mostly below 0.05 or above 0.3 before this rule).
+// kMaxKeepAge steps ago is replaced for the second evaluation (its rate grows with its age: it
+// would be replaced within the step anyway, and replacing it now saves the third evaluation).
+// A first iteration is accepted on a rate measured at most kMaxThetaAge steps ago, or
+// kMaxThetaAgeSteady after a re-measurement found it below kSteadyRate.
 // A step that fails with a kept matrix is retried with full Newton (a fresh matrix at every
 // iteration) before it is halved.
+// The measurements behind each rule and constant, and what was tried instead:
+// docs/benchmarks.md#the-integrators-newton-rules-the-evidence.
 //
-// Predictor: a^_{n+1} = a^_n. Extrapolating a^ (a^_n + h (a^_n - a^_{n-1}) / h_prev, also
-// filtered or over two steps) is 2-50x closer in the smooth phases of Case 1 when the steps
-// before are converged to 1e-11, but at the shipped tolerance it amplifies the accepted
-// iterates' errors (their high-frequency part, which generalized-alpha reverses and damps by
-// rho_inf every step while the predictor extrapolates it) and costs more evaluations; so does
-// projecting the predictor onto the joints with the kept matrix (docs/benchmarks.md).
+// Predictor: a^_{n+1} = a^_n. Extrapolating a^ from the steps before is closer in the smooth
+// phases, but at the shipped tolerance it amplifies the accepted iterates' errors (their
+// high-frequency part, which generalized-alpha reverses and damps by rho_inf every step while
+// the predictor extrapolates it) and costs more evaluations (docs/benchmarks.md, the same
+// section).
 //
 // Waves (environment_field.h): their kinematics are sampled once per (sub)step at t_{n+1} at
 // the predictor's node positions and held through the Newton iterations (the Newton matrix is
@@ -65,6 +62,8 @@
 #include "core/block_tridiagonal.h"
 #include "core/simulation.h"
 #include "core/state.h"
+#include "core/step_inputs.h"
+#include "core/step_sampler.h"
 #include "core/system.h"
 
 namespace towsim::core {
@@ -76,7 +75,9 @@ struct AlphaParameters {
 
 class Integrator {
  public:
-  explicit Integrator(const System& system);
+  // reads the sea and the supports from *inputs, which it sizes (StepSampler::Resize) and
+  // fills with the waves and the State's motions (step_inputs.h); *inputs outlives it
+  Integrator(const System& system, StepInputs* inputs);
 
   // advance *state by h (sub-stepping on Newton failure). `guess`, if given, is a solution of
   // a nearby problem over the same step (the previous vehicle-coupling pass, whose supports
@@ -98,32 +99,23 @@ class Integrator {
   // steps ago; otherwise one more iteration measures it (an increment alone does not bound the
   // error of an inexact matrix: it may be stiffer than the true one in some direction). A
   // refreshed matrix counts as measured (theta ~ 0 where it was formed, taken as
-  // kMaxContraction). Case 1: 1.381 iterations per step with 16, 1.396 with 8, the same
-  // accuracy (docs/benchmarks.md)
+  // kMaxContraction)
   static constexpr int kMaxThetaAge = 16;
   // ... and at most this many steps ago after a re-measurement (one due by kMaxThetaAge) found
   // the rate below kSteadyRate; any measured rate at or above it, and a refresh, return to
-  // kMaxThetaAge. Case 1: 1.298 evaluations per step with 16 (no lengthening), 1.288 with 32,
-  // 1.284 with 48; the swinging cable's fitted orders (tests/reference, >= 1.8) 1.815 / 1.805,
-  // 1.811 / 1.802, 1.810 / 1.800 (trapezoidal / generalized-alpha): fewer re-measurements
-  // leave the run at h = 1.25e-4 s a little more solver error (docs/benchmarks.md)
+  // kMaxThetaAge. Longer saves evaluations but leaves a run at a small h more solver error
   static constexpr int kMaxThetaAgeSteady = 32;
-  // half kRefreshRate: of Case 1's 52 re-measured rates (main before this rule) 40 were below
-  // 0.05, 2 in 0.05-0.1, 3 in 0.1-0.3 and 7 above 0.3
+  // half kRefreshRate: re-measured rates fall mostly well below it or above kMaxContraction
   static constexpr double kSteadyRate = 0.1;
   // a kept matrix whose first increment fails the test is kept for the second evaluation only
-  // if its rate was measured at most this many steps ago, else replaced (see above). Over the
-  // five shipped scenes such matrices measured 8 or more steps ago were replaced within a step
-  // anyway in 157 of 162 cases (7: 27 of 29; 6: 8 of 11; 3-5: 78 of 131). Case 1: 1.298
-  // evaluations per step with 7 (and kMaxThetaAgeSteady = kMaxThetaAge), 1.317 without it
+  // if its rate was measured at most this many steps ago, else replaced (see above): older
+  // ones are almost always replaced within the step anyway
   static constexpr int kMaxKeepAge = 7;
   // a kept matrix whose last measured rate exceeds this is replaced at the first evaluation of
   // the next step (its Newton matrix is formed with that residual: no extra evaluation), not
   // after a first iteration has shown the rate above kMaxContraction (one evaluation more).
-  // Case 1 (docs/benchmarks.md): 1.371 evaluations per step without, 1.317 with 0.2, 1.294
-  // with 0.1. Lower thresholds leave more steps converged to just within the tolerance, and
-  // the swinging cable's fitted order (tests/reference/swinging_cable_core_test.cc, >= 1.8;
-  // 1.804 without) then lands on either side of 1.8 (1.7996 at 0.1, 1.7999 at 0.12)
+  // Lower thresholds leave more steps converged to just within the tolerance, and the swinging
+  // cable's fitted order (tests/reference/swinging_cable_core_test.cc, >= 1.8) near its bound
   static constexpr double kRefreshRate = 0.2;
 
  private:
@@ -140,19 +132,20 @@ class Integrator {
   StepStatus Advance(State* state, double h, int level, const State* guess);
 
   const System& system_;
+  StepSampler sampler_;
+  StepInputs* inputs_;  // the step's inputs (step_inputs.h), shared with the vehicle coupling
   AlphaParameters ap_;
   double q_scale_;
   BlockTridiagonal jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
   std::vector<State> backup_;                          // one saved state per sub-stepping level
-  // the waves, sampled once per (sub)step at t_{n+1} at the predicted positions (and kept for
-  // the later vehicle-coupling passes over the same step); calm water: never sampled
+  // the waves in inputs_, sampled once per (sub)step at t_{n+1} at the predicted positions (and
+  // kept for the later vehicle-coupling passes over the same step); calm water: never sampled
   bool waves_ = false;
-  WaveSamples wave_samples_;
-  double wave_time_ = -1.0;  // t of wave_samples_ (< 0: none yet)
+  double wave_time_ = -1.0;  // t of the waves in inputs_ (< 0: none yet)
   Attempt last_failure_;
-  Eigen::VectorXd wave_q_;  // positions wave_samples_ were sampled at
+  Eigen::VectorXd wave_q_;  // positions the waves in inputs_ were sampled at
   long tangent_refreshes_ = 0;
 };
 

@@ -3,9 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/constants.h"
+
 namespace towsim::core {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // below this in-plane speed the surface carries no load (avoids 0/0 in the flow angle) [m/s]
 constexpr double kMinSpeed = 1.0e-9;
 }  // namespace

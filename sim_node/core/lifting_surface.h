@@ -1,7 +1,7 @@
 #pragma once
 // Lift and drag of one LiftingSurface (a fin or a half-wing, vehicle_model.h) on the local
 // relative flow at its centre of pressure: finite-wing theory as in
-// ../shared/reference/vehicle_hydrodynamics.md §3.1-3.2 (Prestero 2001 local-angle fin model;
+// docs/vehicle_coefficients.md §5 (Prestero 2001 local-angle fin model;
 // Helmbold lift slope; induced drag CL^2 / (pi e AR)).
 //
 // Geometry: n = normal_B (unit), chord c = x_B projected on the plane normal to n (the fins and

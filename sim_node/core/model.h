@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "core/constants.h"
 #include "core/current_field.h"
 #include "core/hydrodynamics.h"
 #include "core/publish_rates.h"
@@ -50,11 +51,11 @@ struct CableLoads {
 };
 
 enum class EndKind {
-  kFree,    // no constraint
-  kFixed,   // r = position (Eq. 24 against the ground)
-  kDriven,  // r = position + velocity * t
-  kBody,    // r = p_WB + at_B on a sphere body (Eq. 24)
-  kVehicle, // r = p_WB + R_WB * at_B on a 6-DOF vehicle (Eq. 24)
+  kFree,     // no constraint
+  kFixed,    // r = position (Eq. 24 against the ground)
+  kDriven,   // r = position + velocity * t
+  kSphere,   // r = p_WB + at_B on a sphere (Eq. 24)
+  kVehicle,  // r = p_WB + R_WB * at_B on a 6-DOF vehicle (Eq. 24)
 };
 
 struct CableEnd {
@@ -64,7 +65,7 @@ struct CableEnd {
   // clamped ends also hold the cable direction: r' x slope = 0 (cantilever roots).
   bool clamped = false;
   Vec3 slope = Vec3::UnitX();  // unit direction, used when clamped
-  int body = -1;  // index into Model::bodies (kBody) or Model::vehicles (kVehicle)
+  int body = -1;               // index into Model::spheres (kSphere) or Model::vehicles (kVehicle)
   Vec3 at_B = Vec3::Zero();    // attachment point in the body frame [m]
 };
 
@@ -82,7 +83,6 @@ struct AddedMassCoefficients {
 };
 
 struct CableParams {
-  static constexpr double kPi = 3.14159265358979323846;
   // unstretched length L [m]; with a winch the initial paid-out length
   double length = 200.0;
   int elements = 20;  // number of ANCF elements
@@ -195,7 +195,7 @@ struct ScriptEntry {
   WinchCommand winch;
 };
 
-// What a DDS node publishes and when (DESIGN §3-4); plain scene data, unused offline.
+// What a DDS node publishes and when (docs/contract.md §3-4); plain scene data, unused offline.
 struct Publishing {
   PublishRates rates;            // per-topic rates (core/publish_rates.h)
   double command_timeout = 0.5;  // failsafe after this much sim time without a command [s]
@@ -209,7 +209,7 @@ struct Model {
   TimeSettings time;
   Environment environment;
   CableParams cable;
-  std::vector<SphereBody> bodies;  // simple bodies, coupled in the cable's Newton solve
+  std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cable's Newton solve
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;

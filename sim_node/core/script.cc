@@ -1,9 +1,11 @@
 #include "core/script.h"
 
+#include "core/constants.h"
+
 namespace towsim::core {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+constexpr double kRadToDeg = 180.0 / kPi;
 
 }  // namespace
 

@@ -6,7 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/drum_element.h"
 #include "core/environment_field.h"
 #include "core/initial_shape.h"
 #include "core/integrator.h"
@@ -14,35 +13,26 @@
 #include "core/static_solver.h"
 #include "core/system.h"
 #include "core/vehicle_coupling.h"
+#include "core/winch_drive.h"
 
 namespace towsim::core {
 
 struct Simulation::Impl {
-  explicit Impl(const Model& m) : system(m), integrator(system), coupling(&system, &integrator) {}
+  explicit Impl(const Model& m)
+      : system(m),
+        integrator(system, &inputs),
+        coupling(system, &integrator, &inputs),
+        winch(&system) {}
   System system;
+  StepInputs inputs;  // what a step reads besides its unknowns (step_inputs.h)
   Integrator integrator;
   VehicleCoupling coupling;
+  WinchDrive winch;
   State state;
   std::vector<VehicleCommand> commands;
-  WinchCommand winch_command;
-  WinchStep winch_step;  // the drum's motion over the step being taken
-  State brake_start;     // a slipping brake's step start, for its repeated attempts (winch.h)
   int coupling_iterations = 0;
-  // the drum's motion for the step h from the current state with the brake's slip `slip`,
-  // with the split or merge of the drum element it needs (winch.h, drum_element.h)
-  void PrepareWinch(double h, double slip);
-  // winch_step and the drum element's motion over the step h with the slip `slip`
-  void MoveDrum(double h, double slip);
   // the cable (and the vehicles) over h from the current state
   StepStatus StepSystem(double h);
-  // the brake's tension band (winch.h): the step repeated from brake_start with the slips of
-  // BrakeSlipIteration, *s the last attempt's status, its iterations summed over the attempts
-  void SolveBrakeSlip(double h, double slip, StepStatus* s);
-  // the largest slip the scene's step rule allows (winch.h): (kSplitLength - 1 - kMergeLength)
-  // l_e a step
-  double MaxSlip(double h) const {
-    return (kSplitLength - 1.0 - kMergeLength) * system.element_length() / h;
-  }
 };
 
 Simulation::Simulation(const Model& model, const std::function<bool()>& stop_requested)
@@ -50,13 +40,7 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   System& sys = impl_->system;
   State& s = impl_->state;
   BuildInitialState(sys, &s);
-  s.winch.length = model.cable.length;
-  s.winch.speed = 0.0;
-  s.winch.nodes = sys.num_nodes();
-  s.winch.drum.length = sys.drum_length();
-  if (model.cable.winch && std::isfinite(model.cable.winch->brake_tension)) {
-    impl_->brake_start = s;  // sized once: its copies in Step do not allocate
-  }
+  impl_->winch.Initialize(&s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
   if (model.cable.initial == InitialShape::kStatic) {
@@ -79,33 +63,6 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); }
 
-void Simulation::Impl::MoveDrum(double h, double slip) {
-  WinchState& w = state.winch;
-  winch_step =
-      AdvanceWinch(*system.model().cable.winch, winch_command, w.length, w.drive_speed, slip, h);
-  // l_0(t) over the step: from l_0 at rate V_n, reaching l_0 + dL at t + h
-  const double dl = winch_step.length - w.length;
-  w.drum.t0 = state.t;
-  w.drum.length = system.drum_length();
-  w.drum.rate = w.speed;
-  w.drum.accel = 2.0 * (dl - w.speed * h) / (h * h);
-}
-
-void Simulation::Impl::PrepareWinch(double h, double slip) {
-  const double l0 = system.drum_length();
-  MoveDrum(h, slip);
-  const double dl = winch_step.length - state.winch.length;
-  // keep l_0 at the step's end within [kMergeLength, kSplitLength] l_e (drum_element.h)
-  const double le = system.element_length();
-  bool changed = false;
-  if (l0 + dl > kSplitLength * le) {
-    changed = SplitDrumElement(&system, &state);
-  } else if (l0 + dl < kMergeLength * le) {
-    changed = MergeDrumElement(&system, &state);
-  }
-  if (changed) MoveDrum(h, slip);  // from the new drum element's l_0
-}
-
 StepStatus Simulation::Impl::StepSystem(double h) {
   if (system.model().vehicles.empty()) {
     coupling_iterations = 0;
@@ -116,52 +73,11 @@ StepStatus Simulation::Impl::StepSystem(double h) {
   return s;
 }
 
-void Simulation::Impl::SolveBrakeSlip(double h, double slip, StepStatus* s) {
-  const CableParams& c = system.model().cable;
-  const double stiffness_h = c.axial_stiffness * h / system.drum_length();
-  const double first = state.winch.slip_slope < 0.0 ? state.winch.slip_slope : -stiffness_h;
-  BrakeSlipIteration brake(c.winch->brake_tension, MaxSlip(h), first);
-  int iterations = s->iterations;
-  double next = 0.0;
-  while (s->ok() && winch_step.length < c.winch->max_length &&
-         brake.Next(slip, state.lambda.segment<3>(system.end_lambda(0)).norm(), &next)) {
-    // again from the step's start, keeping the kept Newton matrix the attempt left (the
-    // integrator's cache of it, integrator.h)
-    brake_start.newton = state.newton;
-    state = brake_start;
-    slip = next;
-    MoveDrum(h, slip);
-    *s = StepSystem(h);
-    iterations += s->iterations;
-  }
-  s->iterations = iterations;
-  if (brake.attempts() > 1) state.winch.slip_slope = brake.slope();
-}
-
 StepStatus Simulation::StepBy(double h) {
-  StepStatus s;
-  const bool winch = has_winch();
-  // a brake (winch.h): the first attempt slips as the last step did
-  const bool brake = winch && std::isfinite(model().cable.winch->brake_tension) &&
-                     impl_->system.end_lambda_count(0) > 0;
-  const double slip =
-      brake ? std::clamp(impl_->state.winch.slip_speed, 0.0, impl_->MaxSlip(h)) : 0.0;
-  if (winch) impl_->PrepareWinch(h, slip);
-  if (brake) impl_->brake_start = impl_->state;
-  s = impl_->StepSystem(h);
-  if (brake) impl_->SolveBrakeSlip(h, slip, &s);
-  if (s.ok()) {
-    ++impl_->state.step;
-    if (winch) {
-      WinchState& w = impl_->state.winch;
-      w.length = impl_->winch_step.length;
-      w.speed = impl_->winch_step.speed;
-      w.drive_speed = impl_->winch_step.drive_speed;
-      w.slip_speed = impl_->winch_step.slip_speed;
-      w.slipping = impl_->winch_step.slipping;
-      impl_->system.SetLayout(w.nodes, w.length);
-    }
-  }
+  // the winch's drum around the cable's step (winch_drive.h)
+  const StepStatus s =
+      impl_->winch.Step(h, &impl_->state, [this](double dt) { return impl_->StepSystem(dt); });
+  if (s.ok()) ++impl_->state.step;
   return s;
 }
 
@@ -190,7 +106,7 @@ void CheckSize(const char* what, long n, long m, const std::string& why) {
 void Simulation::CheckStateShape(const State& s) const {
   const System& sys = impl_->system;
   std::ostringstream why;
-  why << "3 per sphere body and 6 per cable node: " << sys.num_bodies() << " bodies, "
+  why << "3 per sphere body and 6 per cable node: " << sys.num_spheres() << " bodies, "
       << sys.max_nodes() << " nodes";
   const long n = sys.num_q();
   CheckSize("q", s.q.size(), n, why.str());
@@ -250,21 +166,21 @@ void Simulation::StartFrom(const State& state) {
     throw SolverError("StartFrom: accelerations could not be computed for the given state");
 }
 
-int Simulation::cable_dof(int node) const { return impl_->system.cable_dof(node); }
-int Simulation::body_dof(int body) const { return impl_->system.body_dof(body); }
+int Simulation::cable_dof(int node) const { return impl_->system.CableDof(node); }
+int Simulation::sphere_dof(int sphere) const { return impl_->system.SphereDof(sphere); }
 int Simulation::num_nodes() const { return impl_->system.num_nodes(); }
-int Simulation::num_spheres() const { return impl_->system.num_bodies(); }
+int Simulation::num_spheres() const { return impl_->system.num_spheres(); }
 int Simulation::num_vehicles() const { return static_cast<int>(model().vehicles.size()); }
 int Simulation::num_bodies() const { return num_spheres() + num_vehicles(); }
 bool Simulation::body_is_vehicle(int b) const { return b >= num_spheres(); }
 
 const std::string& Simulation::body_name(int b) const {
-  return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().bodies[b].name;
+  return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().spheres[b].name;
 }
 
 Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
 Vec3 Simulation::node_velocity(int i) const { return impl_->state.v.segment<3>(cable_dof(i)); }
-double Simulation::node_tension(int i) const {
+double Simulation::NodeTension(int i) const {
   // at a held end the joint force is the force the cable transmits there (exact, where the
   // element's interpolated strain misses a bend sharper than the element, e.g. at a towfish)
   const int end = i == 0 ? 0 : (i == num_nodes() - 1 ? 1 : -1);
@@ -274,7 +190,7 @@ double Simulation::node_tension(int i) const {
 
 Vec3 Simulation::body_position(int b) const {
   if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).p_W;
-  return impl_->state.q.segment<3>(body_dof(b));
+  return impl_->state.q.segment<3>(sphere_dof(b));
 }
 
 Vec3 Simulation::body_velocity(int b) const {
@@ -282,7 +198,7 @@ Vec3 Simulation::body_velocity(int b) const {
     const VehicleState& vs = vehicle_state(b - num_spheres());
     return vs.q_WB * Vec3(vs.nu.head<3>());
   }
-  return impl_->state.v.segment<3>(body_dof(b));
+  return impl_->state.v.segment<3>(sphere_dof(b));
 }
 
 Eigen::Quaterniond Simulation::body_attitude(int b) const {
@@ -297,11 +213,11 @@ Vec6 Simulation::body_twist(int b) const {
   return t;
 }
 
-Vec3 Simulation::body_cable_force(int b) const {
+Vec3 Simulation::BodyCableForce(int b) const {
   const CableParams& c = model().cable;
   const bool vehicle = body_is_vehicle(b);
   const int index = vehicle ? b - num_spheres() : b;
-  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kBody;
+  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kSphere;
   Vec3 f = Vec3::Zero();
   for (int end = 0; end < 2; ++end) {
     const CableEnd& e = end == 0 ? c.start : c.end;
@@ -310,12 +226,12 @@ Vec3 Simulation::body_cable_force(int b) const {
   return f;
 }
 
-void Simulation::body_cable_wrench(int b, Vec3* force_B, Vec3* moment_B) const {
+void Simulation::BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const {
   // F_B = R_WB^T lambda, M_B = r_attach x F_B (Eq. 29-30)
   const CableParams& c = model().cable;
   const bool vehicle = body_is_vehicle(b);
   const int index = vehicle ? b - num_spheres() : b;
-  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kBody;
+  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kSphere;
   const Eigen::Quaterniond q = body_attitude(b);
   force_B->setZero();
   moment_B->setZero();
@@ -334,24 +250,17 @@ void Simulation::SetVehicleCommand(int v, const VehicleCommand& command) {
   impl_->commands[v] = command;
 }
 
-bool Simulation::has_winch() const { return model().cable.winch.has_value(); }
-
-void Simulation::SetWinchCommand(const WinchCommand& command) {
-  if (!has_winch() || !std::isfinite(command.value)) return;
-  WinchCommand c = command;
-  ClampWinchCommand(*model().cable.winch, &c);
-  impl_->winch_command = c;
-}
-
-const WinchCommand& Simulation::winch_command() const { return impl_->winch_command; }
+bool Simulation::has_winch() const { return impl_->winch.has_winch(); }
+void Simulation::SetWinchCommand(const WinchCommand& command) { impl_->winch.SetCommand(command); }
+const WinchCommand& Simulation::winch_command() const { return impl_->winch.command(); }
 double Simulation::cable_length() const { return impl_->state.winch.length; }
 double Simulation::winch_speed() const { return impl_->state.winch.speed; }
-double Simulation::drum_tension() const { return node_tension(0); }
+double Simulation::DrumTension() const { return NodeTension(0); }
 
 Vec3 Simulation::end_force(int end) const {
   const System& sys = impl_->system;
   if (sys.end_lambda_count(end) == 0) return Vec3::Zero();
-  return impl_->state.lambda.segment<3>(sys.end_lambda(end));
+  return impl_->state.lambda.segment<3>(sys.EndLambda(end));
 }
 
 double Simulation::KineticEnergy() const {
@@ -379,30 +288,30 @@ double Simulation::PotentialEnergy() const {
 
 double Simulation::StrainEnergy() const { return impl_->system.StrainEnergy(impl_->state.q); }
 
-double Simulation::body_altitude(int b) const {
+double Simulation::BodyAltitude(int b) const {
   const EnvironmentField& sea = impl_->system.sea();
   if (!sea.has_seabed()) return std::numeric_limits<double>::quiet_NaN();
   const Vec3 p = body_position(b);
   return sea.SeabedDepth(p.x(), p.y()) - p.z();
 }
 
-double Simulation::body_altimeter_range(int b, double max_range) const {
+double Simulation::BodyAltimeterRange(int b, double max_range) const {
   // beam u = R_WB e_z, the body's z axis in the world
   const Vec3 beam = body_attitude(b) * Vec3::UnitZ();
   return impl_->system.sea().SeabedRayRange(body_position(b), beam, max_range);
 }
 
-double Simulation::body_depth(int b) const {
+double Simulation::BodyDepth(int b) const {
   const Vec3 p = body_position(b);
-  return p.z() + surface_elevation_at(b);
+  return p.z() + SurfaceElevationAt(b);
 }
 
-double Simulation::surface_elevation_at(int b) const {
+double Simulation::SurfaceElevationAt(int b) const {
   const Vec3 p = body_position(b);
   return impl_->system.sea().Elevation(p.x(), p.y(), time());
 }
 
-Vec3 Simulation::water_velocity_at(int b) const {
+Vec3 Simulation::WaterVelocityAt(int b) const {
   return impl_->system.sea().Flow(body_position(b), time()).velocity;
 }
 

@@ -75,7 +75,7 @@ class Simulation {
   // SetState
   void StartFrom(const State& state);
   int cable_dof(int node) const;  // offset of node's e = [r, r'] in q
-  int body_dof(int body) const;   // offset of body's p_WB in q
+  int sphere_dof(int sphere) const;  // offset of sphere's p_WB in q
   double time() const;
   long step_count() const;
 
@@ -85,9 +85,9 @@ class Simulation {
   int num_nodes() const;
   Vec3 node_position(int i) const;  // r at node i [m]
   Vec3 node_velocity(int i) const;  // dr/dt at node i [m/s]
-  double node_tension(
-      int i) const;  // axial force [N]: element average; |joint force| at a held end
-  // bodies: the spheres (Model::bodies) first, then the vehicles (Model::vehicles)
+  // axial force at node i [N]: the elements' average; |joint force| at a held end
+  double NodeTension(int i) const;
+  // bodies: the spheres (Model::spheres) first, then the vehicles (Model::vehicles)
   int num_bodies() const;
   int num_spheres() const;
   int num_vehicles() const;
@@ -99,9 +99,9 @@ class Simulation {
   Vec6 body_twist(int b) const;                   // [u v w p q r] in the body frame
   // force the cable exerts on body b (its joint multiplier, Eq. 29-30), world frame [N];
   // zero if b is not attached
-  Vec3 body_cable_force(int b) const;
+  Vec3 BodyCableForce(int b) const;
   // the same force and its moment about the body origin, body frame (Eq. 29-30) [N, N m]
-  void body_cable_wrench(int b, Vec3* force_B, Vec3* moment_B) const;
+  void BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const;
 
   // --- vehicles (index v into Model::vehicles) ---
   const VehicleState& vehicle_state(int v) const;
@@ -118,7 +118,7 @@ class Simulation {
   const WinchCommand& winch_command() const;
   double cable_length() const;  // paid-out unstretched length now [m] (no winch: cable.length)
   double winch_speed() const;   // dL/dt now [m/s], + pays out (no winch: 0)
-  double drum_tension() const;  // axial tension at the cable's start (the drum) [N]
+  double DrumTension() const;   // axial tension at the cable's start (the drum) [N]
 
   // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end
@@ -137,16 +137,16 @@ class Simulation {
   // the altitude above the seabed straight below, d(x, y) - z (NaN without a seabed), and the
   // depth below the instantaneous surface, z + eta [m]; the surface elevation eta (positive
   // up) and the water's velocity (current + waves, world frame) there [m, m/s]
-  double body_altitude(int b) const;
+  double BodyAltitude(int b) const;
   // what the body's altimeter reports (docs/sensors.md): the range [m] from the body origin
   // along its beam, the body's z axis (down in the NED body frame; a sphere's frame stays
   // aligned with the world, so straight down), to the seabed, at most max_range;
   // Seabed::RayRange's conventions (REP 117): +inf no return (no seabed, the beam at or above
   // the horizon over a flat bed, the bed beyond max_range), -inf the origin below the bed
-  double body_altimeter_range(int b, double max_range) const;
-  double body_depth(int b) const;
-  double surface_elevation_at(int b) const;
-  Vec3 water_velocity_at(int b) const;
+  double BodyAltimeterRange(int b, double max_range) const;
+  double BodyDepth(int b) const;
+  double SurfaceElevationAt(int b) const;
+  Vec3 WaterVelocityAt(int b) const;
 
  private:
   void CheckStateShape(const State& state) const;

@@ -1,13 +1,13 @@
 #pragma once
-// The dynamic state: a copyable value (DESIGN §1: Model / State / Workspace kept apart), and
+// The dynamic state: a copyable value (docs/contract.md §1: Model / State / Workspace kept apart), and
 // complete: everything a step reads from the steps before it is here, so that a State taken
 // with Simulation::GetState and given back with Simulation::SetState continues bit for bit as
 // if the run had never stopped (tests/unit/simulation_state_test.cc).
 //
 // Generalized coordinates q (n x 1), ordered
-//   [ body 0 (3) ... body B-1 (3) | cable node 0 (6) ... cable node N (6) ]
-// where a cable node holds e = [r (3), r' = dr/dx (3)] (paper Eq. 1) and a sphere body holds
-// its position p_WB (3). Offsets come from Simulation::body_dof / cable_dof.
+//   [ sphere 0 (3) ... sphere S-1 (3) | cable node 0 (6) ... cable node N (6) ]
+// where a cable node holds e = [r (3), r' = dr/dx (3)] (paper Eq. 1) and a sphere holds its
+// position p_WB (3). Offsets come from Simulation::sphere_dof / cable_dof.
 //
 // Besides t, q, v, a and the multipliers, a step depends on
 //   - the motion of the vehicle attachment points over the step (`supports`): the vehicles are

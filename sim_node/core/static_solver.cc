@@ -10,7 +10,7 @@ using Eigen::VectorXd;
 
 namespace {
 
-// force scale for the convergence test: weight of cable and bodies plus a drag scale on the
+// force scale for the convergence test: weight of cable and spheres plus a drag scale on the
 // largest speed relative to the water at the initial node positions
 double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, const State& s) {
   const Model& m = sys.model();
@@ -18,14 +18,14 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, cons
   const Environment& env = m.environment;
   double rel = 0.0;
   for (int i = 0; i < sys.num_nodes(); ++i) {
-    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.cable_dof(i)), s.t);
+    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.CableDof(i)), s.t);
     rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
   }
   double f = std::abs(c.mass_per_length - env.water_density * c.area()) * env.gravity * c.length;
   // C_n: the line type's, or about Choo & Casarella's (1.1-1.2)
   const double c_n = c.drag.kind == CableDragLaw::kConstant ? c.drag.normal : 1.2;
   f += 0.5 * env.water_density * c.diameter * c_n * rel * rel * c.length;
-  for (const SphereBody& b : m.bodies)
+  for (const SphereBody& b : m.spheres)
     f += std::abs(b.mass - env.water_density * b.volume) * env.gravity +
          0.5 * env.water_density * b.drag_coefficient * rel * rel * std::pow(b.volume, 2.0 / 3.0) *
              1.21;
@@ -42,12 +42,18 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
   const double q_scale = std::max(1.0, sys.model().cable.length);
   s->v.setZero(n);
-  for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.cable_dof(i)) = frame_velocity;
-  for (int b = 0; b < sys.num_bodies(); ++b) s->v.segment<3>(sys.body_dof(b)) = frame_velocity;
+  for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.CableDof(i)) = frame_velocity;
+  for (int b = 0; b < sys.num_spheres(); ++b) s->v.segment<3>(sys.SphereDof(b)) = frame_velocity;
   s->a.setZero(n);
   s->lambda.setZero(m);
 
   BlockTridiagonal jac = sys.MakeMatrix();
+  // calm water (no wave samples), the supports as the state holds them and the drum element
+  // at its rest length now (held: no rate)
+  StepInputs inputs;
+  for (int e = 0; e < 2; ++e) inputs.supports[e] = s->supports[e];
+  inputs.drum.t0 = s->t;
+  inputs.drum.length = sys.drum_length();
   VectorXd r, phi, rhs, dq, dl;
   constexpr int kMaxIterations = 2000;
   double delta = 1.0e-2;  // pseudo time step squared [s^2]
@@ -60,7 +66,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
     res.iterations = it;
     // J = K + M_eff / delta (c_a = 1/delta, a = 0 in R); plain Newton once delta is huge
     const JacobianCoefficients cf{1.0, 0.0, delta > 1e12 ? 0.0 : 1.0 / delta};
-    sys.Evaluate(s->q, s->v, s->a, s->lambda, s->t, 1.0, cf, &r, &phi, &jac, nullptr, s->supports);
+    sys.Evaluate({s->q, s->v, s->a, s->lambda, s->t}, inputs, {1.0, cf}, {&r, &phi, &jac});
     const double norm = r.lpNorm<Eigen::Infinity>();
     res.residual = norm;
     if (!std::isfinite(norm) || !phi.allFinite()) break;

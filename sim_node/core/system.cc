@@ -70,7 +70,7 @@ System::System(const Model& model)
                            sea_.has_seabed();
   weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
   load_fields_ = state_dependent_loads_ ? LoadFields(loads_, sea_) : 0;
-  const int nb = num_bodies();
+  const int nb = num_spheres();
   winch_ = model_.cable.winch.has_value();
   num_nodes_ = model_.cable.elements + 1;
   max_nodes_ = winch_ ? std::max(num_nodes_, WinchMaxNodes(model_.cable)) : num_nodes_;
@@ -86,12 +86,12 @@ System::System(const Model& model)
   }
   num_lambda_ = lambda_count_[0] + lambda_count_[1];
 
-  for (const SphereBody& b : model_.bodies) {
+  for (const SphereBody& b : model_.spheres) {
     const double rho = model_.environment.water_density;
-    const double radius = std::cbrt(3.0 * b.volume / (4.0 * CableParams::kPi));
-    body_mass_eff_.push_back(b.mass + b.added_mass_coefficient * rho * b.volume);
-    body_drag_k_.push_back(0.5 * rho * b.drag_coefficient * CableParams::kPi * radius * radius);
-    body_radius_.push_back(radius);
+    const double radius = std::cbrt(3.0 * b.volume / (4.0 * kPi));
+    sphere_mass_eff_.push_back(b.mass + b.added_mass_coefficient * rho * b.volume);
+    sphere_drag_k_.push_back(0.5 * rho * b.drag_coefficient * kPi * radius * radius);
+    sphere_radius_.push_back(radius);
   }
   q_index_.assign(num_q_, {-1, -1});
   lambda_index_.assign(num_lambda_, {-1, -1});
@@ -108,20 +108,20 @@ System::System(const Model& model)
 
 void System::BuildLayout() {
   // block k = array node k; the parked nodes' blocks are empty
-  const int nb = num_bodies();
+  const int nb = num_spheres();
   const CableEnd* ends[2] = {&model_.cable.start, &model_.cable.end};
   std::fill(q_index_.begin(), q_index_.end(), BlockIndex{-1, -1});
-  const int body_at[2] = {ends[0]->kind == EndKind::kBody ? ends[0]->body : -1,
-                          ends[1]->kind == EndKind::kBody ? ends[1]->body : -1};
-  auto place_body = [&](int b, int block, int* local) {
-    for (int i = 0; i < 3; ++i) q_index_[body_dof(b) + i] = {block, (*local)++};
+  const int sphere_at[2] = {ends[0]->kind == EndKind::kSphere ? ends[0]->body : -1,
+                            ends[1]->kind == EndKind::kSphere ? ends[1]->body : -1};
+  auto place_sphere = [&](int b, int block, int* local) {
+    for (int i = 0; i < 3; ++i) q_index_[SphereDof(b) + i] = {block, (*local)++};
   };
   auto place_lambda = [&](int end, int block, int* local) {
     for (int i = 0; i < lambda_count_[end]; ++i)
-      lambda_index_[end_lambda(end) + i] = {block, (*local)++};
+      lambda_index_[EndLambda(end) + i] = {block, (*local)++};
   };
   auto place_node = [&](int node, int block, int* local) {
-    for (int i = 0; i < 6; ++i) q_index_[cable_dof(node) + i] = {block, (*local)++};
+    for (int i = 0; i < 6; ++i) q_index_[CableDof(node) + i] = {block, (*local)++};
   };
   const int nn = num_nodes_;
   block_sizes_.assign(max_nodes_, 0);  // same size after the first call: no allocation
@@ -129,21 +129,21 @@ void System::BuildLayout() {
     int local = 0;
     const int block = first_node_ + node;
     if (node == 0) {
-      if (body_at[0] >= 0) place_body(body_at[0], block, &local);
+      if (sphere_at[0] >= 0) place_sphere(sphere_at[0], block, &local);
       place_lambda(0, block, &local);
     }
     place_node(node, block, &local);
     if (node == nn - 1) {
       place_lambda(1, block, &local);
-      if (body_at[1] >= 0) place_body(body_at[1], block, &local);
+      if (sphere_at[1] >= 0) place_sphere(sphere_at[1], block, &local);
     }
     block_sizes_[block] = local;
   }
   for (int b = 0; b < nb; ++b) {
-    if (b == body_at[0] || b == body_at[1]) continue;
+    if (b == sphere_at[0] || b == sphere_at[1]) continue;
     int local = 0;
     const int block = static_cast<int>(block_sizes_.size());
-    place_body(b, block, &local);
+    place_sphere(b, block, &local);
     block_sizes_.push_back(local);
   }
   block_offsets_.assign(block_sizes_.size(), 0);
@@ -183,7 +183,7 @@ void System::Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m)
 }
 
 void System::AddQL(BlockTridiagonal* jac, int qi, int li, const Vec3& col) const {
-  // a multiplier sits in the block of the node / body it constrains
+  // a multiplier sits in the block of the node / sphere it constrains
   const BlockIndex bq = q_index_[qi], bl = lambda_index_[li];
   BlockTridiagonal::Map d = jac->diag(bq.block);
   d.block<3, 1>(bq.local, bl.local) += col;
@@ -198,8 +198,8 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
       return e.position;
     case EndKind::kDriven:
       return e.position + t * e.velocity;
-    case EndKind::kBody:
-      return q.segment<3>(body_dof(e.body)) + e.at_B;  // sphere frames stay world-aligned
+    case EndKind::kSphere:
+      return q.segment<3>(SphereDof(e.body)) + e.at_B;  // sphere frames stay world-aligned
     case EndKind::kVehicle: {
       if (!supports) break;
       const SupportMotion& s = supports[end];
@@ -212,34 +212,29 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
   return Vec3::Constant(std::nan(""));
 }
 
-void System::ResizeWaveSamples(WaveSamples* out) const {
-  out->nodes.assign(max_nodes_, WaveSample());
-  out->bodies.assign(num_bodies(), WaveSample());
+void System::Evaluate(const SystemPoint& x, const StepInputs& in, const EvaluateOptions& options,
+                      const SystemResidual& out) const {
+  out.residual->setZero(num_q_);
+  out.phi->setZero(num_lambda_);
+  if (out.jac) {
+    if (out.jac->first_block() != first_node_) out.jac->SetFirstBlock(first_node_);
+    out.jac->SetZero();
+  }
+  AssembleCable(x, in, options, out);
+  AssembleSpheres(x, in, options, out);
+  for (int end = 0; end < 2; ++end) AssembleJoint(end, x, in, out);
 }
 
-void System::SampleWaves(const VectorXd& q, double t, WaveSamples* out) const {
-  // nodes: the waves at r and their derivative along r' (= d/dx, x the unstretched arc length)
-  for (int n = 0; n < num_nodes(); ++n) {
-    const int o = cable_dof(n);
-    out->nodes[n] = sea_.Waves(q.segment<3>(o), q.segment<3>(o + 3), t);
-  }
-  for (int b = 0; b < num_bodies(); ++b)
-    out->bodies[b] = sea_.Waves(q.segment<3>(body_dof(b)), Vec3::Zero(), t);
-}
-
-void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
-                      const VectorXd& lambda, double t, double load_scale,
-                      const JacobianCoefficients& cf, VectorXd* residual, VectorXd* phi,
-                      BlockTridiagonal* jac, const WaveSamples* waves,
-                      const SupportMotion* supports, const DrumMotion* drum_motion) const {
-  residual->setZero(num_q_);
-  phi->setZero(num_lambda_);
-  if (jac) {
-    if (jac->first_block() != first_node_) jac->SetFirstBlock(first_node_);
-    jac->SetZero();
-  }
+void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
+                           const EvaluateOptions& options, const SystemResidual& out) const {
   // cable elements: M e_ddot + F_int + R_load (Eq. 25), element e of `element` (the drum
-  // element's rest length moves: its own element, weight load and rate; system.h)
+  // element's rest length moves: its own element, weight load and rate; system.h); R_load the
+  // weight in water (Eq. 15-16), drag (Eq. 17-21) and added mass (Eq. 22-23)
+  const VectorXd &q = x.q, &v = x.v, &a = x.a;
+  const JacobianCoefficients& cf = options.coeffs;
+  VectorXd* residual = out.residual;
+  BlockTridiagonal* jac = out.jac;
+  const bool waves = in.has_waves;
   Vec12 force;
   Mat12 k, c, j;
   ElementLoadJacobians lj;
@@ -247,13 +242,13 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   ElementWaves ew;
   const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
                                double drum_rate) {
-    const int o = cable_dof(e);
+    const int o = CableDof(e);
     const Mat12& mass = element.mass();
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
     if (waves) {
       // [w, dw/dx] at the element's two nodes, in the layout of e (cable_loads.h)
       for (int k = 0; k < 2; ++k) {
-        const WaveSample& ws = waves->nodes[e + k];
+        const WaveSample& ws = in.waves.nodes[e + k];
         ew.velocity.segment<3>(6 * k) = ws.velocity;
         ew.velocity.segment<3>(6 * k + 3) = ws.d_velocity;
         ew.acceleration.segment<3>(6 * k) = ws.acceleration;
@@ -264,15 +259,15 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
     element.InternalForce(fields, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!state_dependent_loads_) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
-      residual->segment<12>(o) += element.MassTimes(ea) + force - load_scale * qw;
+      residual->segment<12>(o) += element.MassTimes(ea) + force - options.load_scale * qw;
       if (jac) {
         j = cf.c_a * mass + cf.c_q * k;
         if (cf.c_v != 0.0) j += cf.c_v * c;
       }
     } else {
       const ElementWaves* w = waves ? &ew : nullptr;
-      const Vec12 rl =
-          ElementLoadResidual(element, loads_, sea_, t, w, fields, load_scale, jac ? &lj : nullptr);
+      const Vec12 rl = ElementLoadResidual(element, loads_, sea_, x.t, w, fields,
+                                           options.load_scale, jac ? &lj : nullptr);
       residual->segment<12>(o) += element.MassTimes(ea) + force + rl;
       if (jac) {
         // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)
@@ -298,105 +293,115 @@ void System::Evaluate(const VectorXd& q, const VectorXd& v, const VectorXd& a,
   };
   int first_plain = 0;  // the elements from here on have the nominal length l_e
   if (winch_) {
-    // the drum element's rest length and its rate at t
-    double drum_rate = 0.0, drum_l = drum_length_;
-    if (drum_motion) {
-      drum_l = drum_motion->LengthAt(t);
-      drum_rate = drum_motion->RateAt(t);
-    }
+    // the drum element's rest length l_0(t) and its rate at t (DrumMotion, state.h)
+    const double drum_l = in.drum.LengthAt(x.t);
+    const double drum_rate = in.drum.RateAt(x.t);
     const AncfElement drum = DrumElement(drum_l);  // on the stack: Evaluate does not allocate
     add_element(0, drum, UniformLoad(loads_.weight_per_length, drum_l), drum_rate);
     first_plain = 1;
   }
-  for (int e = first_plain; e < num_elements(); ++e) add_element(e, element_, weight_load_, 0.0);
+  for (int e = first_plain; e < NumElements(); ++e) add_element(e, element_, weight_load_, 0.0);
+}
 
-  // bodies (Morison): (m + m_a) a - (rho V + m_a) a_w - (m - rho V) g e_z * scale
+void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
+                             const EvaluateOptions& options, const SystemResidual& out) const {
+  // spheres (Morison): (m + m_a) a - (rho V + m_a) a_w - (m - rho V) g e_z * scale
   //   + k |V| V * scale, V = v - u_w, m_a = C_a rho V, u_w and a_w the water's velocity and
-  //   acceleration at the body (a neutrally buoyant sphere follows the water)
+  //   acceleration at the sphere (a neutrally buoyant sphere follows the water)
+  const VectorXd &q = x.q, &v = x.v, &a = x.a;
+  const JacobianCoefficients& cf = options.coeffs;
+  const double load_scale = options.load_scale;
   const Environment& env = model_.environment;
-  for (int b = 0; b < num_bodies(); ++b) {
-    const SphereBody& body = model_.bodies[b];
-    const int o = body_dof(b);
+  for (int b = 0; b < num_spheres(); ++b) {
+    const SphereBody& sphere = model_.spheres[b];
+    const int o = SphereDof(b);
     Vec3 shear = Vec3::Zero();
     FlowSample flow;
     if (sea_.uniform()) {
       flow.velocity = sea_.uniform_current();
     } else {
-      flow = sea_.Current(q.segment<3>(o), t, &shear);
-      if (waves) {
-        flow.velocity += waves->bodies[b].velocity;
-        flow.acceleration += waves->bodies[b].acceleration;
+      flow = sea_.Current(q.segment<3>(o), x.t, &shear);
+      if (in.has_waves) {
+        flow.velocity += in.waves.spheres[b].velocity;
+        flow.acceleration += in.waves.spheres[b].acceleration;
       }
     }
     const Vec3 vr = RelativeVelocity(v.segment<3>(o), flow);
     const double speed = vr.norm();
-    const double net_weight = (body.mass - env.water_density * body.volume) * env.gravity;
-    Vec3 r = body_mass_eff_[b] * a.segment<3>(o) + load_scale * body_drag_k_[b] * speed * vr;
+    const double net_weight = (sphere.mass - env.water_density * sphere.volume) * env.gravity;
+    Vec3 r = sphere_mass_eff_[b] * a.segment<3>(o) + load_scale * sphere_drag_k_[b] * speed * vr;
     r.z() -= load_scale * net_weight;
     if (!sea_.uniform())
-      r -= (body_mass_eff_[b] - body.mass + env.water_density * body.volume) * flow.acceleration;
+      r -= (sphere_mass_eff_[b] - sphere.mass + env.water_density * sphere.volume) *
+           flow.acceleration;
     // the seabed under the sphere's lowest point, on its frontal area pi r^2 (seabed_contact.h)
     ContactLoad contact;
     if (sea_.has_seabed()) {
       const Vec3 p_b = q.segment<3>(o);
-      const Vec3 low = p_b - body_radius_[b] * sea_.SeabedNormal(p_b.x(), p_b.y());
-      const double area = CableParams::kPi * body_radius_[b] * body_radius_[b];
-      contact = SeabedContactLoad(sea_, area, low, v.segment<3>(o), Vec3::Zero(), jac != nullptr);
+      const Vec3 low = p_b - sphere_radius_[b] * sea_.SeabedNormal(p_b.x(), p_b.y());
+      const double area = kPi * sphere_radius_[b] * sphere_radius_[b];
+      contact =
+          SeabedContactLoad(sea_, area, low, v.segment<3>(o), Vec3::Zero(), out.jac != nullptr);
       if (contact.active) r -= contact.f;
     }
-    residual->segment<3>(o) += r;
-    if (!jac) continue;
-    Mat3 jb = cf.c_a * body_mass_eff_[b] * Mat3::Identity();
+    out.residual->segment<3>(o) += r;
+    if (!out.jac) continue;
+    Mat3 jb = cf.c_a * sphere_mass_eff_[b] * Mat3::Identity();
     if (contact.active) jb -= cf.c_q * contact.df_dr + cf.c_v * contact.df_dv;
     if (speed > 0.0) {
       // d(k |V| V)/dV; V depends on v (c_v) and, in a sheared current, on z (c_q)
       const Mat3 dd =
-          load_scale * body_drag_k_[b] * (speed * Mat3::Identity() + vr * vr.transpose() / speed);
+          load_scale * sphere_drag_k_[b] * (speed * Mat3::Identity() + vr * vr.transpose() / speed);
       if (cf.c_v != 0.0) jb += cf.c_v * dd;
       if (!shear.isZero()) jb -= cf.c_q * dd * shear * Vec3::UnitZ().transpose();
     }
-    Add3(jac, o, o, jb);
+    Add3(out.jac, o, o, jb);
   }
+}
 
-  // joints (Eq. 24): Phi = r_end - p_support; R += Phi_q^T lambda
-  for (int end = 0; end < 2; ++end) {
-    const int nl = lambda_count_[end];
-    if (nl == 0) continue;
-    const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
-    const int nd = cable_dof(end == 0 ? 0 : num_nodes() - 1);
-    const int lo = end_lambda(end);
-    phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, t, supports);
-    // a support that answers the force (state.h, vehicle_coupling.h):
-    //   Phi -= f C (lambda - lambda1), f the fraction of its motion at t
-    double f_c = 0.0;
-    if (ce.kind == EndKind::kVehicle && supports && !supports[end].compliance.isZero()) {
-      const SupportMotion& sm = supports[end];
-      f_c = sm.t1 <= sm.t0 ? 1.0 : (t - sm.t0) / (sm.t1 - sm.t0);
-      phi->segment<3>(lo) -= f_c * (sm.compliance * (lambda.segment<3>(lo) - sm.lambda1));
+void System::AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
+                           const SystemResidual& out) const {
+  // the joint at a cable end (Eq. 24): Phi = r_end - p_support; R += Phi_q^T lambda (Eq. 26)
+  const int nl = lambda_count_[end];
+  if (nl == 0) return;
+  const VectorXd &q = x.q, &lambda = x.lambda;
+  VectorXd* residual = out.residual;
+  VectorXd* phi = out.phi;
+  const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
+  const int nd = CableDof(end == 0 ? 0 : num_nodes() - 1);
+  const int lo = EndLambda(end);
+  phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, x.t, in.supports);
+  // a support that answers the force (state.h, vehicle_coupling.h):
+  //   Phi -= f C (lambda - lambda1), f the fraction of its motion at t
+  const SupportMotion& sm = in.supports[end];
+  double f_c = 0.0;
+  if (ce.kind == EndKind::kVehicle && !sm.compliance.isZero()) {
+    f_c = sm.t1 <= sm.t0 ? 1.0 : (x.t - sm.t0) / (sm.t1 - sm.t0);
+    phi->segment<3>(lo) -= f_c * (sm.compliance * (lambda.segment<3>(lo) - sm.lambda1));
+  }
+  residual->segment<3>(nd) += lambda.segment<3>(lo);
+  const bool sphere = ce.kind == EndKind::kSphere;
+  if (sphere) residual->segment<3>(SphereDof(ce.body)) -= lambda.segment<3>(lo);
+  if (ce.clamped) {
+    // direction held: n_k . r' = 0 for the two normals of the slope
+    for (int i = 0; i < 2; ++i) {
+      const Vec3& n = clamp_dirs_[end][i];
+      (*phi)(lo + 3 + i) = n.dot(q.segment<3>(nd + 3));
+      residual->segment<3>(nd + 3) += lambda(lo + 3 + i) * n;
     }
-    residual->segment<3>(nd) += lambda.segment<3>(lo);
-    const bool body = ce.kind == EndKind::kBody;
-    if (body) residual->segment<3>(body_dof(ce.body)) -= lambda.segment<3>(lo);
-    if (ce.clamped) {
-      // direction held: n_k . r' = 0 for the two normals of the slope
-      for (int i = 0; i < 2; ++i) {
-        const Vec3& n = clamp_dirs_[end][i];
-        (*phi)(lo + 3 + i) = n.dot(q.segment<3>(nd + 3));
-        residual->segment<3>(nd + 3) += lambda(lo + 3 + i) * n;
-      }
-    }
-    if (!jac) continue;
-    for (int i = 0; i < 3; ++i) {
-      AddQL(jac, nd, lo + i, Vec3::Unit(i));
-      if (body) AddQL(jac, body_dof(ce.body), lo + i, -Vec3::Unit(i));
-    }
-    if (ce.clamped)
-      for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
-    if (f_c != 0.0) {
-      // dPhi/dlambda = -f C
-      const BlockIndex bl = lambda_index_[lo];
-      jac->diag(bl.block).block<3, 3>(bl.local, bl.local) -= f_c * supports[end].compliance;
-    }
+  }
+  BlockTridiagonal* jac = out.jac;
+  if (!jac) return;
+  for (int i = 0; i < 3; ++i) {
+    AddQL(jac, nd, lo + i, Vec3::Unit(i));
+    if (sphere) AddQL(jac, SphereDof(ce.body), lo + i, -Vec3::Unit(i));
+  }
+  if (ce.clamped)
+    for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
+  if (f_c != 0.0) {
+    // dPhi/dlambda = -f C
+    const BlockIndex bl = lambda_index_[lo];
+    jac->diag(bl.block).block<3, 3>(bl.local, bl.local) -= f_c * sm.compliance;
   }
 }
 
@@ -440,8 +445,8 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
   am_only.weight_per_length.setZero();
   std::optional<AncfElement> drum;
   if (winch_) drum.emplace(DrumElement(drum_length_));
-  for (int e = 0; e < num_elements(); ++e) {
-    const int o = cable_dof(e);
+  for (int e = 0; e < NumElements(); ++e) {
+    const int o = CableDof(e);
     const AncfElement& element = winch_ && e == 0 ? *drum : element_;
     const Vec12 ed = v.segment<12>(o);
     Mat12 m = element.mass();
@@ -452,8 +457,8 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
     }
     ke += 0.5 * ed.dot(m * ed);
   }
-  for (int b = 0; b < num_bodies(); ++b)
-    ke += 0.5 * body_mass_eff_[b] * v.segment<3>(body_dof(b)).squaredNorm();
+  for (int b = 0; b < num_spheres(); ++b)
+    ke += 0.5 * sphere_mass_eff_[b] * v.segment<3>(SphereDof(b)).squaredNorm();
   return ke;
 }
 
@@ -461,15 +466,15 @@ double System::PotentialEnergy(const VectorXd& q) const {
   // V = - int w . r dx (uniform load) - sum (m - rho V) g z_b
   double pe = 0.0;
   const Vec12 qw = UniformLoad(loads_.weight_per_length, element_.props().length);
-  for (int e = 0; e < num_elements(); ++e) {
+  for (int e = 0; e < NumElements(); ++e) {
     const Vec12 qe =
         winch_ && e == 0 ? UniformLoad(loads_.weight_per_length, drum_length_) : Vec12(qw);
-    pe -= qe.dot(q.segment<12>(cable_dof(e)));
+    pe -= qe.dot(q.segment<12>(CableDof(e)));
   }
   const Environment& env = model_.environment;
-  for (int b = 0; b < num_bodies(); ++b) {
-    const SphereBody& body = model_.bodies[b];
-    pe -= (body.mass - env.water_density * body.volume) * env.gravity * q(body_dof(b) + 2);
+  for (int b = 0; b < num_spheres(); ++b) {
+    const SphereBody& sphere = model_.spheres[b];
+    pe -= (sphere.mass - env.water_density * sphere.volume) * env.gravity * q(SphereDof(b) + 2);
   }
   return pe;
 }
@@ -478,9 +483,9 @@ double System::StrainEnergy(const VectorXd& q) const {
   double u = 0.0;
   std::optional<AncfElement> drum;
   if (winch_) drum.emplace(DrumElement(drum_length_));
-  for (int e = 0; e < num_elements(); ++e) {
+  for (int e = 0; e < NumElements(); ++e) {
     const AncfElement& element = winch_ && e == 0 ? *drum : element_;
-    u += element.StrainEnergy(q.segment<12>(cable_dof(e)));
+    u += element.StrainEnergy(q.segment<12>(CableDof(e)));
   }
   return u;
 }
@@ -492,13 +497,13 @@ double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const
   std::optional<AncfElement> drum;
   if (winch_) drum.emplace(DrumElement(drum_length_));
   if (node > 0) {
-    const int o = cable_dof(node - 1);
+    const int o = CableDof(node - 1);
     const AncfElement& element = winch_ && node == 1 ? *drum : element_;
     sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
     ++n;
   }
-  if (node < num_elements()) {
-    const int o = cable_dof(node);
+  if (node < NumElements()) {
+    const int o = CableDof(node);
     const AncfElement& element = winch_ && node == 0 ? *drum : element_;
     sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
     ++n;
@@ -509,11 +514,11 @@ double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const
 std::string System::DescribeDof(int i, const VectorXd& q) const {
   std::ostringstream s;
   if (i < cable_offset_) {
-    s << "body '" << model_.bodies[i / 3].name << "'";
+    s << "body '" << model_.spheres[i / 3].name << "'";
     return s.str();
   }
   const int node = (i - cable_offset_) / 6 - first_node_;
-  const Vec3 r = q.segment<3>(cable_dof(node));
+  const Vec3 r = q.segment<3>(CableDof(node));
   s << "cable node " << node << " (s = " << node * element_.props().length << " m, at [" << r.x()
     << ", " << r.y() << ", " << r.z() << "])";
   return s.str();

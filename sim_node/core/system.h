@@ -1,21 +1,22 @@
 #pragma once
-// The coupled cable-body system: DOF layout, residual, constraints (paper Eq. 24-26) and the
+// The coupled cable-sphere system: DOF layout, residual, constraints (paper Eq. 24-26) and the
 // Newton matrix in block-tridiagonal form.
 //
 // Equations of motion with the joint multipliers lambda (Eq. 26, at position level):
 //   R(q, v, a, lambda) = M_eff(q) a + F_int(q, v) - Q_ext(q, v) + Phi_q^T lambda = 0   (n x 1)
 //   Phi(q, t) = 0                                                                    (m x 1)
-// M_eff = cable mass (Eq. 7) + normal added mass (Eq. 23) + body masses. The constraints hold a
-// cable end's position to a fixed point, a driven point or a body point (Eq. 24) and, for a
-// clamped end, its direction. With Phi = r_end - p_support, lambda is the force the cable
-// exerts on its support (on a body: the interaction force of Eq. 29-30).
+// M_eff = cable mass (Eq. 7) + normal added mass (Eq. 23) + sphere masses. The constraints
+// hold a cable end's position to a fixed point, a driven point, a sphere point or a vehicle
+// point (Eq. 24) and, for a clamped end, its direction. With Phi = r_end - p_support, lambda
+// is the force the cable exerts on its support (on a body: the interaction force of
+// Eq. 29-30).
 //
 // A vehicle support that answers the joint force (SupportMotion::compliance, the strong
 // coupling of vehicle_coupling.h) adds -C (lambda - lambda1) to its Phi and -C to the
 // multiplier block of the Newton matrix.
 //
-// Block ordering for the linear solve: [start body | start multipliers | node 0], node 1, ...,
-// node N-1, [node N | end multipliers | end body], then one block per unattached body.
+// Block ordering for the linear solve: [start sphere | start multipliers | node 0], node 1, ...,
+// node N-1, [node N | end multipliers | end sphere], then one block per unattached sphere.
 //
 // With a winch (docs/winch.md) the cable's arrays are preallocated for the most nodes a run
 // can have (max_nodes()); the nodes not in use are parked at the start of the arrays, so the
@@ -39,6 +40,7 @@
 #include "core/environment_field.h"
 #include "core/model.h"
 #include "core/state.h"
+#include "core/step_inputs.h"
 
 namespace towsim::core {
 
@@ -49,11 +51,27 @@ struct JacobianCoefficients {
   double c_a = 0.0;
 };
 
-// The waves sampled once per step (environment_field.h): at every cable node, with their
-// derivative along the cable (d = r' at the node), and at every sphere body.
-struct WaveSamples {
-  std::vector<WaveSample> nodes;
-  std::vector<WaveSample> bodies;
+// the point R and Phi are evaluated at: the unknowns and the time (all (n x 1) but lambda,
+// (m x 1))
+struct SystemPoint {
+  const Eigen::VectorXd& q;
+  const Eigen::VectorXd& v;
+  const Eigen::VectorXd& a;
+  const Eigen::VectorXd& lambda;
+  double t;
+};
+
+struct EvaluateOptions {
+  // scales the external loads (weight, buoyancy, drag) for the static load continuation
+  double load_scale = 1.0;
+  JacobianCoefficients coeffs;  // of the Newton matrix (when asked for)
+};
+
+// what Evaluate fills: R (n x 1), Phi (m x 1) and, when jac != nullptr, the Newton matrix
+struct SystemResidual {
+  Eigen::VectorXd* residual;
+  Eigen::VectorXd* phi;
+  BlockTridiagonal* jac = nullptr;
 };
 
 class System {
@@ -65,15 +83,15 @@ class System {
   int num_lambda() const { return num_lambda_; }
   // the nodes and elements in use (node 0 at the cable's start)
   int num_nodes() const { return num_nodes_; }
-  int num_elements() const { return num_nodes_ - 1; }
-  int num_bodies() const { return static_cast<int>(model_.bodies.size()); }
+  int NumElements() const { return num_nodes_ - 1; }
+  int num_spheres() const { return static_cast<int>(model_.spheres.size()); }
   // node i in use -> its coordinates in q (the array node first_node() + i)
-  int cable_dof(int node) const { return cable_offset_ + 6 * (first_node_ + node); }
+  int CableDof(int node) const { return cable_offset_ + 6 * (first_node_ + node); }
   // the preallocated nodes (elements + 1 without a winch) and the array index of node 0
   int max_nodes() const { return max_nodes_; }
   int first_node() const { return first_node_; }
   // q offset of array node k (in use or parked)
-  int array_dof(int k) const { return cable_offset_ + 6 * k; }
+  int ArrayDof(int k) const { return cable_offset_ + 6 * k; }
   // the nominal element rest length cable.length / cable.elements [m]
   double element_length() const { return element_.props().length; }
   // with a winch: `nodes` in use and the paid-out length L, so the drum element's rest length
@@ -83,29 +101,22 @@ class System {
   bool has_winch() const { return winch_; }
   // the element e in use with rest length l (drum element) or the shared one
   AncfElement DrumElement(double length) const;
-  int body_dof(int body) const { return 3 * body; }
+  int SphereDof(int sphere) const { return 3 * sphere; }
   // multiplier offset and count of a cable end (0 = start, 1 = end)
-  int end_lambda(int end) const { return end == 0 ? 0 : lambda_count_[0]; }
+  int EndLambda(int end) const { return end == 0 ? 0 : lambda_count_[0]; }
   int end_lambda_count(int end) const { return lambda_count_[end]; }
   const AncfElement& element() const { return element_; }
 
-  // Evaluates R and Phi; fills the Newton matrix when jac != nullptr. `load_scale` scales the
-  // external loads (weight, buoyancy, drag) for the static load continuation. The waves come
-  // from `waves` (SampleWaves; nullptr: calm water); the current is evaluated here. A cable end
-  // on a vehicle follows `supports[end]` (State::supports; required when an end is on one).
-  void Evaluate(const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
-                const Eigen::VectorXd& lambda, double t, double load_scale,
-                const JacobianCoefficients& coeffs, Eigen::VectorXd* residual, Eigen::VectorXd* phi,
-                BlockTridiagonal* jac, const WaveSamples* waves = nullptr,
-                const SupportMotion* supports = nullptr, const DrumMotion* drum = nullptr) const;
+  // Evaluates R and Phi at x, and the Newton matrix when out.jac != nullptr: the cable
+  // (AssembleCable), the spheres (AssembleSpheres) and each cable end's joint (AssembleJoint).
+  // The waves come from in.waves (calm water without in.has_waves), the current is evaluated
+  // here; a cable end on a vehicle follows in.supports[end], the drum element in.drum
+  // (step_inputs.h).
+  void Evaluate(const SystemPoint& x, const StepInputs& in, const EvaluateOptions& options,
+                const SystemResidual& out) const;
 
   // the sea every load reads (environment_field.h)
   const EnvironmentField& sea() const { return sea_; }
-  // sizes *out for this system (allocates: call once, outside Step)
-  void ResizeWaveSamples(WaveSamples* out) const;
-  // the waves at the nodes and bodies of q at time t into *out (sized by ResizeWaveSamples);
-  // does not allocate
-  void SampleWaves(const Eigen::VectorXd& q, double t, WaveSamples* out) const;
 
   // an empty Newton matrix with this system's block structure
   BlockTridiagonal MakeMatrix() const;
@@ -115,9 +126,9 @@ class System {
 
   // element e's 12 coordinates from q
   Vec12 ElementCoordinates(const Eigen::VectorXd& q, int e) const {
-    return q.segment<12>(cable_dof(e));
+    return q.segment<12>(CableDof(e));
   }
-  // world position of the support of a cable end at time t (fixed / driven / body point; a
+  // world position of the support of a cable end at time t (fixed / driven / sphere point; a
   // vehicle point from `supports`, the motion the coupling scheme set for the step: the
   // vehicles are not unknowns of the cable's Newton solve, for it they are driven supports)
   Vec3 SupportPosition(int end, const Eigen::VectorXd& q, double t,
@@ -140,6 +151,14 @@ class System {
   void AddQL(BlockTridiagonal* jac, int qi, int li, const Eigen::Vector3d& col) const;
   // the block of each DOF and multiplier for the nodes in use (SetLayout)
   void BuildLayout();
+  // the three parts of Evaluate (see there), each adding its terms into out
+  void AssembleCable(const SystemPoint& x, const StepInputs& in, const EvaluateOptions& options,
+                     const SystemResidual& out) const;
+  void AssembleSpheres(const SystemPoint& x, const StepInputs& in, const EvaluateOptions& options,
+                       const SystemResidual& out) const;
+  // the joint at cable end `end` (0 = start, 1 = end)
+  void AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
+                     const SystemResidual& out) const;
 
   Model model_;
   EnvironmentField sea_;
@@ -147,7 +166,7 @@ class System {
   CableLoadContext loads_;
   // without drag and added mass the load on an element is its weight in water alone, the same
   // uniform load on every element with no Jacobian: a scene without those terms pays nothing
-  // for them (issue 7)
+  // for them
   bool state_dependent_loads_ = false;
   Vec12 weight_load_ = Vec12::Zero();  // UniformLoad(weight_per_length, l)
   unsigned load_fields_ = 0;  // the fields the loads read at the Gauss points (LoadFields)
@@ -160,8 +179,8 @@ class System {
   Eigen::Vector3d clamp_dirs_[2][2];  // two normals to the slope of a clamped end
   std::vector<int> block_sizes_, block_offsets_;
   std::vector<BlockIndex> q_index_, lambda_index_;
-  std::vector<double> body_mass_eff_, body_drag_k_;  // m + C_a rho V, 1/2 rho C_D pi r^2
-  std::vector<double> body_radius_;                  // r = (3 V / 4 pi)^(1/3)
+  std::vector<double> sphere_mass_eff_, sphere_drag_k_;  // m + C_a rho V, 1/2 rho C_D pi r^2
+  std::vector<double> sphere_radius_;                    // r = (3 V / 4 pi)^(1/3)
 };
 
 }  // namespace towsim::core

@@ -10,15 +10,15 @@
 
 namespace towsim::core {
 
-VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
-    : system_(system), integrator_(integrator) {
-  const CableParams& c = system_->model().cable;
+VehicleCoupling::VehicleCoupling(const System& system, Integrator* integrator, StepInputs* inputs)
+    : system_(system), integrator_(integrator), sampler_(system), inputs_(inputs) {
+  const CableParams& c = system_.model().cable;
   const CableEnd* ends[2] = {&c.start, &c.end};
   for (int e = 0; e < 2; ++e) {
     if (ends[e]->kind != EndKind::kVehicle) continue;
     vehicle_end_[e] = ends[e]->body;
     // G = J M^-1 J^T, J = [I, -S(r)]: the point's acceleration per unit force at the point
-    const VehicleParams& vp = system_->model().vehicles[ends[e]->body].params;
+    const VehicleParams& vp = system_.model().vehicles[ends[e]->body].params;
     const Mat6 m = RigidBodyMassMatrix(vp) + vp.added_mass;
     const Vec3 r = ends[e]->at_B;
     Eigen::Matrix<double, 3, 6> j;
@@ -35,18 +35,16 @@ VehicleCoupling::VehicleCoupling(System* system, Integrator* integrator)
                          .cwiseAbs()
                          .maxCoeff();
   }
-  const size_t nv = system_->model().vehicles.size();
+  const size_t nv = system_.model().vehicles.size();
   vehicles_.resize(nv);
   f0_.resize(nv);
   f1_.resize(nv);
   residual_.resize(nv);
-  flow0_.resize(nv);
-  flow1_.resize(nv);
-  for (const Vehicle& v : system_->model().vehicles) inertia_.emplace_back(v.params);
+  for (const Vehicle& v : system_.model().vehicles) inertia_.emplace_back(v.params);
 }
 
 Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
-  const CableParams& c = system_->model().cable;
+  const CableParams& c = system_.model().cable;
   const CableEnd& e = end == 0 ? c.start : c.end;
   // r_attach = p_WB + R_WB at_B (Eq. 24)
   return vs.p_W + vs.q_WB * e.at_B;
@@ -55,12 +53,12 @@ Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int end) const {
 Vec3 VehicleCoupling::JointForce(const State& state, int v) const {
   Vec3 f = Vec3::Zero();
   for (int e = 0; e < 2; ++e)
-    if (vehicle_end_[e] == v) f += state.lambda.segment<3>(system_->end_lambda(e));
+    if (vehicle_end_[e] == v) f += state.lambda.segment<3>(system_.EndLambda(e));
   return f;
 }
 
 void VehicleCoupling::HoldSupports(State* state) {
-  const size_t nv = system_->model().vehicles.size();
+  const size_t nv = system_.model().vehicles.size();
   CouplingHistory& history = state->coupling;
   history.have_previous = false;
   history.h_previous = 0.0;
@@ -88,7 +86,7 @@ StepStatus VehicleCoupling::Accept(const State& start, double h, State* state, S
   const int nv = static_cast<int>(history.f_previous.size());
   for (int v = 0; v < nv; ++v) {
     history.f_previous[v] = JointForce(start, v);
-    history.flow_end[v] = flow1_[v];
+    history.flow_end[v] = inputs_->vehicle_flow_end[v];
   }
   history.h_previous = h;
   history.have_previous = true;
@@ -114,7 +112,7 @@ void VehicleCoupling::CorrectVehicle(int end, const Vec3& r_W, double h, Vehicle
 
 StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>& commands,
                                  double h) {
-  const Model& model = system_->model();
+  const Model& model = system_.model();
   const int nv = static_cast<int>(model.vehicles.size());
   const bool strong = model.integrator.coupling == Coupling::kStrong;
   const int max_iterations = strong ? model.integrator.max_coupling_iterations : 1;
@@ -133,20 +131,10 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     f0[v] = f1[v] = JointForce(start_, v);
     if (predict) f1[v] += (h / history.h_previous) * (f0[v] - history.f_previous[v]);
   }
-  // the water at each vehicle over the step (vehicle_coupling.h)
-  const EnvironmentField& sea = system_->sea();
-  for (int v = 0; v < nv; ++v) {
-    const VehicleParams& vp = model.vehicles[v].params;
-    const VehicleState& vs = start_.vehicles[v];
-    if (sea.uniform()) {
-      flow0_[v] = flow1_[v] = UniformFlow(sea.uniform_current());
-      continue;
-    }
-    flow0_[v] = history.flow_time == t0 ? history.flow_end[v]
-                                        : SampleVehicleFlow(vp, sea, vs.p_W, vs.q_WB, t0);
-    const Vec3 p1 = vs.p_W + h * (vs.q_WB * Vec3(vs.nu.head<3>()));
-    flow1_[v] = SampleVehicleFlow(vp, sea, p1, vs.q_WB, t0 + h);
-  }
+  // the water at each vehicle over the step, sampled once (the end at the pose predicted from
+  // the start; the end of one step is the start of the next, State::coupling.flow_end)
+  sampler_.SampleVehicleFlows(start_, h, inputs_);
+  const StepInputs& in = *inputs_;
   // strong: the attachment point's response to the joint force over the step, (h^2 / 4) G in
   // the world frame at the attitude of t_n (see the header)
   Mat3 point_compliance[2] = {Mat3::Zero(), Mat3::Zero()};
@@ -169,8 +157,9 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       for (int e = 0; e < 2; ++e)
         if (vehicle_end_[e] == v)
           load.point_B = (e == 0 ? model.cable.start : model.cable.end).at_B;
-      AdvanceVehicle(model.vehicles[v].params, inertia_[v], model.environment, flow0_[v],
-                     flow1_[v], commands[v], load, h, &vehicles[v], &sea);
+      AdvanceVehicle(model.vehicles[v].params, inertia_[v], model.environment,
+                     in.vehicle_flow_start[v], in.vehicle_flow_end[v], commands[v], load, h,
+                     &vehicles[v], &system_.sea());
     }
   };
   advance_vehicles();
@@ -198,7 +187,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
       state->supports[e] = {p0,   AttachmentPoint(vehicles[v], e), t0, t0 + h, point_compliance[e],
                             f1[v]};
       // Newton starts from the predicted joint force
-      if (!point_compliance[e].isZero()) state->lambda.segment<3>(system_->end_lambda(e)) = f1[v];
+      if (!point_compliance[e].isZero()) state->lambda.segment<3>(system_.EndLambda(e)) = f1[v];
     }
     const StepStatus cable = integrator_->Step(state, h, warm ? &previous_pass_ : nullptr);
     previous_pass_substeps_ = cable.substeps;

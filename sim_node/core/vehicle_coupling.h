@@ -40,13 +40,17 @@
 #include "core/integrator.h"
 #include "core/simulation.h"
 #include "core/state.h"
+#include "core/step_inputs.h"
+#include "core/step_sampler.h"
 #include "core/system.h"
 
 namespace towsim::core {
 
 class VehicleCoupling {
  public:
-  VehicleCoupling(System* system, Integrator* integrator);
+  // the cable's system, its integrator and the step's inputs it shares with the integrator
+  // (step_inputs.h: the coupling fills the water at the vehicles); all outlive it
+  VehicleCoupling(const System& system, Integrator* integrator, StepInputs* inputs);
 
   // sets the attachment points of *state as its (static) supports and clears its coupling
   // history (State::coupling): a state that starts a run
@@ -70,8 +74,10 @@ class VehicleCoupling {
   // force at t_{n+1} at cable end `end` (see the header)
   void CorrectVehicle(int end, const Vec3& r_W, double h, VehicleState* vs) const;
 
-  System* system_;
+  const System& system_;
   Integrator* integrator_;
+  StepSampler sampler_;
+  StepInputs* inputs_;
   int vehicle_end_[2] = {-1, -1};      // vehicle index holding each cable end, or -1
   double compliance_[2] = {0.0, 0.0};  // largest eigenvalue of G at each vehicle end [1/kg]
   Mat3 g_B_[2] = {Mat3::Zero(), Mat3::Zero()};  // G at each vehicle end, body frame [1/kg]
@@ -84,10 +90,6 @@ class VehicleCoupling {
   int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
   std::vector<Vec3> f0_, f1_, residual_;
-  // the water at each vehicle at the start and the end of the step (vehicle_model.h): sampled
-  // once per step, the end at the pose predicted from the start (p + h R_WB nu_1); the end of
-  // one step is the start of the next (State::coupling.flow_end)
-  std::vector<VehicleFlow> flow0_, flow1_;
   std::vector<VehicleInertia> inertia_;  // each vehicle's, factored once (vehicle_model.h)
 };
 

@@ -10,6 +10,7 @@
 #include "core/gauss_quadrature.h"
 #include "core/lifting_surface.h"
 #include "core/model.h"
+#include "core/runge_kutta.h"
 #include "core/seabed_contact.h"
 
 namespace towsim::core {
@@ -51,9 +52,9 @@ Mat6 TotalMass(const VehicleParams& p) { return RigidBodyMassMatrix(p) + p.added
 double Deflection(const VehicleState& s, Channel channel) {
   switch (channel) {
     case Channel::kRudder:
-      return s.rudder;
+      return s.actuator[kRudder];
     case Channel::kElevator:
-      return s.elevator;
+      return s.actuator[kElevator];
     case Channel::kNone:
       break;
   }
@@ -85,6 +86,27 @@ double WaterlineLength(const VehicleParams& p) {
 }
 
 }  // namespace
+
+VehicleVector PackVehicleState(const VehicleState& s) {
+  using L = VehicleStateLayout;
+  VehicleVector x;
+  x.segment<3>(L::kPosition) = s.p_W;
+  x.segment<4>(L::kQuaternion) = Eigen::Vector4d(s.q_WB.w(), s.q_WB.x(), s.q_WB.y(), s.q_WB.z());
+  x.segment<6>(L::kNu) = s.nu;
+  for (int i = 0; i < kVehicleActuatorCount; ++i) x(L::kActuator + i) = s.actuator[i];
+  return x;
+}
+
+VehicleState UnpackVehicleState(const VehicleVector& x) {
+  using L = VehicleStateLayout;
+  VehicleState s;
+  s.p_W = x.segment<3>(L::kPosition);
+  const int q = L::kQuaternion;
+  s.q_WB = Eigen::Quaterniond(x(q), x(q + 1), x(q + 2), x(q + 3));
+  s.nu = x.segment<6>(L::kNu);
+  for (int i = 0; i < kVehicleActuatorCount; ++i) s.actuator[i] = x(L::kActuator + i);
+  return s;
+}
 
 VehicleFlow VehicleFlow::Lerp(const VehicleFlow& o, double c) const {
   if (c == 0.0) return *this;
@@ -210,7 +232,7 @@ Vec6 HydrodynamicForcesAt(const VehicleParams& p, const Environment& env, const 
   }
 
   // propeller: thrust along +x_B through O
-  if (p.has_propeller) tau(0) += s.thrust;
+  if (p.has_propeller) tau(0) += s.actuator[kThrust];
 
   // lifting surfaces on the local relative flow v_O + omega x r - v_c
   for (const LiftingSurface& surf : p.surfaces) {
@@ -253,9 +275,7 @@ VehicleDerivative Rates(const VehicleParams& p, const Environment& env, const Ve
   d.nu_dot = mass_lu.solve(rhs);
 
   // actuators (actuator.h): x_dot = clamp((clamp(u, range) - x) / T, +-max_rate)
-  if (p.has_propeller) d.thrust_dot = ThrustActuator(p).Rate(cmd.thrust, s.thrust);
-  d.rudder_dot = FinActuator(p.rudder).Rate(cmd.rudder, s.rudder);
-  d.elevator_dot = FinActuator(p.elevator).Rate(cmd.elevator, s.elevator);
+  d.actuator_dot = ActuatorRates(p, cmd, s);
   return d;
 }
 
@@ -330,53 +350,24 @@ void AdvanceVehicle(const VehicleParams& p, const VehicleInertia& inertia, const
     return Rates(p, env, x, r_wb, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb,
                  mass_lu, sea);
   };
-  // each stage carries its quaternion rate q_dot = 1/2 q (x) [0, omega_B] (the quaternion's four
-  // components are integrated like the other states and renormalized at the end)
-  struct Stage {
-    VehicleDerivative d;
-    Eigen::Vector4d q_dot;  // (w, x, y, z)
-  };
-  auto eval = [&](const VehicleState& x, double c) {
-    Stage st;
-    st.d = rates(x, c);
-    const Eigen::Quaterniond w(0.0, st.d.omega_B.x(), st.d.omega_B.y(), st.d.omega_B.z());
+  // the packed state's derivative (vehicle_model.h, VehicleStateLayout), the quaternion's four
+  // components integrated like the other states and renormalized at the end
+  using L = VehicleStateLayout;
+  auto derivative = [&](const VehicleVector& xv, double c) {
+    const VehicleState x = UnpackVehicleState(xv);
+    const VehicleDerivative d = rates(x, c);
+    // q_dot = 1/2 q (x) [0, omega_B]
+    const Eigen::Quaterniond w(0.0, d.omega_B.x(), d.omega_B.y(), d.omega_B.z());
     const Eigen::Quaterniond prod = x.q_WB * w;
-    st.q_dot = 0.5 * Eigen::Vector4d(prod.w(), prod.x(), prod.y(), prod.z());
-    return st;
+    VehicleVector k;
+    k.segment<3>(L::kPosition) = d.p_dot_W;
+    k.segment<4>(L::kQuaternion) = 0.5 * Eigen::Vector4d(prod.w(), prod.x(), prod.y(), prod.z());
+    k.segment<6>(L::kNu) = d.nu_dot;
+    for (int i = 0; i < kVehicleActuatorCount; ++i) k(L::kActuator + i) = d.actuator_dot[i];
+    return k;
   };
-  // x0 + a k
-  auto advance = [&](const Stage& k, double a) {
-    VehicleState x = s0;
-    x.p_W += a * k.d.p_dot_W;
-    const Eigen::Vector4d q0(s0.q_WB.w(), s0.q_WB.x(), s0.q_WB.y(), s0.q_WB.z());
-    const Eigen::Vector4d q = q0 + a * k.q_dot;
-    x.q_WB = Eigen::Quaterniond(q(0), q(1), q(2), q(3));
-    x.nu += a * k.d.nu_dot;
-    x.thrust += a * k.d.thrust_dot;
-    x.rudder += a * k.d.rudder_dot;
-    x.elevator += a * k.d.elevator_dot;
-    return x;
-  };
-
-  const Stage k1 = eval(s0, 0.0);
-  const Stage k2 = eval(advance(k1, 0.5 * h), 0.5);
-  const Stage k3 = eval(advance(k2, 0.5 * h), 0.5);
-  const Stage k4 = eval(advance(k3, h), 1.0);
-
-  // x1 = x0 + h/6 (k1 + 2 k2 + 2 k3 + k4)
-  const double w6 = h / 6.0;
-  VehicleState x = s0;
-  x.p_W += w6 * (k1.d.p_dot_W + 2.0 * k2.d.p_dot_W + 2.0 * k3.d.p_dot_W + k4.d.p_dot_W);
-  const Eigen::Vector4d q0(s0.q_WB.w(), s0.q_WB.x(), s0.q_WB.y(), s0.q_WB.z());
-  const Eigen::Vector4d q = q0 + w6 * (k1.q_dot + 2.0 * k2.q_dot + 2.0 * k3.q_dot + k4.q_dot);
-  x.q_WB = Eigen::Quaterniond(q(0), q(1), q(2), q(3)).normalized();
-  x.nu += w6 * (k1.d.nu_dot + 2.0 * k2.d.nu_dot + 2.0 * k3.d.nu_dot + k4.d.nu_dot);
-  x.thrust +=
-      w6 * (k1.d.thrust_dot + 2.0 * k2.d.thrust_dot + 2.0 * k3.d.thrust_dot + k4.d.thrust_dot);
-  x.rudder +=
-      w6 * (k1.d.rudder_dot + 2.0 * k2.d.rudder_dot + 2.0 * k3.d.rudder_dot + k4.d.rudder_dot);
-  x.elevator += w6 * (k1.d.elevator_dot + 2.0 * k2.d.elevator_dot + 2.0 * k3.d.elevator_dot +
-                      k4.d.elevator_dot);
+  VehicleState x = UnpackVehicleState(RungeKutta4(PackVehicleState(s0), h, derivative));
+  x.q_WB = x.q_WB.normalized();
   *s = x;
 }
 

@@ -5,7 +5,7 @@
 // the centre of buoyancy; r_g, r_b are the CG and CB in B. nu = [u v w p q r] is the velocity
 // of O in W expressed in B, and the angular velocity of B in W expressed in B.
 // Equations (Fossen 2011 form, identical to Kirchhoff's, see
-// ../shared/reference/vehicle_hydrodynamics.md §6):
+// docs/vehicles.md §1):
 //   (M_RB + M_A) nu_dot + C_RB(nu) nu + C_A(nu_r) nu_r + D(nu_r) nu_r + g(eta)
 //       = tau_prop + tau_surfaces + tau_cable,
 //   p_dot_W = R_WB nu_lin,  q_dot_WB = 1/2 q_WB (x) [0, omega_B],
@@ -124,13 +124,38 @@ struct VehicleCommand {
   double elevator = 0.0;  // [rad], positive pitches the bow up... see the surface signs
 };
 
+// The vehicle's actuator states, in this order in VehicleState::actuator; their laws, one row
+// each: actuator.h, kVehicleActuators. A new actuator is one entry here and one row there.
+enum VehicleActuator : int {
+  kThrust,    // propeller thrust [N]
+  kRudder,    // rudder position [rad]
+  kElevator,  // elevator position [rad]
+  kVehicleActuatorCount
+};
+
 struct VehicleState {
   Vec3 p_W = Vec3::Zero();                               // origin O in W [m]
   Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
   Vec6 nu = Vec6::Zero();                                // [u v w p q r], body frame
-  double thrust = 0.0;                                   // propeller state [N]
-  double rudder = 0.0, elevator = 0.0;                   // fin positions [rad]
+  std::array<double, kVehicleActuatorCount> actuator{};  // indexed by VehicleActuator
 };
+
+// VehicleState packed as the one vector the RK4 integrates (runge_kutta.h), (kSize x 1):
+//   [ p_W (3) | q_WB as (w, x, y, z) (4) | nu (6) | actuator (kVehicleActuatorCount) ]
+// Its derivative has the same layout, with q_dot = 1/2 q (x) [0, omega_B] in the quaternion's
+// four entries (integrated like the others, renormalized after the step).
+struct VehicleStateLayout {
+  static constexpr int kPosition = 0;
+  static constexpr int kQuaternion = 3;
+  static constexpr int kNu = 7;
+  static constexpr int kActuator = 13;
+  static constexpr int kSize = kActuator + kVehicleActuatorCount;
+};
+using VehicleVector = Eigen::Matrix<double, VehicleStateLayout::kSize, 1>;
+
+VehicleVector PackVehicleState(const VehicleState& s);
+// the inverse of PackVehicleState (the quaternion as stored, not renormalized)
+VehicleState UnpackVehicleState(const VehicleVector& x);
 
 // External force at a body-fixed point: the cable's joint reaction (Eq. 29-30).
 struct PointLoad {
@@ -143,7 +168,7 @@ struct VehicleDerivative {
   Vec3 p_dot_W;
   Vec3 omega_B;  // attitude rate: q_dot = 1/2 q (x) [0, omega_B]
   Vec6 nu_dot;
-  double thrust_dot = 0.0, rudder_dot = 0.0, elevator_dot = 0.0;
+  std::array<double, kVehicleActuatorCount> actuator_dot{};  // indexed by VehicleActuator
 };
 
 struct Environment;      // model.h

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <random>
 
+#include "core/constants.h"
+
 namespace towsim::core {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // 2 k h above which tanh(k h) = 1 and exp(-2 k h) = 0 to double precision
 constexpr double kDeepWaterTwoKh = 80.0;

@@ -1,5 +1,5 @@
 #pragma once
-// Which command each vehicle follows (issue 4, DESIGN §4). Pure logic on simulation time: no
+// Which command each vehicle follows (docs/contract.md §4). Pure logic on simulation time: no
 // DDS, no clocks; the node feeds it the ActuatorCommand samples it takes and asks it, before
 // each step, what to apply.
 //

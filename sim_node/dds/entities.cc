@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "dds/ros_graph.h"
+#include "wire/ros_graph.h"
 
 namespace towsim::dds {
 
@@ -27,7 +27,7 @@ void Entity::Reset() {
 }
 
 Participant::Participant(uint32_t domain_id, const std::string& config, const std::string& security,
-                         Admit admit)
+                         wire::Admit admit)
     : domain_id_(domain_id) {
   const std::string where = "DDS domain " + std::to_string(domain_id);
   if (!config.empty()) {
@@ -35,10 +35,11 @@ Participant::Participant(uint32_t domain_id, const std::string& config, const st
     if (d < 0) throw DdsError("creating " + where + " from " + config, d);
     domain_ = Entity(d);
   }
-  // USER_DATA "enclave=/;", as every ROS 2 participant has (dds/ros_graph.h)
-  std::unique_ptr<dds_qos_t, decltype(&dds_delete_qos)> qos(NewParticipantQos(), &dds_delete_qos);
+  // USER_DATA "enclave=/;", as every ROS 2 participant has (wire/ros_graph.h)
+  std::unique_ptr<dds_qos_t, decltype(&dds_delete_qos)> qos(wire::NewParticipantQos(),
+                                                            &dds_delete_qos);
   if (!security.empty()) {
-    participant_ = Entity(CreateSecureParticipant(domain_id, security, qos.get(), admit));
+    participant_ = Entity(wire::CreateSecureParticipant(domain_id, security, qos.get(), admit));
     return;
   }
   const dds_entity_t p = dds_create_participant(domain_id, qos.get(), nullptr);

@@ -19,7 +19,7 @@
 
 #include "dds/dds.h"
 #include "dds/qos.h"
-#include "dds/security.h"
+#include "wire/security.h"
 
 namespace towsim::dds {
 
@@ -61,15 +61,15 @@ class Entity {
 
 // A domain participant. With a non-empty `config` (what CYCLONEDDS_URI would hold: a
 // file:// URI or XML), the domain is created from it explicitly; otherwise Cyclone reads
-// $CYCLONEDDS_URI. Its USER_DATA is "enclave=/;" (a ROS 2 participant, dds/ros_graph.h). With a
-// non-empty `security` (--security DIR/NAME, dds/security.h) the participant runs DDS Security with
-// that identity. Throws DdsError (e.g. a domain id whose ports are out of range, an unreadable
-// config file) or SecurityError (dds/security.h: a missing file, or the plugins refused the
+// $CYCLONEDDS_URI. Its USER_DATA is "enclave=/;" (a ROS 2 participant, wire/ros_graph.h). With a
+// non-empty `security` (--security DIR/NAME, wire/security.h) the participant runs DDS Security
+// with that identity. Throws DdsError (e.g. a domain id whose ports are out of range, an unreadable
+// config file) or wire::SecurityError (wire/security.h: a missing file, or the plugins refused the
 // identity, with Cyclone's reason).
 class Participant {
  public:
   Participant(uint32_t domain_id, const std::string& config, const std::string& security = "",
-              Admit admit = Admit::kAuthenticated);
+              wire::Admit admit = wire::Admit::kAuthenticated);
   dds_entity_t get() const { return participant_.get(); }
   uint32_t domain_id() const { return domain_id_; }
 

@@ -15,13 +15,13 @@ void ToBodyEnvironment(const core::Simulation& sim, int body, uint64_t step,
                        BodyEnvironmentMsg* msg) {
   msg->header.stamp = ToTimeMsg(sim.time());
   msg->step = step;
-  msg->wave_elevation = sim.surface_elevation_at(body);
-  const core::Vec3 u = sim.water_velocity_at(body);
+  msg->wave_elevation = sim.SurfaceElevationAt(body);
+  const core::Vec3 u = sim.WaterVelocityAt(body);
   msg->current.x = u.x();
   msg->current.y = u.y();
   msg->current.z = u.z();
-  msg->altitude = sim.body_altitude(body);  // NaN without a seabed
-  msg->depth = sim.body_depth(body);
+  msg->altitude = sim.BodyAltitude(body);  // NaN without a seabed
+  msg->depth = sim.BodyDepth(body);
 }
 
 }  // namespace towsim::dds

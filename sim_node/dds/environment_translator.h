@@ -1,7 +1,7 @@
 #pragma once
 // The sea at a body on the wire (docs/environment.md, "On the wire"): a pure translator from the
-// core's sea at body b's origin (Simulation::surface_elevation_at, water_velocity_at,
-// body_altitude, body_depth) to towsim_msgs/BodyEnvironment, with the values and conventions of
+// core's sea at body b's origin (Simulation::SurfaceElevationAt, WaterVelocityAt,
+// BodyAltitude, BodyDepth) to towsim_msgs/BodyEnvironment, with the values and conventions of
 // environment.csv's columns (io/csv_writer.h); no DDS entities, no clocks
 // (tests/unit/environment_translator_test.cc).
 //

@@ -19,7 +19,7 @@ bool EndFrame(const core::Simulation& sim, const core::CableEnd& end, std::strin
       *parent = kWorldFrame;
       *offset = end.position;
       return true;
-    case core::EndKind::kBody:
+    case core::EndKind::kSphere:
       *parent = FrdFrame(sim.body_name(end.body));
       *offset = end.at_B;
       return true;

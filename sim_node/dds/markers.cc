@@ -5,13 +5,14 @@
 
 #include <Eigen/Geometry>
 
+#include "core/constants.h"
 #include "dds/frames.h"
 #include "dds/translators.h"
 
 namespace towsim::dds {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 void SetPoint(const core::Vec3& p, geometry_msgs_msg_dds__Point_* out) {
   out->x = p.x();
@@ -133,7 +134,7 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const std::string& name = sim.body_name(b);
     if (!sim.body_is_vehicle(b)) {
-      const core::SphereBody& s = model.bodies[static_cast<size_t>(b)];
+      const core::SphereBody& s = model.spheres[static_cast<size_t>(b)];
       const double d = 2.0 * std::cbrt(3.0 * s.volume / (4.0 * kPi));
       MarkerMsg& m = Add("hull", b, visualization_msgs_msg_dds__Marker_Constants_SPHERE, name);
       m.scale.x = m.scale.y = m.scale.z = d;
@@ -276,7 +277,7 @@ void SceneMarkers::Update(const core::Simulation& sim) {
   cable.colors = {capacity, static_cast<uint32_t>(n), cable_colors_.data(), false};
   for (size_t i = 0; i < n; ++i) {
     SetPoint(NedToEnu(sim.node_position(static_cast<int>(i))), &cable_points_[i]);
-    cable_colors_[i] = TensionColor(sim.node_tension(static_cast<int>(i)));
+    cable_colors_[i] = TensionColor(sim.NodeTension(static_cast<int>(i)));
   }
   for (const Arrow& a : arrows_) {
     const core::Vec3 p = sim.node_position(a.end == 0 ? 0 : sim.num_nodes() - 1);

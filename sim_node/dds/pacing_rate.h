@@ -1,5 +1,5 @@
 #pragma once
-// The realtime pacing factor (sim_node --rate, SimControl SET_RATE; DESIGN §4): one rule for
+// The realtime pacing factor (sim_node --rate, SimControl SET_RATE; docs/contract.md §4): one rule for
 // the command line and the wire. Header only and free of DDS, so the offline sim_node, which
 // links no DDS (docs/benchmarks.md, "Start-up"), checks --rate by the same rule.
 

@@ -2,8 +2,6 @@
 
 #include <utility>
 
-#include "common/dds_qos.h"
-
 namespace towsim::dds {
 
 Qos::Qos() : qos_(dds_create_qos()) {}
@@ -20,12 +18,16 @@ Qos& Qos::operator=(Qos&& other) noexcept {
   return *this;
 }
 
-Qos StateQos(int depth) { return Qos(controllers::ReliableQos(depth, false)); }
+Qos QosOf(wire::QosProfile profile, int state_depth) {
+  return Qos(wire::ProfileQos(profile, state_depth));
+}
 
-Qos CommandQos() { return Qos(controllers::ReliableQos(controllers::kCommandDepth, false)); }
+Qos StateQos(int depth) { return QosOf(wire::QosProfile::kState, depth); }
 
-Qos ControlQos() { return Qos(controllers::ReliableQos(controllers::kControlDepth, false)); }
+Qos CommandQos() { return QosOf(wire::QosProfile::kCommand); }
 
-Qos SceneInfoQos() { return Qos(controllers::ReliableQos(1, true)); }
+Qos ControlQos() { return QosOf(wire::QosProfile::kControl); }
+
+Qos SceneInfoQos() { return QosOf(wire::QosProfile::kLatched); }
 
 }  // namespace towsim::dds

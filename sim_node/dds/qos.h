@@ -1,8 +1,9 @@
 #pragma once
 // The QoS of the towsim topics, owned (RAII) for the node's entities. The definition is
-// controllers/common/dds_qos.h (shared with the controllers and the tests): see there.
+// wire/qos.h (shared with the controllers, the tests and the tools): see there.
 
 #include "dds/dds.h"
+#include "wire/qos.h"
 
 namespace towsim::dds {
 
@@ -23,6 +24,8 @@ class Qos {
   dds_qos_t* qos_;
 };
 
+// the QoS of a profile (wire::ProfileQos); `state_depth`: the history of a kState reader
+Qos QosOf(wire::QosProfile profile, int state_depth = 1);
 // history depth of the reader side, for readers that must not lose samples (tests, loggers)
 Qos StateQos(int depth = 1);
 Qos CommandQos();

@@ -1,5 +1,5 @@
 #pragma once
-// Raw CDR plumbing (issue 6): samples as the exact bytes that travel on the wire, so that a
+// Raw CDR plumbing: samples as the exact bytes that travel on the wire, so that a
 // recording holds what was published and a replay publishes what was recorded, without
 // re-serializing.
 //

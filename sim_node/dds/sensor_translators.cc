@@ -26,8 +26,8 @@ FluidPressureMessage::FluidPressureMessage(std::string frame_id)
 void ToAltitude(const core::Simulation& sim, int body, RangeMsg* msg) {
   msg->header.stamp = ToTimeMsg(sim.time());
   // along the beam (the body's z axis) to the bed: +inf no return, -inf the origin in the
-  // bed (REP 117), the conventions of Simulation::body_altimeter_range
-  msg->range = static_cast<float>(sim.body_altimeter_range(body, msg->max_range));
+  // bed (REP 117), the conventions of Simulation::BodyAltimeterRange
+  msg->range = static_cast<float>(sim.BodyAltimeterRange(body, msg->max_range));
 }
 
 void ToPressure(const core::Simulation& sim, int body, FluidPressureMsg* msg) {

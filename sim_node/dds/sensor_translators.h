@@ -1,6 +1,6 @@
 #pragma once
 // A body's altimeter and pressure sensor on the wire (docs/sensors.md): pure translators from
-// the core's sea at a body (Simulation::body_altimeter_range, the waves' kinematics) to
+// the core's sea at a body (Simulation::BodyAltimeterRange, the waves' kinematics) to
 // sensor_msgs/Range and sensor_msgs/FluidPressure; no DDS entities, no clocks
 // (tests/unit/sensor_translators_test.cc).
 //

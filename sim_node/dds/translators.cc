@@ -130,7 +130,7 @@ void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg) {
 void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg) {
   msg->header.stamp = ToTimeMsg(sim.time());
   core::Vec3 force_B, moment_B;
-  sim.body_cable_wrench(body, &force_B, &moment_B);
+  sim.BodyCableWrench(body, &force_B, &moment_B);
   Set(force_B, &msg->wrench.force);
   Set(moment_B, &msg->wrench.torque);
 }
@@ -146,11 +146,11 @@ void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage*
   for (uint32_t i = 0; i < n; ++i) {
     Set(sim.node_position(static_cast<int>(i)), &m.positions._buffer[i]);
     Set(sim.node_velocity(static_cast<int>(i)), &m.velocities._buffer[i]);
-    m.tensions._buffer[i] = sim.node_tension(static_cast<int>(i));
+    m.tensions._buffer[i] = sim.NodeTension(static_cast<int>(i));
   }
   m.paid_out_length = sim.cable_length();
   m.winch_speed = sim.winch_speed();
-  m.drum_tension = sim.drum_tension();
+  m.drum_tension = sim.DrumTension();
 }
 
 SimStatusMessage::SimStatusMessage() : msg{} { ToSimStatus(StatusSample{}, this); }

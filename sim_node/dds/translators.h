@@ -1,5 +1,5 @@
 #pragma once
-// Pure translators between the core's state and the wire messages (DESIGN §3): no DDS
+// Pure translators between the core's state and the wire messages (docs/contract.md §3): no DDS
 // entities, no clocks; unit-tested without a participant (tests/unit/dds_translators_test.cc).
 //
 // Frames and units: the world frame W is NED ("world_ned"); a body frame B is x forward,

@@ -1,5 +1,5 @@
 #pragma once
-// Plain C++ values of the messages towsim publishes (msgs/, DESIGN §3) and their decoders from
+// Plain C++ values of the messages towsim publishes (msgs/, docs/contract.md §3) and their decoders from
 // XCDR1 payloads (io/cdr_reader.h) — for tools that read recordings without DDS (towsim_export).
 // Field for field as msgs/idl/*.idl; the decoders read the fields in IDL order and throw
 // cdr::CdrError (naming the field and byte offset) for a short or malformed payload.

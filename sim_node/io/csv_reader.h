@@ -1,5 +1,5 @@
 #pragma once
-// Reading back CSV files: those of a run (csv_writer.h, DESIGN §5) and the sweep's results.csv
+// Reading back CSV files: those of a run (csv_writer.h, docs/contract.md §5) and the sweep's results.csv
 // (docs/sweeps.md). Fields follow RFC 4180 as CsvField() writes them: quoted when they hold a
 // comma, quote or line break, a quote inside doubled. One record per line.
 

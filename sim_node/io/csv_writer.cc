@@ -164,14 +164,14 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
         .Number(r.x())
         .Number(r.y())
         .Number(r.z())
-        .Number(sim.node_tension(i))
+        .Number(sim.NodeTension(i))
         .WriteTo(cable_.f);
   }
 
   // forces: the cable's force and moment on each body (body frame), then held supports (world)
   for (int b = 0; b < sim.num_bodies(); ++b) {
     core::Vec3 f, m;
-    sim.body_cable_wrench(b, &f, &m);
+    sim.BodyCableWrench(b, &f, &m);
     Row row(&line);
     row.Number(t).Text(CsvField(sim.body_name(b)));
     for (int k = 0; k < 3; ++k) row.Number(f(k));
@@ -209,7 +209,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
         .Number(t)
         .Number(sim.cable_length())
         .Number(sim.winch_speed())
-        .Number(sim.drum_tension())
+        .Number(sim.DrumTension())
         .Integer(sim.num_nodes())
         .WriteTo(winch_file_.f);
     Check(winch_file_);
@@ -219,9 +219,9 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
 void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
   const double t = sim.time();
   for (int b = 0; b < sim.num_bodies(); ++b) {
-    const core::Vec3 u = sim.water_velocity_at(b);
-    WriteEnvironmentRow(environment_.f, t, sim.body_name(b), sim.surface_elevation_at(b),
-                        sim.body_altitude(b), sim.body_depth(b), u.x(), u.y(), u.z());
+    const core::Vec3 u = sim.WaterVelocityAt(b);
+    WriteEnvironmentRow(environment_.f, t, sim.body_name(b), sim.SurfaceElevationAt(b),
+                        sim.BodyAltitude(b), sim.BodyDepth(b), u.x(), u.y(), u.z());
   }
   Check(environment_);
 }

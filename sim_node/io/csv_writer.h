@@ -1,5 +1,5 @@
 #pragma once
-// CSV output of a run (DESIGN §5): four files in one directory, one row set per Write(), and
+// CSV output of a run (docs/contract.md §5): four files in one directory, one row set per Write(), and
 // a fifth, environment.csv, when the scene has a sea (HasSea below).
 //
 //   bodies.csv  t,body,x,y,z,roll,pitch,yaw,u,v,w,p,q,r
@@ -10,7 +10,7 @@
 //               node position r in world NED [m], axial force at the node [N]
 //   forces.csv  t,body,fx,fy,fz,mx,my,mz
 //               force and moment (about the body origin) the cable exerts on each body, body
-//               frame [N, N m] (Simulation::body_cable_wrench); plus
+//               frame [N, N m] (Simulation::BodyCableWrench); plus
 //               rows "cable.start" / "cable.end" for a cable end held by a fixed or driven
 //               support (not a body): the force the cable exerts on the support, world frame
 //   status.csv  t,step,newton_iterations,residual,wall_us,cable_length
@@ -24,8 +24,8 @@
 //               (positive up) [m], the altitude above the seabed straight below [m] (an EMPTY
 //               field without a seabed; the files never hold NaN), the depth below the
 //               instantaneous surface z + eta [m], and the water's velocity there (current +
-//               wave orbital velocity, world NED) [m/s] (Simulation::body_altitude, body_depth,
-//               surface_elevation_at, water_velocity_at; docs/environment.md)
+//               wave orbital velocity, world NED) [m/s] (Simulation::BodyAltitude, BodyDepth,
+//               SurfaceElevationAt, WaterVelocityAt; docs/environment.md)
 //
 //   winch.csv   t,paid_out_length,winch_speed,drum_tension,node_count
 //               one row per Write, only when the scene has a winch (cable.winch; a scene without

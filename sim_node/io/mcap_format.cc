@@ -1,6 +1,7 @@
 #include "io/mcap_format.h"
 
 #include <array>
+#include <sstream>
 
 namespace towsim::io::mcap {
 namespace {
@@ -65,5 +66,59 @@ void AppendRecord(std::string& out, Op op, const std::string& content) {
 McapError::McapError(const std::string& what, std::uint64_t offset)
     : std::runtime_error(what + " (at byte offset " + std::to_string(offset) + ")"),
       offset_(offset) {}
+
+std::string Hex(std::uint32_t v) {
+  std::ostringstream s;
+  s << "0x" << std::hex << v;
+  return s.str();
+}
+
+Decoder::Decoder(const std::string& bytes, std::uint64_t begin, std::uint64_t end,
+                 const char* what)
+    : b_(bytes), pos_(begin), end_(end), what_(what) {
+  if (begin > end || end > bytes.size()) {
+    throw McapError(std::string(what) + " lies outside the file (ends at " + std::to_string(end) +
+                        " of " + std::to_string(bytes.size()) + ")",
+                    begin);
+  }
+}
+
+std::string Decoder::Bytes(std::uint64_t n) {
+  Need(n);
+  std::string s = b_.substr(pos_, n);
+  pos_ += n;
+  return s;
+}
+
+StringMap Decoder::Map() {
+  const std::uint64_t n = U32();
+  Need(n);
+  Decoder entries(b_, pos_, pos_ + n, what_);
+  pos_ += n;
+  StringMap m;
+  while (!entries.done()) {
+    std::string key = entries.Str();
+    m[key] = entries.Str();
+  }
+  return m;
+}
+
+void Decoder::Need(std::uint64_t n) const {
+  if (n > end_ - pos_) {
+    throw McapError(std::string("truncated ") + what_ + ": need " + std::to_string(n) +
+                        " bytes, " + std::to_string(end_ - pos_) + " left",
+                    pos_);
+  }
+}
+
+std::uint64_t Decoder::Le(int n) {
+  Need(n);
+  std::uint64_t v = 0;
+  for (int i = 0; i < n; ++i) {
+    v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b_[pos_ + i])) << (8 * i);
+  }
+  pos_ += n;
+  return v;
+}
 
 }  // namespace towsim::io::mcap

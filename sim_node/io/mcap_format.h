@@ -82,4 +82,35 @@ class McapError : public std::runtime_error {
   std::uint64_t offset_;
 };
 
+// "0x1f": a CRC or an opcode in an error message
+std::string Hex(std::uint32_t v);
+
+// reads little-endian fields from bytes [begin, end) of a buffer, Encoder's counterpart; a
+// read past `end` throws McapError "truncated <what>: need n bytes, m left" at the absolute
+// offset
+class Decoder {
+ public:
+  // throws McapError "<what> lies outside the file" unless begin <= end <= bytes.size()
+  Decoder(const std::string& bytes, std::uint64_t begin, std::uint64_t end, const char* what);
+  std::uint8_t U8() { return static_cast<std::uint8_t>(Le(1)); }
+  std::uint16_t U16() { return static_cast<std::uint16_t>(Le(2)); }
+  std::uint32_t U32() { return static_cast<std::uint32_t>(Le(4)); }
+  std::uint64_t U64() { return Le(8); }
+  std::string Bytes(std::uint64_t n);
+  std::string Str() { return Bytes(U32()); }
+  StringMap Map();
+  bool done() const { return pos_ >= end_; }
+  std::uint64_t pos() const { return pos_; }
+  std::uint64_t remaining() const { return end_ - pos_; }
+
+ private:
+  void Need(std::uint64_t n) const;
+  std::uint64_t Le(int n);
+
+  const std::string& b_;
+  std::uint64_t pos_;
+  std::uint64_t end_;
+  const char* what_;
+};
+
 }  // namespace towsim::io::mcap

@@ -5,108 +5,23 @@
 #include <fstream>
 #include <iterator>
 #include <queue>
-#include <sstream>
 #include <stdexcept>
 #include <tuple>
 
+#include "io/mcap_records.h"
+
 namespace towsim::io {
 
+using mcap::ChunkView;
+using mcap::Decoder;
+using mcap::Hex;
 using mcap::McapError;
 using mcap::Op;
+using mcap::RecordAt;
+using mcap::RecordIterator;
+using mcap::RecordView;
 
 namespace {
-
-std::string Hex(std::uint32_t v) {
-  std::ostringstream s;
-  s << "0x" << std::hex << v;
-  return s.str();
-}
-
-// little-endian reader over bytes [pos, end) of a buffer; errors name the absolute offset
-class Decoder {
- public:
-  Decoder(const std::string& bytes, std::uint64_t begin, std::uint64_t end, const char* what)
-      : b_(bytes), pos_(begin), end_(end), what_(what) {
-    if (begin > end || end > bytes.size()) {
-      throw McapError(std::string(what) + " lies outside the file (ends at " + std::to_string(end) +
-                          " of " + std::to_string(bytes.size()) + ")",
-                      begin);
-    }
-  }
-  std::uint8_t U8() { return static_cast<std::uint8_t>(Le(1)); }
-  std::uint16_t U16() { return static_cast<std::uint16_t>(Le(2)); }
-  std::uint32_t U32() { return static_cast<std::uint32_t>(Le(4)); }
-  std::uint64_t U64() { return Le(8); }
-  std::string Bytes(std::uint64_t n) {
-    Need(n);
-    std::string s = b_.substr(pos_, n);
-    pos_ += n;
-    return s;
-  }
-  std::string Str() { return Bytes(U32()); }
-  mcap::StringMap Map() {
-    const std::uint64_t n = U32();
-    Need(n);
-    Decoder entries(b_, pos_, pos_ + n, what_);
-    pos_ += n;
-    mcap::StringMap m;
-    while (!entries.done()) {
-      std::string key = entries.Str();
-      m[key] = entries.Str();
-    }
-    return m;
-  }
-  bool done() const { return pos_ >= end_; }
-  std::uint64_t pos() const { return pos_; }
-  std::uint64_t remaining() const { return end_ - pos_; }
-
- private:
-  void Need(std::uint64_t n) const {
-    if (n > end_ - pos_) {
-      throw McapError(std::string("truncated ") + what_ + ": need " + std::to_string(n) +
-                          " bytes, " + std::to_string(end_ - pos_) + " left",
-                      pos_);
-    }
-  }
-  std::uint64_t Le(int n) {
-    Need(n);
-    std::uint64_t v = 0;
-    for (int i = 0; i < n; ++i) {
-      v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b_[pos_ + i])) << (8 * i);
-    }
-    pos_ += n;
-    return v;
-  }
-  const std::string& b_;
-  std::uint64_t pos_;
-  std::uint64_t end_;
-  const char* what_;
-};
-
-struct RecordView {
-  Op op;
-  std::uint64_t start;    // offset of the opcode
-  std::uint64_t content;  // offset of the content
-  std::uint64_t length;   // content length
-  std::uint64_t end() const { return content + length; }
-};
-
-// the record at `pos`, which must lie within [pos, limit)
-RecordView RecordAt(const std::string& b, std::uint64_t pos, std::uint64_t limit) {
-  Decoder d(b, pos, limit, "record header");
-  RecordView r{};
-  r.start = pos;
-  r.op = static_cast<Op>(d.U8());
-  r.length = d.U64();
-  r.content = d.pos();
-  if (r.length > limit - r.content) {
-    throw McapError("record (opcode " + Hex(static_cast<unsigned>(r.op)) + ") of " +
-                        std::to_string(r.length) + " bytes runs past the end (" +
-                        std::to_string(limit) + ")",
-                    pos);
-  }
-  return r;
-}
 
 McapSchema ParseSchema(const std::string& b, const RecordView& r) {
   Decoder d(b, r.content, r.end(), "schema record");
@@ -150,42 +65,41 @@ McapMessage ParseMessage(const std::string& b, const RecordView& r) {
   return m;
 }
 
-struct ChunkView {
-  std::uint64_t start_time, end_time, uncompressed_size;
-  std::uint32_t crc;
-  std::string compression;
-  std::uint64_t records_begin, records_end;
+// the records that carry what the reader keeps, and which of them a path reads: the summary
+// its schemas and channels, the data section all four, a chunk schemas, channels and messages
+enum ContentKind : unsigned { kSchemas = 1u, kChannels = 2u, kMetadata = 4u, kMessages = 8u };
+
+// what content records parsed into, before the reader keeps it (so that a record or a chunk
+// that turns out damaged contributes nothing)
+struct Content {
+  std::vector<McapSchema> schemas;
+  std::vector<McapChannel> channels;
+  std::vector<McapMetadata> metadata;
+  std::vector<McapMessage> messages;
 };
 
-// parses a chunk record and checks its CRC
-ChunkView ParseChunk(const std::string& b, const RecordView& r) {
-  Decoder d(b, r.content, r.end(), "chunk record");
-  ChunkView c{};
-  c.start_time = d.U64();
-  c.end_time = d.U64();
-  c.uncompressed_size = d.U64();
-  c.crc = d.U32();
-  c.compression = d.Str();
-  const std::uint64_t n = d.U64();
-  if (n > d.remaining()) throw McapError("chunk records run past the chunk record", d.pos());
-  c.records_begin = d.pos();
-  c.records_end = d.pos() + n;
-  if (!c.compression.empty()) {
-    throw McapError("unsupported chunk compression \"" + c.compression + "\"", r.start);
-  }
-  if (c.uncompressed_size != n) {
-    throw McapError("chunk uncompressed_size " + std::to_string(c.uncompressed_size) +
-                        " != records length " + std::to_string(n),
-                    r.start);
-  }
-  if (c.crc != 0) {
-    const std::uint32_t computed = mcap::ComputeCrc32(b.data() + c.records_begin, n);
-    if (computed != c.crc) {
-      throw McapError("chunk CRC mismatch: stored " + Hex(c.crc) + ", computed " + Hex(computed),
-                      r.start);
-    }
-  }
-  return c;
+// the one dispatch of the content records: parses `r` into `out` if it is a schema, channel,
+// metadata or message record of a kind in `kinds`; false (nothing read) for any other record
+bool ParseContent(const std::string& b, const RecordView& r, unsigned kinds, Content& out) {
+  const unsigned kind = r.op == Op::kSchema     ? kSchemas
+                        : r.op == Op::kChannel  ? kChannels
+                        : r.op == Op::kMetadata ? kMetadata
+                        : r.op == Op::kMessage  ? kMessages
+                                                : 0u;
+  if ((kind & kinds) == 0u) return false;
+  if (kind == kSchemas) out.schemas.push_back(ParseSchema(b, r));
+  if (kind == kChannels) out.channels.push_back(ParseChannel(b, r));
+  if (kind == kMetadata) out.metadata.push_back(ParseMetadata(b, r));
+  if (kind == kMessages) out.messages.push_back(ParseMessage(b, r));
+  return true;
+}
+
+// keeps what was parsed: a schema or channel replaces one of the same id, metadata add up
+void Keep(Content& found, std::map<std::uint16_t, McapSchema>& schemas,
+          std::map<std::uint16_t, McapChannel>& channels, std::vector<McapMetadata>& metadata) {
+  for (McapSchema& s : found.schemas) schemas[s.id] = std::move(s);
+  for (McapChannel& c : found.channels) channels[c.id] = std::move(c);
+  for (McapMetadata& m : found.metadata) metadata.push_back(std::move(m));
 }
 
 std::string ReadFile(const std::string& path) {
@@ -302,20 +216,11 @@ void McapReader::ReadSummary() {
   }
 
   const std::uint64_t summary_end = summary_offset_start != 0 ? summary_offset_start : footer_start;
-  std::uint64_t pos = summary_start;
-  while (pos < summary_end) {
-    const RecordView r = RecordAt(b, pos, summary_end);
+  Content found;
+  for (RecordIterator it(b, summary_start, summary_end); !it.done();) {
+    const RecordView r = it.Next();
+    if (ParseContent(b, r, kSchemas | kChannels, found)) continue;
     switch (r.op) {
-      case Op::kSchema: {
-        McapSchema s = ParseSchema(b, r);
-        schemas_[s.id] = std::move(s);
-        break;
-      }
-      case Op::kChannel: {
-        McapChannel c = ParseChannel(b, r);
-        channels_[c.id] = std::move(c);
-        break;
-      }
       case Op::kStatistics: {
         Decoder d(b, r.content, r.end(), "statistics record");
         McapStatistics& s = statistics_;
@@ -374,14 +279,14 @@ void McapReader::ReadSummary() {
         if (m.op != Op::kMetadata)
           throw McapError("metadata index points to opcode " + Hex(static_cast<unsigned>(m.op)),
                           offset);
-        metadata_.push_back(ParseMetadata(b, m));
+        ParseContent(b, m, kMetadata, found);
         break;
       }
       default:
         break;  // attachment indexes and unknown records: skipped
     }
-    pos = r.end();
   }
+  Keep(found, schemas_, channels_, metadata_);
 }
 
 namespace {
@@ -411,25 +316,13 @@ bool RecordStartsAt(const std::string& b, std::uint64_t p, std::uint64_t size) {
       return next >= static_cast<unsigned>(Op::kHeader) &&
              next <= static_cast<unsigned>(Op::kDataEnd);
     };
+    Content parsed;
+    if (ParseContent(b, r, kSchemas | kChannels | kMetadata, parsed)) return followed();
     switch (r.op) {
-      case Op::kChunk: {
-        const ChunkView c = ParseChunk(b, r);
-        if (c.crc == 0) return false;  // nothing proves it is one
-        for (std::uint64_t q = c.records_begin; q < c.records_end;)
-          q = RecordAt(b, q, c.records_end).end();
-        return true;
-      }
+      case Op::kChunk:  // a CRC that holds over records that fit
+        return mcap::WalkChunk(b, r, [](const RecordView&) {}).crc != 0;
       case Op::kDataEnd:
         return r.length == 4;
-      case Op::kSchema:
-        ParseSchema(b, r);
-        return followed();
-      case Op::kChannel:
-        ParseChannel(b, r);
-        return followed();
-      case Op::kMetadata:
-        ParseMetadata(b, r);
-        return followed();
       case Op::kMessageIndex:
         MessageIndexEntries(b, r);
         return followed();
@@ -514,82 +407,63 @@ void McapReader::ScanLinear() {
   };
 
   recovered_bytes_ = pos;
-  while (pos < size) {
+  for (RecordIterator it(b, pos, size); !it.done();) {
+    const std::uint64_t start = it.pos();
     try {
-      const RecordView r = RecordAt(b, pos, size);
+      const RecordView r = it.Next();
+      Content found;
       bool stop = false;
-      switch (r.op) {
-        case Op::kSchema: {
-          McapSchema s = ParseSchema(b, r);
-          schemas_[s.id] = std::move(s);
-          break;
-        }
-        case Op::kChannel: {
-          McapChannel c = ParseChannel(b, r);
-          channels_[c.id] = std::move(c);
-          break;
-        }
-        case Op::kMetadata:
-          metadata_.push_back(ParseMetadata(b, r));
-          break;
-        case Op::kMessage: {
-          McapMessage m = ParseMessage(b, r);
+      if (ParseContent(b, r, kSchemas | kChannels | kMetadata | kMessages, found)) {
+        Keep(found, schemas_, channels_, metadata_);
+        for (McapMessage& m : found.messages) {
           count(m);
           loose_messages_.push_back(std::move(m));
           counting_skipped = false;
-          break;
         }
-        case Op::kChunk: {
-          const ChunkView c = ParseChunk(b, r);
-          // parse everything first, so a damaged chunk contributes nothing
-          std::vector<McapSchema> schemas;
-          std::vector<McapChannel> channels;
-          std::vector<McapMessage> messages;
-          for (std::uint64_t p = c.records_begin; p < c.records_end;) {
-            const RecordView inner = RecordAt(b, p, c.records_end);
-            if (inner.op == Op::kSchema) schemas.push_back(ParseSchema(b, inner));
-            if (inner.op == Op::kChannel) channels.push_back(ParseChannel(b, inner));
-            if (inner.op == Op::kMessage) messages.push_back(ParseMessage(b, inner));
-            p = inner.end();
+      } else {
+        switch (r.op) {
+          case Op::kChunk: {
+            // parse everything first, so a damaged chunk contributes nothing
+            const ChunkView c = mcap::WalkChunk(b, r, [&](const RecordView& inner) {
+              ParseContent(b, inner, kSchemas | kChannels | kMessages, found);
+            });
+            Keep(found, schemas_, channels_, metadata_);
+            McapChunkIndex index;
+            index.message_start_time = c.start_time;
+            index.message_end_time = c.end_time;
+            index.chunk_start_offset = r.start;
+            index.chunk_length = r.end() - r.start;
+            index.compression = c.compression;
+            index.compressed_size = index.uncompressed_size = c.uncompressed_size;
+            chunk_indexes_.push_back(index);
+            for (const McapMessage& m : found.messages) count(m);
+            counting_skipped = false;
+            break;
           }
-          for (auto& s : schemas) schemas_[s.id] = std::move(s);
-          for (auto& ch : channels) channels_[ch.id] = std::move(ch);
-          McapChunkIndex index;
-          index.message_start_time = c.start_time;
-          index.message_end_time = c.end_time;
-          index.chunk_start_offset = r.start;
-          index.chunk_length = r.end() - r.start;
-          index.compression = c.compression;
-          index.compressed_size = index.uncompressed_size = c.uncompressed_size;
-          chunk_indexes_.push_back(index);
-          for (const McapMessage& m : messages) count(m);
-          counting_skipped = false;
-          break;
+          case Op::kMessageIndex:
+            if (counting_skipped) {
+              skipped_.back().messages += MessageIndexEntries(b, r);
+              skipped_.back().messages_known = true;
+            }
+            break;
+          case Op::kDataEnd:
+            if (skipped_.empty()) {
+              recovered_ = false;
+              recovery_note_.clear();
+            }
+            stop = true;
+            break;
+          case Op::kFooter:
+            stop = true;
+            break;
+          default:
+            break;  // attachments, unknown records
         }
-        case Op::kMessageIndex:
-          if (counting_skipped) {
-            skipped_.back().messages += MessageIndexEntries(b, r);
-            skipped_.back().messages_known = true;
-          }
-          break;
-        case Op::kDataEnd:
-          if (skipped_.empty()) {
-            recovered_ = false;
-            recovery_note_.clear();
-          }
-          stop = true;
-          break;
-        case Op::kFooter:
-          stop = true;
-          break;
-        default:
-          break;  // attachments, unknown records
       }
-      pos = r.end();
-      recovered_bytes_ = pos;
+      recovered_bytes_ = it.pos();
       if (stop) break;
     } catch (const McapError& e) {
-      pos = skip(pos, e.what());
+      it.Seek(skip(start, e.what()));
     }
   }
   if (!skipped_.empty()) {
@@ -611,14 +485,10 @@ std::vector<McapMessage> McapReader::ChunkMessages(const McapChunkIndex& index) 
     throw McapError("chunk index points to opcode " + Hex(static_cast<unsigned>(r.op)),
                     index.chunk_start_offset);
   }
-  const ChunkView c = ParseChunk(bytes_, r);
-  std::vector<McapMessage> messages;
-  for (std::uint64_t p = c.records_begin; p < c.records_end;) {
-    const RecordView inner = RecordAt(bytes_, p, c.records_end);
-    if (inner.op == Op::kMessage) messages.push_back(ParseMessage(bytes_, inner));
-    p = inner.end();
-  }
-  return messages;
+  Content found;
+  mcap::WalkChunk(bytes_, r,
+                  [&](const RecordView& inner) { ParseContent(bytes_, inner, kMessages, found); });
+  return std::move(found.messages);
 }
 
 void McapReader::ForEachMessage(const std::function<void(const McapMessage&)>& fn) const {

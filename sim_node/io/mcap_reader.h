@@ -15,6 +15,9 @@
 // ranges not read, with the message count of a skipped chunk from the message indexes that
 // follow it. Statistics and chunk indexes are rebuilt from what was read.
 //
+// Both paths walk the records with mcap::RecordIterator and the chunks with mcap::WalkChunk
+// (io/mcap_records.h), and parse the schema, channel, metadata and message records in one place.
+//
 // Errors throw mcap::McapError, whose message names the byte offset ("chunk CRC mismatch:
 // stored 0x..., computed 0x... (at byte offset 1234)"). The whole file is held in memory.
 
@@ -126,7 +129,7 @@ class McapReader {
   McapReader() = default;
   void ReadSummary();
   void ScanLinear();
-  // the records of a chunk, CRC-checked; `offset` is the chunk record's file offset
+  // the messages of the chunk `index` points to, CRC-checked
   std::vector<McapMessage> ChunkMessages(const McapChunkIndex& index) const;
 
   std::string bytes_;

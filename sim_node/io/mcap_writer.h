@@ -1,5 +1,5 @@
 #pragma once
-// MCAP recording writer (DESIGN §6, issue 6), written from the public specification
+// MCAP recording writer (docs/contract.md §6), written from the public specification
 // (https://mcap.dev/spec); no external MCAP library.
 //
 // Layout of a file written by Close():

@@ -1,5 +1,5 @@
 #pragma once
-// ROS 2 message definitions of the wire contract (msgs/, DESIGN §3) as rosbag2 stores them in
+// ROS 2 message definitions of the wire contract (msgs/, docs/contract.md §3) as rosbag2 stores them in
 // MCAP: schema name "pkg/msg/Type", encoding "ros2msg", data the complete message definition
 // (https://github.com/ros2/rosbag2/blob/rolling/docs/message_definition_encoding.md):
 //

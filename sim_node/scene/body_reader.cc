@@ -189,8 +189,8 @@ BodiesInput ReadBodies(const Field& bodies, const std::string& base_dir) {
 }
 
 BodyRef FindBody(const core::Model& model, const std::string& name) {
-  for (size_t i = 0; i < model.bodies.size(); ++i) {
-    if (model.bodies[i].name == name) return {BodyRef::kSphere, static_cast<int>(i)};
+  for (size_t i = 0; i < model.spheres.size(); ++i) {
+    if (model.spheres[i].name == name) return {BodyRef::kSphere, static_cast<int>(i)};
   }
   for (size_t i = 0; i < model.vehicles.size(); ++i) {
     if (model.vehicles[i].name == name) return {BodyRef::kVehicle, static_cast<int>(i)};
@@ -200,7 +200,7 @@ BodyRef FindBody(const core::Model& model, const std::string& name) {
 
 std::string BodyNames(const core::Model& model) {
   std::string names;
-  for (const core::SphereBody& body : model.bodies)
+  for (const core::SphereBody& body : model.spheres)
     names += (names.empty() ? "" : ", ") + body.name;
   for (const core::Vehicle& v : model.vehicles) names += (names.empty() ? "" : ", ") + v.name;
   return names.empty() ? "none" : names;

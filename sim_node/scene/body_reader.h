@@ -75,7 +75,7 @@ struct VehicleInput {
 };
 
 struct BodiesInput {
-  std::vector<SphereInput> spheres;    // -> Model::bodies, in document order
+  std::vector<SphereInput> spheres;    // -> Model::spheres, in document order
   std::vector<VehicleInput> vehicles;  // -> Model::vehicles, in document order
 };
 
@@ -83,7 +83,7 @@ struct BodiesInput {
 // inside a model file name that file and line.
 BodiesInput ReadBodies(const Field& bodies, const std::string& base_dir);
 
-// A body of the scene by name: a sphere (index into Model::bodies) or a vehicle (index into
+// A body of the scene by name: a sphere (index into Model::spheres) or a vehicle (index into
 // Model::vehicles).
 struct BodyRef {
   enum Kind { kNone, kSphere, kVehicle };

@@ -87,11 +87,11 @@ EndInput ReadEnd(const Field& field, const core::Model& model) {
     if (!free.Boolean()) free.Fail("must be true (to hold the end use fixed, driven or body)");
     end.kind = core::EndKind::kFree;
   } else {
-    // the body must exist: a sphere (kBody) or a vehicle (kVehicle)
+    // the body must exist: a sphere (kSphere) or a vehicle (kVehicle)
     const Field body = map.Get("body");
     const BodyRef ref = FindBody(model, body.String());
     if (ref.kind == BodyRef::kNone) body.Fail("no such body (bodies: " + BodyNames(model) + ")");
-    end.kind = ref.kind == BodyRef::kVehicle ? core::EndKind::kVehicle : core::EndKind::kBody;
+    end.kind = ref.kind == BodyRef::kVehicle ? core::EndKind::kVehicle : core::EndKind::kSphere;
     end.body = ref.index;
     end.at_B = map.Vector("at", core::Vec3::Zero());
   }
@@ -103,7 +103,7 @@ bool Held(const core::CableEnd& end) { return end.kind != core::EndKind::kFree; 
 // world position of a held end at t = 0: p_WB + R_WB at_B on a vehicle; a sphere's frame is
 // aligned with the world
 core::Vec3 EndPosition(const core::CableEnd& end, const core::Model& model) {
-  if (end.kind == core::EndKind::kBody) return model.bodies[end.body].position + end.at_B;
+  if (end.kind == core::EndKind::kSphere) return model.spheres[end.body].position + end.at_B;
   if (end.kind == core::EndKind::kVehicle) {
     const core::Vehicle& v = model.vehicles[end.body];
     return v.position + core::QuaternionFromEulerZYX(v.euler) * end.at_B;
@@ -114,11 +114,11 @@ core::Vec3 EndPosition(const core::CableEnd& end, const core::Model& model) {
 // the name of the body an end is attached to
 const std::string& EndBodyName(const core::CableEnd& end, const core::Model& model) {
   return end.kind == core::EndKind::kVehicle ? model.vehicles[end.body].name
-                                             : model.bodies[end.body].name;
+                                             : model.spheres[end.body].name;
 }
 
 bool OnBody(const core::CableEnd& end) {
-  return end.kind == core::EndKind::kBody || end.kind == core::EndKind::kVehicle;
+  return end.kind == core::EndKind::kSphere || end.kind == core::EndKind::kVehicle;
 }
 
 void CheckEnds(const EndInput& start, const EndInput& end, const core::Model& model) {

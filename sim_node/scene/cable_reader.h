@@ -1,6 +1,6 @@
 #pragma once
 // cable: its line type (line_type_reader.h), loads, ends and the initial shape, with the
-// geometric rules that let the core build the initial state (DESIGN.md §5).
+// geometric rules that let the core build the initial state (docs/contract.md §5).
 
 #include <string>
 

@@ -6,12 +6,13 @@
 #include <utility>
 #include <vector>
 
+#include "core/constants.h"
 #include "scene/bathymetry_file.h"
 
 namespace towsim::scene::internal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 
 // exactly one of `keys` present in `map`; returns its index
 size_t OneOf(const MapReader& map, const std::vector<std::string>& keys) {
@@ -234,7 +235,7 @@ void CheckBodiesAboveSeabed(const Field& bodies, const core::Model& model) {
                 " m at x = " + FormatNumber(p.x()) + ", y = " + FormatNumber(p.y()) + ")");
     }
   };
-  for (const core::SphereBody& b : model.bodies) check(b.name, b.position);
+  for (const core::SphereBody& b : model.spheres) check(b.name, b.position);
   for (const core::Vehicle& v : model.vehicles) check(v.name, v.position);
 }
 

@@ -243,8 +243,8 @@ double MinimumTension(const core::CableParams& c, const core::Model& model) {
     tension += 0.5 * std::abs(w) * c.length;
   }
   for (const core::CableEnd* end : {&c.start, &c.end}) {
-    if (end->kind != core::EndKind::kBody) continue;
-    const core::SphereBody& b = model.bodies[end->body];
+    if (end->kind != core::EndKind::kSphere) continue;
+    const core::SphereBody& b = model.spheres[end->body];
     tension += std::abs(b.mass - env.water_density * b.volume) * env.gravity;
   }
   return tension;

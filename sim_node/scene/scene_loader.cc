@@ -87,7 +87,7 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
 
   // bodies first: cable ends and script entries refer to them
   const internal::BodiesInput bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
-  for (const internal::SphereInput& sphere : bodies.spheres) model.bodies.push_back(sphere.body);
+  for (const internal::SphereInput& sphere : bodies.spheres) model.spheres.push_back(sphere.body);
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
   internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
   model.cable =
@@ -95,7 +95,7 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   // bodies that give no velocity start with the cable (vehicles: in their body frame)
   const core::Vec3& v_W = model.cable.initial_velocity;
   for (size_t i = 0; i < bodies.spheres.size(); ++i) {
-    if (!bodies.spheres[i].velocity_given) model.bodies[i].velocity = v_W;
+    if (!bodies.spheres[i].velocity_given) model.spheres[i].velocity = v_W;
   }
   for (size_t i = 0; i < bodies.vehicles.size(); ++i) {
     core::Vehicle& v = model.vehicles[i];

@@ -1,5 +1,5 @@
 #pragma once
-// Scene file (YAML, DESIGN.md §5) -> validated core::Model. Every rule broken throws
+// Scene file (YAML, docs/contract.md §5) -> validated core::Model. Every rule broken throws
 // ConfigError naming the key path, the value, file:line and the rule, e.g.
 //   cable.elements = 0 (catenary.yaml:14): must be >= 1
 // The app maps ConfigError to exit code 2.

@@ -13,6 +13,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 #include "scene/scene_schema.h"
 
@@ -46,8 +47,8 @@ struct Range {
   std::string Violation(double x) const;
 };
 
-inline constexpr double kDegToRad = 3.14159265358979323846 / 180.0;  // values given in _deg
-inline constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+inline constexpr double kDegToRad = core::kPi / 180.0;  // values given in _deg
+inline constexpr double kRadToDeg = 180.0 / core::kPi;
 
 // `text` without leading and trailing blanks (spaces, tabs)
 std::string Trim(const std::string& text);

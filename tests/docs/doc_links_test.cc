@@ -15,7 +15,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/text_file.h"
+#include "app/common/text_file.h"
 #include "temp_dir.h"
 
 namespace towsim::docs {

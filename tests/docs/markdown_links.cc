@@ -9,7 +9,7 @@
 #include <sstream>
 #include <utility>
 
-#include "app/text_file.h"
+#include "app/common/text_file.h"
 
 namespace towsim::docs {
 namespace {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench_dds.sh — the DDS node's benchmark (issue 4; a measurement, not a test):
+# bench_dds.sh — the DDS node's benchmark (a measurement, not a test):
 #   1. lockstep steps per second with one controller (test_controller) on the Case 1 scene,
 #      against the offline steps per second of the same run (same thrust, same trajectory);
 #   2. realtime step lateness p50 / p99 / max at 100 Hz (Case 1 with time.step = 0.01);

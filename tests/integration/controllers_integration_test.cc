@@ -1,4 +1,4 @@
-// The controllers (issue 5) as processes over loopback DDS: sim_node in lockstep, the
+// The controllers as processes over loopback DDS: sim_node in lockstep, the
 // manoeuvre runner commanding the tow vehicle and the towfish depth controller commanding the
 // towfish, three separate processes. Domains 61, 62 (tests/integration/README.md: 61-69 are
 // the controllers' tests).

@@ -1,4 +1,4 @@
-// The controllers' trials over loopback DDS (issue 5): sim_node in lockstep on the paper's
+// The controllers' trials over loopback DDS: sim_node in lockstep on the paper's
 // Case 1 scene (start from rest, no script) with real controller processes: the manoeuvre
 // runner's zig-zag and turning circle, the autopilot's heading step and lawn-mower survey, the
 // C example of docs/controllers.md. Every number the controllers report is checked against
@@ -219,8 +219,8 @@ TEST(ControllerTrials, AutopilotHoldsHeadingWithin2DegAndSpeedWithin2Percent) {
   const TrialRun run = RunLockstep(
       72, {TOWSIM_AUTOPILOT, "--config", kSource + "/config/autopilot/heading_step.yaml"}, 120.0);
   if (HasFailure()) return;
-  constexpr double kHeadingTol = 2.0;  // [deg] issue 5
-  constexpr double kSpeedTol = 0.02;   // relative, issue 5
+  constexpr double kHeadingTol = 2.0;  // [deg]
+  constexpr double kSpeedTol = 0.02;   // relative
   double worst_heading = 0, worst_speed = 0, worst_before = 0;
   for (const Row& w : run.tow) {
     if (w.t >= 40.0 && w.t < 60.0) {  // settled on the first setpoint (north)
@@ -302,7 +302,7 @@ TEST(ControllerTrials, HelloControllerInCReachesTheOfflineSpeed) {
   ASSERT_EQ(offline.exit_code(), 0) << offline.err();
   const std::vector<Row> reference = BodyRows(ReadFile(dir + "/bodies.csv"), "tow_vehicle");
   ASSERT_FALSE(reference.empty());
-  constexpr double kSpeedTol = 0.03;  // relative (issue 5)
+  constexpr double kSpeedTol = 0.03;  // relative
   EXPECT_NEAR(run.tow.back().u, reference.back().u, kSpeedTol * reference.back().u);
   EXPECT_GT(reference.back().u, 5.5);  // the offline run is at speed (6 m/s at 4165 N)
   EXPECT_LT(std::abs(run.tow.back().yaw * kDeg), 1.0);

@@ -1,4 +1,4 @@
-// The DDS node as processes over loopback (issue 4): the node (TOWSIM_DDS_NODE, the final
+// The DDS node as processes over loopback: the node (TOWSIM_DDS_NODE, the final
 // `sim_node --mode ... --domain N` command line), the test controller (msgs/ only) and this
 // test, itself a DDS participant that watches the status and sends control requests and raw
 // commands. Every test uses its own DDS domain (README.md in this folder).
@@ -42,7 +42,7 @@ const std::string kSteadyTow = kSource + "/config/scenes/steady_tow.yaml";
 constexpr double kProcessTimeout = 60.0;  // [s] a run that takes longer has hung
 constexpr double kEventTimeout = 20.0;    // [s] for a status the test waits for
 constexpr double kLockstepTimeout = 1.0;  // [s] the node's default lockstep timeout
-// a signal stops the node within one step period + 100 ms (issue 4); a loaded CI machine
+// a signal stops the node within one step period + 100 ms; a loaded CI machine
 // gets a margin on top
 constexpr double kStopMargin = 1.0;  // [s]
 
@@ -354,14 +354,14 @@ TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
   Status first;
   ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.step >= 1; }, &first));
   EXPECT_NE(first.state, kWaiting);
-  EXPECT_GE(first.received, 2u);
+  EXPECT_GE(first.commands_received, 2u);
   EXPECT_EQ(first.health, 0);
   EXPECT_EQ(first.failsafe_count, 0u);
   Status end;
   ASSERT_TRUE(
       watch.WaitFor([](const Status& s) { return s.state == kFinished; }, &end, kProcessTimeout));
   EXPECT_EQ(end.step, 200u);
-  EXPECT_GT(end.received, 0u);
+  EXPECT_GT(end.commands_received, 0u);
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   // later failsafes are a matter of the machine, not of the wait: at rate 20 the 0.5 s of
@@ -370,7 +370,7 @@ TEST_F(DdsNodeTest, WaitForControllersHoldsTheFirstStep) {
   // two busy loops); reported, not judged
   std::printf("[ dds_node ] after the wait: %llu failsafes, %llu commands received\n",
               static_cast<unsigned long long>(end.failsafe_count),
-              static_cast<unsigned long long>(end.received));
+              static_cast<unsigned long long>(end.commands_received));
   EXPECT_NE(node.out().find("failsafes "), std::string::npos) << node.out();
 }
 
@@ -384,23 +384,23 @@ TEST_F(DdsNodeTest, BadCommandsAreCountedAndSilenceMeansFailsafe) {
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 1; }, &s));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   watch.Command("tow_vehicle", s.step, nan, 0.0, 0.0);
-  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.rejected == 1; }, &s));
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.commands_rejected == 1; }, &s));
   EXPECT_EQ(s.health, 0);  // a rejected command does not arm the timeout
   watch.Command("tow_vehicle", s.step, 1e9, 0.0, 0.0);  // beyond max_thrust
-  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.clamped == 1; }, &s));
-  const double commanded_at = s.sim_time;
-  EXPECT_EQ(s.received, 2u);
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.commands_clamped == 1; }, &s));
+  const double commanded_at = s.t;
+  EXPECT_EQ(s.commands_received, 2u);
   EXPECT_NE(s.message.find("thrust clamped"), std::string::npos) << s.message;
   // no command since: failsafe after command_timeout (0.5 s) of simulation time
   Status f;
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.health == kHealthFailsafe; }, &f));
   EXPECT_EQ(f.failsafe_bodies, std::vector<std::string>{"tow_vehicle"});
-  EXPECT_NEAR(f.sim_time - commanded_at, 0.5, 0.05 + 1e-9);  // within a step
+  EXPECT_NEAR(f.t - commanded_at, 0.5, 0.05 + 1e-9);  // within a step
   EXPECT_NE(f.message.find("no command for"), std::string::npos) << f.message;
   // commands resume: failsafe ends
   watch.Command("tow_vehicle", f.step, 100.0, 0.0, 0.0);
-  ASSERT_TRUE(
-      watch.WaitFor([](const Status& x) { return x.received == 3 && x.health == 0; }, nullptr));
+  ASSERT_TRUE(watch.WaitFor(
+      [](const Status& x) { return x.commands_received == 3 && x.health == 0; }, nullptr));
 
   // SIGINT: the last status says so, exit 0, a summary
   const Clock::time_point t0 = Clock::now();
@@ -445,7 +445,7 @@ TEST_F(DdsNodeTest, PauseStepResetResumeAndRate) {
   Status reset;
   ASSERT_TRUE(watch.WaitFor([&](const Status& x) { return x.run_id != first_run; }, &reset));
   EXPECT_EQ(reset.step, 0u);
-  EXPECT_EQ(reset.sim_time, 0.0);
+  EXPECT_EQ(reset.t, 0.0);
   EXPECT_EQ(reset.state, kPaused);  // a reset keeps the node paused
 
   watch.Control(towsim_msgs_msg_dds__SimControl_Constants_SET_RATE, 0, 4.0);
@@ -523,17 +523,8 @@ TEST_F(DdsNodeTest, DdsSetupErrorsExit2WithCyclonesMessage) {
 // domain 50
 TEST_F(DdsNodeTest, PublishesTheStandardTopics) {
   Observer watch(50);
-  dds_qos_t* qos = ReliableQos(100);
-  const dds_entity_t p = watch.participant();
-  const dds_entity_t odom_t =
-      dds_create_topic(p, &nav_msgs_msg_dds__Odometry__desc,
-                       (watch.prefix() + "towfish/odom").c_str(), nullptr, nullptr);
-  const dds_entity_t odom = dds_create_reader(p, odom_t, qos, nullptr);
-  const dds_entity_t cable_t =
-      dds_create_topic(p, &towsim_msgs_msg_dds__CableState__desc,
-                       (watch.prefix() + "cable/state").c_str(), nullptr, nullptr);
-  const dds_entity_t cable = dds_create_reader(p, cable_t, qos, nullptr);
-  dds_delete_qos(qos);
+  const dds_entity_t odom = watch.Reader(wire::Topic::kOdom, "towfish", 100);
+  const dds_entity_t cable = watch.Reader(wire::Topic::kCableState, "", 100);
 
   Process node(SimNodeArgs(TOWSIM_DDS_NODE, kSteadyTow, "realtime", 50,
                            {"--rate", "4", "--duration", "600"}),
@@ -558,7 +549,7 @@ TEST_F(DdsNodeTest, PublishesTheStandardTopics) {
     const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(x);
     EXPECT_STREQ(o->header.frame_id, "world_ned");
     EXPECT_STREQ(o->child_frame_id, "towfish_frd");  // the physics' body frame (docs/frames.md)
-    EXPECT_GT(o->pose.pose.position.z, 10.0);  // deep below the tow point (NED: z down)
+    EXPECT_GT(o->pose.pose.position.z, 10.0);        // deep below the tow point (NED: z down)
     EXPECT_EQ(o->pose.pose.orientation.w, 1.0);
   }));
   // the cable state at t >= 1 s (the vertical initial shape is unstretched: no tension)
@@ -605,13 +596,7 @@ TEST_F(DdsNodeTest, SeaSceneEnvironmentTopicEqualsTheNodesEnvironmentCsv) {
            "  ball: {type: sphere, mass: 50, volume: 0.01, position: [0, 0, 20]}\n";
   }
   Observer watch(189);
-  dds_qos_t* qos = ReliableQos(1000);
-  const dds_entity_t p = watch.participant();
-  const dds_entity_t env_t =
-      dds_create_topic(p, &towsim_msgs_msg_dds__BodyEnvironment__desc,
-                       (watch.prefix() + "ball/environment").c_str(), nullptr, nullptr);
-  const dds_entity_t env = dds_create_reader(p, env_t, qos, nullptr);
-  dds_delete_qos(qos);
+  const dds_entity_t env = watch.Reader(wire::Topic::kEnvironment, "ball", 1000);
   Process node(SimNodeArgs(TOWSIM_DDS_NODE, scene, "realtime", 189,
                            {"--rate", "1", "--duration", "3", "--csv", dir + "_csv", "--set",
                             "publish.sensors=10"}),

@@ -14,28 +14,21 @@
 
 #include <gtest/gtest.h>
 
-#include "common/dds_qos.h"
 #include "dds/dds.h"
 #include "towsim_msgs.h"
+#include "wire/decoders.h"
+#include "wire/qos.h"
+#include "wire/topic_names.h"
 
 namespace towsim::testing {
 
 // how long the observer waits for a status or a match [s]
 inline constexpr double kObserverTimeout = 20.0;
 
-struct Status {
-  using Clock = std::chrono::steady_clock;
-  std::string run_id, mode, message;
-  uint8_t state = 0, health = 0;
-  uint64_t step = 0;
-  double sim_time = 0.0, rate = 0.0;
-  std::vector<std::string> failsafe_bodies;
-  uint64_t failsafe_count = 0, received = 0, rejected = 0, clamped = 0, lockstep_timeouts = 0;
-  Clock::time_point when;
+// a status as wire/decoders.h decodes it, and when it came
+struct Status : wire::SimStatus {
+  std::chrono::steady_clock::time_point when;
 };
-
-// the node's state QoS (controllers/common/dds_qos.h) with a reader history of `depth`
-inline dds_qos_t* ReliableQos(int depth) { return controllers::ReliableQos(depth, false); }
 
 // this test as a DDS participant: the node's status, control requests and raw commands
 class Observer {
@@ -43,19 +36,14 @@ class Observer {
   static double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
  public:
-  Observer(int domain, const std::string& ns = "/towsim")
-      : prefix_(ns == "/" ? "rt/" : "rt" + ns + "/") {
+  Observer(int domain, const std::string& ns = "/towsim") : names_(ns) {
     participant_ = dds_create_participant(static_cast<dds_domainid_t>(domain), nullptr, nullptr);
     EXPECT_GT(participant_, 0) << dds_strretcode(participant_);
-    dds_qos_t* qos = ReliableQos(1000);
-    const dds_entity_t status_topic =
-        dds_create_topic(participant_, &towsim_msgs_msg_dds__SimStatus__desc,
-                         (prefix_ + "status").c_str(), nullptr, nullptr);
-    status_reader_ = dds_create_reader(participant_, status_topic, qos, nullptr);
-    const dds_entity_t control_topic =
-        dds_create_topic(participant_, &towsim_msgs_msg_dds__SimControl__desc,
-                         (prefix_ + "sim_control").c_str(), nullptr, nullptr);
-    control_writer_ = dds_create_writer(participant_, control_topic, qos, nullptr);
+    // the status and control requests with a deep history: none is lost
+    dds_qos_t* qos = wire::ProfileQos(wire::QosProfile::kState, 1000);
+    status_reader_ = dds_create_reader(participant_, Topic(wire::Topic::kStatus, ""), qos, nullptr);
+    control_writer_ =
+        dds_create_writer(participant_, Topic(wire::Topic::kSimControl, ""), qos, nullptr);
     dds_delete_qos(qos);
   }
   ~Observer() { dds_delete(participant_); }
@@ -98,7 +86,7 @@ class Observer {
                double elevator) {
     dds_entity_t& w = command_writers_[body];
     if (w == 0) {
-      w = CommandWriter(&towsim_msgs_msg_dds__ActuatorCommand__desc, body + "/command");
+      w = CommandWriter(wire::Topic::kCommand, body);
     }
     ASSERT_TRUE(Matched(w)) << "the node's command reader of " << body << " did not match";
     towsim_msgs_msg_dds__ActuatorCommand_ m{};
@@ -114,7 +102,7 @@ class Observer {
   // or any other number)
   void WinchCommand(uint64_t step, uint8_t mode, double value) {
     if (winch_writer_ == 0) {
-      winch_writer_ = CommandWriter(&towsim_msgs_msg_dds__WinchCommand__desc, "winch/command");
+      winch_writer_ = CommandWriter(wire::Topic::kWinchCommand, "");
     }
     ASSERT_TRUE(Matched(winch_writer_)) << "the node's winch command reader did not match";
     towsim_msgs_msg_dds__WinchCommand_ m{};
@@ -126,15 +114,27 @@ class Observer {
   }
 
   dds_entity_t participant() const { return participant_; }
-  const std::string& prefix() const { return prefix_; }
+  const wire::TopicNames& names() const { return names_; }
+
+  // a reader of `topic` of `owner` (wire/topic_names.h) that keeps `depth` samples
+  dds_entity_t Reader(wire::Topic topic, const std::string& owner, int depth) {
+    dds_qos_t* qos = wire::ProfileQos(wire::SpecOf(topic).qos, depth);
+    const dds_entity_t r = dds_create_reader(participant_, Topic(topic, owner), qos, nullptr);
+    dds_delete_qos(qos);
+    return r;
+  }
 
  private:
-  // a writer of commands (reliable, depth 1, as a controller's) on rt/<ns>/<name>
-  dds_entity_t CommandWriter(const dds_topic_descriptor_t* type, const std::string& name) {
-    dds_qos_t* qos = ReliableQos(1);
-    const dds_entity_t t =
-        dds_create_topic(participant_, type, (prefix_ + name).c_str(), nullptr, nullptr);
-    const dds_entity_t w = dds_create_writer(participant_, t, qos, nullptr);
+  // the topic `topic` of `owner` (wire/topic_names.h)
+  dds_entity_t Topic(wire::Topic topic, const std::string& owner) {
+    return dds_create_topic(participant_, wire::SpecOf(topic).type,
+                            names_.Name(topic, owner).c_str(), nullptr, nullptr);
+  }
+
+  // a writer of commands (the QoS of the row, as a controller's) on `topic` of `owner`
+  dds_entity_t CommandWriter(wire::Topic topic, const std::string& owner) {
+    dds_qos_t* qos = wire::ProfileQos(wire::SpecOf(topic).qos);
+    const dds_entity_t w = dds_create_writer(participant_, Topic(topic, owner), qos, nullptr);
     dds_delete_qos(qos);
     return w;
   }
@@ -158,33 +158,18 @@ class Observer {
       if (n <= 0) return;
       for (int i = 0; i < n; ++i) {
         if (!infos[i].valid_data) continue;
-        const auto* m = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
         Status s;
-        s.run_id = m->run_id;
-        s.mode = m->mode;
-        s.message = m->message;
-        s.state = m->state;
-        s.health = m->health;
-        s.step = m->step;
-        s.sim_time = m->sim_time;
-        s.rate = m->rate;
-        for (uint32_t k = 0; k < m->failsafe_bodies._length; ++k) {
-          s.failsafe_bodies.push_back(m->failsafe_bodies._buffer[k]);
-        }
-        s.failsafe_count = m->failsafe_count;
-        s.received = m->commands_received;
-        s.rejected = m->commands_rejected;
-        s.clamped = m->commands_clamped;
-        s.lockstep_timeouts = m->lockstep_timeouts;
+        static_cast<wire::SimStatus&>(s) =
+            wire::DecodeStatus(*static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]));
         s.when = Clock::now();
-        statuses_.push_back(s);
+        statuses_.push_back(std::move(s));
       }
       dds_return_loan(status_reader_, samples, n);
       if (n < 64) return;
     }
   }
 
-  std::string prefix_;
+  wire::TopicNames names_;
   dds_entity_t participant_ = 0, status_reader_ = 0, control_writer_ = 0;
   std::map<std::string, dds_entity_t> command_writers_;
   dds_entity_t winch_writer_ = 0;

@@ -1,4 +1,4 @@
-// towsim_export (issue 6): a run recorded by `sim_node --record` and exported with
+// towsim_export: a run recorded by `sim_node --record` and exported with
 // `towsim_export --csv` gives the node's own `--csv` files of the same run, byte for byte
 // (same rows, every number equal to its 9 printed digits), with the publish rates of the scene
 // set to the CSV output rate. The only rows that cannot come back are the support reactions

@@ -1,4 +1,4 @@
-# towsim_export round trips (issue 6): sim_node --record + --csv, then towsim_export --csv;
+# towsim_export round trips: sim_node --record + --csv, then towsim_export --csv;
 # real processes over loopback DDS, domains 91, 92, 134 and 188. Included from tests/unit/mcap_tests.cmake.
 set(_export_dir ${PROJECT_SOURCE_DIR}/tests/integration)
 add_executable(export_roundtrip_test ${_export_dir}/export_roundtrip_test.cc)

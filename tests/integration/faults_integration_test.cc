@@ -615,10 +615,10 @@ TEST_F(FaultsTest, CommandsOnAnUnknownBodysTopicAreCountedAsRejected) {
   Status counted;
   for (uint64_t i = 1; i <= 4; ++i) {
     watch.Command(i <= 3 ? "ghost" : "towfish", 0, 100.0, 0.0, 0.0);
-    ASSERT_TRUE(watch.WaitFor([i](const Status& s) { return s.rejected == i; }, &counted))
+    ASSERT_TRUE(watch.WaitFor([i](const Status& s) { return s.commands_rejected == i; }, &counted))
         << node.err();
   }
-  EXPECT_EQ(counted.received, 4u);
+  EXPECT_EQ(counted.commands_received, 4u);
   EXPECT_TRUE(Contains(counted.message, "command rejected (no body ")) << counted.message;
   node.Signal(SIGINT);
   ASSERT_TRUE(node.Wait(kProcessTimeout));

@@ -1,4 +1,4 @@
-// Recording and replay as processes over loopback DDS (issue 6): sim_node --record,
+// Recording and replay as processes over loopback DDS: sim_node --record,
 // towsim_record beside a node, record -> replay -> record again, and the faults (a killed and
 // an interrupted recorder, damaged files given to towsim_replay). Files are read back with
 // io::McapReader; the DDS side is checked with raw takes (the bytes a subscriber received).
@@ -39,7 +39,7 @@ const std::string kUri = TOWSIM_DDS_URI;
 constexpr double kProcessTimeout = 60.0;  // [s] a process that takes longer has hung
 // a killed recorder loses at most the open chunk: McapRecording flushes every 0.5 s of wall
 // time at the next message, and messages arrive every step (50 ms here)
-constexpr double kKillLoss = 1.0;  // [s], issue 6: "at most the last second"
+constexpr double kKillLoss = 1.0;  // [s]: a killed recorder loses at most its last second
 
 std::string Temp(const std::string& what) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -19,11 +19,11 @@
 #include <gtest/gtest.h>
 
 #include "dds/dds.h"
-#include "dds/security.h"
 #include "nav_msgs.h"
-#include "testing/process.h"
 #include "temp_dir.h"
+#include "testing/process.h"
 #include "towsim_msgs.h"
+#include "wire/security.h"
 
 namespace towsim::testing {
 namespace {
@@ -151,7 +151,7 @@ std::string WithoutWallTime(const std::string& csv) {
 // a participant of this process (plain when `identity` is empty) that tries to take part
 struct Intruder {
   Intruder(int domain, const std::string& identity)
-      : participant(dds::CreateSecureParticipant(static_cast<uint32_t>(domain), identity)) {}
+      : participant(wire::CreateSecureParticipant(static_cast<uint32_t>(domain), identity)) {}
   ~Intruder() { dds_delete(participant); }
 
   dds_entity_t Topic(const dds_topic_descriptor_t* type, const std::string& name) {

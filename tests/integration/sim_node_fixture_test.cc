@@ -22,7 +22,7 @@
 namespace towsim::testing {
 namespace {
 
-std::string G9(double x) {  // the CSV's number format (DESIGN §5)
+std::string G9(double x) {  // the CSV's number format (docs/contract.md §5)
   char s[40];
   std::snprintf(s, sizeof s, "%.9g", x);
   return s;

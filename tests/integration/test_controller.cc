@@ -1,5 +1,6 @@
-// test_controller: a lockstep controller for the integration tests. It uses msgs/ only (the
-// generated C types and the Cyclone C API), as any external controller would.
+// test_controller: a lockstep controller for the integration tests. It uses msgs/ (the
+// generated C types and the Cyclone C API) and the wire library (wire/: topic names, QoS,
+// Security, decoders), as an external controller that links towsim::wire would.
 //
 //   test_controller --domain N [--namespace /towsim] [--until-step K] [--log FILE]
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
@@ -21,7 +22,7 @@
 // raw mode number M, and V may be nan or inf, for the tests of rejected commands), until the
 // simulation time --winch-until (then the winch is no longer answered). Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
-// DIR/NAME (dds/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout, the
+// DIR/NAME (wire/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout, the
 // mean and the median wall time between consecutive answers:
 //   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step (median 301.2 us)
 
@@ -36,15 +37,18 @@
 #include <string>
 #include <vector>
 
-#include "common/dds_qos.h"
 #include "dds/dds.h"
-#include "dds/security.h"
 #include "nav_msgs.h"
 #include "towsim_msgs.h"
+#include "wire/decoders.h"
+#include "wire/qos.h"
+#include "wire/security.h"
+#include "wire/topic_names.h"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
+namespace wire = towsim::wire;
 
 struct ScheduledCommand {
   std::string body;
@@ -84,7 +88,14 @@ dds_entity_t Check(dds_entity_t e, const std::string& what) {
   return e;
 }
 
-std::string Prefix(const std::string& ns) { return ns == "/" ? "rt/" : "rt" + ns + "/"; }
+// the topic `topic` of `owner` (wire/topic_names.h)
+dds_entity_t CreateTopic(dds_entity_t participant, const wire::TopicNames& names, wire::Topic topic,
+                         const std::string& owner = "") {
+  const std::string name = names.Name(topic, owner);
+  return Check(
+      dds_create_topic(participant, wire::SpecOf(topic).type, name.c_str(), nullptr, nullptr),
+      name + " topic");
+}
 
 double Seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
@@ -163,7 +174,7 @@ struct Body {
   std::string name;
   dds_entity_t odom_reader = 0;
   dds_entity_t odom_waitset = 0;  // --log: the odometry of the step, when not there yet
-  std::map<std::pair<int32_t, uint32_t>, nav_msgs_msg_dds__Odometry_> odoms;  // by stamp
+  std::map<std::pair<int32_t, uint32_t>, wire::Odometry> odoms;  // by stamp
 };
 
 }  // namespace
@@ -172,31 +183,24 @@ int main(int argc, char** argv) {
   const Args args = Parse(argc, argv);
   const char* uri = std::getenv("CYCLONEDDS_URI");
   if (uri == nullptr || *uri == '\0') Fail("CYCLONEDDS_URI is not set (use config/cyclonedds.xml)");
-  const std::string prefix = Prefix(args.ns);
+  const wire::TopicNames names(args.ns);
 
   dds_entity_t participant = 0;
   try {
-    participant = towsim::dds::CreateSecureParticipant(args.domain, args.security);
+    participant = wire::CreateSecureParticipant(args.domain, args.security);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "test_controller: error: %s\n", e.what());
     return 2;
   }
-  using towsim::controllers::ReliableQos;
-  dds_qos_t* state_qos = ReliableQos(256, false);
-  dds_qos_t* command_qos = ReliableQos(towsim::controllers::kCommandDepth, false);
-  dds_qos_t* scene_qos = ReliableQos(1, true);
+  dds_qos_t* state_qos = wire::ProfileQos(wire::QosProfile::kState, 256);
+  dds_qos_t* command_qos = wire::ProfileQos(wire::QosProfile::kCommand);
+  dds_qos_t* scene_qos = wire::ProfileQos(wire::QosProfile::kLatched);
 
   // what the node simulates
-  const dds_entity_t scene_topic =
-      Check(dds_create_topic(participant, &towsim_msgs_msg_dds__SceneInfo__desc,
-                             (prefix + "scene_info").c_str(), nullptr, nullptr),
-            "scene_info topic");
+  const dds_entity_t scene_topic = CreateTopic(participant, names, wire::Topic::kSceneInfo);
   const dds_entity_t scene_reader =
       Check(dds_create_reader(participant, scene_topic, scene_qos, nullptr), "scene_info reader");
-  const dds_entity_t status_topic =
-      Check(dds_create_topic(participant, &towsim_msgs_msg_dds__SimStatus__desc,
-                             (prefix + "status").c_str(), nullptr, nullptr),
-            "status topic");
+  const dds_entity_t status_topic = CreateTopic(participant, names, wire::Topic::kStatus);
   const dds_entity_t status_reader =
       Check(dds_create_reader(participant, status_topic, state_qos, nullptr), "status reader");
 
@@ -209,18 +213,18 @@ int main(int argc, char** argv) {
     dds_sample_info_t info;
     const dds_return_t n = dds_take(scene_reader, samples, &info, 1, 1);
     if (n > 0 && info.valid_data) {
-      const auto* s = static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]);
-      for (uint32_t i = 0; i < s->bodies._length; ++i) {
+      const wire::SceneInfo s =
+          wire::DecodeSceneInfo(*static_cast<const towsim_msgs_msg_dds__SceneInfo_*>(samples[0]));
+      for (const std::string& name : s.bodies) {
         Body b;
-        b.name = s->bodies._buffer[i];
+        b.name = name;
         // --body: the odometry of those bodies only
         if (args.only.empty() ||
             std::find(args.only.begin(), args.only.end(), b.name) != args.only.end()) {
           bodies.push_back(b);
         }
       }
-      for (uint32_t i = 0; i < s->commanded_bodies._length; ++i) {
-        const std::string name = s->commanded_bodies._buffer[i];
+      for (const std::string& name : s.commanded_bodies) {
         if (args.only.empty() ||
             std::find(args.only.begin(), args.only.end(), name) != args.only.end()) {
           commanded.push_back(name);
@@ -231,7 +235,7 @@ int main(int argc, char** argv) {
           Fail("--body " + name + ": not a commanded body of the node's scene");
         }
       }
-      has_winch = s->has_winch;
+      has_winch = s.has_winch;
     }
     if (n > 0) dds_return_loan(scene_reader, samples, n);
     if (bodies.empty()) {
@@ -242,10 +246,7 @@ int main(int argc, char** argv) {
 
   // odometry of every body, a command writer per commanded body
   for (Body& b : bodies) {
-    const dds_entity_t t =
-        Check(dds_create_topic(participant, &nav_msgs_msg_dds__Odometry__desc,
-                               (prefix + b.name + "/odom").c_str(), nullptr, nullptr),
-              "odom topic");
+    const dds_entity_t t = CreateTopic(participant, names, wire::Topic::kOdom, b.name);
     b.odom_reader = Check(dds_create_reader(participant, t, state_qos, nullptr), "odom reader");
     if (!args.log.empty()) {  // only --log waits for the odometry (a condition costs per sample)
       b.odom_waitset = Check(dds_create_waitset(participant), "waitset");
@@ -257,19 +258,13 @@ int main(int argc, char** argv) {
   }
   std::vector<dds_entity_t> writers;
   for (const std::string& name : commanded) {
-    const dds_entity_t t =
-        Check(dds_create_topic(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc,
-                               (prefix + name + "/command").c_str(), nullptr, nullptr),
-              "command topic");
+    const dds_entity_t t = CreateTopic(participant, names, wire::Topic::kCommand, name);
     writers.push_back(
         Check(dds_create_writer(participant, t, command_qos, nullptr), "command writer"));
   }
   dds_entity_t winch_writer = 0;
   if (has_winch) {
-    const dds_entity_t t =
-        Check(dds_create_topic(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
-                               (prefix + "winch/command").c_str(), nullptr, nullptr),
-              "winch command topic");
+    const dds_entity_t t = CreateTopic(participant, names, wire::Topic::kWinchCommand);
     winch_writer = Check(dds_create_writer(participant, t, command_qos, nullptr), "winch writer");
   }
   // the node must hear the first command: wait until every writer and reader matched
@@ -323,17 +318,16 @@ int main(int argc, char** argv) {
     const dds_return_t n = dds_take(status_reader, samples, infos, 16, 16);
     for (int i = 0; i < n && exit_code < 0; ++i) {
       if (!infos[i].valid_data) continue;
-      const auto* s = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
-      const bool terminal = s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED ||
-                            s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED ||
-                            s->state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
-      const bool fresh = run_id != s->run_id || answered != s->step;
+      const auto* raw = static_cast<const towsim_msgs_msg_dds__SimStatus_*>(samples[i]);
+      const wire::SimStatus s = wire::DecodeStatus(*raw);
+      const bool terminal = s.terminal();
+      const bool fresh = run_id != s.run_id || answered != s.step;
       if (!fresh) {
         if (terminal) exit_code = 0;  // the last status of a step already answered
         continue;
       }
-      run_id = s->run_id;
-      answered = s->step;
+      run_id = s.run_id;
+      answered = s.step;
       const Clock::time_point previous = last_progress;
       last_progress = Clock::now();
       if (answers++ == 0) first_answer = last_progress;
@@ -343,7 +337,7 @@ int main(int argc, char** argv) {
       if (log != nullptr) {
         for (Body& b : bodies) {
           const Clock::time_point wait_begin = Clock::now();
-          const std::pair<int32_t, uint32_t> key{s->header.stamp.sec, s->header.stamp.nanosec};
+          const std::pair<int32_t, uint32_t> key{raw->header.stamp.sec, raw->header.stamp.nanosec};
           for (;;) {
             void* os[32] = {};
             dds_sample_info_t oi[32];
@@ -351,40 +345,32 @@ int main(int argc, char** argv) {
             for (int j = 0; j < k; ++j) {
               if (!oi[j].valid_data) continue;
               const auto* o = static_cast<const nav_msgs_msg_dds__Odometry_*>(os[j]);
-              nav_msgs_msg_dds__Odometry_ copy = *o;
-              copy.header.frame_id = nullptr;
-              copy.child_frame_id = nullptr;
-              b.odoms[{o->header.stamp.sec, o->header.stamp.nanosec}] = copy;
+              b.odoms[{o->header.stamp.sec, o->header.stamp.nanosec}] = wire::DecodeOdometry(*o);
             }
             if (k > 0) dds_return_loan(b.odom_reader, os, k);
             if (b.odoms.count(key) > 0) break;
             if (Seconds(Clock::now() - wait_begin) > 2.0) {
-              Fail("no odometry of " + b.name + " for step " + std::to_string(s->step));
+              Fail("no odometry of " + b.name + " for step " + std::to_string(s.step));
             }
             dds_waitset_wait(b.odom_waitset, nullptr, 0, DDS_MSECS(100));  // no polling
           }
-          const nav_msgs_msg_dds__Odometry_& o = b.odoms[key];
+          const wire::Odometry& o = b.odoms[key];
           std::fprintf(log,
                        "%llu %s %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g "
                        "%.17g %.17g %.17g\n",
-                       static_cast<unsigned long long>(s->step), b.name.c_str(),
-                       o.pose.pose.position.x, o.pose.pose.position.y, o.pose.pose.position.z,
-                       o.pose.pose.orientation.x, o.pose.pose.orientation.y,
-                       o.pose.pose.orientation.z, o.pose.pose.orientation.w, o.twist.twist.linear.x,
-                       o.twist.twist.linear.y, o.twist.twist.linear.z, o.twist.twist.angular.x,
-                       o.twist.twist.angular.y, o.twist.twist.angular.z);
+                       static_cast<unsigned long long>(s.step), b.name.c_str(), o.x, o.y, o.z, o.qx,
+                       o.qy, o.qz, o.qw, o.u, o.v, o.w, o.p, o.q, o.r);
           // older stamps are done with
           b.odoms.erase(b.odoms.begin(), b.odoms.find(key));
         }
       }
-      if (terminal ||
-          (args.until_step >= 0 && static_cast<long long>(s->step) >= args.until_step)) {
+      if (terminal || (args.until_step >= 0 && static_cast<long long>(s.step) >= args.until_step)) {
         exit_code = 0;
         break;
       }
       // the script's rule: entries whose time has come fire, in order
       for (ScheduledCommand& c : schedule) {
-        if (c.fired || s->sim_time < c.at - 1e-9) continue;
+        if (c.fired || s.t < c.at - 1e-9) continue;
         c.fired = true;
         if (held.count(c.body) == 0) Fail("--command for " + c.body + ": not a commanded body");
         held[c.body].thrust = c.thrust;
@@ -393,23 +379,23 @@ int main(int argc, char** argv) {
       }
       for (size_t w = 0; w < writers.size(); ++w) {
         towsim_msgs_msg_dds__ActuatorCommand_ cmd = held[commanded[w]];
-        cmd.header.stamp = s->header.stamp;
+        cmd.header.stamp = raw->header.stamp;
         cmd.header.frame_id = const_cast<char*>(commanded[w].c_str());
-        cmd.step = s->step;
+        cmd.step = s.step;
         const dds_return_t rc = dds_write(writers[w], &cmd);
         if (rc < 0) Fail(std::string("writing a command: ") + dds_strretcode(rc));
       }
       for (ScheduledWinch& c : winch_schedule) {
-        if (c.fired || s->sim_time < c.at - 1e-9) continue;
+        if (c.fired || s.t < c.at - 1e-9) continue;
         c.fired = true;
         winch_held.mode = c.mode;
         winch_held.value = c.value;
       }
-      if (winch_writer != 0 && s->sim_time < args.winch_until - 1e-9) {
+      if (winch_writer != 0 && s.t < args.winch_until - 1e-9) {
         towsim_msgs_msg_dds__WinchCommand_ cmd = winch_held;
-        cmd.header.stamp = s->header.stamp;
+        cmd.header.stamp = raw->header.stamp;
         cmd.header.frame_id = const_cast<char*>("");
-        cmd.step = s->step;
+        cmd.step = s.step;
         const dds_return_t rc = dds_write(winch_writer, &cmd);
         if (rc < 0) Fail(std::string("writing a winch command: ") + dds_strretcode(rc));
       } else if (winch_writer == 0 && !winch_schedule.empty()) {

@@ -86,8 +86,8 @@ std::vector<WinchRow> WinchRows(const std::string& dir) {
       ADD_FAILURE() << "winch.csv row " << JoinCsvRow(f);
       continue;
     }
-    rows.push_back({std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[3]),
-                    std::stoi(f[4])});
+    rows.push_back(
+        {std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[3]), std::stoi(f[4])});
   }
   return rows;
 }
@@ -144,10 +144,11 @@ TEST_F(WinchDdsTest, LockstepOverDdsEqualsTheOfflineScript) {
   // the script moved the drum (so that the equality says something)
   const std::vector<WinchRow> rows = WinchRows(offline);
   ASSERT_FALSE(rows.empty());
-  EXPECT_GT(std::max_element(rows.begin(), rows.end(),
-                             [](const WinchRow& x, const WinchRow& y) { return x.length < y.length; })
-                ->length,
-            69.0);
+  EXPECT_GT(
+      std::max_element(rows.begin(), rows.end(),
+                       [](const WinchRow& x, const WinchRow& y) { return x.length < y.length; })
+          ->length,
+      69.0);
 }
 
 // domain 167: sim_node --winch script in lockstep with a real controller for the towing vehicle
@@ -169,8 +170,9 @@ TEST_F(WinchDdsTest, LockstepWithTheWinchScriptedEqualsTheOfflineScript) {
                            {"--duration", std::to_string(kDuration), "--set", script, "--winch",
                             "script", "--wait-for-controllers", "--csv", dds}),
                LogPrefix("node"));
-  Process controller(Controller(167, {}, {"--command", "tow_vehicle@0=1050,0,0", "--winch-until",
-                                          std::to_string(kWinchUntil)}),
+  Process controller(Controller(167, {},
+                                {"--command", "tow_vehicle@0=1050,0,0", "--winch-until",
+                                 std::to_string(kWinchUntil)}),
                      LogPrefix("controller"));
   Process reference({TOWSIM_SIM_NODE, "--scene", scene, "--mode", "offline", "--duration",
                      std::to_string(kDuration), "--set", script, "--csv", offline},
@@ -266,18 +268,18 @@ TEST_F(WinchDdsTest, BadWinchCommandsAreRejectedClampedCountedAndSilenceMeansFai
   Status s;
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.step >= 1; }, &s));
   watch.WinchCommand(s.step, kSpeed, std::numeric_limits<double>::quiet_NaN());
-  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.rejected == 1; }, &s));
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.commands_rejected == 1; }, &s));
   EXPECT_NE(s.message.find("winch: command rejected (speed is NaN)"), std::string::npos)
       << s.message;
   EXPECT_EQ(s.health, 0);  // a rejected command does not arm the timeout
   watch.WinchCommand(s.step, 9, 0.5);
-  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.rejected == 2; }, &s));
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.commands_rejected == 2; }, &s));
   EXPECT_NE(s.message.find("mode 9 is neither SPEED (0) nor LENGTH (1)"), std::string::npos)
       << s.message;
   watch.WinchCommand(s.step, kSpeed, 100.0);  // beyond max_speed 1 m/s
-  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.clamped == 1; }, &s));
-  const double commanded_at = s.sim_time;
-  EXPECT_EQ(s.received, 3u);
+  ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.commands_clamped == 1; }, &s));
+  const double commanded_at = s.t;
+  EXPECT_EQ(s.commands_received, 3u);
   EXPECT_NE(s.message.find("winch speed 100 clamped to the winch's limits [-1, 1]"),
             std::string::npos)
       << s.message;
@@ -285,14 +287,13 @@ TEST_F(WinchDdsTest, BadWinchCommandsAreRejectedClampedCountedAndSilenceMeansFai
   Status f;
   ASSERT_TRUE(watch.WaitFor([](const Status& x) { return x.health == kHealthFailsafe; }, &f));
   EXPECT_EQ(f.failsafe_bodies, std::vector<std::string>{"winch"});
-  EXPECT_NEAR(f.sim_time - commanded_at, 0.5, kH + 1e-9);  // within a step
+  EXPECT_NEAR(f.t - commanded_at, 0.5, kH + 1e-9);  // within a step
   EXPECT_NE(f.message.find("winch: failsafe (no command for"), std::string::npos) << f.message;
   node.Signal(SIGINT);
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
   EXPECT_TRUE(watch.WaitFor([](const Status& x) { return x.state == kStopped; }, nullptr));
-  EXPECT_NE(node.out().find("commands 3 (rejected 2, clamped 1)"), std::string::npos)
-      << node.out();
+  EXPECT_NE(node.out().find("commands 3 (rejected 2, clamped 1)"), std::string::npos) << node.out();
   EXPECT_NE(node.out().find("failsafes 1"), std::string::npos) << node.out();
 }
 
@@ -353,8 +354,7 @@ TEST_F(WinchDdsTest, TowfishDepthWinchModeReachesACommandedDepthWithinTheWinchsL
   Process tow({TOWSIM_MANEUVER_RUNNER, "--maneuver", "case1", "--thrust", "1050", "--start", "0",
                "--domain", "165"},
               LogPrefix("tow"));
-  Process depth({TOWSIM_TOWFISH_DEPTH, "--depth", "35", "--winch", "--domain", "165", "--log",
-                 log},
+  Process depth({TOWSIM_TOWFISH_DEPTH, "--depth", "35", "--winch", "--domain", "165", "--log", log},
                 LogPrefix("depth"));
   ASSERT_TRUE(depth.Wait(kProcessTimeout)) << depth.command_line();
   EXPECT_EQ(depth.exit_code(), 0) << depth.err();
@@ -374,8 +374,8 @@ TEST_F(WinchDdsTest, TowfishDepthWinchModeReachesACommandedDepthWithinTheWinchsL
   // the last 100 s: at the commanded depth, the elevators near neutral (the winch rests once
   // |deeper demand| < deadband / elevator_depth = 0.5 m / 25 m/rad = 0.02 rad; the integral of
   // the elevator loop approaches it from outside)
-  constexpr double kDepthTol = 0.3;       // [m] the deadband plus the slow residual swing
-  constexpr double kNeutralTol = 0.03;    // [rad] 1.5 x the winch's resting band
+  constexpr double kDepthTol = 0.3;     // [m] the deadband plus the slow residual swing
+  constexpr double kNeutralTol = 0.03;  // [rad] 1.5 x the winch's resting band
   for (const DepthLogLine& l : lines) {
     if (l.t < kDuration - 100.0) continue;
     EXPECT_NEAR(l.z, kTarget, kDepthTol) << "t = " << l.t;
@@ -389,17 +389,16 @@ TEST_F(WinchDdsTest, TowfishDepthWinchModeReachesACommandedDepthWithinTheWinchsL
   for (size_t i = 0; i < rows.size(); ++i) {
     max_speed = std::max(max_speed, std::abs(rows[i].speed));
     if (i > 0) {
-      max_acceleration =
-          std::max(max_acceleration, std::abs(rows[i].speed - rows[i - 1].speed) /
-                                         (rows[i].t - rows[i - 1].t));
+      max_acceleration = std::max(max_acceleration, std::abs(rows[i].speed - rows[i - 1].speed) /
+                                                        (rows[i].t - rows[i - 1].t));
     }
     EXPECT_GE(rows[i].length, 100.0);
     EXPECT_LE(rows[i].length, 300.0);
   }
   EXPECT_LE(max_speed, 1.0 + kLimitTol);
   EXPECT_LE(max_acceleration, 0.2 * (1.0 + 1e-6));
-  EXPECT_GT(max_speed, 0.5);                 // it did pay out, at a good fraction of its limit
-  EXPECT_GT(rows.back().length, 180.0);      // 11.5 m deeper takes tens of metres more cable
+  EXPECT_GT(max_speed, 0.5);             // it did pay out, at a good fraction of its limit
+  EXPECT_GT(rows.back().length, 180.0);  // 11.5 m deeper takes tens of metres more cable
   std::printf("towfish_depth --winch: z %.3f m, elevator %.4f rad, length %.3f m at t = %g s\n",
               lines.back().z, lines.back().elevator, rows.back().length, rows.back().t);
 }
@@ -445,8 +444,7 @@ TEST_F(WinchDdsTest, PayoutManoeuvreSheetAgreesWithTheSteadySolution) {
   EXPECT_EQ(runner.exit_code(), 0) << runner.err();
   ASSERT_TRUE(node.Wait(kProcessTimeout));
   EXPECT_EQ(node.exit_code(), 0) << node.err();
-  EXPECT_NE(runner.out().find("payout 150 m -> 250 m at 1 m/s"), std::string::npos)
-      << runner.out();
+  EXPECT_NE(runner.out().find("payout 150 m -> 250 m at 1 m/s"), std::string::npos) << runner.out();
   EXPECT_NE(ReadFile(plot).find("<polyline"), std::string::npos);
 
   const std::map<std::string, double> sheet = ReadSheet(results);
@@ -472,9 +470,10 @@ TEST_F(WinchDdsTest, PayoutManoeuvreSheetAgreesWithTheSteadySolution) {
     const double below = sheet.at(p + "_depth") - (sheet.at(p + "_tow_depth") + 0.2);
     const double steady = SteadyDepth(sheet.at(p + "_length"), sheet.at(p + "_speed"));
     EXPECT_NEAR(below, steady, kSteadyRelTol * steady) << phase;
-    std::printf("payout sheet, end of %s: length %.3f m, depth below the drum %.3f m, steady %.3f "
-                "m (%.2f %%)\n",
-                phase, sheet.at(p + "_length"), below, steady, 100.0 * (below / steady - 1.0));
+    std::printf(
+        "payout sheet, end of %s: length %.3f m, depth below the drum %.3f m, steady %.3f "
+        "m (%.2f %%)\n",
+        phase, sheet.at(p + "_length"), below, steady, 100.0 * (below / steady - 1.0));
   }
 }
 

@@ -62,7 +62,8 @@ deb)
            usr/bin/towfish_depth usr/share/towsim/cyclonedds.xml \
            usr/share/towsim/scenes/case1_forward.yaml usr/share/towsim/idl/towsim_msgs.idl \
            usr/share/towsim/ros2/towsim_msgs/package.xml usr/include/towsim/msgs/towsim_msgs.h \
-           usr/include/towsim/common/client.h usr/include/towsim/testing/sim_node_test.h \
+           usr/include/towsim/common/client.h usr/include/towsim/wire/topic_names.h \
+           usr/include/towsim/testing/sim_node_test.h \
            usr/lib/cmake/towsim/towsimConfig.cmake; do
     [[ -e "$work/root/$f" ]] || fail "the package has no /$f"
   done

@@ -40,7 +40,7 @@ core::Model Cantilever(int elements, double alpha) {
   c.start.position = Vec3::Zero();
   c.start.clamped = true;
   c.start.slope = Vec3::UnitX();
-  c.end.kind = core::EndKind::kBody;
+  c.end.kind = core::EndKind::kSphere;
   c.end.body = 0;
   c.end.at_B = Vec3::Zero();
   core::SphereBody tip;
@@ -49,7 +49,7 @@ core::Model Cantilever(int elements, double alpha) {
   tip.mass = alpha * ei / (kLength * kLength) / m.environment.gravity;  // P = m g
   tip.volume = 0.0;
   tip.position = Vec3(kLength, 0.0, 0.0);
-  m.bodies.push_back(tip);
+  m.spheres.push_back(tip);
   return m;
 }
 

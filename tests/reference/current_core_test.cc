@@ -51,8 +51,8 @@ TEST(CurrentCore, HeldInACurrentIsTowedThroughStillWater) {
       const Vec3 ra = a.node_position(i) - top_a,
                  rb = b.node_position(i) - held.cable.start.position;
       worst_shape = std::max(worst_shape, (ra - rb).norm());
-      worst_tension = std::max(worst_tension, std::abs(a.node_tension(i) - b.node_tension(i)));
-      scale_tension = std::max(scale_tension, a.node_tension(i));
+      worst_tension = std::max(worst_tension, std::abs(a.NodeTension(i) - b.NodeTension(i)));
+      scale_tension = std::max(scale_tension, a.NodeTension(i));
     }
   }
   std::printf("Galilean check over 60 s: shape %.2e m, tension %.2e N (of %.1f N)\n", worst_shape,

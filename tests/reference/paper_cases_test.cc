@@ -17,14 +17,13 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/script.h"
 #include "core/simulation.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::core {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string Scene(const char* name) {
   return std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/" + name;
@@ -67,8 +66,8 @@ CaseRun Simulate(const char* scene, double duration, const std::vector<std::stri
       s.speed_veh = sim.body_velocity(veh).head<2>().norm();
       s.speed_fish = sim.body_velocity(fish).head<2>().norm();
       Vec3 m;
-      sim.body_cable_wrench(veh, &s.f_veh, &m);
-      sim.body_cable_wrench(fish, &s.f_fish, &m);
+      sim.BodyCableWrench(veh, &s.f_veh, &m);
+      sim.BodyCableWrench(fish, &s.f_fish, &m);
       const Vec3 a = sim.node_position(0), b = sim.node_position(sim.num_nodes() - 1);
       const Vec3 chord = (b - a).normalized();
       double d = 0.0;

@@ -40,15 +40,15 @@ void CheckSteadyTow(const std::vector<std::string>& overrides, double speed, dou
   // the scene is what this test was written for
   const core::CableParams& c = model.cable;
   ASSERT_EQ(c.start.kind, core::EndKind::kDriven);
-  ASSERT_EQ(c.end.kind, core::EndKind::kBody);
-  ASSERT_EQ(model.bodies.size(), 1u);
+  ASSERT_EQ(c.end.kind, core::EndKind::kSphere);
+  ASSERT_EQ(model.spheres.size(), 1u);
   ASSERT_EQ(c.elements, 20);
   ASSERT_DOUBLE_EQ(model.time.step, 0.05);
   ASSERT_DOUBLE_EQ(c.length, 200.0);
   ASSERT_TRUE(c.loads.gravity && c.loads.buoyancy && c.loads.drag && c.loads.added_mass &&
               c.loads.bending);
   ASSERT_TRUE(c.start.velocity.isApprox(Vec3(speed, 0.0, 0.0)));
-  ASSERT_TRUE(model.bodies[0].velocity.isApprox(Vec3(speed, 0.0, 0.0)));
+  ASSERT_TRUE(model.spheres[0].velocity.isApprox(Vec3(speed, 0.0, 0.0)));
   ASSERT_TRUE(model.environment.current.IsZero());
 
   const TowedCableSolution ref = SolveTowedCableSteady(SteadyTowProblem(model));

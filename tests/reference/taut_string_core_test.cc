@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 #include "core/simulation.h"
 #include "core/state.h"
@@ -24,7 +25,7 @@ namespace {
 
 using core::Vec3;
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 constexpr double kLength = 10.0;  // unstretched L [m]
 constexpr double kSpan = 10.1;    // ell [m]
 constexpr double kDiameter = 0.01;

@@ -24,7 +24,7 @@ inline TowedCableProblem SteadyTowProblem(const core::Model& m) {
   p.youngs_modulus = c.axial_stiffness / c.area();
   if (c.drag.kind == core::CableDragLaw::kConstant)
     p.drag_coefficients = ConstantDragCoefficients{c.drag.normal, c.drag.tangential};
-  const core::SphereBody& b = m.bodies.at(0);
+  const core::SphereBody& b = m.spheres.at(0);
   p.sphere_mass = b.mass;
   p.sphere_volume = b.volume;
   p.sphere_cd = b.drag_coefficient;

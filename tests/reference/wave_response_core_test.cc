@@ -22,6 +22,7 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/environment_field.h"
 #include "core/model.h"
 #include "core/simulation.h"
@@ -30,8 +31,6 @@
 
 namespace towsim::core {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Harmonic {
   double mean;       // c0 + c1 t at the record's middle
@@ -78,7 +77,7 @@ TEST(WaveResponseCore, NeutralSphereMovesOnTheLinearOrbit) {
   s.drag_coefficient = 0.5;
   s.added_mass_coefficient = 0.5;
   s.position = Vec3(0.0, 0.0, kDepth);
-  m.bodies.push_back(s);
+  m.spheres.push_back(s);
   Simulation sim(m);
   const double omega = 2.0 * kPi / kPeriod;
   const double k = omega * omega / env.gravity;
@@ -160,7 +159,7 @@ TEST(WaveResponseCore, WavesHeldOverAStepAgreeWithWavesResampledEveryIteration) 
     ASSERT_TRUE(b.Step().ok());
     dz_fish = std::max(dz_fish, std::abs(a.body_position(1).z() - b.body_position(1).z()));
     dz_tow = std::max(dz_tow, std::abs(a.body_position(0).z() - b.body_position(0).z()));
-    dt_rel = std::max(dt_rel, std::abs(a.node_tension(0) / b.node_tension(0) - 1.0));
+    dt_rel = std::max(dt_rel, std::abs(a.NodeTension(0) / b.NodeTension(0) - 1.0));
     heave_fish = std::max(heave_fish, std::abs(a.body_position(1).z() - z_fish0));
     heave_tow = std::max(heave_tow, std::abs(a.body_position(0).z() - z_tow0));
   }
@@ -190,20 +189,20 @@ TEST(WaveResponseCore, SensorsReadTheSeaAtTheBody) {
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const Vec3 p = sim.body_position(b);
     const double eta = m.environment.waves.Elevation(p.x(), p.y(), sim.time());
-    EXPECT_NEAR(sim.surface_elevation_at(b), eta, kSameFieldTol) << sim.body_name(b);
-    EXPECT_NEAR(sim.body_depth(b), p.z() + eta, kSameFieldTol) << sim.body_name(b);
-    EXPECT_NEAR(sim.body_altitude(b), m.environment.seabed.Depth(p.x(), p.y()) - p.z(),
+    EXPECT_NEAR(sim.SurfaceElevationAt(b), eta, kSameFieldTol) << sim.body_name(b);
+    EXPECT_NEAR(sim.BodyDepth(b), p.z() + eta, kSameFieldTol) << sim.body_name(b);
+    EXPECT_NEAR(sim.BodyAltitude(b), m.environment.seabed.Depth(p.x(), p.y()) - p.z(),
                 kSameFieldTol)
         << sim.body_name(b);
     const Vec3 u = m.environment.waves.Kinematics(p, sim.time()).velocity +
                    m.environment.current.Velocity(p.z(), sim.time());
-    EXPECT_LT((sim.water_velocity_at(b) - u).norm(), kSameFieldTol) << sim.body_name(b);
+    EXPECT_LT((sim.WaterVelocityAt(b) - u).norm(), kSameFieldTol) << sim.body_name(b);
   }
-  EXPECT_NE(sim.surface_elevation_at(0), 0.0);  // the sea is up
+  EXPECT_NE(sim.SurfaceElevationAt(0), 0.0);  // the sea is up
   // bottomless: no altitude
   const Model deep =
       scene::LoadScene(std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml");
-  EXPECT_TRUE(std::isnan(Simulation(deep).body_altitude(1)));
+  EXPECT_TRUE(std::isnan(Simulation(deep).BodyAltitude(1)));
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 
 #include "core/ancf_element.h"
 #include "core/cable_loads.h"
+#include "core/constants.h"
 #include "core/model.h"
 #include "core/script.h"
 #include "core/simulation.h"
@@ -47,14 +48,14 @@ core::Model HangingWeight() {
   m.cable.elements = 10;
   m.cable.initial = core::InitialShape::kStatic;
   m.cable.start.kind = core::EndKind::kFixed;
-  m.cable.end.kind = core::EndKind::kBody;
+  m.cable.end.kind = core::EndKind::kSphere;
   m.cable.end.body = 0;
   core::SphereBody b;
   b.name = "weight";
   b.mass = 416;
   b.volume = 0.2;
   b.position = Vec3(0, 0, 100);
-  m.bodies.push_back(b);
+  m.spheres.push_back(b);
   // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
   core::WinchParams w{50, 150, 0.1, 0.0025};
   m.cable.winch = w;
@@ -66,7 +67,7 @@ core::Model HangingWeight() {
 double CableMass(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   double mass = 0.0;
-  for (int e = 0; e < sys.num_elements(); ++e) {
+  for (int e = 0; e < sys.NumElements(); ++e) {
     const core::AncfElement element =
         e == 0 ? sys.DrumElement(sys.drum_length()) : sys.DrumElement(sys.element_length());
     const core::Mat12& m = element.mass();
@@ -82,7 +83,7 @@ TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
   const double g = m.environment.gravity, rho = m.environment.water_density;
   // submerged weights: the cable per unstretched metre, the sphere
   const double w_cable = (c.mass_per_length - rho * c.area()) * g;
-  const double w_body = (m.bodies[0].mass - rho * m.bodies[0].volume) * g;
+  const double w_body = (m.spheres[0].mass - rho * m.spheres[0].volume) * g;
   // issue requirement; the slow drum's drag (0.1 m/s: under 3 N) and inertia (0.0025 m/s^2 on
   // about 700 kg: 1.8 N) are each under 0.1 % of the 2400 N, and so is the bounce of the weight on
   // the elastic cable (period 1.6 s) that the start and stop of the drum excite
@@ -100,7 +101,7 @@ TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
     most_nodes = std::max(most_nodes, sim.num_nodes());
     fewest_nodes = std::min(fewest_nodes, sim.num_nodes());
     const double expected = w_cable * sim.cable_length() + w_body;
-    const double err = std::abs(sim.drum_tension() / expected - 1.0);
+    const double err = std::abs(sim.DrumTension() / expected - 1.0);
     if (err > worst) {
       worst = err;
       worst_at = sim.time();
@@ -149,7 +150,7 @@ TEST(WinchCore, SteadyTowAfterPayoutMatchesTheSteadySolutionAtTheNewLength) {
   core::Model started = model;
   started.cable.length = 250.0;
   started.cable.elements = 25;
-  started.bodies[0].position.z() = 253.5;
+  started.spheres[0].position.z() = 253.5;
   started.script.clear();
   // payout from 20 s to about 125 s, then settled: the payout leaves the sphere deeper
   // (+29 % at the end of the payout), and its depth relaxes with a time constant of about
@@ -201,7 +202,7 @@ TEST(WinchCore, DrumTensionSmoothAcrossSplitsAndMerges) {
   core::ScriptRunner script(model);
   script.Apply(&sim);
   const int steps = static_cast<int>(std::lround(330.0 / model.time.step));
-  double previous = sim.drum_tension(), steady_since = 0.0;
+  double previous = sim.DrumTension(), steady_since = 0.0;
   // the largest step-to-step change within 3 steps of a split or merge, and elsewhere
   double worst_jump = 0.0, worst_at = 0.0, worst_other = 0.0;
   int splits = 0, merges = 0, nodes = sim.num_nodes(), since_event = 1000;
@@ -212,7 +213,7 @@ TEST(WinchCore, DrumTensionSmoothAcrossSplitsAndMerges) {
     merges += sim.num_nodes() < nodes;
     since_event = sim.num_nodes() != nodes ? 0 : since_event + 1;
     nodes = sim.num_nodes();
-    const double t = sim.drum_tension();
+    const double t = sim.DrumTension();
     // only while the drum has run at constant speed for kSettle (its accelerations change the
     // tension by design: 0.2 m/s^2 on some 700 kg is 5 % of it), jumps relative to the tension
     // itself (the quasi-static tension, within 2 %)
@@ -270,7 +271,7 @@ double DrumPower(const core::Simulation& sim) {
 double DrumFluxPower(const core::Simulation& sim) {
   const core::CableParams& c = sim.model().cable;
   const double ea = c.axial_stiffness, rate = sim.winch_speed();
-  const double t = sim.drum_tension(), eps = t / ea;
+  const double t = sim.DrumTension(), eps = t / ea;
   const double v = rate * (1.0 + eps);
   return rate * (-t * (1.0 + eps) + 0.5 * ea * eps * eps + 0.5 * c.mass_per_length * v * v);
 }
@@ -292,13 +293,13 @@ EnergyBalance RunEnergyBalance(core::Scheme scheme, bool sphere_drag) {
   core::Model m = HangingWeight();
   m.cable.loads.drag = false;
   m.cable.loads.added_mass = false;
-  if (!sphere_drag) m.bodies[0].drag_coefficient = 0.0;
+  if (!sphere_drag) m.spheres[0].drag_coefficient = 0.0;
   m.integrator.scheme = scheme;
   // the sphere's drag power -k |v|^3 (Morison, still water), k = rho C_D pi r^2 / 2
-  const core::SphereBody& body = m.bodies[0];
-  const double radius = std::cbrt(3.0 * body.volume / (4.0 * M_PI));
+  const core::SphereBody& body = m.spheres[0];
+  const double radius = std::cbrt(3.0 * body.volume / (4.0 * core::kPi));
   const double k =
-      0.5 * m.environment.water_density * body.drag_coefficient * M_PI * radius * radius;
+      0.5 * m.environment.water_density * body.drag_coefficient * core::kPi * radius * radius;
   core::Simulation sim(m);
   auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
   const double e0 = energy(), h = m.time.step;
@@ -402,9 +403,9 @@ TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
     if (i == 100) v_start = sim.winch_speed();
     if (sim.state().winch.slipping) {
       ++slipping;
-      worst = std::max(worst, std::abs(sim.drum_tension() - 2000.0));
+      worst = std::max(worst, std::abs(sim.DrumTension() - 2000.0));
     } else {
-      worst_grip = std::max(worst_grip, sim.drum_tension() - 2000.0);
+      worst_grip = std::max(worst_grip, sim.DrumTension() - 2000.0);
     }
   }
   std::printf(

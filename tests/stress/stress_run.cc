@@ -26,7 +26,7 @@ double InputPower(const core::Simulation& sim) {
   // propeller: thrust T along body x through O, power T u (u: surge over ground, no current)
   for (int v = 0; v < sim.num_vehicles(); ++v) {
     const core::VehicleState& vs = sim.vehicle_state(v);
-    p += vs.thrust * vs.nu(0);
+    p += vs.actuator[core::kThrust] * vs.nu(0);
   }
   // driven support: it exerts -lambda on the cable and moves with v_support
   const core::CableParams& c = sim.model().cable;
@@ -48,7 +48,7 @@ bool StateFinite(const core::Simulation& sim) {
                 s.lambda.allFinite();
   for (const core::VehicleState& vs : s.vehicles)
     finite = finite && vs.p_W.allFinite() && vs.q_WB.coeffs().allFinite() && vs.nu.allFinite() &&
-             std::isfinite(vs.thrust);
+             std::isfinite(vs.actuator[core::kThrust]);
   return finite;
 }
 

@@ -1,4 +1,4 @@
-// Numerical stability under stress (issue 7): the shipped scenes pushed beyond their defaults
+// Numerical stability under stress: the shipped scenes pushed beyond their defaults
 // through the public core API. Every run must converge at every step, keep a finite state and
 // keep its mechanical energy within the work put in (stress_run.h); where an independent
 // reference exists the numbers are held to it. Deterministic: fixed scenes, a seeded
@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "core/actuator.h"
+#include "core/constants.h"
 #include "core/simulation.h"
 #include "stress_run.h"
 #include "towed_cable_steady_core.h"
@@ -28,7 +29,7 @@ namespace {
 using core::Simulation;
 using core::Vec3;
 using core::Vec6;
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+constexpr double kDegToRad = core::kPi / 180.0;
 
 // --- energy bound ---------------------------------------------------------------------------
 // E(t) - E(0) <= W_in(t) + slack, slack = kEnergySlackRel * int |P_in| dt + kEnergySlackAbs.
@@ -284,7 +285,7 @@ HardOverRun HardOver(double limit_deg, double command_deg) {
     c.rudder = command_deg * kDegToRad;
     s->SetVehicleCommand(0, c);
   });
-  run.rudder = sim.vehicle_state(0).rudder;
+  run.rudder = sim.vehicle_state(0).actuator[core::kRudder];
   run.p_vehicle = sim.body_position(0);
   run.p_fish = sim.body_position(1);
   return run;

@@ -71,5 +71,27 @@ TEST(Actuator, FinServoFromTheVehicleFile) {
   EXPECT_EQ(a.time_constant, kFinServoTimeConstant);
 }
 
+// one row per VehicleActuator: each state driven by its own command through its own law
+TEST(Actuator, VehicleActuatorRatesFollowTheTable) {
+  VehicleParams p;
+  p.has_propeller = true;
+  p.max_thrust = 1000.0;
+  p.thrust_time_constant = 2.0;
+  p.rudder = {0.5, 0.25};
+  p.elevator = {0.25, 0.125};
+  VehicleCommand cmd;
+  cmd.thrust = 400.0;
+  cmd.rudder = 1.0;      // beyond the range: clamped to 0.5
+  cmd.elevator = -0.25;  // at the limit
+  VehicleState s;
+  s.actuator[kThrust] = 200.0;
+  const std::array<double, kVehicleActuatorCount> rate = ActuatorRates(p, cmd, s);
+  EXPECT_EQ(rate[kThrust], 100.0);     // (400 - 200) / 2
+  EXPECT_EQ(rate[kRudder], 0.25);      // 0.5 / 0.05 = 10, limited to 0.25
+  EXPECT_EQ(rate[kElevator], -0.125);  // -0.25 / 0.05 = -5, limited to -0.125
+  p.has_propeller = false;             // no propeller: its state does not move
+  EXPECT_EQ(ActuatorRates(p, cmd, s)[kThrust], 0.0);
+}
+
 }  // namespace
 }  // namespace towsim::core

@@ -5,12 +5,14 @@
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
+
 namespace towsim::core {
 namespace {
 
 // paper cable: d = 0.041 m, E = 7e8 Pa, rho = 1300 kg/m^3, element of 10 m
 ElementProperties PaperElement(double c = 0.0) {
-  const double d = 0.041, pi = 3.14159265358979323846;
+  const double d = 0.041, pi = kPi;
   ElementProperties p;
   p.length = 10.0;
   p.ea = 7e8 * pi * d * d / 4;

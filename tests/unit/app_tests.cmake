@@ -18,23 +18,40 @@ foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
 
-# the Foxglove WebSocket protocol messages (app/foxglove_protocol), no sockets
+# the Foxglove WebSocket protocol messages (app/foxglove/foxglove_protocol), no sockets
 towsim_add_test(foxglove_protocol_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc
   LIBS towsim::foxglove)
 
-# the command lines of the DDS tools (app/tool_flags)
+# the tools' command lines (app/common/tool_flags, tool_command_line) and the options the DDS
+# tools share (app/common/dds_tool_options)
 towsim_add_test(tool_flags_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/tool_flags_test.cc
+  LIBS towsim::tool_main)
+towsim_add_test(tool_command_line_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/tool_command_line_test.cc
+  LIBS towsim::tool_main)
+towsim_add_test(dds_tool_options_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_tool_options_test.cc
   LIBS towsim::recording)
+foreach(t tool_flags_test tool_command_line_test dds_tool_options_test)
+  target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_LIST_DIR})  # tool_argv.h
+endforeach()
 # the installed-scene lookup of sim_node --scene
 towsim_add_test(installed_data_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc
-          ${PROJECT_SOURCE_DIR}/sim_node/app/installed_data.cc)
+          ${PROJECT_SOURCE_DIR}/sim_node/app/common/installed_data.cc)
 target_include_directories(installed_data_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node
                                                        ${CMAKE_CURRENT_LIST_DIR})
 
-# towsim_sweep (docs/sweeps.md): the combinator and the results of a case
+# towsim_sweep (docs/sweeps.md): the sweep file (parser, ranges and seeded draws), the
+# combinator and the results of a case
+towsim_add_test(sweep_file_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_file_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_values_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_values_test.cc
+  LIBS towsim_sweep_lib)
 towsim_add_test(sweep_combinator_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_combinator_test.cc
   LIBS towsim_sweep_lib)
@@ -54,8 +71,14 @@ towsim_add_test(sweep_table_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_table_test.cc
   LIBS towsim_sweep_lib)
 
-# the node's run control (app/run_control): a pure state machine, no DDS
+# the DDS node's counters and its summary line (app/node/run_counters): pure
+towsim_add_test(run_counters_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/run_counters_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/node/run_counters.cc)
+target_include_directories(run_counters_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node)
+
+# the node's run control (app/node/run_control): a pure state machine, no DDS
 towsim_add_test(run_control_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/run_control_test.cc
-          ${PROJECT_SOURCE_DIR}/sim_node/app/run_control.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/node/run_control.cc
   LIBS towsim::dds)

@@ -1,4 +1,4 @@
-# controllers (issue 5): their pure control laws (no DDS) and their configuration
+# controllers: their pure control laws (no DDS) and their configuration
 if(TARGET towsim::controller_laws)
   towsim_add_test(controller_laws_test LABEL unit
     SOURCES ${PROJECT_SOURCE_DIR}/controllers/tests/controller_laws_test.cc

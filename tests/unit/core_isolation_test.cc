@@ -1,4 +1,4 @@
-// The core depends on the standard library and Eigen only (DESIGN §1, STYLE "the engine never
+// The core depends on the standard library and Eigen only (docs/contract.md §1, STYLE "the engine never
 // sees the parser"): no DDS, no yaml-cpp, no threads or clocks, nothing from io/, scene/, app/.
 // This test reads every file under sim_node/core/ and names the file and line of each include
 // (or use of a thread / clock facility) that breaks the rule.
@@ -178,7 +178,7 @@ TEST(CoreIsolationTest, ClassifiesIncludes) {
   }
   for (const char* bad :
        {"thread", "chrono", "mutex", "future", "ctime", "dds/dds.h", "yaml-cpp/yaml.h",
-        "io/csv_writer.h", "scene/load_scene.h", "app/progress.h", "boost/optional.hpp",
+        "io/csv_writer.h", "scene/load_scene.h", "app/node/progress.h", "boost/optional.hpp",
         "core/missing.h", "msgs/CableState.h"}) {
     EXPECT_NE(CheckInclude(bad, core_files), "") << bad;
   }

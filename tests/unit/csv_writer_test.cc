@@ -1,4 +1,4 @@
-// CsvWriter writes the four files of DESIGN §5 with exactly the documented headers and one row
+// CsvWriter writes the four files of docs/contract.md §5 with exactly the documented headers and one row
 // set per Write(): a row per body, per cable node, per body and held end, and a status row; and
 // environment.csv (a row per body: the sea at the body) only for a scene with a sea.
 
@@ -74,7 +74,7 @@ core::Model TinyModel() {
   model.cable.initial = core::InitialShape::kVertical;
   model.cable.start.kind = core::EndKind::kFixed;
   model.cable.start.position = core::Vec3(0.0, 0.0, 0.0);
-  model.cable.end.kind = core::EndKind::kBody;
+  model.cable.end.kind = core::EndKind::kSphere;
   model.cable.end.body = 0;
   model.cable.end.at_B = core::Vec3::Zero();
   core::SphereBody sphere;
@@ -82,7 +82,7 @@ core::Model TinyModel() {
   sphere.mass = 50.0;
   sphere.volume = 0.01;
   sphere.position = core::Vec3(0.0, 0.0, 10.0);
-  model.bodies.push_back(sphere);
+  model.spheres.push_back(sphere);
   return model;
 }
 
@@ -136,7 +136,7 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
   for (int i = 0; i < nodes; ++i) {
     const auto& row = cable[nodes + i];
     for (int k = 0; k < 3; ++k) ExpectNear(row[2 + k], sim.node_position(i)[k], "node position");
-    ExpectNear(row[5], sim.node_tension(i), "tension");
+    ExpectNear(row[5], sim.NodeTension(i), "tension");
   }
 
   // the sphere (attached at the end) and the fixed start support
@@ -152,7 +152,7 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
     for (int c : {5, 6, 7}) EXPECT_EQ(std::stod(row[c]), 0.0) << "sphere moment column " << c;
   }
   for (int k = 0; k < 3; ++k) {
-    ExpectNear(forces[2][2 + k], sim.body_cable_force(0)[k], "force on the body");
+    ExpectNear(forces[2][2 + k], sim.BodyCableForce(0)[k], "force on the body");
     ExpectNear(forces[3][2 + k], sim.end_force(0)[k], "force on the start support");
   }
 
@@ -190,7 +190,7 @@ core::Model VehicleModel() {
   model.cable.start.at_B = core::Vec3(-1.0, 0.0, 0.2);  // astern: the cable makes a moment
   const core::Vec3 top =
       boat.position + core::QuaternionFromEulerZYX(boat.euler) * model.cable.start.at_B;
-  model.bodies[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
+  model.spheres[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
   return model;
 }
 
@@ -255,7 +255,7 @@ TEST(CsvWriterTest, VehicleRowsFollowTheSpheres) {
   EXPECT_EQ(forces[0][1], "ball");
   EXPECT_EQ(forces[1][1], "boat");
   core::Vec3 f_B, m_B;
-  sim.body_cable_wrench(b, &f_B, &m_B);
+  sim.BodyCableWrench(b, &f_B, &m_B);
   for (int k = 0; k < 3; ++k) {
     ExpectNear(forces[1][2 + k], f_B[k], "force on the vehicle");
     ExpectNear(forces[1][5 + k], m_B[k], "moment on the vehicle");
@@ -332,9 +332,9 @@ TEST(CsvWriterTest, EnvironmentRowsAreTheCoreAccessorsAtTheWrittenTimes) {
   std::vector<std::vector<double>> expected;
   auto write = [&](const core::StepStatus& status) {
     csv.Write(sim, status, 0);
-    const core::Vec3 u = sim.water_velocity_at(0);
-    expected.push_back({sim.time(), sim.surface_elevation_at(0), sim.body_altitude(0),
-                        sim.body_depth(0), u.x(), u.y(), u.z()});
+    const core::Vec3 u = sim.WaterVelocityAt(0);
+    expected.push_back({sim.time(), sim.SurfaceElevationAt(0), sim.BodyAltitude(0),
+                        sim.BodyDepth(0), u.x(), u.y(), u.z()});
   };
   write(core::StepStatus{});
   for (int k = 0; k < 10; ++k) {
@@ -458,7 +458,7 @@ TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
   std::vector<std::vector<double>> expected;
   auto write = [&](const core::StepStatus& status) {
     csv.Write(sim, status, 0);
-    expected.push_back({sim.time(), sim.cable_length(), sim.winch_speed(), sim.drum_tension(),
+    expected.push_back({sim.time(), sim.cable_length(), sim.winch_speed(), sim.DrumTension(),
                         static_cast<double>(sim.num_nodes())});
   };
   write(core::StepStatus{});

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/script.h"
 #include "core/simulation.h"
 #include "dds/frames.h"
@@ -16,7 +17,7 @@
 namespace towsim::dds {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 // rotation matrices from unit quaternions and products of three of them: a few ulps
 constexpr double kRotationTol = 1e-12;
 // the cable end held on its attachment point: the joint constraint (Eq. 24) holds to the

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/environment_field.h"
 #include "core/script.h"
 #include "core/simulation.h"
@@ -230,7 +231,7 @@ TEST(SceneMarkersTest, SeaSurfaceAndSeabedPatchesAroundTheTowVehicle) {
   double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300;
   const core::EnvironmentField field(model.environment);
   const double t = sim.time();
-  const double slope = 2.0 * M_PI / 180.0, c = 45.0 * M_PI / 180.0;
+  const double slope = 2.0 * core::kPi / 180.0, c = 45.0 * core::kPi / 180.0;
   double eta_lo = 1e300, eta_hi = -1e300;
   for (uint32_t k = 0; k < sea->points._length; ++k) {
     const auto& p = sea->points._buffer[k];

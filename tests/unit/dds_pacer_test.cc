@@ -1,7 +1,7 @@
-// sim_node/app/dds_pacer: the lateness statistics (the pacing itself is measured by the
+// sim_node/app/node/dds_pacer: the lateness statistics (the pacing itself is measured by the
 // benchmark, never gated on wall time here).
 
-#include "app/dds_pacer.h"
+#include "app/node/dds_pacer.h"
 
 #include <gtest/gtest.h>
 

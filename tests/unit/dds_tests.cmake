@@ -1,12 +1,8 @@
-# tests of the DDS layer: msgs/ (wire contract), sim_node/dds/ (adapter) and the node loop's
-# pure parts (sim_node/app/dds_*). Included from tests/unit/CMakeLists.txt.
+# tests of the DDS layer: msgs/ (wire contract types), sim_node/dds/ (adapter) and the node
+# loop's pure parts (sim_node/app/node/dds_*). Included from tests/unit/CMakeLists.txt.
 towsim_add_test(towsim_msgs_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/towsim_msgs_test.cc
   LIBS towsim::msgs)
-
-towsim_add_test(dds_topic_names_test LABEL unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_topic_names_test.cc
-  LIBS towsim::dds)
 
 towsim_add_test(dds_translators_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_translators_test.cc
@@ -29,7 +25,7 @@ towsim_add_test(dds_command_arbiter_test LABEL unit
 
 towsim_add_test(dds_pacer_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_pacer_test.cc
-          ${PROJECT_SOURCE_DIR}/sim_node/app/dds_pacer.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/node/dds_pacer.cc
   LIBS towsim::core)
 target_include_directories(dds_pacer_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node)
 
@@ -39,7 +35,7 @@ towsim_add_test(dds_entities_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_entities_test.cc
   LIBS towsim::dds)
 
-# raw CDR plumbing (sim_node/dds/raw_cdr, issue 6): one participant, domain 80
+# raw CDR plumbing (sim_node/dds/raw_cdr): one participant, domain 80
 towsim_add_test(raw_cdr_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/raw_cdr_test.cc
   LIBS towsim::dds)
@@ -55,8 +51,3 @@ towsim_add_test(dds_markers_test LABEL unit
 towsim_add_test(dds_port_mapping_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_port_mapping_test.cc
   LIBS towsim::dds)
-# DDS Security setup (sim_node/dds/security): files, properties, key check; no participant
-towsim_add_test(dds_security_test LABEL unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_security_test.cc
-  LIBS towsim::dds_security)
-target_include_directories(dds_security_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})

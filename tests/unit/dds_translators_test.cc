@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/script.h"
 #include "core/simulation.h"
 #include "dds/command_arbiter.h"
@@ -16,7 +17,7 @@
 namespace towsim::dds {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 constexpr double kExact = 0.0;  // copied numbers: no tolerance
 // a rotation applied to a vector and back: a few ulps of the vector's size
 constexpr double kRotationTol = 1e-12;
@@ -146,7 +147,7 @@ TEST_F(StateTranslation, CableForceIsTheBodyFrameWrench) {
   ToCableForce(*sim_, b, &m.msg);
   EXPECT_STREQ(m.msg.header.frame_id, "tow_vehicle");
   core::Vec3 f, moment;
-  sim_->body_cable_wrench(b, &f, &moment);
+  sim_->BodyCableWrench(b, &f, &moment);
   EXPECT_EQ(m.msg.wrench.force.x, f.x());
   EXPECT_EQ(m.msg.wrench.force.y, f.y());
   EXPECT_EQ(m.msg.wrench.force.z, f.z());
@@ -156,7 +157,7 @@ TEST_F(StateTranslation, CableForceIsTheBodyFrameWrench) {
   // the cable hangs below: it pulls the vehicle down (+z in B, which is +z in W at level trim)
   EXPECT_GT(m.msg.wrench.force.z, 100.0);
   // the world-frame force rotated into B
-  const core::Vec3 f_B = sim_->body_attitude(b).conjugate() * sim_->body_cable_force(b);
+  const core::Vec3 f_B = sim_->body_attitude(b).conjugate() * sim_->BodyCableForce(b);
   EXPECT_NEAR(m.msg.wrench.force.x, f_B.x(), kRotationTol * f.norm());
 }
 
@@ -173,7 +174,7 @@ TEST_F(StateTranslation, CableStateHasEveryNode) {
     EXPECT_EQ(m.msg.positions._buffer[i].x, r.x());
     EXPECT_EQ(m.msg.positions._buffer[i].z, r.z());
     EXPECT_EQ(m.msg.velocities._buffer[i].y, v.y());
-    EXPECT_EQ(m.msg.tensions._buffer[i], sim_->node_tension(i));
+    EXPECT_EQ(m.msg.tensions._buffer[i], sim_->NodeTension(i));
   }
   // node 0 is the cable start, on the towing vehicle
   EXPECT_NEAR(m.msg.positions._buffer[0].z, 3.7, 0.5);
@@ -188,7 +189,7 @@ TEST_F(StateTranslation, CableStateCarriesTheWinchFieldsAndTheNodeCount) {
   EXPECT_EQ(m.msg.tensions._length, m.msg.node_count);
   EXPECT_EQ(m.msg.paid_out_length, sim_->cable_length());
   EXPECT_EQ(m.msg.winch_speed, sim_->winch_speed());
-  EXPECT_EQ(m.msg.drum_tension, sim_->drum_tension());
+  EXPECT_EQ(m.msg.drum_tension, sim_->DrumTension());
   // no winch in this scene: the fixed length, speed 0, and the storage is the node count
   EXPECT_EQ(m.msg.paid_out_length, 50.0);
   EXPECT_EQ(m.msg.winch_speed, 0.0);

@@ -29,7 +29,7 @@ struct Fixture {
     state.winch.length = 204.0;  // the drum element 14 m
     system.SetLayout(state.winch.nodes, state.winch.length);
     // bend element 0 and give it a velocity field (any smooth values)
-    const int o = system.cable_dof(0);
+    const int o = system.CableDof(0);
     state.q.segment<3>(o + 3) = Vec3(0.3, 0.1, 0.95);
     state.q.segment<3>(o + 6) = Vec3(4.0, 1.0, 13.0);
     state.q.segment<3>(o + 9) = Vec3(0.2, 0.05, 0.98);
@@ -41,7 +41,7 @@ struct Fixture {
 
 // r (or v) at arc length `at` along element `element` of rest length `length`, from x = q (v)
 Vec3 At(const System& sys, const Eigen::VectorXd& x, int element, double at, double length) {
-  const Vec12 e = x.segment<12>(sys.cable_dof(element));
+  const Vec12 e = x.segment<12>(sys.CableDof(element));
   return Interpolate(EvaluateShape(at / length, length).n, e);
 }
 
@@ -74,7 +74,7 @@ TEST(DrumElement, SplitKeepsTheCubicAndMergeUndoesIt) {
   ASSERT_TRUE(MergeDrumElement(&f.system, &f.state));
   EXPECT_EQ(f.state.winch.nodes, nodes);
   EXPECT_DOUBLE_EQ(f.system.drum_length(), l0);
-  const int o = f.system.cable_dof(0);
+  const int o = f.system.CableDof(0);
   EXPECT_LE((f.state.q.segment<12>(o) - before.q.segment<12>(o)).lpNorm<Eigen::Infinity>(), 0.0);
   EXPECT_LE((f.state.v.segment<12>(o) - before.v.segment<12>(o)).lpNorm<Eigen::Infinity>(), 0.0);
   // the rest of the cable untouched

@@ -16,12 +16,12 @@
 #include <gtest/gtest.h>
 
 #include "core/ancf_element.h"
+#include "core/constants.h"
 #include "core/gauss_quadrature.h"
 
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Environment JonswapSea(double depth) {

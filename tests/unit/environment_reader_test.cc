@@ -10,14 +10,15 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "scene/scene_loader.h"
 #include "temp_dir.h"
 
 namespace towsim::scene {
 namespace {
 
+using core::kPi;
 using core::Vec3;
-constexpr double kPi = 3.14159265358979323846;
 
 // A 40 m cable hanging from a fixed point with a sphere 40 m down; the environment block is
 // line 3 onward. Line numbers matter to the assertions.

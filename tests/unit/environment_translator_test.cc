@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/simulation.h"
 #include "dds/translators.h"
 #include "hanging_sphere_scene.h"
@@ -18,7 +19,7 @@
 namespace towsim::dds {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 // the closed forms evaluated here in another order than the core's sums: a few ulps of the
 // largest term (1 m of elevation, 1 m/s of velocity, 40 m of depth)
 constexpr double kRoundOffTol = 1e-12;

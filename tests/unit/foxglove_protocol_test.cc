@@ -1,7 +1,7 @@
-// sim_node/app/foxglove_protocol: the messages of the Foxglove WebSocket protocol v1
+// sim_node/app/foxglove/foxglove_protocol: the messages of the Foxglove WebSocket protocol v1
 // (foxglove/ws-protocol docs/spec.md) against the byte layouts and JSON fields the spec gives.
 
-#include "app/foxglove_protocol.h"
+#include "app/foxglove/foxglove_protocol.h"
 
 #include <cstdint>
 #include <nlohmann/json.hpp>

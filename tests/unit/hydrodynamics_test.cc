@@ -5,12 +5,11 @@
 #include <gtest/gtest.h>
 
 #include "core/cable_loads.h"
+#include "core/constants.h"
 #include "core/environment_field.h"
 
 namespace towsim::core {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // paper Eq. 18, written out independently
 double Eq18(double re) {

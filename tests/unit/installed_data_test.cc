@@ -1,8 +1,8 @@
-// The installed-scene lookup of sim_node --scene (app/installed_data.h): a path that exists
+// The installed-scene lookup of sim_node --scene (app/common/installed_data.h): a path that exists
 // wins, a bare name finds <data>/scenes/NAME[.yaml], anything else is passed on unchanged; the
 // prefix of an installed program (P/bin, P/libexec/towsim).
 
-#include "app/installed_data.h"
+#include "app/common/installed_data.h"
 
 #include <fstream>
 

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/initial_shape.h"
 #include "core/simulation.h"
 #include "core/state.h"
@@ -44,11 +45,11 @@ TEST(Integrator, SphereReachesItsTerminalSpeed) {
   b.volume = 0.05;
   b.drag_coefficient = 0.5;
   b.position = Vec3(5, 0, 0);
-  m.bodies.push_back(b);
+  m.spheres.push_back(b);
   m.time.step = 0.05;
   Simulation sim(m);
   for (int k = 0; k < 1200; ++k) ASSERT_TRUE(sim.Step().ok());
-  const double rho = 1025, g = 9.81, pi = 3.14159265358979323846;
+  const double rho = 1025, g = 9.81, pi = kPi;
   const double r = std::cbrt(3 * b.volume / (4 * pi));
   const double v = std::sqrt(2 * (b.mass - rho * b.volume) * g / (rho * 0.5 * pi * r * r));
   constexpr double kTerminalRelTol = 1e-6;  // 60 s >> the e-folding time of ~0.5 s
@@ -93,7 +94,7 @@ TEST(Integrator, SubsteppingRescuesAHardStep) {
   EXPECT_NEAR(sim.node_position(0).x(), 5.0, 1e-6);
 }
 
-// Modified Newton (issue 7): the factored Newton matrix is kept across steps, and the states it
+// Modified Newton: the factored Newton matrix is kept across steps, and the states it
 // accepts agree with a run converged far tighter. The steady tow from vertical (the towing
 // point jerks to 6 m/s, the cable swings back) over its first 10 s, 20 elements, h = 0.05 s.
 Model SteadyTowFromVertical(double tolerance) {
@@ -110,7 +111,8 @@ TEST(Integrator, KeepsTheNewtonMatrixAndConvergesToTheTolerance) {
   for (int k = 0; k < 2; ++k) {
     const Model m = SteadyTowFromVertical(tolerances[k]);
     const System system(m);
-    Integrator integrator(system);
+    StepInputs inputs;
+    Integrator integrator(system, &inputs);
     State& s = states[k];
     BuildInitialState(system, &s);
     ASSERT_TRUE(integrator.InitializeAcceleration(&s));
@@ -149,11 +151,12 @@ State SettledSteadyTow(const System& system, Integrator* integrator) {
 // matrices it factored, *out the state after it
 StepStatus StepAged(const System& system, const State& start, int age, double kick, long* refreshes,
                     State* out) {
-  Integrator integrator(system);
+  StepInputs inputs;
+  Integrator integrator(system, &inputs);
   *out = start;
   EXPECT_TRUE(integrator.RestoreNewtonMatrix(*out));
   out->newton.theta_age = age;
-  out->v(system.cable_dof(10)) += kick;
+  out->v(system.CableDof(10)) += kick;
   const StepStatus st = integrator.Step(out, 0.05);
   *refreshes = integrator.tangent_refreshes();
   return st;
@@ -162,7 +165,8 @@ StepStatus StepAged(const System& system, const State& start, int age, double ki
 TEST(Integrator, ReplacesAMatrixOfUnknownRateForTheSecondEvaluation) {
   const Model m = SteadyTowFromVertical(1e-8);
   const System system(m);
-  Integrator integrator(system);
+  StepInputs inputs;
+  Integrator integrator(system, &inputs);
   const State settled = SettledSteadyTow(system, &integrator);
   ASSERT_TRUE(settled.newton.valid);
   ASSERT_LT(settled.newton.theta, Integrator::kRefreshRate);  // kept at the next step
@@ -195,7 +199,8 @@ TEST(Integrator, ReplacesAMatrixOfUnknownRateForTheSecondEvaluation) {
 TEST(Integrator, ReMeasuresASmallRateLessOften) {
   const Model m = SteadyTowFromVertical(1e-8);
   const System system(m);
-  Integrator integrator(system);
+  StepInputs inputs;
+  Integrator integrator(system, &inputs);
   const State settled = SettledSteadyTow(system, &integrator);
   long refreshes = 0;
   State after;

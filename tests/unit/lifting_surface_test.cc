@@ -7,12 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kRho = 1025.0;
 
@@ -39,7 +39,8 @@ Vec3 Flow(double speed, double alpha) {
 
 TEST(LiftingSurface, HelmboldSlope) {
   constexpr double kTol = 1e-12;
-  // 2 pi AR / (2 + sqrt(AR^2 + 4)): AR 4.8 -> 4.19 /rad (ref §3.2); -> 2 pi as AR -> infinity;
+  // 2 pi AR / (2 + sqrt(AR^2 + 4)): AR 4.8 -> 4.19 /rad (docs/vehicle_coefficients.md §5); -> 2 pi
+  // as AR -> infinity;
   // -> pi AR / 2 (slender wing) as AR -> 0
   EXPECT_NEAR(HelmboldLiftSlope(4.8), 2 * kPi * 4.8 / (2 + std::sqrt(4.8 * 4.8 + 4)), kTol);
   EXPECT_NEAR(HelmboldLiftSlope(4.8), 4.19, 0.005);
@@ -145,7 +146,7 @@ TEST(LiftingSurface, PositiveRudderGivesPositiveYawMoment) {
   env.gravity = 0.0;
   VehicleState s;
   s.nu(0) = 6.0;
-  s.rudder = 10.0 * kDeg;
+  s.actuator[kRudder] = 10.0 * kDeg;
   Vec6 tau = HydrodynamicForces(p, env, s);
   EXPECT_GT(tau(5), 0.0);
   EXPECT_LT(tau(1), 0.0);  // side force to port at the stern
@@ -154,8 +155,8 @@ TEST(LiftingSurface, PositiveRudderGivesPositiveYawMoment) {
   // the rudder of 10 deg at 6 m/s: |N| = 1/2 rho S a delta U^2 x (cos delta for the lift axis)
   const double lift = 0.5 * kRho * 0.1 * 3.12 * 10.0 * kDeg * 36.0;
   EXPECT_NEAR(tau(5), 2.0 * lift, 1e-9 * lift);
-  s.rudder = 0.0;
-  s.elevator = 10.0 * kDeg;
+  s.actuator[kRudder] = 0.0;
+  s.actuator[kElevator] = 10.0 * kDeg;
   tau = HydrodynamicForces(p, env, s);
   EXPECT_GT(tau(4), 0.0);  // bow up
   EXPECT_GT(tau(2), 0.0);  // the stern is pushed down

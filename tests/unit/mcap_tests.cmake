@@ -1,5 +1,6 @@
-# MCAP writer / reader (sim_node/io/mcap_*), issue 6
+# MCAP writer / reader (sim_node/io/mcap_*)
 towsim_add_test(mcap_test LABEL unit SOURCES mcap_test.cc LIBS towsim::io)
+towsim_add_test(mcap_records_test LABEL unit SOURCES mcap_records_test.cc LIBS towsim::io)
 
 # independent readers (tests/mcap_js, Node.js): @mcap/core opens a file our writer wrote; and
 # @mcap/core + @foxglove/rosmsg + @foxglove/rosmsg2-serialization decode a real recording
@@ -43,7 +44,7 @@ else()
   message(STATUS "node not found: the independent reader tests (tests/mcap_js) are not added")
 endif()
 
-# ROS 2 schemas and the rosbag2 metadata record (sim_node/io/ros2_schemas), issue 6
+# ROS 2 schemas and the rosbag2 metadata record (sim_node/io/ros2_schemas)
 towsim_add_test(ros2_schemas_test LABEL unit SOURCES ros2_schemas_test.cc
   LIBS towsim::io yaml-cpp)
 

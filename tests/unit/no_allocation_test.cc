@@ -1,4 +1,4 @@
-// Step does not allocate (DESIGN §1: a preallocated Workspace; issue 7). Built against a core
+// Step does not allocate (docs/contract.md §1: a preallocated Workspace). Built against a core
 // compiled with EIGEN_RUNTIME_NO_MALLOC and asserts on, so any Eigen heap allocation while
 // allocation is forbidden aborts; std containers are caught by counting the global operator new.
 // The first steps may size work space (the sub-stepping backups, the first copies); after them
@@ -93,7 +93,7 @@ TEST(NoAllocation, WinchPayoutAndReelIn) {
 // reuse their storage
 TEST(NoAllocation, BrakeSlipping) {
   Model model = test::SteadyTowWithWinch();
-  model.cable.winch->brake_tension = 0.7 * Simulation(model).drum_tension();
+  model.cable.winch->brake_tension = 0.7 * Simulation(model).DrumTension();
   Simulation sim(model);
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(sim.Step().ok());  // warm-up: work space sized
   ASSERT_TRUE(sim.state().winch.slipping);

@@ -1,6 +1,6 @@
-// app/run_control: every transition of the node's run control (docs/topics.md), the
+// app/node/run_control: every transition of the node's run control (docs/topics.md), the
 // requests refused or ignored as the node refuses them, and the status states.
-#include "app/run_control.h"
+#include "app/node/run_control.h"
 
 #include <gtest/gtest.h>
 

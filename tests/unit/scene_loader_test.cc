@@ -13,13 +13,15 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
+
 namespace towsim::scene {
 namespace {
 
 namespace fs = std::filesystem;
 using Model = core::Model;
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = core::kPi / 180.0;
 
 const std::string kConfigDir = std::string(TOWSIM_SOURCE_DIR) + "/config";
 const std::string kSteadyTow = kConfigDir + "/scenes/steady_tow.yaml";
@@ -147,14 +149,14 @@ TEST_F(SceneLoaderTest, BaseSceneLoads) {
   const Model m = Load(kScene);
   EXPECT_EQ(m.name, "t");
   EXPECT_EQ(m.cable.elements, 10);
-  ASSERT_EQ(m.bodies.size(), 1u);
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kBody);
+  ASSERT_EQ(m.spheres.size(), 1u);
+  EXPECT_EQ(m.cable.end.kind, core::EndKind::kSphere);
   EXPECT_EQ(m.cable.end.body, 0);
   EXPECT_TRUE(m.cable.loads.drag);
   EXPECT_FALSE(m.cable.loads.added_mass);
   EXPECT_FALSE(m.cable.loads.bending);
   // no driven end, no initial_velocity: bodies start at rest
-  EXPECT_EQ(m.bodies[0].velocity, core::Vec3::Zero());
+  EXPECT_EQ(m.spheres[0].velocity, core::Vec3::Zero());
   // defaults
   EXPECT_EQ(m.environment.water_density, 1025.0);
   EXPECT_EQ(m.integrator.max_iterations, 20);
@@ -638,7 +640,7 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST_F(SceneLoaderTest, VehicleSceneLoads) {
   const Model m = Load(kVehicleScene);
-  EXPECT_TRUE(m.bodies.empty());
+  EXPECT_TRUE(m.spheres.empty());
   ASSERT_EQ(m.vehicles.size(), 2u);
   const core::Vehicle& boat = m.vehicles[0];
   const core::VehicleParams& p = boat.params;
@@ -930,10 +932,10 @@ TEST_F(SceneLoaderTest, SpheresAndVehiclesTogether) {
   // a sphere hangs from the boat; the fish is unattached; names resolve across both kinds
   const Model m = Load(EditV("  end: {body: fish, at: [0.5, 0, 0]}\n", "  end: {body: ball}\n"),
                        {"bodies.ball={type: sphere, mass: 5, position: [0, 0, 101.05]}"});
-  ASSERT_EQ(m.bodies.size(), 1u);
+  ASSERT_EQ(m.spheres.size(), 1u);
   ASSERT_EQ(m.vehicles.size(), 2u);
   EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kBody);
+  EXPECT_EQ(m.cable.end.kind, core::EndKind::kSphere);
   EXPECT_EQ(m.cable.end.body, 0);
 }
 
@@ -953,7 +955,7 @@ TEST_F(SceneLoaderTest, PaperCaseScenes) {
     EXPECT_TRUE(loads.gravity && loads.buoyancy && loads.drag && loads.added_mass && loads.bending);
     EXPECT_EQ(m.cable.initial, core::InitialShape::kVertical);
     EXPECT_EQ(m.cable.initial_velocity, core::Vec3::Zero());
-    EXPECT_TRUE(m.bodies.empty());
+    EXPECT_TRUE(m.spheres.empty());
     ASSERT_EQ(m.vehicles.size(), 2u);
     const core::Vehicle& tow = m.vehicles[0];
     const core::Vehicle& fish = m.vehicles[1];
@@ -1109,10 +1111,10 @@ TEST_F(SceneLoaderTest, ModelFileValuesAndInlineOverride) {
   // the file gives type, mass and volume; the scene overrides mass; Cd, Ca keep the defaults
   const Model m =
       Load(Edit(kFishLine, "fish: {model: good_fish.yaml, mass: 15, position: [0, 0, 100]}"));
-  ASSERT_EQ(m.bodies.size(), 1u);
-  EXPECT_EQ(m.bodies[0].mass, 15.0);
-  EXPECT_EQ(m.bodies[0].volume, 0.01);
-  EXPECT_EQ(m.bodies[0].drag_coefficient, core::SphereBody{}.drag_coefficient);
+  ASSERT_EQ(m.spheres.size(), 1u);
+  EXPECT_EQ(m.spheres[0].mass, 15.0);
+  EXPECT_EQ(m.spheres[0].volume, 0.01);
+  EXPECT_EQ(m.spheres[0].drag_coefficient, core::SphereBody{}.drag_coefficient);
 }
 
 TEST_F(SceneLoaderTest, LoadsAndSlopes) {
@@ -1170,10 +1172,10 @@ TEST_F(SceneLoaderTest, OpenOutputsKey) {
 TEST_F(SceneLoaderTest, InitialVelocityIsTheBodiesDefault) {
   const Model m =
       Load(Edit("  initial: vertical\n", "  initial: vertical\n  initial_velocity: [1, 2, 3]\n"));
-  EXPECT_EQ(m.bodies[0].velocity, core::Vec3(1, 2, 3));
+  EXPECT_EQ(m.spheres[0].velocity, core::Vec3(1, 2, 3));
   const Model given =
       Load(Edit("position: [0, 0, 100]", "position: [0, 0, 100], velocity: [0, 0, 1]"));
-  EXPECT_EQ(given.bodies[0].velocity, core::Vec3(0, 0, 1));
+  EXPECT_EQ(given.spheres[0].velocity, core::Vec3(0, 0, 1));
 }
 
 TEST_F(SceneLoaderTest, StraightWithinOnePercentStretchLoads) {
@@ -1206,7 +1208,7 @@ TEST_F(SceneLoaderTest, CatenaryScene) {
   EXPECT_TRUE(loads.gravity && loads.buoyancy && loads.drag && loads.added_mass && loads.bending);
   EXPECT_EQ(m.integrator.scheme, core::Scheme::kGeneralizedAlpha);
   EXPECT_EQ(m.integrator.rho_inf, 0.8);
-  EXPECT_TRUE(m.bodies.empty());
+  EXPECT_TRUE(m.spheres.empty());
   EXPECT_TRUE(m.script.empty());
 }
 
@@ -1222,11 +1224,11 @@ TEST_F(SceneLoaderTest, SteadyTowScene) {
   EXPECT_EQ(m.cable.start.kind, core::EndKind::kDriven);
   EXPECT_EQ(m.cable.start.position, core::Vec3(0, 0, 3.5));
   EXPECT_EQ(m.cable.start.velocity, core::Vec3(6, 0, 0));
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kBody);
+  EXPECT_EQ(m.cable.end.kind, core::EndKind::kSphere);
   EXPECT_EQ(m.cable.end.body, 0);
   EXPECT_EQ(m.cable.end.at_B, core::Vec3::Zero());
-  ASSERT_EQ(m.bodies.size(), 1u);
-  const core::SphereBody& fish = m.bodies[0];
+  ASSERT_EQ(m.spheres.size(), 1u);
+  const core::SphereBody& fish = m.spheres[0];
   EXPECT_EQ(fish.name, "towfish");
   EXPECT_EQ(fish.mass, 416.0);
   EXPECT_EQ(fish.volume, 0.2);
@@ -1248,8 +1250,8 @@ TEST_F(SceneLoaderTest, Overrides) {
                              "environment.current=[0.5,0,0]"});
   EXPECT_EQ(m.cable.elements, 40);
   EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
-  EXPECT_EQ(m.bodies[0].mass, 500.0);
-  EXPECT_EQ(m.bodies[0].volume, 0.2);  // still from the model file
+  EXPECT_EQ(m.spheres[0].mass, 500.0);
+  EXPECT_EQ(m.spheres[0].volume, 0.2);  // still from the model file
   EXPECT_EQ(m.environment.current.Velocity(0.0, 0.0), core::Vec3(0.5, 0, 0));
   EXPECT_EQ(m.cable.length, 200.0);  // untouched
 }
@@ -1263,8 +1265,8 @@ TEST_F(SceneLoaderTest, OverridesCreateValidKeysAndApplyInOrder) {
   EXPECT_EQ(m.cable.axial_damping, 0.01);
   EXPECT_EQ(m.environment.gravity, 9.8);
   EXPECT_EQ(m.cable.elements, 14);
-  ASSERT_EQ(m.bodies.size(), 2u);
-  EXPECT_EQ(m.bodies[1].name, "buoy");
+  ASSERT_EQ(m.spheres.size(), 2u);
+  EXPECT_EQ(m.spheres[1].name, "buoy");
   EXPECT_TRUE(m.cable.start.clamped);
 }
 
@@ -1342,12 +1344,12 @@ TEST_F(SceneLoaderTest, ModelPathResolvesAgainstTheSceneFolder) {
   {
     // an absolute scene path from an unrelated working directory
     const ScopedCwd cwd(dir_);
-    EXPECT_EQ(LoadScene(kSteadyTow).bodies.at(0).mass, 416.0);
+    EXPECT_EQ(LoadScene(kSteadyTow).spheres.at(0).mass, 416.0);
   }
   {
     // a relative scene path: its folder is relative to the working directory
     const ScopedCwd cwd(kConfigDir);
-    EXPECT_EQ(LoadScene("scenes/steady_tow.yaml").bodies.at(0).mass, 416.0);
+    EXPECT_EQ(LoadScene("scenes/steady_tow.yaml").spheres.at(0).mass, 416.0);
   }
   {
     // from text: against base_dir
@@ -1355,7 +1357,7 @@ TEST_F(SceneLoaderTest, ModelPathResolvesAgainstTheSceneFolder) {
     std::ifstream in(kSteadyTow);
     const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     EXPECT_EQ(
-        LoadSceneFromString(text, "steady_tow.yaml", kConfigDir + "/scenes").bodies.at(0).mass,
+        LoadSceneFromString(text, "steady_tow.yaml", kConfigDir + "/scenes").spheres.at(0).mass,
         416.0);
     EXPECT_THROW(LoadSceneFromString(text, "steady_tow.yaml", dir_.string()), ConfigError);
   }

@@ -7,13 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 #include "core/simulation.h"
 
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 // Euler angles go through a quaternion and back: exact to a few ulps of pi
 constexpr double kAngleTolDeg = 1e-12;

@@ -7,11 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
+
 namespace towsim::core {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(Seabed, NoneIsBottomless) {
   const Seabed s;

@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/simulation.h"
 #include "dds/translators.h"
 #include "hanging_sphere_scene.h"
@@ -19,7 +20,7 @@
 namespace towsim::dds {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using core::kPi;
 // the range is a float32: round-off 2^-24 relative (2^-23 allowed)
 constexpr double kFloatRelTol = 1.0 / (1 << 23);
 // the pressure: a few ulps of 3e5 Pa
@@ -54,7 +55,7 @@ TEST(SensorTranslators, AltitudeAbovePlaneSeabedAndPressureBelowTheWave) {
   // eta at (3, 4), t = 0: a cos(k x + phase) (waves toward north); k from the deep-water
   // w^2 / g, which at kh = 2.5 (h = 40 m) is 1.4 % below the exact dispersion relation's k the
   // core uses: 0.003 rad of phase at x = 3 m, within 1 % of a
-  const double eta = sim.surface_elevation_at(0);
+  const double eta = sim.SurfaceElevationAt(0);
   const double k_deep = std::pow(2.0 * kPi / 8.0, 2) / 9.81;
   EXPECT_NEAR(eta, 0.75 * std::cos(k_deep * 3.0 + kPi / 3.0), 0.75 * 0.01);
   // linear theory's total pressure at z = 20 m under the one regular wave, in closed form:

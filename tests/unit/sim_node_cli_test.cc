@@ -1,4 +1,4 @@
-// The sim_node command line as scripts and users meet it (DESIGN §5): the real binary runs as
+// The sim_node command line as scripts and users meet it (docs/contract.md §5): the real binary runs as
 // a process; exit codes, messages and the CSV files are checked.
 //   0 ok, 2 bad input (the message names the key), 3 solver failure, 128 + signal when stopped.
 
@@ -463,7 +463,7 @@ TEST(SimNodeCliTest, SigtermStopsCleanly) {
   }
 }
 
-// --- the offline node and its DDS program (app/node_main.h; docs/benchmarks.md "Start-up") ----
+// --- the offline node and its DDS program (app/node/node_main.h; docs/benchmarks.md "Start-up") --
 
 // an offline run loads no DDS, iceoryx or OpenSSL library: the dynamic loader's own list of the
 // libraries it loads (LD_DEBUG=libs, written to LD_DEBUG_OUTPUT.<pid> for the shell and for

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/state.h"
 #include "steady_tow_model.h"
 
@@ -49,7 +50,7 @@ void ExpectBitIdentical(const Simulation& a, const Simulation& b) {
     for (int i = 0; i < 3; ++i) EXPECT_EQ(x.vehicles[v].p_W(i), y.vehicles[v].p_W(i));
     for (int i = 0; i < 6; ++i) EXPECT_EQ(x.vehicles[v].nu(i), y.vehicles[v].nu(i));
     EXPECT_EQ(x.vehicles[v].q_WB.coeffs(), y.vehicles[v].q_WB.coeffs());
-    EXPECT_EQ(x.vehicles[v].thrust, y.vehicles[v].thrust);
+    EXPECT_EQ(x.vehicles[v].actuator, y.vehicles[v].actuator);
   }
   // the winch (a fixed length and no motion without one)
   EXPECT_EQ(a.cable_length(), b.cable_length());
@@ -139,7 +140,7 @@ TEST(SimulationState, RoundTripWinchMovingAcrossASplit) {
 // it carries to the next step, continue bit for bit from a restored state
 TEST(SimulationState, RoundTripBrakeSlipping) {
   Model model = test::SteadyTowWithWinch();
-  model.cable.winch->brake_tension = 0.7 * Simulation(model).drum_tension();
+  model.cable.winch->brake_tension = 0.7 * Simulation(model).DrumTension();
   Simulation straight(model);
   StepN(&straight, 20);
   ASSERT_TRUE(straight.state().winch.slipping);
@@ -211,12 +212,11 @@ TEST(SimulationState, WrongShapeIsRejected) {
             "winch's max_length holds at most that many)");
 }
 
-// The altimeter (Simulation::body_altimeter_range, docs/sensors.md): a vehicle's beam runs
+// The altimeter (Simulation::BodyAltimeterRange, docs/sensors.md): a vehicle's beam runs
 // along its body z axis, so over a flat bed h below its origin a pitch theta and a roll phi
 // give h / (cos theta cos phi); a sphere's points straight down. Reference: the closed form;
 // tolerance: round-off of the quaternion rotation and one division.
 TEST(SimulationAltimeter, TiltedVehicleOverAFlatBedReadsHOverCosine) {
-  constexpr double kPi = 3.14159265358979323846;
   constexpr double kBed = 250.0;            // [m]
   constexpr double kMaxRange = 1000.0;      // [m], beyond the bed
   constexpr double kRangeRelTol = 1e-13;    // round-off
@@ -232,22 +232,22 @@ TEST(SimulationAltimeter, TiltedVehicleOverAFlatBedReadsHOverCosine) {
     const int vehicle = sim.num_spheres();
     const double h = kBed - sim.body_position(vehicle).z();
     const double expected = h / (std::cos(theta) * std::cos(phi));
-    EXPECT_NEAR(sim.body_altimeter_range(vehicle, kMaxRange), expected, kRangeRelTol * expected)
+    EXPECT_NEAR(sim.BodyAltimeterRange(vehicle, kMaxRange), expected, kRangeRelTol * expected)
         << "roll " << tilt.roll_deg << ", pitch " << tilt.pitch_deg;
     // the vertical altitude (the environment's) is h whatever the attitude
-    EXPECT_NEAR(sim.body_altitude(vehicle), h, kRangeRelTol * h);
+    EXPECT_NEAR(sim.BodyAltitude(vehicle), h, kRangeRelTol * h);
     // the sphere: straight down
     const double h_sphere = kBed - sim.body_position(0).z();
-    EXPECT_NEAR(sim.body_altimeter_range(0, kMaxRange), h_sphere, kRangeRelTol * h_sphere);
+    EXPECT_NEAR(sim.BodyAltimeterRange(0, kMaxRange), h_sphere, kRangeRelTol * h_sphere);
   }
   // pitched past the horizon: no return (REP 117's +inf), and beyond max_range likewise
   Model model = SteadyTowWithVehicle(Coupling::kStrong);
   model.environment.seabed = Seabed::Flat(kBed);
   model.vehicles[0].euler = Vec3(0.0, 100.0 * kPi / 180.0, 0.0);
   const Simulation up(model);
-  EXPECT_EQ(up.body_altimeter_range(up.num_spheres(), kMaxRange),
+  EXPECT_EQ(up.BodyAltimeterRange(up.num_spheres(), kMaxRange),
             std::numeric_limits<double>::infinity());
-  EXPECT_EQ(up.body_altimeter_range(0, 10.0), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(up.BodyAltimeterRange(0, 10.0), std::numeric_limits<double>::infinity());
 }
 
 }  // namespace

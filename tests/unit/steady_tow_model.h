@@ -17,7 +17,7 @@ inline core::Model SteadyTowModel() {
   m.cable.start.kind = core::EndKind::kDriven;
   m.cable.start.position = core::Vec3(0, 0, 3.5);
   m.cable.start.velocity = core::Vec3(6, 0, 0);
-  m.cable.end.kind = core::EndKind::kBody;
+  m.cable.end.kind = core::EndKind::kSphere;
   m.cable.end.body = 0;
   m.cable.initial_velocity = core::Vec3(6, 0, 0);
   core::SphereBody b;
@@ -26,7 +26,7 @@ inline core::Model SteadyTowModel() {
   b.volume = 0.2;
   b.position = core::Vec3(0, 0, 203.5);
   b.velocity = core::Vec3(6, 0, 0);
-  m.bodies.push_back(b);
+  m.spheres.push_back(b);
   return m;
 }
 

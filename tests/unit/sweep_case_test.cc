@@ -1,7 +1,7 @@
-// app/sweep_case: a case's folder: its arguments, command.sh (run by bash), case_status.txt,
+// app/sweep/sweep_case: a case's folder: its arguments, command.sh (run by bash), case_status.txt,
 // and the row collected from it.
 
-#include "app/sweep_case.h"
+#include "app/sweep/sweep_case.h"
 
 #include <sys/wait.h>
 
@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/text_file.h"
+#include "app/common/text_file.h"
 #include "temp_dir.h"
 
 namespace towsim::app {
@@ -47,7 +47,7 @@ TEST(SweepCase, CommandShRunsTheCaseAndWritesItsStatus) {
   EXPECT_EQ(s->exit_code, 3);
   EXPECT_GE(s->wall_s, 0.0);
 
-  scene::SweepSpec spec;
+  SweepSpec spec;
   SweepCase c;
   c.name = "case_0000";
   c.values = {{"script", "[{at: 0, thrust: 1}]"}};

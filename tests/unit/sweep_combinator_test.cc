@@ -1,6 +1,6 @@
-// app/sweep_combinator: the cases of a sweep, product (first parameter slowest) or zip.
+// app/sweep/sweep_combinator: the cases of a sweep, product (first parameter slowest) or zip.
 
-#include "app/sweep_combinator.h"
+#include "app/sweep/sweep_combinator.h"
 
 #include <stdexcept>
 
@@ -8,9 +8,6 @@
 
 namespace towsim::app {
 namespace {
-
-using scene::SweepCombine;
-using scene::SweepParameter;
 
 TEST(SweepCombinator, ProductIsNestedLoopsInFileOrder) {
   const std::vector<SweepParameter> p = {{"a", {"1", "2"}, ""}, {"b", {"x", "y", "z"}, ""}};

@@ -1,17 +1,17 @@
-// scene/sweep_file: a sweep file -> SweepSpec. Values written out, ranges and seeded draws;
+// app/sweep/sweep_file: a sweep file -> SweepSpec. Values written out, ranges and seeded draws;
 // broken files fail with the key path, the value, file:line and the rule.
 
-#include "scene/sweep_file.h"
+#include "app/sweep/sweep_file.h"
 
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "app/sweep/sweep_values.h"
 #include "scene/config_error.h"
-#include "scene/sweep_values.h"
 
-namespace towsim::scene {
+namespace towsim::app {
 namespace {
 
 const std::string kScenes = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes";
@@ -22,7 +22,7 @@ SweepSpec Load(const std::string& yaml) { return LoadSweepFromString(yaml, "swee
 std::string Error(const std::string& yaml) {
   try {
     Load(yaml);
-  } catch (const ConfigError& e) {
+  } catch (const scene::ConfigError& e) {
     return e.what();
   }
   return "";
@@ -153,4 +153,4 @@ TEST(SweepFile, BrokenTopLevelAndResults) {
 }
 
 }  // namespace
-}  // namespace towsim::scene
+}  // namespace towsim::app

@@ -1,7 +1,7 @@
-// app/sweep_signals: the results of a case from its CSV files and summary line. The files are
+// app/sweep/sweep_signals: the results of a case from its CSV files and summary line. The files are
 // written here with values whose statistics are known by hand.
 
-#include "app/sweep_signals.h"
+#include "app/sweep/sweep_signals.h"
 
 #include <cmath>
 #include <fstream>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/run_stats.h"
+#include "app/common/run_stats.h"
 #include "io/csv_writer.h"
 #include "scene/config_error.h"
 #include "temp_dir.h"
@@ -23,9 +23,9 @@ void Write(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path) << text;
 }
 
-scene::SweepResult R(const std::string& signal, const std::string& stat,
-                     std::optional<double> from = std::nullopt) {
-  scene::SweepResult r;
+SweepResult R(const std::string& signal, const std::string& stat,
+              std::optional<double> from = std::nullopt) {
+  SweepResult r;
   r.name = "r";
   r.signal = signal;
   r.stat = stat;
@@ -61,7 +61,7 @@ class SweepSignals : public ::testing::Test {
     Write(dir_.path() / "status.csv", std::string(io::kCsvStatusHeader) + "\n" +
                                           "0,0,0,0,0,2\n1,10,4,1e-9,200,2\n2,20,2,3e-9,100,2\n");
   }
-  double One(const scene::SweepResult& r, const std::string& out = "") {
+  double One(const SweepResult& r, const std::string& out = "") {
     return ComputeSweepResults({r}, dir_.path().string(), out).at(0);
   }
   test::TempDir dir_;
@@ -122,7 +122,7 @@ TEST_F(SweepSignals, MissingFilesAndEmptyWindowsThrow) {
 TEST(SweepSignalNames, UnknownSignalsAreBadInput) {
   const std::vector<std::string> bodies = {"tow", "towfish"};
   auto error = [&](const std::string& signal, const std::string& stat) -> std::string {
-    std::vector<scene::SweepResult> r = {R(signal, stat)};
+    std::vector<SweepResult> r = {R(signal, stat)};
     try {
       CheckSweepResults(&r, bodies);
     } catch (const scene::ConfigError& e) {
@@ -139,7 +139,7 @@ TEST(SweepSignalNames, UnknownSignalsAreBadInput) {
   EXPECT_NE(error("tension", "max").find("unknown signal"), std::string::npos);
   EXPECT_NE(error("rtf", "max").find("it takes no stat"), std::string::npos);
   // a time signal without a statistic is its final value
-  std::vector<scene::SweepResult> r = {R("layback", "")};
+  std::vector<SweepResult> r = {R("layback", "")};
   CheckSweepResults(&r, bodies);
   EXPECT_EQ(r[0].stat, "final");
 }

@@ -1,7 +1,7 @@
-// app/sweep_slurm: the --array indices of the cases to run. (The Slurm runner itself runs
+// app/sweep/sweep_slurm: the --array indices of the cases to run. (The Slurm runner itself runs
 // against a real cluster in tests/integration/sweep_slurm_test.sh.)
 
-#include "app/sweep_slurm.h"
+#include "app/sweep/sweep_slurm.h"
 
 #include <gtest/gtest.h>
 

@@ -1,26 +1,26 @@
-// app/sweep_table, app/sweep_progress, app/sweep_plot: the table's columns and quoting, the
-// summary's counts, the progress line, the plot's points.
+// app/sweep/sweep_table, app/sweep/sweep_progress, app/sweep/sweep_plot: the table's columns and
+// quoting, the summary's counts, the progress line, the plot's points.
 
-#include "app/sweep_table.h"
+#include "app/sweep/sweep_table.h"
 
 #include <cstdio>
 
 #include <gtest/gtest.h>
 
-#include "app/sweep_plot.h"
-#include "app/sweep_progress.h"
-#include "app/text_file.h"
+#include "app/common/text_file.h"
+#include "app/sweep/sweep_plot.h"
+#include "app/sweep/sweep_progress.h"
 #include "io/csv_reader.h"
 #include "temp_dir.h"
 
 namespace towsim::app {
 namespace {
 
-scene::SweepSpec Spec() {
-  scene::SweepSpec spec;
+SweepSpec Spec() {
+  SweepSpec spec;
   spec.name = "s.yaml";
   spec.parameters = {{"cable.elements", {"10", "20"}, ""}, {"cable.start.at", {"[0, 0, 1]"}, ""}};
-  scene::SweepResult r;
+  SweepResult r;
   r.name = "depth";
   r.signal = "towfish.depth";
   r.stat = "final";

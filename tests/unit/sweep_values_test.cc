@@ -1,7 +1,7 @@
-// scene/sweep_values: ranges, evenly spaced points, seeded draws. The draws are checked against
+// app/sweep/sweep_values: ranges, evenly spaced points, seeded draws. The draws are checked against
 // the C++ standard's fixed value of std::mt19937_64 and against their distributions' moments.
 
-#include "scene/sweep_values.h"
+#include "app/sweep/sweep_values.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-namespace towsim::scene {
+namespace towsim::app {
 namespace {
 
 TEST(SweepValues, RangesIncludeTheirEndAndDoNotAccumulate) {
@@ -68,4 +68,4 @@ TEST(SweepValues, DrawsHaveTheirDistributionsMoments) {
 }
 
 }  // namespace
-}  // namespace towsim::scene
+}  // namespace towsim::app

@@ -5,6 +5,7 @@
 
 #include "core/initial_shape.h"
 #include "core/state.h"
+#include "core/step_sampler.h"
 
 namespace towsim::core {
 namespace {
@@ -21,7 +22,7 @@ Model FullModel() {
   m.cable.start.velocity = Vec3(1.5, 0, 0);
   m.cable.start.clamped = true;
   m.cable.start.slope = Vec3(-1, 0, 2).normalized();
-  m.cable.end.kind = EndKind::kBody;
+  m.cable.end.kind = EndKind::kSphere;
   m.cable.end.body = 0;
   m.environment.current = CurrentField::Uniform(Vec3(0.2, 0.4, 0.0));
   SphereBody b;
@@ -29,11 +30,11 @@ Model FullModel() {
   b.mass = 50;
   b.volume = 0.02;
   b.position = Vec3(-12, 1, 28);
-  m.bodies.push_back(b);
-  SphereBody free_body = b;  // unattached: its own block
-  free_body.name = "buoy";
-  free_body.position = Vec3(5, 5, 5);
-  m.bodies.push_back(free_body);
+  m.spheres.push_back(b);
+  SphereBody free_sphere = b;  // unattached: its own block
+  free_sphere.name = "buoy";
+  free_sphere.position = Vec3(5, 5, 5);
+  m.spheres.push_back(free_sphere);
   return m;
 }
 
@@ -52,7 +53,7 @@ Eigen::MatrixXd Dense(BlockTridiagonal& m) {
 }
 
 // The assembled Newton matrix c_a dR/da + c_q dR/dq + c_v dR/dv (with Phi_q) equals finite
-// differences of the residual and constraints: checks every element, load, body and joint
+// differences of the residual and constraints: checks every element, load, sphere and joint
 // term and the block placement. With waves, the samples are held (as the integrator holds them
 // over a step), so the matrix is exact for the residual it solves.
 void CheckNewtonMatrix(const Model& model, bool waves) {
@@ -67,21 +68,21 @@ void CheckNewtonMatrix(const Model& model, bool waves) {
     s.a(i) = 0.2 * std::sin(0.4 * i + 1);
   }
   s.lambda = Eigen::VectorXd::LinSpaced(m, -50, 80);
-  WaveSamples samples;
-  if (waves) {
-    sys.ResizeWaveSamples(&samples);
-    sys.SampleWaves(s.q, 0.3, &samples);
-  }
-  const WaveSamples* w = waves ? &samples : nullptr;
-  const JacobianCoefficients cf{1.0, 7.0, 300.0};
+  StepInputs in;
+  const StepSampler sampler(sys);
+  sampler.Resize(&in);
+  sampler.TakeMotions(s, &in);
+  if (waves) sampler.SampleWaves(s.q, 0.3, &in);
+  const EvaluateOptions options{1.0, {1.0, 7.0, 300.0}};
+  const JacobianCoefficients& cf = options.coeffs;
   BlockTridiagonal jac = sys.MakeMatrix();
   Eigen::VectorXd r, phi;
-  sys.Evaluate(s.q, s.v, s.a, s.lambda, 0.3, 1.0, cf, &r, &phi, &jac, w);
+  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, options, {&r, &phi, &jac});
   const Eigen::MatrixXd analytic = Dense(jac);
   // the element laws are written once for both uses (ancf_element.cc, cable_loads.cc): the
   // residual without the matrix is the same to the bit
   Eigen::VectorXd r_only, phi_only;
-  sys.Evaluate(s.q, s.v, s.a, s.lambda, 0.3, 1.0, cf, &r_only, &phi_only, nullptr, w);
+  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, options, {&r_only, &phi_only});
   EXPECT_EQ(r, r_only);
   EXPECT_EQ(phi, phi_only);
 
@@ -89,7 +90,7 @@ void CheckNewtonMatrix(const Model& model, bool waves) {
   auto stacked = [&](const Eigen::VectorXd& q, const Eigen::VectorXd& v, const Eigen::VectorXd& a,
                      const Eigen::VectorXd& l) {
     Eigen::VectorXd rr, pp, x;
-    sys.Evaluate(q, v, a, l, 0.3, 1.0, cf, &rr, &pp, nullptr, w);
+    sys.Evaluate({q, v, a, l, 0.3}, in, options, {&rr, &pp});
     sys.ToBlocks(rr, pp, &x);
     return x;
   };
@@ -114,7 +115,7 @@ void CheckNewtonMatrix(const Model& model, bool waves) {
 TEST(System, NewtonMatrixMatchesFiniteDifferences) { CheckNewtonMatrix(FullModel(), false); }
 
 // the same in a sea: a sheared current profile (its dU/dz enters dR/dq), regular waves
-// (Morison's fluid inertia on the cable and the bodies) and a flat seabed the lower cable lies
+// (Morison's fluid inertia on the cable and the spheres) and a flat seabed the lower cable lies
 // on (penalty normal force with damping and smoothed Coulomb friction, seabed_contact.h)
 TEST(System, NewtonMatrixMatchesFiniteDifferencesInASea) {
   Model m = FullModel();
@@ -128,7 +129,7 @@ TEST(System, NewtonMatrixMatchesFiniteDifferencesInASea) {
   c.damping = 500.0;    // [Pa s/m]
   c.friction = 0.4;
   m.environment.seabed.set_contact(c);
-  m.bodies[1].position = Vec3(5, 5, 8);  // the buoy below the waves
+  m.spheres[1].position = Vec3(5, 5, 8);  // the buoy below the waves
   CheckNewtonMatrix(m, true);
 }
 
@@ -137,11 +138,13 @@ TEST(System, ConstraintHoldsTheEndAtTheSupport) {
   State s;
   BuildInitialState(sys, &s);
   Eigen::VectorXd r, phi;
-  sys.Evaluate(s.q, s.v, s.a, s.lambda, 2.0, 1.0, {}, &r, &phi, nullptr);
+  StepInputs in;
+  StepSampler(sys).TakeMotions(s, &in);
+  sys.Evaluate({s.q, s.v, s.a, s.lambda, 2.0}, in, {}, {&r, &phi});
   // the driven start has moved 2 s * 1.5 m/s along x since t = 0
   EXPECT_NEAR(phi(0), 0.0 - 3.0, 1e-12);
   // body end: cable end at the body initially
-  const Vec3 end = s.q.segment<3>(sys.cable_dof(sys.num_nodes() - 1));
+  const Vec3 end = s.q.segment<3>(sys.CableDof(sys.num_nodes() - 1));
   EXPECT_TRUE((end - Vec3(-12, 1, 28)).norm() < 1e-12);
 }
 

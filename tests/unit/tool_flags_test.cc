@@ -1,23 +1,19 @@
-// sim_node/app/tool_flags: the command lines of towsim_record, towsim_replay and
-// towsim_foxglove: "--name value", "--name=value", lists and the domain range.
+// app/common/tool_flags: the arguments of a tool's command line: "--name value",
+// "--name=value", the argument as given, and lists.
 
-#include "app/tool_flags.h"
+#include "app/common/tool_flags.h"
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "tool_argv.h"
+
 namespace towsim::app {
 namespace {
 
-// argv of string literals (ToolFlags does not write to it)
-std::vector<char*> Argv(std::vector<std::string>& args) {
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  return argv;
-}
+using test::Argv;
 
 TEST(ToolFlagsTest, ValuesAfterTheNameOrItsEqualsSign) {
   std::vector<std::string> args = {"tool",           "--domain",  "7",
@@ -55,58 +51,43 @@ TEST(ToolFlagsTest, ListsRunToTheNextOptionAndSplitAtCommas) {
   EXPECT_FALSE(f.Next());
 }
 
-TEST(ToolFlagsTest, DomainIsAnIntegerFrom0To232) {
-  uint32_t d = 99;
-  EXPECT_EQ(ParseDomain("0", &d), "");
-  EXPECT_EQ(d, 0u);
-  EXPECT_EQ(ParseDomain("232", &d), "");
-  EXPECT_EQ(d, 232u);
-  for (const char* bad : {"233", "-1", "", "5x", "1.5"}) {
-    EXPECT_EQ(ParseDomain(bad, &d),
-              std::string("--domain ") + bad + ": must be an integer from 0 to 232");
-  }
-  EXPECT_EQ(d, 232u);  // unchanged by a bad value
-}
-
-// the options every DDS tool shares: read into the tool's fields; other arguments left alone
-TEST(ToolFlagsTest, SharedDdsOptionsAreReadIntoTheToolsFields) {
-  std::vector<std::string> args = {
-      "tool",        "--domain=9", "--namespace", "/sys_a",   "--security",
-      "keys/ctl",    "--quiet",    "file.mcap",   "--domain", "300",
-      "--namespace", "no slash",   "--security",  ""};
+// the argument as given, and whether its value came after '='
+TEST(ToolFlagsTest, RawArgumentAndInlineValue) {
+  std::vector<std::string> args = {"tool", "--slurm=1", "--out", "d", "file.yaml"};
   std::vector<char*> argv = Argv(args);
   ToolFlags f(static_cast<int>(argv.size()), argv.data());
-  uint32_t domain = 0;
-  std::string ns, security;
-  bool quiet = false, has_domain = false;
-  const DdsToolFields fields{&domain, &ns, &security, &quiet, &has_domain};
-  std::string error;
-  for (int i = 0; i < 4; ++i) {
-    ASSERT_TRUE(f.Next());
-    EXPECT_TRUE(ReadDdsToolOption(f, fields, &error)) << f.arg();
-    EXPECT_EQ(error, "") << f.arg();
-  }
-  EXPECT_EQ(domain, 9u);
-  EXPECT_TRUE(has_domain);
-  EXPECT_EQ(ns, "/sys_a");
-  EXPECT_EQ(security, "keys/ctl");
-  EXPECT_TRUE(quiet);
   ASSERT_TRUE(f.Next());
-  EXPECT_FALSE(ReadDdsToolOption(f, fields, &error));  // a positional argument
-  EXPECT_EQ(error, "");
+  EXPECT_EQ(f.arg(), "--slurm");
+  EXPECT_EQ(f.raw(), "--slurm=1");
+  EXPECT_TRUE(f.has_inline_value());
   ASSERT_TRUE(f.Next());
-  EXPECT_TRUE(ReadDdsToolOption(f, fields, &error));
-  EXPECT_EQ(error, ParseDomain("300", &domain));  // the domain's own rule
-  EXPECT_NE(error, "");
-  error.clear();
+  EXPECT_EQ(f.raw(), "--out");
+  EXPECT_FALSE(f.has_inline_value());
+  std::string v;
+  ASSERT_TRUE(f.Value(&v));
+  EXPECT_EQ(v, "d");
   ASSERT_TRUE(f.Next());
-  EXPECT_TRUE(ReadDdsToolOption(f, fields, &error));
-  EXPECT_EQ(error.rfind("--namespace no slash: ", 0), 0u) << error;
-  error.clear();
-  ASSERT_TRUE(f.Next());
-  EXPECT_TRUE(ReadDdsToolOption(f, fields, &error));
-  EXPECT_EQ(error, "--security needs DIR/NAME");
+  EXPECT_EQ(f.arg(), "file.yaml");
+  EXPECT_EQ(f.raw(), "file.yaml");
+  EXPECT_FALSE(f.has_inline_value());
   EXPECT_FALSE(f.Next());
+}
+
+// "--topics T ...": appended as ROS names; none is an error
+TEST(ToolFlagsTest, ReadTopicsAppendsAndRefusesAnEmptyList) {
+  std::vector<std::string> args = {"tool", "--topics", "a,/b", "--topics", "--quiet"};
+  std::vector<char*> argv = Argv(args);
+  ToolFlags f(static_cast<int>(argv.size()), argv.data());
+  std::vector<std::string> topics;
+  ASSERT_TRUE(f.Next());
+  EXPECT_EQ(ReadTopics(f, &topics), "");
+  EXPECT_EQ(topics, (std::vector<std::string>{"/a", "/b"}));
+  ASSERT_TRUE(f.Next());
+  std::vector<std::string> none;
+  EXPECT_EQ(ReadTopics(f, &none), "--topics needs at least one topic");
+  EXPECT_TRUE(none.empty());
+  ASSERT_TRUE(f.Next());
+  EXPECT_EQ(f.arg(), "--quiet");  // the list stopped at the next option
 }
 
 }  // namespace

@@ -29,7 +29,7 @@ Model FallingModel(Coupling coupling, double h) {
   m.cable.start.kind = EndKind::kVehicle;
   m.cable.start.body = 0;
   m.cable.start.at_B = Vec3(0, 0, 0.5);
-  m.cable.end.kind = EndKind::kBody;
+  m.cable.end.kind = EndKind::kSphere;
   m.cable.end.body = 0;
   Vehicle v;
   v.name = "vehicle";
@@ -48,7 +48,7 @@ Model FallingModel(Coupling coupling, double h) {
   s.drag_coefficient = 0.0;
   s.added_mass_coefficient = 0.5;
   s.position = Vec3(0, 0, 5.5 + 50.0);
-  m.bodies.push_back(s);
+  m.spheres.push_back(s);
   return m;
 }
 
@@ -65,7 +65,7 @@ double VerticalMomentum(const Simulation& sim) {
     p += mu * l *
          (0.5 * st.v(o + 2) + l / 12 * st.v(o + 5) + 0.5 * st.v(o + 8) - l / 12 * st.v(o + 11));
   }
-  const SphereBody& s = m.bodies[0];
+  const SphereBody& s = m.spheres[0];
   p += (s.mass + s.added_mass_coefficient * kRho * s.volume) * sim.body_velocity(0).z();
   return p;
 }
@@ -75,7 +75,7 @@ TEST(VehicleCoupling, MomentumBalanceAcrossTheJoint) {
     const Model m = FallingModel(coupling, 0.01);
     Simulation sim(m);
     const double w_cable = (m.cable.mass_per_length - kRho * m.cable.area()) * kG * m.cable.length;
-    const double w_sphere = (m.bodies[0].mass - kRho * m.bodies[0].volume) * kG;
+    const double w_sphere = (m.spheres[0].mass - kRho * m.spheres[0].volume) * kG;
     const double force = w_cable + w_sphere;
     for (int k = 0; k < 300; ++k) ASSERT_TRUE(sim.Step().ok());
     const double expected = force * sim.time();

@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 #include "core/vehicle_model.h"
 #include "vehicle_file.h"
@@ -18,7 +19,6 @@
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kSpeed = 6.0;  // the paper's steady speed [m/s]
 // the towfish tow point: its bow, on the axis (paper: "attached to the bow")
@@ -31,7 +31,7 @@ VehicleState Running(double speed, double thrust) {
   VehicleState s;
   s.p_W.z() = kDepth;
   s.nu(0) = speed;
-  s.thrust = thrust;
+  s.actuator[kThrust] = thrust;
   return s;
 }
 
@@ -57,7 +57,7 @@ Mat9 Linearize(const VehicleParams& p, const Environment& env, const VehicleComm
     VehicleState s;
     s.p_W.z() = kDepth;
     s.nu = x.head<6>();
-    s.thrust = cmd.thrust;
+    s.actuator[kThrust] = cmd.thrust;
     const Vec3 rpy = x.tail<3>();
     s.q_WB = QuaternionFromEulerZYX(rpy);
     const Vec3 f_b = s.q_WB.toRotationMatrix().transpose() * force_W;
@@ -139,7 +139,7 @@ TEST(VehicleManeuver, ThrustForSixMetresPerSecond) {
   const double thrust = ThrustFor(veh, env, kSpeed);
   std::printf("tow vehicle: thrust for %.1f m/s (no cable) = %.1f N (hull %.1f N, fins %.1f N)\n",
               kSpeed, thrust, -veh.x_uu * kSpeed * kSpeed, thrust + veh.x_uu * kSpeed * kSpeed);
-  EXPECT_GT(thrust, 1000.0);  // ref §2.4: 1.2-2.2 kN for the hull alone
+  EXPECT_GT(thrust, 1000.0);  // docs/vehicle_coefficients.md §2, §6: 1.2-2.2 kN for the hull alone
   EXPECT_LT(thrust, 2500.0);
   ASSERT_LT(thrust, veh.max_thrust);
   VehicleCommand cmd;
@@ -217,7 +217,8 @@ TEST(VehicleManeuver, TurningCircleAtTwentyDegreesRudder) {
   EXPECT_LT((c3.centre - c2.centre).norm(), kRadiusTol * c3.radius);
   // the kinematic radius U / r agrees with the track
   EXPECT_NEAR(speed / s.nu(5), c3.radius, 0.01 * c3.radius);
-  // ref §2.4: 24.5 m for Prestero's combined set (Munk kept), 71 m with the Munk moment removed
+  // docs/vehicle_coefficients.md §4: 24.5 m for Prestero's combined set (Munk kept), 71 m with the
+  // Munk moment removed
   EXPECT_GT(c3.radius, 2 * veh.length);
   EXPECT_LT(c3.radius, 10 * veh.length);
 }
@@ -270,7 +271,8 @@ TEST(VehicleStability, TowVehicleLinearizedAtSixMetresPerSecond) {
   // surge ~ -2 X_uu U / (m - X_udot) = -0.07 /s is the slowest mode
   for (const auto& e : ev) EXPECT_LT(e.real(), -0.05) << e;
   // the remedy matters: with the fins at the area that reproduces Prestero's coefficients
-  // (1/3), the set is unstable as ref §2.4 reports (+0.58, +0.12 pitch; +0.80 yaw)
+  // (1/3), the set is unstable as docs/vehicle_coefficients.md §4 reports (+0.58, +0.12 pitch;
+  // +0.80 yaw)
   VehicleParams raw = veh;
   for (LiftingSurface& s : raw.surfaces) s.area /= 3.0;
   double worst = -1e9;

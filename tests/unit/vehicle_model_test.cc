@@ -12,12 +12,12 @@
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/model.h"
 
 namespace towsim::core {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 
 // an asymmetric test body: CG off every axis, full added-mass matrix with the couplings of
@@ -170,7 +170,7 @@ TEST(VehicleModel, RatesSatisfyWorldImpulseBalance) {
     s.p_W = Vec3(uni(rng), uni(rng), 5.0 + uni(rng));
     s.q_WB = QuaternionFromEulerZYX(Vec3(0.5 * uni(rng), 0.5 * uni(rng), 3.0 * uni(rng)));
     s.nu << 2.0 + uni(rng), uni(rng), uni(rng), uni(rng), uni(rng), uni(rng);
-    s.elevator = 0.2 * uni(rng);
+    s.actuator[kElevator] = 0.2 * uni(rng);
     const Vec3 f_b(50.0 * uni(rng), 50.0 * uni(rng), 50.0 * uni(rng));
     const Vec3 m_b(20.0 * uni(rng), 20.0 * uni(rng), 20.0 * uni(rng));
     const VehicleDerivative d = VehicleRates(p, env, s, VehicleCommand(), f_b, m_b);
@@ -293,19 +293,19 @@ TEST(VehicleModel, ActuatorsLagClampAndRateLimit) {
   for (int k = 1; k <= 300; ++k) {
     AdvanceVehicle(p, env, cmd, PointLoad(), kH, &s);
     const double t = k * kH;
-    ASSERT_NEAR(s.thrust, 1000.0 * (1.0 - std::exp(-t / 2.0)), kLagTol * 1000.0);
+    ASSERT_NEAR(s.actuator[kThrust], 1000.0 * (1.0 - std::exp(-t / 2.0)), kLagTol * 1000.0);
     // rate limit: while far from the target the rudder moves at exactly max_rate
     if (t <= 1.0) {
-      ASSERT_NEAR(s.rudder, 20.0 * kDeg * t, 1e-12);
+      ASSERT_NEAR(s.actuator[kRudder], 20.0 * kDeg * t, 1e-12);
     }
   }
   // after 3 s: the rudder has reached its 30 deg stop (1.5 s of slewing + 0.05 s servo lag),
   // the elevator its command
-  EXPECT_NEAR(s.rudder, 30.0 * kDeg, 1e-6);
-  EXPECT_NEAR(s.elevator, -10.0 * kDeg, 1e-6);
+  EXPECT_NEAR(s.actuator[kRudder], 30.0 * kDeg, 1e-6);
+  EXPECT_NEAR(s.actuator[kElevator], -10.0 * kDeg, 1e-6);
   cmd.thrust = -5000.0;  // reverse: clamped to -max/4
   for (int k = 0; k < 5000; ++k) AdvanceVehicle(p, env, cmd, PointLoad(), kH, &s);
-  EXPECT_NEAR(s.thrust, -250.0, 1e-6);
+  EXPECT_NEAR(s.actuator[kThrust], -250.0, 1e-6);
 }
 
 // the point load: a world force ramped over the step (force_W0 -> force_W1) integrates to
@@ -334,6 +334,25 @@ TEST(VehicleModel, PointLoadIsInterpolatedAndAppliedAtItsPoint) {
 }
 
 // 7b. EulerZYX(QuaternionFromEulerZYX(x)) = x on a seeded sample (pitch away from +-90 deg)
+// the packed layout (VehicleStateLayout): p_W, q_WB as (w, x, y, z), nu, the actuators
+TEST(VehicleModel, PackedStateLayoutAndRoundTrip) {
+  VehicleState s;
+  s.p_W = Vec3(1.0, 2.0, 3.0);
+  s.q_WB = Eigen::Quaterniond(4.0, 5.0, 6.0, 7.0);  // not unit: stored as given
+  s.nu << 8.0, 9.0, 10.0, 11.0, 12.0, 13.0;
+  s.actuator[kThrust] = 14.0;
+  s.actuator[kRudder] = 15.0;
+  s.actuator[kElevator] = 16.0;
+  const VehicleVector x = PackVehicleState(s);
+  ASSERT_EQ(x.size(), 16);
+  for (int i = 0; i < x.size(); ++i) EXPECT_EQ(x(i), i + 1.0) << "entry " << i;
+  const VehicleState back = UnpackVehicleState(x);
+  EXPECT_EQ(back.p_W, s.p_W);
+  EXPECT_EQ(back.q_WB.coeffs(), s.q_WB.coeffs());
+  EXPECT_EQ(back.nu, s.nu);
+  EXPECT_EQ(back.actuator, s.actuator);
+}
+
 TEST(VehicleModel, EulerAnglesRoundTrip) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> roll(-kPi + 1e-6, kPi - 1e-6);

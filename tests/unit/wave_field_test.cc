@@ -8,13 +8,13 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "signal_analysis.h"
 
 namespace towsim::core {
 namespace {
 
 using Vec3 = Eigen::Vector3d;
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kG = 9.81;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 

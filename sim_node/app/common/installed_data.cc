@@ -1,0 +1,47 @@
+#include "app/common/installed_data.h"
+
+#include <iterator>
+#include <system_error>
+
+namespace towsim::app {
+
+namespace fs = std::filesystem;
+
+std::optional<fs::path> InstallPrefix(const fs::path& exe) {
+  const fs::path dir = exe.parent_path();
+  if (dir.filename() == "bin") return dir.parent_path();
+  // P/libexec/towsim/<program>: the directory's last components are kPrivateProgramDir
+  const fs::path private_dir(kPrivateProgramDir);
+  fs::path prefix = dir;
+  for (auto part = std::distance(private_dir.begin(), private_dir.end()); part > 0; --part) {
+    prefix = prefix.parent_path();
+  }
+  if (!prefix.empty() && prefix / private_dir == dir) return prefix;
+  return std::nullopt;
+}
+
+std::optional<fs::path> InstalledDataDir() {
+  std::error_code ec;
+  const fs::path exe = fs::canonical("/proc/self/exe", ec);
+  if (ec) return std::nullopt;
+  // P/bin/<program> or P/libexec/towsim/<program> -> P/share/towsim
+  const std::optional<fs::path> prefix = InstallPrefix(exe);
+  if (!prefix) return std::nullopt;
+  const fs::path data = *prefix / "share" / "towsim";
+  if (!fs::is_directory(data, ec)) return std::nullopt;
+  return data;
+}
+
+std::string ResolveScene(const std::string& scene, const std::optional<fs::path>& data_dir) {
+  std::error_code ec;
+  if (fs::exists(scene, ec) || !data_dir) return scene;
+  const fs::path name(scene);
+  if (name.has_parent_path()) return scene;
+  for (const fs::path& candidate :
+       {*data_dir / "scenes" / name, *data_dir / "scenes" / (scene + ".yaml")}) {
+    if (fs::is_regular_file(candidate, ec)) return candidate.string();
+  }
+  return scene;
+}
+
+}  // namespace towsim::app

@@ -1,0 +1,156 @@
+#include "app/common/node_topics.h"
+
+#include <utility>
+
+#include "dds/environment_translator.h"
+#include "dds/frames.h"
+#include "dds/markers.h"
+#include "dds/messages.h"
+#include "dds/sensor_translators.h"
+#include "dds/translators.h"
+#include "io/csv_writer.h"
+
+namespace towsim::app {
+namespace {
+
+using core::PublishRate;
+
+// a state topic whose message `Holder` (a dds/translators.h *Message: its C struct in .msg)
+// is filled by Translate(sim, body, step, holder)
+template <class Holder, void (*Translate)(const core::Simulation&, int, uint64_t, Holder*)>
+class Translated final : public StateTopic {
+ public:
+  Translated(const dds::Participant& participant, const TopicRow& row, const std::string& name,
+             std::unique_ptr<Holder> holder, int body)
+      : StateTopic(participant, row.spec().type, name, dds::QosOf(row.spec().qos), row.rate),
+        holder_(std::move(holder)),
+        body_(body) {}
+  const void* Fill(const core::Simulation& sim, uint64_t step) override {
+    Translate(sim, body_, step, holder_.get());
+    return &holder_->msg;
+  }
+
+ private:
+  std::unique_ptr<Holder> holder_;
+  int body_;
+};
+
+// /clock has no strings to own
+struct ClockHolder {
+  dds::ClockMsg msg{};
+};
+
+// the translators, in the form Translated takes
+void Odometry(const core::Simulation& sim, int b, uint64_t, dds::OdometryMessage* m) {
+  dds::ToOdometry(sim, b, &m->msg);
+}
+void CableForce(const core::Simulation& sim, int b, uint64_t, dds::WrenchStampedMessage* m) {
+  dds::ToCableForce(sim, b, &m->msg);
+}
+void Altitude(const core::Simulation& sim, int b, uint64_t, dds::RangeMessage* m) {
+  dds::ToAltitude(sim, b, &m->msg);
+}
+void Pressure(const core::Simulation& sim, int b, uint64_t, dds::FluidPressureMessage* m) {
+  dds::ToPressure(sim, b, &m->msg);
+}
+void Environment(const core::Simulation& sim, int b, uint64_t step,
+                 dds::BodyEnvironmentMessage* m) {
+  dds::ToBodyEnvironment(sim, b, step, &m->msg);
+}
+void CableState(const core::Simulation& sim, int, uint64_t step, dds::CableStateMessage* m) {
+  dds::ToCableState(sim, step, m);
+}
+void Clock(const core::Simulation& sim, int, uint64_t, ClockHolder* m) {
+  dds::ToClock(sim.time(), &m->msg);
+}
+void Transforms(const core::Simulation& sim, int, uint64_t, dds::TransformsMessage* m) {
+  dds::ToBodyTransforms(sim, m);
+}
+void Markers(const core::Simulation& sim, int, uint64_t, dds::SceneMarkers* m) { m->Update(sim); }
+
+template <class Holder, void (*Translate)(const core::Simulation&, int, uint64_t, Holder*)>
+std::unique_ptr<StateTopic> Make(const dds::Participant& participant, const TopicRow& row,
+                                 const std::string& name, std::unique_ptr<Holder> holder,
+                                 int body) {
+  return std::make_unique<Translated<Holder, Translate>>(participant, row, name, std::move(holder),
+                                                         body);
+}
+
+std::vector<TopicRow> BuildTable() {
+  using P = const dds::Participant&;
+  using S = const core::Simulation&;
+  using N = const std::string&;
+  using T = wire::Topic;
+  return {
+      {T::kClock, PublishRate::kClock,
+       [](P p, const TopicRow& row, N name, S, int) {
+         return Make<ClockHolder, Clock>(p, row, name, std::make_unique<ClockHolder>(), -1);
+       }},
+      {T::kCableState, PublishRate::kCableState,
+       [](P p, const TopicRow& row, N name, S sim, int) {
+         return Make<dds::CableStateMessage, CableState>(
+             p, row, name,
+             std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim)),
+             -1);
+       }},
+      // /tf: the same state as the odometry, at its rate
+      {T::kTf, PublishRate::kOdom,
+       [](P p, const TopicRow& row, N name, S sim, int) {
+         return Make<dds::TransformsMessage, Transforms>(p, row, name, dds::BodyTransforms(sim),
+                                                         -1);
+       }},
+      {T::kMarkers, PublishRate::kMarkers,
+       [](P p, const TopicRow& row, N name, S sim, int) {
+         return Make<dds::SceneMarkers, Markers>(p, row, name,
+                                                 std::make_unique<dds::SceneMarkers>(sim), -1);
+       }},
+      {T::kOdom, PublishRate::kOdom,
+       [](P p, const TopicRow& row, N name, S sim, int b) {
+         return Make<dds::OdometryMessage, Odometry>(
+             p, row, name,
+             std::make_unique<dds::OdometryMessage>(dds::kWorldFrame,
+                                                    dds::FrdFrame(sim.body_name(b))),
+             b);
+       }},
+      {T::kCableForce, PublishRate::kCableForce,
+       [](P p, const TopicRow& row, N name, S sim, int b) {
+         return Make<dds::WrenchStampedMessage, CableForce>(
+             p, row, name,
+             std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(sim.body_name(b))), b);
+       }},
+      {T::kAltitude, PublishRate::kSensors,
+       [](P p, const TopicRow& row, N name, S sim, int b) {
+         return Make<dds::RangeMessage, Altitude>(
+             p, row, name, std::make_unique<dds::RangeMessage>(sim.body_name(b)), b);
+       }},
+      {T::kPressure, PublishRate::kSensors,
+       [](P p, const TopicRow& row, N name, S sim, int b) {
+         return Make<dds::FluidPressureMessage, Pressure>(
+             p, row, name, std::make_unique<dds::FluidPressureMessage>(sim.body_name(b)), b);
+       }},
+      // the sea at each body, as environment.csv: only in a scene with waves, a current or a
+      // seabed (io::HasSea; a calm scene's node has no such topic)
+      {T::kEnvironment, PublishRate::kSensors,
+       [](P p, const TopicRow& row, N name, S sim, int b) -> std::unique_ptr<StateTopic> {
+         if (!io::HasSea(sim.model().environment)) return nullptr;
+         return Make<dds::BodyEnvironmentMessage, Environment>(
+             p, row, name, std::make_unique<dds::BodyEnvironmentMessage>(dds::kWorldFrame), b);
+       }},
+  };
+}
+
+}  // namespace
+
+StateTopic::StateTopic(const dds::Participant& participant, const dds_topic_descriptor_t* type,
+                       const std::string& name, const dds::Qos& qos, core::PublishRate rate)
+    : type_(type),
+      rate_(rate),
+      topic_(participant, type, name),
+      writer_(participant, topic_, qos) {}
+
+const std::vector<TopicRow>& NodeTopicTable() {
+  static const std::vector<TopicRow> table = BuildTable();
+  return table;
+}
+
+}  // namespace towsim::app

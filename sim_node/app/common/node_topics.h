@@ -1,0 +1,63 @@
+#pragma once
+// The node's per-step state topics in one table (docs/contract.md §3, docs/frames.md, docs/app_layer.md):
+// one row per topic with its wire row (wire/topic_table.h: name, type, QoS, direction), its rate
+// key (core/publish_rates.h) and the translator that fills its message from the simulation. The
+// node's state writers (app/node/dds_publisher.h) with their recording and Foxglove channels read
+// this table; the tools that subscribe to a node by name (towsim_record, towsim_foxglove:
+// NodeTopics) read the wire's. A new state topic is one row there, one row here, its rate key
+// and its translator.
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/publish_rates.h"
+#include "core/simulation.h"
+#include "dds/entities.h"
+#include "dds/qos.h"
+#include "wire/topic_table.h"
+
+namespace towsim::app {
+
+// one per-step state topic of a running node: its writer and the message its translator fills
+class StateTopic {
+ public:
+  StateTopic(const dds::Participant& participant, const dds_topic_descriptor_t* type,
+             const std::string& name, const dds::Qos& qos, core::PublishRate rate);
+  virtual ~StateTopic() = default;
+  StateTopic(const StateTopic&) = delete;
+  StateTopic& operator=(const StateTopic&) = delete;
+
+  // fills the message from `sim` after `step` steps; returns it (the C struct of type())
+  virtual const void* Fill(const core::Simulation& sim, uint64_t step) = 0;
+
+  core::PublishRate rate() const { return rate_; }
+  const dds_topic_descriptor_t* type() const { return type_; }
+  dds::Writer<void>& writer() { return writer_; }
+  const dds::Writer<void>& writer() const { return writer_; }
+
+ private:
+  const dds_topic_descriptor_t* type_;
+  core::PublishRate rate_;
+  dds::Topic topic_;
+  dds::Writer<void> writer_;
+};
+
+struct TopicRow {
+  wire::Topic topic;  // its name, type and QoS: wire/topic_table.h
+  core::PublishRate rate;
+  // its writer with its translator (body: the body index for per-body rows, else -1); nullptr
+  // where the scene has no such topic (the environment of a calm scene)
+  std::unique_ptr<StateTopic> (*make)(const dds::Participant& participant, const TopicRow& row,
+                                      const std::string& name, const core::Simulation& sim,
+                                      int body);
+  const wire::TopicSpec& spec() const { return wire::SpecOf(topic); }
+  bool per_body() const { return spec().scope == wire::Scope::kBody; }
+};
+
+// every per-step state topic of a node: those of the node, then those of each body
+const std::vector<TopicRow>& NodeTopicTable();
+
+}  // namespace towsim::app

@@ -1,0 +1,51 @@
+#pragma once
+// towsim_export --csv: a recording of a towsim node (MCAP, CDR payloads) back into the CSV
+// files of docs/contract.md §5, with the columns and number formatting of io/csv_writer ("%.9g"), so
+// that scripts (plot_paper.py, summarize.py) work on recordings as on `sim_node --csv` output.
+//
+// Topics used, under the namespace NS (default /towsim):
+//   NS/<b>/odom        nav_msgs/Odometry      -> bodies.csv  (Euler ZYX from the quaternion,
+//                                                 by the core's own EulerZYX)
+//   NS/<b>/cable_force geometry_msgs/WrenchStamped -> forces.csv
+//   NS/cable/state     towsim_msgs/CableState -> cable.csv, and winch.csv (paid_out_length,
+//                                                 winch_speed, drum_tension, node_count) when
+//                                                 the scene info says the scene has a winch
+//   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
+//                                                 the end-of-run repeat of a step is dropped)
+//   NS/<b>/environment towsim_msgs/BodyEnvironment -> environment.csv (written, as by the node,
+//                                                 only when the recording has these topics: a
+//                                                 scene with a sea; NaN altitude as an empty field)
+//                                                 the end-of-run repeat of a step is dropped;
+//                                                 cable_length from the newest cable state
+//                                                 at or before the status)
+//   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
+// A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
+// status message has the same stamp, else the stamp (rounded to 1 ns by the node).
+// Not on the wire, hence not exported: the forces.csv rows of cable ends held by fixed or
+// driven supports ("cable.start", "cable.end"). One run per recording: after a RESET the
+// stamps repeat and the rows of equal stamps are merged.
+
+#include <cstdint>
+#include <string>
+
+#include "io/mcap_reader.h"
+
+namespace towsim::app {
+
+struct ExportCounts {
+  std::uint64_t bodies_rows = 0, cable_rows = 0, forces_rows = 0, status_rows = 0;
+  std::uint64_t environment_rows = 0;
+  std::uint64_t winch_rows = 0;  // a scene with a winch
+};
+
+// reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files
+// (and environment.csv, above)
+// into `dir` (created if needed). Throws mcap::McapError / cdr::CdrError (bad file: the
+// message names the offset and, for a payload, the topic), std::invalid_argument (no towsim
+// topics under `ns`, a topic with an unexpected type) or std::runtime_error (writing failed).
+ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, const std::string& ns,
+                       bool recover);
+// the same from a reader opened (or recovered) by the caller
+ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir, const std::string& ns);
+
+}  // namespace towsim::app

@@ -1,0 +1,129 @@
+#include "app/foxglove/foxglove_commands.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <utility>
+
+#include "app/common/mcap_recording.h"
+#include "dds/qos.h"
+
+namespace towsim::app {
+
+dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t, uint64_t step,
+                                       double* thrust) {
+  const bool stop = t.linear.x == 0.0 && t.linear.y == 0.0 && t.linear.z == 0.0 &&
+                    t.angular.x == 0.0 && t.angular.y == 0.0 && t.angular.z == 0.0;
+  if (t.linear.x != 0.0 || stop) *thrust = t.linear.x;
+  dds::ActuatorCommandMsg cmd{};
+  cmd.step = step;
+  cmd.thrust = *thrust;
+  cmd.rudder = -t.angular.z;
+  cmd.elevator = t.linear.z;
+  return cmd;
+}
+
+FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
+                                   const wire::TopicNames& names,
+                                   const std::vector<std::string>& bodies, bool winch,
+                                   std::string program, bool quiet)
+    : participant_(participant),
+      program_(std::move(program)),
+      quiet_(quiet),
+      command_type_(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc),
+      control_type_(participant, &towsim_msgs_msg_dds__SimControl__desc),
+      twist_type_(participant, &geometry_msgs_msg_dds__Twist__desc),
+      winch_type_(participant, &towsim_msgs_msg_dds__WinchCommand__desc) {
+  for (const std::string& b : bodies) {
+    Inbound& in = inbound_[wire::RosTopicName(names.Name(wire::Topic::kCommand, b))];
+    in.schema_name = "towsim_msgs/msg/ActuatorCommand";
+    in.descriptor = &towsim_msgs_msg_dds__ActuatorCommand__desc;
+    in.type = &command_type_;
+    in.teleop = true;
+  }
+  if (winch) {  // the winch's own command (docs/winch_dds.md), checked by the node like any
+    Inbound& in = inbound_[wire::RosTopicName(names.Name(wire::Topic::kWinchCommand))];
+    in.schema_name = "towsim_msgs/msg/WinchCommand";
+    in.descriptor = &towsim_msgs_msg_dds__WinchCommand__desc;
+    in.type = &winch_type_;
+  }
+  Inbound& control = inbound_[wire::RosTopicName(names.Name(wire::Topic::kSimControl))];
+  control.schema_name = "towsim_msgs/msg/SimControl";
+  control.descriptor = &towsim_msgs_msg_dds__SimControl__desc;
+  control.type = &control_type_;
+  control.control = true;
+}
+
+void FoxgloveCommands::Attach(FoxgloveServer* server) {
+  server->OnClientAdvertise([this](const foxglove::ClientChannel& c) { return Advertise(c); });
+  server->OnClientPublish([this](const foxglove::ClientChannel& c, const uint8_t* d,
+                                 std::size_t n) { return Publish(c, d, n); });
+}
+
+std::string FoxgloveCommands::Advertise(const foxglove::ClientChannel& c) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = inbound_.find(c.topic);
+  if (it == inbound_.end()) {
+    std::string list;
+    for (const auto& [topic, in] : inbound_) list += (list.empty() ? "" : ", ") + topic;
+    return "not a topic clients may publish on (" + list + ")";
+  }
+  Inbound& in = it->second;
+  if (c.encoding != "cdr") return "encoding " + c.encoding + ": only cdr";
+  const std::string short_name = in.schema_name.substr(0, in.schema_name.find('/')) +
+                                 in.schema_name.substr(in.schema_name.rfind('/'));
+  const bool twist = in.teleop && (c.schema_name == "geometry_msgs/msg/Twist" ||
+                                   c.schema_name == "geometry_msgs/Twist");
+  if (c.schema_name != in.schema_name && c.schema_name != short_name && !twist) {
+    return "schema " + c.schema_name + ": must be " + in.schema_name +
+           (in.teleop ? " or geometry_msgs/msg/Twist" : "");
+  }
+  if (!in.writer.valid()) {
+    const std::string dds_name = wire::DdsTopicName(c.topic);
+    const dds_entity_t t =
+        dds_create_topic(participant_.get(), in.descriptor, dds_name.c_str(), nullptr, nullptr);
+    if (t < 0) return "creating topic " + dds_name + ": " + dds_strretcode(t);
+    in.topic = dds::Entity(t);
+    dds::Qos qos = in.control ? dds::ControlQos() : dds::CommandQos();
+    const dds_entity_t w = dds_create_writer(participant_.get(), t, qos.get(), nullptr);
+    if (w < 0) return "creating a writer for " + dds_name + ": " + dds_strretcode(w);
+    in.writer = dds::Entity(w);
+  }
+  return "";
+}
+
+std::string FoxgloveCommands::Publish(const foxglove::ClientChannel& c, const uint8_t* data,
+                                      std::size_t size) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  const auto it = inbound_.find(c.topic);
+  if (it == inbound_.end() || !it->second.writer.valid()) return "not advertised: " + c.topic;
+  Inbound& in = it->second;
+  auto reject = [&](const std::string& type, const std::string& why) {
+    ++malformed_;
+    if (!quiet_) {
+      std::fprintf(stderr, "%s: rejected a malformed %s on %s (%zu bytes)\n", program_.c_str(),
+                   type.c_str(), c.topic.c_str(), size);
+    }
+    return "rejected: malformed " + type + " on " + c.topic + " (" + std::to_string(size) +
+           " bytes)" + (why.empty() ? "" : ": " + why);
+  };
+  if (in.teleop && c.schema_name.rfind("geometry_msgs/", 0) == 0) {
+    geometry_msgs_msg_dds__Twist_ t{};  // no pointers: nothing to free
+    if (!twist_type_.Deserialize(data, size, &t)) return reject("geometry_msgs/msg/Twist", "");
+    dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load(), &in.teleop_thrust);
+    cmd.header.frame_id = const_cast<char*>("");
+    const dds_return_t rc = dds_write(in.writer.get(), &cmd);
+    if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
+    return "";
+  }
+  dds::CdrSample sample;
+  try {
+    sample = dds::CdrSample::FromBytes(*in.type, data, size);
+  } catch (const std::invalid_argument& e) {
+    return reject(in.schema_name, e.what());
+  }
+  const dds_return_t rc = sample.Write(in.writer.get(), dds_time());
+  if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
+  return "";
+}
+
+}  // namespace towsim::app

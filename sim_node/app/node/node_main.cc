@@ -1,0 +1,124 @@
+#include "app/node/node_main.h"
+
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "app/common/exit_codes.h"
+#include "app/common/installed_data.h"
+#include "app/common/stop_signal.h"
+#include "app/node/dds_program.h"
+#include "app/node/offline_run.h"
+#include "io/output_error.h"
+#include "scene/scene_loader.h"
+
+namespace towsim::app {
+namespace {
+
+std::string FormatSeconds(double s) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", s);
+  return text;
+}
+
+// closes the CSV files after a run that ended with `code`; a failure to close is an output
+// failure (exit 1), told once
+int CloseCsv(io::CsvWriter* csv, int code) {
+  if (csv == nullptr) return code;
+  try {
+    csv->Close();
+  } catch (const std::exception& e) {
+    if (code != kExitError) std::fprintf(stderr, "sim_node: error: --csv: %s\n", e.what());
+    return kExitError;
+  }
+  return code;
+}
+
+int Run(const Options& options, DdsModeRunner run_dds) {
+  if (!options.record_file.empty() && options.mode == Mode::kOffline) {
+    // the recording holds what the node publishes on DDS; offline publishes nothing
+    std::fprintf(stderr,
+                 "sim_node: error: --record %s: recording needs a DDS mode (realtime, fast or "
+                 "lockstep): --mode offline publishes nothing; use --mode fast, or --csv DIR\n",
+                 options.record_file.c_str());
+    return kExitBadInput;
+  }
+
+  core::Model model;
+  // a bare scene name also finds the scenes of an installed towsim (P/share/towsim/scenes)
+  const std::string scene = ResolveScene(options.scene, InstalledDataDir());
+  try {
+    model = scene::LoadScene(scene, options.overrides);
+  } catch (const std::exception& e) {  // scene::ConfigError: what() is the full message
+    std::fprintf(stderr, "sim_node: error: %s\n", e.what());
+    return kExitBadInput;
+  }
+  if (model.name.empty()) model.name = std::filesystem::path(scene).stem().string();
+  if (options.winch && !model.cable.winch) {
+    std::fprintf(stderr, "sim_node: error: --winch %s: the scene %s has no winch (cable.winch)\n",
+                 options.winch->c_str(), scene.c_str());
+    return kExitBadInput;
+  }
+  const double duration = options.duration.value_or(model.time.duration);
+  model.time.duration = duration;
+  if (!(duration / model.time.step <= core::kMaxSteps)) {
+    std::fprintf(stderr,
+                 "sim_node: error: --duration %s: must be <= 1e12 steps of time.step = %g s "
+                 "(%g s)\n",
+                 FormatSeconds(duration).c_str(), model.time.step,
+                 core::kMaxSteps * model.time.step);
+    return kExitBadInput;
+  }
+
+  std::unique_ptr<io::CsvWriter> csv;
+  if (!options.csv_dir.empty()) {
+    try {
+      csv = std::make_unique<io::CsvWriter>(options.csv_dir, io::HasSea(model.environment),
+                                            model.cable.winch.has_value());
+    } catch (const io::OutputError& e) {  // opened, not written: disk full
+      std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
+      return kExitError;
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
+      return kExitBadInput;
+    }
+  }
+
+  InstallStopHandlers();
+  if (options.mode != Mode::kOffline) {
+    return CloseCsv(csv.get(), run_dds(model, options, csv.get()));
+  }
+  return CloseCsv(csv.get(), RunOffline(model, duration, csv.get()));
+}
+
+}  // namespace
+
+int NodeMain(int argc, char** argv, DdsModeRunner run_dds) {
+  const ParseResult parsed = ParseCommandLine(argc, argv);
+  if (!parsed.ok()) {
+    std::fprintf(stderr, "sim_node: error: %s\n\n%s", parsed.error.c_str(), Usage().c_str());
+    return kExitBadInput;
+  }
+  if (parsed.options.help) {
+    std::fputs(Usage().c_str(), stdout);
+    return kExitOk;
+  }
+  if (parsed.options.version) {
+    std::printf("sim_node (towsim) %s\n", TOWSIM_VERSION);
+    return kExitOk;
+  }
+  // the DDS modes run in the DDS program, which checks and loads everything again itself
+  if (parsed.options.mode != Mode::kOffline && run_dds == nullptr) {
+    return ExecDdsProgram(parsed.options.mode, argv);
+  }
+  try {
+    return Run(parsed.options, run_dds);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sim_node: error: %s\n", e.what());
+    return kExitError;
+  }
+}
+
+}  // namespace towsim::app

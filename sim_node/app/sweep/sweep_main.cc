@@ -1,0 +1,270 @@
+// towsim_sweep: runs every case of a sweep file offline, locally with N worker processes or
+// on Slurm as one job array, and tabulates the results (docs/sweeps.md).
+//
+//   towsim_sweep FILE --out DIR [--workers N] [--slurm] [--resume] [--no-wait] [--collect]
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "app/common/exit_codes.h"
+#include "app/common/stop_signal.h"
+#include "app/common/text_file.h"
+#include "app/common/tool_command_line.h"
+#include "app/sweep/sweep_case.h"
+#include "app/sweep/sweep_combinator.h"
+#include "app/sweep/sweep_file.h"
+#include "app/sweep/sweep_local.h"
+#include "app/sweep/sweep_plot.h"
+#include "app/sweep/sweep_signals.h"
+#include "app/sweep/sweep_slurm.h"
+#include "app/sweep/sweep_table.h"
+#include "core/model.h"
+#include "scene/config_error.h"
+#include "scene/scene_loader.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+using towsim::app::kExitBadInput;
+using towsim::app::kExitError;
+using towsim::app::kExitIncomplete;  // the sweep ran; some cases failed (see results.csv)
+using towsim::app::kExitOk;
+
+struct Options {
+  std::string file, out;
+  int workers = 0;  // 0: the number of cores (locally); no limit on Slurm
+  bool slurm = false, resume = false, no_wait = false, collect = false;
+};
+
+std::string Usage() {
+  return "usage: towsim_sweep FILE --out DIR [--workers N] [--slurm] [--resume]\n"
+         "\n"
+         "Runs every case of the sweep file FILE (docs/sweeps.md) with sim_node --mode offline,\n"
+         "one folder per case under DIR, and writes DIR/results.csv, DIR/summary.txt and\n"
+         "DIR/results.svg.\n"
+         "\n"
+         "options:\n"
+         "  --out DIR      the sweep's folder (required)\n"
+         "  --workers N    sim_node processes at once (default: the number of cores); with\n"
+         "                 --slurm, Slurm array tasks at once (default: as Slurm schedules)\n"
+         "  --slurm        run the cases as one Slurm job array (sbatch --array) and wait\n"
+         "  --no-wait      with --slurm: submit and return; --collect later\n"
+         "  --resume       run only the cases that are missing or failed in DIR\n"
+         "  --collect      run nothing: tabulate the cases finished in DIR\n"
+         "  --help         print this and exit\n"
+         "\n"
+         "exit codes: 0 every case ok, 4 some cases failed (results.csv), 2 bad input,\n"
+         "1 unexpected error (e.g. sbatch failed), 130 / 143 stopped by SIGINT / SIGTERM\n";
+}
+
+// the options, read into `o`; "--slurm=1" is not --slurm, as before
+towsim::app::ToolCommandLine CommandLine(Options* o) {
+  towsim::app::ToolCommandLine line("towsim_sweep", Usage());
+  line.FlagsTakeNoValue()
+      .Value("--out", &o->out)
+      .Value("--workers",
+             [o](const std::string& v) -> std::string {
+               char* end = nullptr;
+               const long n = std::strtol(v.c_str(), &end, 10);
+               if (v.empty() || *end != '\0' || n < 1 || n > 4096) {
+                 return "--workers " + v + ": must be an integer >= 1";
+               }
+               o->workers = static_cast<int>(n);
+               return "";
+             })
+      .Flag("--slurm", &o->slurm)
+      .Flag("--resume", &o->resume)
+      .Flag("--no-wait", &o->no_wait)
+      .Flag("--collect", &o->collect)
+      .Others([o](const towsim::app::ToolFlags& flags) -> std::string {
+        const std::string& arg = flags.raw();
+        if (arg.rfind("-", 0) == 0) return "unknown option " + arg;
+        if (!o->file.empty()) return "one sweep file only (" + o->file + ", then " + arg + ")";
+        o->file = arg;
+        return "";
+      })
+      .Require(
+          [o]() -> std::string { return o->file.empty() ? "the sweep file FILE is required" : ""; })
+      .Require([o]() -> std::string { return o->out.empty() ? "--out DIR is required" : ""; })
+      .Require(
+          [o]() -> std::string { return o->no_wait && !o->slurm ? "--no-wait needs --slurm" : ""; })
+      .Require([o]() -> std::string {
+        return o->collect && (o->slurm || o->resume)
+                   ? "--collect runs nothing: not with --slurm or --resume"
+                   : "";
+      });
+  return line;
+}
+
+// sim_node: TOWSIM_SIM_NODE, else beside this executable, else on the PATH
+std::string FindSimNode() {
+  if (const char* env = std::getenv("TOWSIM_SIM_NODE"); env != nullptr && *env != '\0') {
+    return env;
+  }
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path beside = self.parent_path() / "sim_node";
+    if (fs::exists(beside)) return beside.string();
+  }
+  if (const char* path = std::getenv("PATH")) {
+    std::string dirs = path;
+    size_t begin = 0;
+    while (begin <= dirs.size()) {
+      const size_t end = std::min(dirs.find(':', begin), dirs.size());
+      const fs::path candidate = fs::path(dirs.substr(begin, end - begin)) / "sim_node";
+      if (access(candidate.c_str(), X_OK) == 0) return candidate.string();
+      begin = end + 1;
+    }
+  }
+  return {};
+}
+
+int Run(const Options& o) {
+  // the sweep file, its scene, its results (exit 2 for any rule broken)
+  towsim::app::SweepSpec spec;
+  std::vector<towsim::app::SweepCase> cases;
+  try {
+    spec = towsim::app::LoadSweepFile(o.file);
+    const towsim::core::Model model = towsim::scene::LoadScene(spec.scene);
+    std::vector<std::string> bodies;
+    for (const auto& s : model.spheres) bodies.push_back(s.name);
+    for (const auto& v : model.vehicles) bodies.push_back(v.name);
+    towsim::app::CheckSweepResults(&spec.results, bodies);
+    cases = towsim::app::CombineParameters(spec.parameters, spec.combine);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "towsim_sweep: error: %s\n", e.what());
+    return kExitBadInput;
+  }
+
+  const fs::path out(o.out);
+  const fs::path table = out / "results.csv";
+  std::error_code ec;
+  if (!o.resume && !o.collect && (fs::exists(table) || fs::exists(out / "slurm"))) {
+    std::fprintf(stderr,
+                 "towsim_sweep: error: --out %s: holds an earlier sweep (results.csv); pass "
+                 "--resume to continue it, --collect to tabulate it, or choose another folder\n",
+                 o.out.c_str());
+    return kExitBadInput;
+  }
+  fs::create_directories(out, ec);
+  if (ec) {
+    std::fprintf(stderr, "towsim_sweep: error: --out %s: cannot be created: %s\n", o.out.c_str(),
+                 ec.message().c_str());
+    return kExitBadInput;
+  }
+  const std::string sim_node = FindSimNode();
+  if (sim_node.empty() && !o.collect) {
+    std::fprintf(stderr,
+                 "towsim_sweep: error: sim_node not found (beside towsim_sweep, on the PATH, or "
+                 "TOWSIM_SIM_NODE)\n");
+    return kExitError;
+  }
+
+  // each case's folder, arguments and state; --resume keeps the ok cases with the same args
+  std::vector<std::string> dirs;
+  std::vector<std::vector<std::string>> arguments;
+  std::vector<std::optional<towsim::app::SweepRow>> rows(cases.size());
+  std::vector<size_t> todo;
+  int already = 0;
+  for (const towsim::app::SweepCase& c : cases) {
+    dirs.push_back((out / c.name).string());
+    arguments.push_back(towsim::app::CaseArguments(spec, c, dirs.back()));
+    const bool same = towsim::app::SameArguments(dirs.back(), arguments.back());
+    if (o.resume || o.collect) {
+      if (same) rows[c.index] = towsim::app::CollectCase(spec, c, dirs.back());
+      if (o.collect) continue;
+      if (rows[c.index] && rows[c.index]->ok) {
+        ++already;
+        continue;
+      }
+      rows[c.index].reset();
+    }
+    towsim::app::PrepareCase(dirs.back(), sim_node, arguments.back());
+    todo.push_back(static_cast<size_t>(c.index));
+  }
+  towsim::app::WriteResultsTable(table.string(), spec, rows);
+
+  // run: each finished case goes into the table at once
+  const Clock::time_point start = Clock::now();
+  auto on_finished = [&](size_t index) {
+    rows[index] = towsim::app::CollectCase(spec, cases[index], dirs[index]);
+    towsim::app::WriteResultsTable(table.string(), spec, rows);
+    return rows[index] && rows[index]->ok;
+  };
+  towsim::app::SweepProgress progress(static_cast<int>(cases.size()), already);
+  towsim::app::InstallStopHandlers();
+  int code = 0;
+  towsim::app::SweepTiming timing;
+  timing.slurm = o.slurm;
+  if (o.collect || todo.empty()) {
+    // nothing to run
+  } else if (o.slurm) {
+    towsim::app::SlurmRun run;
+    run.out_dir = o.out;
+    run.case_dirs = dirs;
+    run.todo = todo;
+    run.max_parallel = o.workers;
+    run.wait = !o.no_wait;
+    timing.workers = o.workers;
+    code = towsim::app::RunOnSlurm(run, on_finished, &progress);
+    if (code == 1) return kExitError;
+    if (o.no_wait) {
+      std::printf(
+          "towsim_sweep: %zu cases submitted; when the job has ended: towsim_sweep %s "
+          "--out %s --collect\n",
+          todo.size(), o.file.c_str(), o.out.c_str());
+      return kExitOk;
+    }
+  } else {
+    const int workers = o.workers > 0
+                            ? o.workers
+                            : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    timing.workers = workers;
+    std::vector<towsim::app::LocalCase> local;
+    for (size_t i : todo) local.push_back({dirs[i], arguments[i]});
+    code = towsim::app::RunLocal(
+        sim_node, local, workers, [&](size_t k) { return on_finished(todo[k]); }, &progress);
+  }
+  timing.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  for (size_t i : todo) timing.ran += rows[i] ? 1 : 0;
+
+  // the table (complete), the summary, the plot
+  towsim::app::WriteResultsTable(table.string(), spec, rows);
+  const std::string summary = towsim::app::SweepSummary(spec, cases, rows, timing);
+  towsim::app::WriteTextFileAtomically((out / "summary.txt").string(), summary);
+  towsim::app::WriteTextFileAtomically((out / "results.svg").string(),
+                                       towsim::app::SweepPlotSvg(spec, rows));
+  std::fputs(summary.c_str(), stdout);
+  std::fflush(stdout);
+  if (code != 0) return code;  // stopped by a signal
+  for (const auto& row : rows) {
+    if (!row || !row->ok) return kExitIncomplete;
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Options options;
+  if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
+  try {
+    return Run(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "towsim_sweep: error: %s\n", e.what());
+    return kExitError;
+  }
+}

@@ -1,0 +1,43 @@
+#pragma once
+// The results of a sweep case (docs/sweeps.md "Results"): a statistic of a named signal,
+// computed from the case's CSV files (the columns of io/csv_writer.h) and from sim_node's
+// summary line (run_stats.h). Signals:
+//   <body>.x y z roll pitch yaw u v w p q r   bodies.csv (world NED [m], rad, body frame)
+//   <body>.depth                              z (NED: down is positive) [m]
+//   <body>.speed                              |(u, v, w)| [m/s]
+//   <body>.track_error                        signed cross-track distance [m] from the line
+//                                             through the body's t = 0 position along its
+//                                             t = 0 heading (positive to starboard)
+//   <body>.fx fy fz mx my mz                  forces.csv: the cable's force and moment on it
+//   <body>.cable_force                        |(fx, fy, fz)| [N]
+//   layback                                   horizontal distance from the tow point (cable
+//                                             node 0) to the towed end (the last node) [m]
+//   top_tension, end_tension, max_tension     axial force at node 0, at the last node, the
+//                                             largest over the nodes [N] (cable.csv)
+//   newton_iterations, residual, step_wall_us status.csv (the steps at the output times)
+// Statistics over the output rows in the window [from, to]: final, initial, min, max,
+// max_abs, mean, rms, std (population). Run totals, from the summary line (no statistic):
+//   steps, rtf, run_wall_s (the stepping loop), newton_iterations_mean, newton_iterations_max,
+//   substeps, coupling_iterations_mean.
+
+#include <string>
+#include <vector>
+
+#include "app/sweep/sweep_file.h"
+
+namespace towsim::app {
+
+// Checks every result's signal and statistic against the scene's body names; a time signal
+// without a statistic takes `final`. Throws scene::ConfigError (key results.<name>.signal,
+// the result's location, the rule with the allowed names).
+void CheckSweepResults(std::vector<SweepResult>* results,
+                       const std::vector<std::string>& body_names);
+
+// The value of each result for the case whose CSV files are in `case_dir`; `sim_node_stdout`
+// holds its summary line. Throws std::runtime_error naming the file, or the result and window
+// with no rows.
+std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
+                                        const std::string& case_dir,
+                                        const std::string& sim_node_stdout);
+
+}  // namespace towsim::app
