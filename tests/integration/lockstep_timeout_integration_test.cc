@@ -52,8 +52,7 @@ PausedRun PausedController(int domain, double pause, const std::vector<std::stri
   std::vector<std::string> extra = {"--duration", "2"};
   extra.insert(extra.end(), node_extra.begin(), node_extra.end());
   const Clock::time_point start = Clock::now();
-  Process node(SimNodeArgs(TOWSIM_SIM_NODE, kCase1, "lockstep", domain, extra),
-               LogPrefix("node"));
+  Process node(SimNodeArgs(TOWSIM_SIM_NODE, kCase1, "lockstep", domain, extra), LogPrefix("node"));
   Process controller({TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(domain), "--pause",
                       std::to_string(kPausedStep) + "=" + std::to_string(pause)},
                      LogPrefix("controller"));
@@ -74,11 +73,12 @@ PausedRun PausedController(int domain, double pause, const std::vector<std::stri
 TEST_F(LockstepTimeoutTest, PauseLongerThanTheTimeoutExits5NamingBodyAndStep) {
   Observer watch(94);
   const std::string csv = LogPrefix("csv");
-  const PausedRun r = PausedController(
-      94, 1.5, {"--lockstep-timeout", "0.5", "--fail-on-failsafe", "--csv", csv});
+  const PausedRun r =
+      PausedController(94, 1.5, {"--lockstep-timeout", "0.5", "--fail-on-failsafe", "--csv", csv});
   EXPECT_EQ(r.node_exit, 5) << r.err;
   EXPECT_EQ(r.controller_exit, 0);
-  const std::string reason = "lockstep timeout: body tow_vehicle, body towfish at step 10 (t = 0.5 s)";
+  const std::string reason =
+      "lockstep timeout: body tow_vehicle, body towfish at step 10 (t = 0.5 s)";
   EXPECT_NE(r.err.find("sim_node: error: " + reason), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("(--lockstep-timeout 0.5) (--fail-on-failsafe)"), std::string::npos)
       << r.err;

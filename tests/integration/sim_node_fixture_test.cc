@@ -168,8 +168,8 @@ TEST(SimNodeFixture, AStalledControllerFailsTheRunUnlessTurnedOff) {
     SimNode node(o);
     controllers::ClientOptions fish;
     fish.body = "towfish";
-    InProcessController fish_ctl(node, fish,
-                                 [](const controllers::BodyState&) { return controllers::Actuation{}; });
+    InProcessController fish_ctl(
+        node, fish, [](const controllers::BodyState&) { return controllers::Actuation{}; });
     controllers::ClientOptions tow;
     tow.body = "tow_vehicle";
     bool stalled = false;  // the law runs on the controller's thread only

@@ -23,8 +23,9 @@
 // simulation time --winch-until (then the winch is no longer answered). Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
 // DIR/NAME (wire/security.h, exit 2 if refused). --pause STEP=S: before answering step STEP,
-// sleep S wall seconds (a slow controller, for the tests of --lockstep-timeout). --stats prints the lockstep rate on stdout, the
-// mean and the median wall time between consecutive answers:
+// sleep S wall seconds (a slow controller, for the tests of --lockstep-timeout). --stats
+// prints the lockstep rate on stdout, the mean and the median wall time between consecutive
+// answers:
 //   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step (median 301.2 us)
 
 #include <algorithm>

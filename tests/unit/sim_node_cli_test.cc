@@ -449,10 +449,9 @@ TEST(SimNodeCliTest, SolverFailureExitsThree) {
 // is the same, exit 0
 TEST(SimNodeCliTest, FailOnFailsafeOfflineIsHarmless) {
   TempDir tmp;
-  const SimNodeResult r =
-      RunSimNode({"--scene", kCatenary, "--mode", "offline", "--duration", "0.2",
-                  "--fail-on-failsafe"},
-                 tmp.path());
+  const SimNodeResult r = RunSimNode(
+      {"--scene", kCatenary, "--mode", "offline", "--duration", "0.2", "--fail-on-failsafe"},
+      tmp.path());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err, "");
 }

@@ -135,10 +135,10 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.fail_on_failsafe = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene",     "--mode",     "--duration", "--rate",
-                                             "--set",       "--csv",      "--record",   "--domain",
-                                             "--namespace", "--security", "--foxglove",
-                                             "--winch",   "--lockstep-timeout"};
+    static const char* const kWithValue[] = {
+        "--scene",    "--mode",   "--duration",        "--rate",      "--set",
+        "--csv",      "--record", "--domain",          "--namespace", "--security",
+        "--foxglove", "--winch",  "--lockstep-timeout"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -232,8 +232,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     return fail("--security " + o.security + ": needs a DDS mode (realtime, fast or lockstep)");
   }
   if (o.mode == Mode::kOffline && o.winch == "dds") {
-    return fail("--winch dds: needs a DDS mode (realtime, fast or lockstep); offline the winch "
-                "follows the scene's script");
+    return fail(
+        "--winch dds: needs a DDS mode (realtime, fast or lockstep); offline the winch "
+        "follows the scene's script");
   }
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +

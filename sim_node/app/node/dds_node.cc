@@ -147,7 +147,7 @@ class DdsNode {
   bool output_failed_ = false;  // opt_.output threw io::OutputError
   // --fail-on-failsafe: why the run ends (app/node/failsafe_failure.h); empty: no failsafe yet
   std::string failsafe_failure_;
-  dds::StatusSample status_;    // reused: no allocation per step
+  dds::StatusSample status_;  // reused: no allocation per step
 };
 
 int DdsNode::Run() {
@@ -401,8 +401,8 @@ bool DdsNode::WaitLockstep() {
         for (int v = 0; v < arbiter.size(); ++v) {
           never_heard = never_heard && !(arbiter.failsafe(v) && arbiter.commanded(v));
         }
-        NoteFailsafe(LockstepTimeoutFailure(FailsafeEntries(arbiter), n_.sim->time(), step_,
-                                            waited, limit, never_heard));
+        NoteFailsafe(LockstepTimeoutFailure(FailsafeEntries(arbiter), n_.sim->time(), step_, waited,
+                                            limit, never_heard));
         PublishStatus(RunningState());
         if (arbiter.ReadyFor(step_)) return true;
       }

@@ -55,13 +55,13 @@ struct DdsNodeOptions {
   Mode mode = Mode::kRealtime;  // kRealtime, kFast or kLockstep (kOffline: exit 2)
   // simulated time to run [s]: round(duration / h) steps, then exit 0; infinity: until stopped
   double duration = std::numeric_limits<double>::infinity();
-  double rate = 1.0;              // realtime pacing factor (2: twice real time), > 0
-  uint32_t domain = 0;            // DDS domain id
-  std::string ns = "/towsim";     // ROS 2 namespace of the topics (/clock stays at the root)
-  std::string dds_config;         // CYCLONEDDS_URI-style config; empty: $CYCLONEDDS_URI
-  std::string security;           // DDS Security identity DIR/NAME (wire/security.h); "": none
-  bool open_outputs = false;      // with security: readers without a certificate see the outputs
-  double command_timeout = 0.5;   // failsafe after this much simulation time without command [s]
+  double rate = 1.0;             // realtime pacing factor (2: twice real time), > 0
+  uint32_t domain = 0;           // DDS domain id
+  std::string ns = "/towsim";    // ROS 2 namespace of the topics (/clock stays at the root)
+  std::string dds_config;        // CYCLONEDDS_URI-style config; empty: $CYCLONEDDS_URI
+  std::string security;          // DDS Security identity DIR/NAME (wire/security.h); "": none
+  bool open_outputs = false;     // with security: readers without a certificate see the outputs
+  double command_timeout = 0.5;  // failsafe after this much simulation time without command [s]
   // lockstep: wall time to wait for a step's commands [s], >= 0; 0: wait forever
   double lockstep_timeout = 1.0;
   // end with exit code 5 at the first failsafe or lockstep timeout (after its step)
