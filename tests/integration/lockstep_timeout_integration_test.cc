@@ -90,6 +90,9 @@ TEST_F(LockstepTimeoutTest, PauseLongerThanTheTimeoutExits5NamingBodyAndStep) {
   Status end;
   ASSERT_TRUE(watch.WaitFor([](const Status& s) { return s.terminal(); }, &end));
   EXPECT_EQ(end.state, kFailed);
+  EXPECT_EQ(end.health, towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_ERROR);
+  EXPECT_EQ(end.failsafe_bodies, (std::vector<std::string>{"tow_vehicle", "towfish"}));
+  EXPECT_EQ(end.lockstep_timeouts, 2u);
   EXPECT_EQ(end.step, 11u);
   EXPECT_NE(end.message.find(reason), std::string::npos) << end.message;
 
