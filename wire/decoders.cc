@@ -28,9 +28,11 @@ bool SimStatus::paused() const {
 bool SimStatus::finished() const {
   return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FINISHED;
 }
+bool SimStatus::failed() const {
+  return state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED;
+}
 bool SimStatus::terminal() const {
-  return finished() || state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED ||
-         state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
+  return finished() || failed() || state == towsim_msgs_msg_dds__SimStatus_Constants_STATE_STOPPED;
 }
 bool SimStatus::failsafe() const {
   return health == towsim_msgs_msg_dds__SimStatus_Constants_HEALTH_FAILSAFE;

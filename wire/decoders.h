@@ -35,6 +35,7 @@ struct SimStatus {
   bool running() const;  // running or waiting for commands
   bool paused() const;
   bool finished() const;  // duration reached
+  bool failed() const;    // a solver, output or failsafe failure (sim_node --fail-on-failsafe)
   bool terminal() const;  // finished, failed or stopped: the last status of the run
   bool failsafe() const;  // a body is in failsafe
 };

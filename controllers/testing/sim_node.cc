@@ -263,6 +263,10 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   if (o.mode == "realtime") argv.insert(argv.end(), {"--rate", number(o.rate)});
   for (const std::string& s : o.set) argv.insert(argv.end(), {"--set", s});
   if (o.csv) argv.insert(argv.end(), {"--csv", csv_dir()});
+  if (o.fail_on_failsafe) argv.push_back("--fail-on-failsafe");
+  if (o.lockstep_timeout >= 0.0) {
+    argv.insert(argv.end(), {"--lockstep-timeout", number(o.lockstep_timeout)});
+  }
   argv.insert(argv.end(), o.extra_args.begin(), o.extra_args.end());
   m.process = std::make_unique<Process>(argv, o.log_dir + "/sim_node",
                                         std::vector<std::string>{"CYCLONEDDS_URI=" + m.dds_uri});

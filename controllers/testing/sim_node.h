@@ -46,6 +46,13 @@ struct SimNodeOptions {
   int domain = -1;                      // -1: a free one (DomainLease), else exactly this id
   bool csv = true;                      // --csv <log dir>/csv (bodies.csv, ... of docs/contract.md §5)
   bool start_paused = false;            // stay paused after start-up (Resume() starts)
+  // --fail-on-failsafe: the first failsafe or lockstep timeout ends the run with exit code 5,
+  // the body, step and reason in the log and the final status (FAILED); false: the node runs on
+  // with the body in failsafe (for tests of the failsafe itself)
+  bool fail_on_failsafe = true;
+  // --lockstep-timeout [s] (lockstep only): wall time a step waits for its commands; 0: wait
+  // forever (debugging); < 0: sim_node's default (1 s)
+  double lockstep_timeout = -1.0;
   double startup_timeout = 30.0;        // [s] for scene_info and the first state
   // where the installation is: the defaults come from find_package(towsim)
   std::string sim_node = TOWSIM_TESTING_SIM_NODE;  // the sim_node executable
@@ -76,7 +83,9 @@ using StatusSample = wire::SimStatus;
 
 // how the node ended
 struct NodeResult {
-  int exit_code = -1;   // 128 + signal if a signal ended it; -1 if it did not end in time
+  // 128 + signal if a signal ended it; -1 if it did not end in time; 5: a failsafe or
+  // lockstep timeout ended it (SimNodeOptions::fail_on_failsafe)
+  int exit_code = -1;
   std::string summary;  // the summary line "sim_node: <scene>: <mode>, N steps, ..."
 };
 

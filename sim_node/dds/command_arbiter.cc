@@ -51,11 +51,13 @@ void CommandArbiter::EnterFailsafe(int v, const std::string& why) {
     s.failsafe = true;
     ++failsafe_count_;
     last_event_ = vehicles_[v].name + ": failsafe (" + why + ")";
+    last_failsafe_reason_ = why;
   }
   s.fresh = false;
 }
 
-void CommandArbiter::CheckTimeouts(double t) {
+int CommandArbiter::CheckTimeouts(double t) {
+  int n = 0;
   for (int v = 0; v < size(); ++v) {
     const State& s = state_[v];
     if (!s.has_command || s.failsafe) continue;
@@ -64,8 +66,10 @@ void CommandArbiter::CheckTimeouts(double t) {
       char why[96];
       std::snprintf(why, sizeof why, "no command for %.3g s of simulation time", silent);
       EnterFailsafe(v, why);
+      ++n;
     }
   }
+  return n;
 }
 
 bool CommandArbiter::ReadyFor(uint64_t step) const {
@@ -129,6 +133,7 @@ void CommandArbiter::Reset() {
   for (State& s : state_) s = State{};
   received_ = rejected_ = clamped_ = failsafe_count_ = lockstep_timeouts_ = 0;
   last_event_.clear();
+  last_failsafe_reason_.clear();
 }
 
 std::vector<std::string> CommandArbiter::failsafe_names() const {

@@ -62,8 +62,8 @@ class CommandArbiter {
   CheckedWinchCommand Receive(int v, const WinchCommandMsg& msg, double t);
 
   // enters failsafe every vehicle whose last valid command is `command_timeout` or more
-  // before t; call at the start of every step
-  void CheckTimeouts(double t);
+  // before t; call at the start of every step. Returns how many entered failsafe.
+  int CheckTimeouts(double t);
 
   // lockstep: every lockstep vehicle that is waited for holds a command answering `step`
   bool ReadyFor(uint64_t step) const;
@@ -99,6 +99,9 @@ class CommandArbiter {
   uint64_t lockstep_timeouts() const { return lockstep_timeouts_; }
   // the last clamp / reject / failsafe, for the status message
   const std::string& last_event() const { return last_event_; }
+  // why the last entry that entered failsafe did ("no command for 0.5 s of simulation time",
+  // "lockstep: no command for step 12 in time"); empty if none since the start (or reset)
+  const std::string& last_failsafe_reason() const { return last_failsafe_reason_; }
 
  private:
   struct State {
@@ -126,6 +129,7 @@ class CommandArbiter {
   uint64_t received_ = 0, rejected_ = 0, clamped_ = 0, failsafe_count_ = 0;
   uint64_t lockstep_timeouts_ = 0;
   std::string last_event_;
+  std::string last_failsafe_reason_;
 };
 
 }  // namespace towsim::dds

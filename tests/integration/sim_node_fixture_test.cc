@@ -2,7 +2,8 @@
 // build tree's sim_node: start-up paused, SimControl STEP, the latest samples of every topic,
 // the samples equal to the node's own bodies.csv, stop with exit code and summary, a bad scene
 // reported with the node's message, and parallel nodes on distinct automatic domain ids.
-// Realtime mode too. Domains 170 and 171 (fixed), automatic ones from 200-231
+// Realtime mode too; --fail-on-failsafe by default (exit 5 on a stalled controller), and
+// turned off. Domains 170 and 171 (fixed), automatic ones from 200-231
 // (tests/integration/README.md).
 
 #include <chrono>
@@ -17,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "testing/csv_file.h"
+#include "testing/in_process_controller.h"
 #include "testing/sim_node.h"
 
 namespace towsim::testing {
@@ -149,6 +151,56 @@ TEST(SimNodeFixture, RealtimeModeRunsPaced) {
   ASSERT_TRUE(last.has_value());
   EXPECT_TRUE(last->finished());
   EXPECT_EQ(last->mode, "realtime");
+}
+
+// automatic ids: the fixture passes --fail-on-failsafe, so a controller that stalls longer than
+// the lockstep timeout (here 1 s at step 5, limit 0.3 s) fails the run: exit 5 after step 5,
+// the final status FAILED naming the body and the step. With fail_on_failsafe = false the node
+// runs on to the end (exit 0), the body in failsafe for one step.
+TEST(SimNodeFixture, AStalledControllerFailsTheRunUnlessTurnedOff) {
+  for (const bool fail : {true, false}) {
+    SCOPED_TRACE(fail ? "fail_on_failsafe" : "not fail_on_failsafe");
+    SimNodeOptions o;
+    o.scene = "case1_forward";  // two commanded vehicles, 0.05 s steps
+    o.duration = 1.0;
+    o.lockstep_timeout = 0.3;
+    o.fail_on_failsafe = fail;
+    SimNode node(o);
+    controllers::ClientOptions fish;
+    fish.body = "towfish";
+    InProcessController fish_ctl(
+        node, fish, [](const controllers::BodyState&) { return controllers::Actuation{}; });
+    controllers::ClientOptions tow;
+    tow.body = "tow_vehicle";
+    bool stalled = false;  // the law runs on the controller's thread only
+    InProcessController tow_ctl(node, tow, [&stalled](const controllers::BodyState& s) {
+      if (s.step == 5 && !stalled) {
+        stalled = true;
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+      }
+      return controllers::Actuation{};
+    });
+    const NodeResult end = node.Wait();
+    const std::optional<StatusSample> last = node.status();
+    ASSERT_TRUE(last.has_value());
+    if (fail) {
+      EXPECT_EQ(end.exit_code, 5) << node.log();
+      EXPECT_EQ(end.summary.rfind("sim_node: case1_forward: lockstep, 6 steps", 0), 0u)
+          << end.summary;
+      EXPECT_TRUE(last->failed());
+      EXPECT_NE(last->message.find("lockstep timeout: body tow_vehicle at step 5"),
+                std::string::npos)
+          << last->message;
+    } else {
+      EXPECT_EQ(end.exit_code, 0) << node.log();
+      EXPECT_TRUE(last->finished());
+      EXPECT_EQ(last->step, 20u);
+    }
+    EXPECT_NE(end.summary.find("failsafes 1,"), std::string::npos) << end.summary;
+    EXPECT_NE(end.summary.find("lockstep timeouts 1,"), std::string::npos) << end.summary;
+    fish_ctl.Join();
+    tow_ctl.Join();
+  }
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
 //                   [--security DIR/NAME] [--body NAME ...]
 //                   [--winch T=speed:V | T=length:L | T=mode:M:V ...]
-//                   [--winch-until T]
+//                   [--winch-until T] [--pause STEP=S]
 //
 // It learns the bodies from rt/<ns>/scene_info, then answers every SimStatus of a new step k
 // with one ActuatorCommand stamped k per commanded body: zeros, or the latest --command of
@@ -22,8 +22,10 @@
 // raw mode number M, and V may be nan or inf, for the tests of rejected commands), until the
 // simulation time --winch-until (then the winch is no longer answered). Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
-// DIR/NAME (wire/security.h, exit 2 if refused). --stats prints the lockstep rate on stdout, the
-// mean and the median wall time between consecutive answers:
+// DIR/NAME (wire/security.h, exit 2 if refused). --pause STEP=S: before answering step STEP,
+// sleep S wall seconds (a slow controller, for the tests of --lockstep-timeout). --stats
+// prints the lockstep rate on stdout, the mean and the median wall time between consecutive
+// answers:
 //   test_controller: 1999 steps in 0.701 s: 2852 steps/s, 350.6 us/step (median 301.2 us)
 
 #include <algorithm>
@@ -76,6 +78,8 @@ struct Args {
   std::vector<std::string> only;  // --body: the commanded bodies answered; empty: all
   std::vector<ScheduledWinch> winch;
   double winch_until = HUGE_VAL;  // [s]
+  long long pause_step = -1;      // --pause: the step answered late
+  double pause = 0.0;             // [s]
 };
 
 [[noreturn]] void Fail(const std::string& message) {
@@ -147,6 +151,12 @@ Args Parse(int argc, char** argv) {
         Fail(usage);
       }
       a.winch.push_back(w);
+    } else if (arg == "--pause") {
+      const std::string v = value();
+      const auto eq = v.find('=');
+      if (eq == std::string::npos) Fail("--pause " + v + ": must be STEP=SECONDS");
+      a.pause_step = std::strtoll(v.substr(0, eq).c_str(), nullptr, 10);
+      a.pause = std::strtod(v.c_str() + eq + 1, nullptr);
     } else if (arg == "--winch-until") {
       a.winch_until = std::strtod(value().c_str(), nullptr);
     } else if (arg == "--command") {
@@ -367,6 +377,12 @@ int main(int argc, char** argv) {
       if (terminal || (args.until_step >= 0 && static_cast<long long>(s.step) >= args.until_step)) {
         exit_code = 0;
         break;
+      }
+      if (static_cast<long long>(s.step) == args.pause_step) {
+        std::fprintf(stderr, "test_controller: pausing %g s before answering step %llu\n",
+                     args.pause, static_cast<unsigned long long>(s.step));
+        dds_sleepfor(static_cast<dds_duration_t>(args.pause * 1e9));
+        last_progress = Clock::now();
       }
       // the script's rule: entries whose time has come fire, in order
       for (ScheduledCommand& c : schedule) {

@@ -77,6 +77,12 @@ towsim_add_test(run_counters_test LABEL unit
           ${PROJECT_SOURCE_DIR}/sim_node/app/node/run_counters.cc)
 target_include_directories(run_counters_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node)
 
+# why --fail-on-failsafe ends a run (app/node/failsafe_failure): pure, over the arbiter
+towsim_add_test(failsafe_failure_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/failsafe_failure_test.cc
+          ${PROJECT_SOURCE_DIR}/sim_node/app/node/failsafe_failure.cc
+  LIBS towsim::dds)
+
 # the node's run control (app/node/run_control): a pure state machine, no DDS
 towsim_add_test(run_control_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/run_control_test.cc

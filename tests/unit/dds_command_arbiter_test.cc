@@ -74,15 +74,17 @@ TEST(CommandArbiterTest, FailsafeAfterTimeoutUntilCommandsResume) {
   CommandArbiter a = TwoVehicles();
   a.Receive(0, Command(4500.0, 0, 0.2), 0.0);
   core::VehicleCommand c;
-  a.CheckTimeouts(0.45);
+  EXPECT_EQ(a.CheckTimeouts(0.45), 0);
   EXPECT_FALSE(a.failsafe(0));
+  EXPECT_EQ(a.last_failsafe_reason(), "");
   ASSERT_TRUE(a.Take(0, &c));
   EXPECT_EQ(c.thrust, 4500.0);
   // 10 steps of 0.05 s land on 0.5 only up to rounding
   double t = 0.0;
   for (int k = 0; k < 10; ++k) t += kH;
-  a.CheckTimeouts(t);
+  EXPECT_EQ(a.CheckTimeouts(t), 1);  // entered now
   EXPECT_TRUE(a.failsafe(0));
+  EXPECT_EQ(a.last_failsafe_reason(), "no command for 0.5 s of simulation time");
   EXPECT_FALSE(a.failsafe(1));  // never commanded: not armed
   EXPECT_EQ(a.failsafe_count(), 1u);
   EXPECT_EQ(a.failsafe_names(), std::vector<std::string>{"tow_vehicle"});
@@ -93,8 +95,8 @@ TEST(CommandArbiterTest, FailsafeAfterTimeoutUntilCommandsResume) {
     EXPECT_EQ(c.rudder, 0.0);
     EXPECT_EQ(c.elevator, 0.0);
   }
-  a.CheckTimeouts(t + kH);
-  EXPECT_EQ(a.failsafe_count(), 1u);  // one entry, not one per step
+  EXPECT_EQ(a.CheckTimeouts(t + kH), 0);  // already in failsafe: not entered again
+  EXPECT_EQ(a.failsafe_count(), 1u);      // one entry, not one per step
   // commands resume
   a.Receive(0, Command(3000.0, 12), t + kH);
   EXPECT_FALSE(a.failsafe(0));
@@ -132,6 +134,7 @@ TEST(CommandArbiterTest, LockstepTimeoutFailsafesCommandedVehiclesOnly) {
   EXPECT_EQ(a.lockstep_timeouts(), 1u);
   EXPECT_TRUE(a.ReadyFor(1));  // no longer waited for
   EXPECT_EQ(a.last_event(), "towfish: failsafe (lockstep: no command for step 1 in time)");
+  EXPECT_EQ(a.last_failsafe_reason(), "lockstep: no command for step 1 in time");
   // it comes back
   a.Receive(1, Command(0.0, 2), 2 * kH);
   EXPECT_FALSE(a.failsafe(1));
@@ -152,6 +155,7 @@ TEST(CommandArbiterTest, ResetForgetsEverything) {
   EXPECT_FALSE(a.commanded(0));
   EXPECT_EQ(a.received(), 0u);
   EXPECT_EQ(a.failsafe_count(), 0u);
+  EXPECT_EQ(a.last_failsafe_reason(), "");
   EXPECT_FALSE(a.ReadyFor(40));
   core::VehicleCommand c;
   EXPECT_FALSE(a.Take(0, &c));

@@ -218,7 +218,26 @@ INSTANTIATE_TEST_SUITE_P(
                 {"--winch dds", "needs a DDS mode"}},
         BadArgs{"WinchWithoutAWinch",
                 {"--scene", kCatenary, "--mode", "offline", "--winch", "script"},
-                {"--winch script", "has no winch (cable.winch)"}}),
+                {"--winch script", "has no winch (cable.winch)"}},
+        BadArgs{"NegativeLockstepTimeout",
+                {"--scene", kCatenary, "--mode", "lockstep", "--lockstep-timeout", "-1"},
+                {"--lockstep-timeout -1: must be a number of seconds >= 0 (0: wait forever)",
+                 "usage:"}},
+        BadArgs{"NanLockstepTimeout",
+                {"--scene", kCatenary, "--mode", "lockstep", "--lockstep-timeout", "nan"},
+                {"--lockstep-timeout nan: must be a number of seconds >= 0"}},
+        BadArgs{"InfiniteLockstepTimeout",
+                {"--scene", kCatenary, "--mode", "lockstep", "--lockstep-timeout=inf"},
+                {"--lockstep-timeout inf: must be a number of seconds >= 0"}},
+        BadArgs{"NonNumberLockstepTimeout",
+                {"--scene", kCatenary, "--mode", "lockstep", "--lockstep-timeout", "2s"},
+                {"--lockstep-timeout 2s: must be a number of seconds >= 0"}},
+        BadArgs{"MissingLockstepTimeout",
+                {"--scene", kCatenary, "--mode", "lockstep", "--lockstep-timeout"},
+                {"option --lockstep-timeout needs a value"}},
+        BadArgs{"LockstepTimeoutOutsideLockstep",
+                {"--scene", kCatenary, "--mode", "fast", "--lockstep-timeout", "2"},
+                {"--lockstep-timeout: needs --mode lockstep (the mode is fast)"}}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SimNodeCliTest, HelpAndVersionExitZero) {
@@ -226,6 +245,9 @@ TEST(SimNodeCliTest, HelpAndVersionExitZero) {
   SimNodeResult r = RunSimNode({"--help"}, tmp.path());
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("usage: sim_node --scene FILE"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--lockstep-timeout S"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--fail-on-failsafe"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("5 failsafe or lockstep timeout"), std::string::npos) << r.out;
   r = RunSimNode({"--version"}, tmp.path());
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("sim_node (towsim) "), std::string::npos) << r.out;
@@ -421,6 +443,17 @@ TEST(SimNodeCliTest, SolverFailureExitsThree) {
   const std::vector<std::string> status = Lines(ReadFile(csv / "status.csv"));
   ASSERT_EQ(status.size(), 2u);
   EXPECT_EQ(status[1].rfind("0,0,", 0), 0u);
+}
+
+// offline has no failsafe: --fail-on-failsafe is accepted (towsim_sweep passes it) and the run
+// is the same, exit 0
+TEST(SimNodeCliTest, FailOnFailsafeOfflineIsHarmless) {
+  TempDir tmp;
+  const SimNodeResult r = RunSimNode(
+      {"--scene", kCatenary, "--mode", "offline", "--duration", "0.2", "--fail-on-failsafe"},
+      tmp.path());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err, "");
 }
 
 // --- stopped by a signal --------------------------------------------------------------------

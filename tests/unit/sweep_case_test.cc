@@ -24,6 +24,19 @@ TEST(SweepCase, LastLineIsTheLastNonEmptyOneAfterProgressRedraws) {
   EXPECT_EQ(LastLine("only"), "only");
 }
 
+TEST(SweepCase, ArgumentsRunOfflineFailingOnFailsafe) {
+  SweepSpec spec;
+  spec.scene = "/scenes/case1_forward.yaml";
+  spec.duration = 2.5;
+  SweepCase c;
+  c.name = "case_0003";
+  c.values = {{"cable.length", "300"}};
+  EXPECT_EQ(CaseArguments(spec, c, "/out/case_0003"),
+            (std::vector<std::string>{"--scene", "/scenes/case1_forward.yaml", "--mode", "offline",
+                                      "--fail-on-failsafe", "--duration", "2.5", "--set",
+                                      "cable.length=300", "--csv", "/out/case_0003"}));
+}
+
 TEST(SweepCase, CommandShRunsTheCaseAndWritesItsStatus) {
   test::TempDir dir;
   const std::string case_dir = (dir.path() / "case_0000").string();

@@ -49,6 +49,7 @@ TEST(WireDecodersTest, Status) {
   EXPECT_EQ(s.commands_clamped, 1u);
   EXPECT_EQ(s.lockstep_timeouts, 4u);
   EXPECT_TRUE(s.finished());
+  EXPECT_FALSE(s.failed());
   EXPECT_TRUE(s.terminal());
   EXPECT_FALSE(s.running());
   EXPECT_FALSE(s.paused());
@@ -62,6 +63,12 @@ TEST(WireDecodersTest, Status) {
   EXPECT_FALSE(w.terminal());
   EXPECT_FALSE(w.failsafe());
   EXPECT_EQ(w.message, "");
+
+  m.state = towsim_msgs_msg_dds__SimStatus_Constants_STATE_FAILED;
+  const SimStatus f = DecodeStatus(m);
+  EXPECT_TRUE(f.failed());
+  EXPECT_TRUE(f.terminal());
+  EXPECT_FALSE(f.finished());
 }
 
 TEST(WireDecodersTest, SceneInfo) {

@@ -15,5 +15,9 @@ inline constexpr int kExitSolver = 3;
 // the job was done in part: towsim_export / towsim_replay --recover skipped damaged byte
 // ranges; towsim_sweep ran every case and some failed (results.csv)
 inline constexpr int kExitIncomplete = 4;
+// sim_node --fail-on-failsafe: a body entered failsafe or a lockstep step timed out; the run
+// ended after that step with its outputs complete and a final status FAILED naming the body,
+// the step and the reason (docs/command_line.md "Exit codes")
+inline constexpr int kExitFailsafe = 5;
 
 }  // namespace towsim::app

@@ -83,12 +83,18 @@ std::string Usage() {
          "                        waited for nor failsafed (docs/winch_dds.md)\n"
          "  --security DIR/NAME   DDS modes: DDS Security with the identity DIR/NAME made by\n"
          "                        scripts/security.sh (docs/security.md)\n"
+         "  --lockstep-timeout S  lockstep: wall seconds a step waits for its commands before\n"
+         "                        the body goes to failsafe (default 1; 0: wait forever)\n"
+         "  --fail-on-failsafe    end with exit code 5 once a body enters failsafe or a\n"
+         "                        lockstep step times out (after that step; outputs complete,\n"
+         "                        status FAILED with the body, step and reason)\n"
          "  -h, --help            print this help and exit\n"
          "  --version             print the version and exit\n"
          "\n"
          "exit codes: 0 ok, 1 unexpected error (e.g. disk full), 2 bad input,\n"
-         "            3 solver failure; offline: 130 / 143 stopped by SIGINT / SIGTERM,\n"
-         "            DDS modes: 0 when stopped by a signal\n";
+         "            3 solver failure, 5 failsafe or lockstep timeout (--fail-on-failsafe);\n"
+         "            offline: 130 / 143 stopped by SIGINT / SIGTERM, DDS modes: 0 when\n"
+         "            stopped by a signal\n";
 }
 
 ParseResult ParseCommandLine(int argc, const char* const* argv) {
@@ -125,10 +131,14 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
       o.allow_another_node = true;
       continue;
     }
-    static const char* const kWithValue[] = {"--scene",     "--mode",     "--duration", "--rate",
-                                             "--set",       "--csv",      "--record",   "--domain",
-                                             "--namespace", "--security", "--foxglove",
-                                             "--winch"};
+    if (arg == "--fail-on-failsafe") {
+      o.fail_on_failsafe = true;
+      continue;
+    }
+    static const char* const kWithValue[] = {
+        "--scene",    "--mode",   "--duration",        "--rate",      "--set",
+        "--csv",      "--record", "--domain",          "--namespace", "--security",
+        "--foxglove", "--winch",  "--lockstep-timeout"};
     // split --name=value
     std::string name = arg;
     std::optional<std::string> value;
@@ -203,6 +213,13 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     } else if (name == "--winch") {
       if (v != "dds" && v != "script") return fail("--winch " + v + ": must be dds or script");
       o.winch = v;
+    } else if (name == "--lockstep-timeout") {
+      double s = 0.0;
+      if (!ParseNumber(v, &s) || s < 0.0) {
+        return fail("--lockstep-timeout " + v +
+                    ": must be a number of seconds >= 0 (0: wait forever)");
+      }
+      o.lockstep_timeout = s;
     }
   }
   if (!o.help && !o.version && o.scene.empty()) return fail("missing --scene FILE");
@@ -215,12 +232,17 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     return fail("--security " + o.security + ": needs a DDS mode (realtime, fast or lockstep)");
   }
   if (o.mode == Mode::kOffline && o.winch == "dds") {
-    return fail("--winch dds: needs a DDS mode (realtime, fast or lockstep); offline the winch "
-                "follows the scene's script");
+    return fail(
+        "--winch dds: needs a DDS mode (realtime, fast or lockstep); offline the winch "
+        "follows the scene's script");
   }
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +
                 ": needs a DDS mode (realtime, fast or lockstep); offline takes no commands");
+  }
+  if (o.lockstep_timeout && o.mode != Mode::kLockstep) {
+    return fail("--lockstep-timeout: needs --mode lockstep (the mode is " +
+                std::string(ModeName(o.mode)) + ")");
   }
   return result;
 }

@@ -3,7 +3,7 @@
 //
 //   sim_node --scene FILE [--mode realtime|fast|lockstep|offline] [--duration S] [--rate R]
 //            [--set key.path=value ...] [--csv DIR] [--record FILE.mcap] [--help] [--version]
-//            [--security DIR/NAME]
+//            [--security DIR/NAME] [--lockstep-timeout S] [--fail-on-failsafe]
 //
 // Every option also accepts the --name=value form. Parsing only checks the syntax and the
 // ranges of the values; the scene is loaded (and --set applied) by the scene layer.
@@ -38,6 +38,12 @@ struct Options {
   // scene's script, neither waited for nor failsafed (docs/winch_dds.md)
   std::optional<std::string> winch;
   std::string security;                // --security DIR/NAME: DDS Security identity (DDS modes)
+  // --lockstep-timeout S: wall time a lockstep step waits for its commands [s], >= 0; 0: wait
+  // forever (debugging). Lockstep only; default: DdsNodeOptions::lockstep_timeout
+  std::optional<double> lockstep_timeout;
+  // --fail-on-failsafe: a run in which a body entered failsafe or a lockstep step timed out
+  // ends with exit code 5 (kExitFailsafe); offline has no failsafe, the option is harmless
+  bool fail_on_failsafe = false;
   bool help = false;                   // --help / -h
   bool version = false;                // --version
 };

@@ -30,6 +30,8 @@ int RunDdsModes(const towsim::core::Model& model, const towsim::app::Options& op
   dds.start_paused = options.paused;
   dds.wait_for_controllers = options.wait_for_controllers;
   dds.winch_script = options.winch == "script";
+  if (options.lockstep_timeout) dds.lockstep_timeout = *options.lockstep_timeout;
+  dds.fail_on_failsafe = options.fail_on_failsafe;
   if (csv != nullptr) {
     dds.output = [csv](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
                        long us) { csv->Write(s, st, us); };

@@ -13,8 +13,10 @@
 #include <utility>
 #include <vector>
 
+#include "app/common/exit_codes.h"
 #include "app/common/stop_signal.h"
 #include "app/node/dds_pacer.h"
+#include "app/node/failsafe_failure.h"
 #include "app/node/node_setup.h"
 #include "app/node/run_control.h"
 #include "app/node/run_counters.h"
@@ -32,8 +34,9 @@ using Clock = std::chrono::steady_clock;
 constexpr double kWaitSlice = 0.02;         // longest wait between polls of the stop signal [s]
 constexpr double kIdleStatusPeriod = 0.5;   // state and status repeated while paused / waiting [s]
 constexpr double kLockstepHintAfter = 5.0;  // say what lockstep waits for after [s]
-// lockstep: a vehicle never heard from is waited for this long, then failsafe (docs/topics.md,
-// "Commands and lockstep"; --wait-for-controllers waits without limit before the first step) [s]
+// lockstep: a vehicle never heard from is waited for this long (or --lockstep-timeout if
+// longer), then failsafe (docs/topics.md, "Commands and lockstep"; --wait-for-controllers
+// waits without limit before the first step) [s]
 constexpr double kLockstepStartTimeout = 30.0;
 constexpr double kRtfWindow = 1.0;          // achieved real-time factor over [s]
 constexpr double kExitFlushTimeout = 0.02;  // for the last status to be acked [s]
@@ -72,6 +75,9 @@ class DdsNode {
   // steps until the end, a signal or a failure; returns the exit code (the end state in
   // control_). Throws io::OutputError when an output cannot be written.
   int Loop();
+  // --fail-on-failsafe: notes the first failsafe or lockstep timeout (failsafe_failure_); the
+  // loop ends the run before its next step
+  void NoteFailsafe(std::string failure);
   bool lockstep() const { return opt_.mode == Mode::kLockstep; }
   bool realtime() const { return opt_.mode == Mode::kRealtime; }
   double period() const { return h_ / control_.rate(); }
@@ -139,7 +145,9 @@ class DdsNode {
   // status, with the commands on topics of no commandable body)
   uint64_t winch_script_rejected_ = 0;
   bool output_failed_ = false;  // opt_.output threw io::OutputError
-  dds::StatusSample status_;    // reused: no allocation per step
+  // --fail-on-failsafe: why the run ends (app/node/failsafe_failure.h); empty: no failsafe yet
+  std::string failsafe_failure_;
+  dds::StatusSample status_;  // reused: no allocation per step
 };
 
 int DdsNode::Run() {
@@ -171,7 +179,9 @@ int DdsNode::Run() {
   const uint8_t end_state = control_.EndState();
   PublishStatus(end_state);
   n_.endpoints->Flush(kExitFlushTimeout);
-  if (last_output_ != static_cast<long>(step_) && end_state != kFailed) {
+  // the last state is written unless a step or an output failed (a failsafe leaves a good state)
+  if (last_output_ != static_cast<long>(step_) &&
+      (end_state != kFailed || exit_code == kExitFailsafe)) {
     Output(last_status_, std::lround(step_wall_ * 1e6));
   }
   Summary(Seconds(Clock::now() - start_wall_));
@@ -194,6 +204,13 @@ int DdsNode::Run() {
 
 int DdsNode::Loop() {
   for (;;) {
+    // --fail-on-failsafe: the step in which the first failsafe or lockstep timeout happened is
+    // done (or a signal or a control request ended the wait for it): the run ends here
+    if (!failsafe_failure_.empty()) {
+      control_.Fail(failsafe_failure_);
+      std::fprintf(stderr, "sim_node: error: %s (--fail-on-failsafe)\n", failsafe_failure_.c_str());
+      return kExitFailsafe;
+    }
     if (StopRequested()) {
       control_.Stop();
       return kExitOk;
@@ -353,9 +370,17 @@ void DdsNode::TakeCommands() {
   }
 }
 
+void DdsNode::NoteFailsafe(std::string failure) {
+  if (opt_.fail_on_failsafe && failsafe_failure_.empty()) failsafe_failure_ = std::move(failure);
+}
+
 bool DdsNode::WaitLockstep() {
   dds::CommandArbiter& arbiter = *n_.arbiter;
   if (arbiter.ReadyFor(step_)) return true;
+  // --lockstep-timeout 0: no limit, not even for a vehicle never heard from
+  const double limit = opt_.lockstep_timeout;
+  const bool forever = limit == 0.0;
+  const double start_limit = std::max(kLockstepStartTimeout, limit);
   const Clock::time_point begin = Clock::now();
   bool timed_out = false, start_timed_out = false, hinted = false;
   // the run loop has just taken the commands and the control requests: wait first, then take,
@@ -364,14 +389,20 @@ bool DdsNode::WaitLockstep() {
   for (;;) {
     const Clock::time_point now = Clock::now();
     const double waited = Seconds(now - begin);
-    // a vehicle heard from (even a rejected command) after lockstep_timeout, one never heard
-    // from after kLockstepStartTimeout: failsafe, no longer waited for
-    const bool start_over = waited >= kLockstepStartTimeout;
-    if ((!timed_out && waited >= opt_.lockstep_timeout) || (start_over && !start_timed_out)) {
+    // a vehicle heard from (even a rejected command) after the limit, one never heard from
+    // after start_limit: failsafe, no longer waited for
+    const bool start_over = !forever && waited >= start_limit;
+    if ((!forever && !timed_out && waited >= limit) || (start_over && !start_timed_out)) {
       timed_out = true;
       start_timed_out = start_over;
       if (arbiter.TimeOut(step_, start_over) > 0) {
         std::fprintf(stderr, "sim_node: %s\n", arbiter.last_event().c_str());
+        bool never_heard = start_over;
+        for (int v = 0; v < arbiter.size(); ++v) {
+          never_heard = never_heard && !(arbiter.failsafe(v) && arbiter.commanded(v));
+        }
+        NoteFailsafe(LockstepTimeoutFailure(FailsafeEntries(arbiter), n_.sim->time(), step_, waited,
+                                            limit, never_heard));
         PublishStatus(RunningState());
         if (arbiter.ReadyFor(step_)) return true;
       }
@@ -388,7 +419,7 @@ bool DdsNode::WaitLockstep() {
       PublishStatus(kWaiting);
     }
     double slice = kWaitSlice;
-    if (!timed_out) slice = std::min(slice, std::max(1e-4, opt_.lockstep_timeout - waited));
+    if (!timed_out && !forever) slice = std::min(slice, std::max(1e-4, limit - waited));
     n_.endpoints->WaitForInput(slice);
     if (StopRequested()) return false;
     if (HandleControl()) return false;
@@ -447,7 +478,10 @@ void DdsNode::NoteAwaited() {
 
 bool DdsNode::DoStep() {
   core::Simulation& sim = *n_.sim;
-  n_.arbiter->CheckTimeouts(sim.time());
+  if (n_.arbiter->CheckTimeouts(sim.time()) > 0) {
+    NoteFailsafe(FailsafeFailure(FailsafeEntries(*n_.arbiter), sim.time(), step_,
+                                 n_.arbiter->last_failsafe_reason()));
+  }
   // the script entries due first, then the controllers' commands (and failsafes) over them:
   // the vehicles', then the winch's (docs/winch_dds.md)
   if (opt_.use_script) n_.script->Apply(&sim);

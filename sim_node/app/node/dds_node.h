@@ -10,9 +10,10 @@
 //   lockstep  step k (state k -> k + 1) waits until every commanded vehicle holds a command
 //             answering step k; after `lockstep_timeout` of wall time a vehicle that has sent
 //             a command before (valid or rejected) goes to failsafe and is no longer waited
-//             for until valid commands resume; a vehicle never heard from is given 30 s (the
-//             controller may start after the node), then the same. Same commands,
-//             bit-identical states.
+//             for until valid commands resume; a vehicle never heard from is given 30 s (or
+//             `lockstep_timeout` if longer; the controller may start after the node), then
+//             the same. `lockstep_timeout` 0: no limit at all. Same commands, bit-identical
+//             states.
 //
 // Commands: dds/command_arbiter.h (last writer wins, NaN rejected, out of range clamped,
 // failsafe after `command_timeout` of simulation time). Each step: the scene's script entries
@@ -23,6 +24,12 @@
 // SET_RATE. The pieces (docs/app_layer.md): app/node/node_setup.h builds the node,
 // app/node/run_control.h decides, app/node/dds_publisher.h publishes the topics of
 // app/common/node_topics.h.
+//
+// --fail-on-failsafe (`fail_on_failsafe`): the first failsafe (command_timeout) or lockstep
+// timeout ends the run after the step it happened in (app/node/failsafe_failure.h): outputs
+// written to that step, a final status FAILED naming the body, the step and the reason, the
+// summary, exit code 5. Ending at once keeps a CI log short and its last state the one that
+// failed; the rest of the run would follow uncontrolled bodies.
 //
 // Exit: at the end of `duration`, or on SIGINT / SIGTERM (app/common/stop_signal.h) at the next
 // step boundary or within 20 ms of waiting (writers linger 10 ms each for unacknowledged samples;
@@ -48,14 +55,17 @@ struct DdsNodeOptions {
   Mode mode = Mode::kRealtime;  // kRealtime, kFast or kLockstep (kOffline: exit 2)
   // simulated time to run [s]: round(duration / h) steps, then exit 0; infinity: until stopped
   double duration = std::numeric_limits<double>::infinity();
-  double rate = 1.0;              // realtime pacing factor (2: twice real time), > 0
-  uint32_t domain = 0;            // DDS domain id
-  std::string ns = "/towsim";     // ROS 2 namespace of the topics (/clock stays at the root)
-  std::string dds_config;         // CYCLONEDDS_URI-style config; empty: $CYCLONEDDS_URI
-  std::string security;           // DDS Security identity DIR/NAME (wire/security.h); "": none
-  bool open_outputs = false;      // with security: readers without a certificate see the outputs
-  double command_timeout = 0.5;   // failsafe after this much simulation time without command [s]
-  double lockstep_timeout = 1.0;  // lockstep: wall time to wait for a step's commands [s]
+  double rate = 1.0;             // realtime pacing factor (2: twice real time), > 0
+  uint32_t domain = 0;           // DDS domain id
+  std::string ns = "/towsim";    // ROS 2 namespace of the topics (/clock stays at the root)
+  std::string dds_config;        // CYCLONEDDS_URI-style config; empty: $CYCLONEDDS_URI
+  std::string security;          // DDS Security identity DIR/NAME (wire/security.h); "": none
+  bool open_outputs = false;     // with security: readers without a certificate see the outputs
+  double command_timeout = 0.5;  // failsafe after this much simulation time without command [s]
+  // lockstep: wall time to wait for a step's commands [s], >= 0; 0: wait forever
+  double lockstep_timeout = 1.0;
+  // end with exit code 5 at the first failsafe or lockstep timeout (after its step)
+  bool fail_on_failsafe = false;
   // lockstep: the vehicles (and "winch") waited for; empty: every vehicle that takes commands
   // and the winch
   std::vector<std::string> lockstep_bodies;
@@ -87,7 +97,8 @@ struct DdsNodeOptions {
 
 // Runs the node until the duration is reached or SIGINT / SIGTERM. Returns the exit code:
 // 0 done or stopped by a signal, 2 bad options or DDS setup failure (Cyclone's message on
-// stderr), 3 solver failure (initial state or a step). Call InstallStopHandlers() first (it
+// stderr), 3 solver failure (initial state or a step), 5 a failsafe or lockstep timeout under
+// `fail_on_failsafe`. Call InstallStopHandlers() first (it
 // is called again here, harmlessly).
 int RunDdsNode(const core::Model& model, const DdsNodeOptions& options);
 

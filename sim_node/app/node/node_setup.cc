@@ -40,7 +40,9 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     return bad("--namespace " + opt.ns + ": " + e);
   }
   if (!(opt.command_timeout > 0.0)) return bad("command_timeout must be > 0 s");
-  if (!(opt.lockstep_timeout > 0.0)) return bad("lockstep timeout must be > 0 s");
+  if (!(opt.lockstep_timeout >= 0.0)) {
+    return bad("--lockstep-timeout: must be a number of seconds >= 0 (0: wait forever)");
+  }
   for (const core::SphereBody& b : model.spheres) {
     if (const std::string e = wire::CheckBodyName(b.name); !e.empty()) {
       return bad("body " + b.name + ": " + e + " (it names DDS topics)");

@@ -26,7 +26,7 @@ std::string ShellWord(const std::string& s) {
 std::vector<std::string> CaseArguments(const SweepSpec& spec, const SweepCase& c,
                                        const std::string& case_dir) {
   std::vector<std::string> args = {"--scene", fs::absolute(spec.scene).lexically_normal().string(),
-                                   "--mode", "offline"};
+                                   "--mode", "offline", "--fail-on-failsafe"};
   if (spec.duration) {
     char text[32];
     std::snprintf(text, sizeof text, "%.17g", *spec.duration);

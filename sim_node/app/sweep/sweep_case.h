@@ -18,7 +18,10 @@
 namespace towsim::app {
 
 // the sim_node arguments of a case (without the program): --scene, --mode offline,
-// [--duration], --set per parameter, --csv `case_dir`; paths absolute
+// --fail-on-failsafe, [--duration], --set per parameter, --csv `case_dir`; paths absolute.
+// Offline has no failsafe, so --fail-on-failsafe changes nothing today; it is passed so that a
+// case that ever runs with DDS controllers fails loudly (exit 5: a failed case) rather than
+// going on uncontrolled (docs/sweeps.md)
 std::vector<std::string> CaseArguments(const SweepSpec& spec, const SweepCase& c,
                                        const std::string& case_dir);
 
