@@ -8,12 +8,14 @@ install. The scene is config/scenes/steady_tow.yaml (200 m cable, 416 kg sphere,
 at 6 m/s, 3.5 m deep, 300 s); MoorDyn gets it as an input file written here (point 1 Coupled,
 the towing point; point 2 Free, the sphere; one line between them).
 
-Drag. towsim has Choo & Casarella's laws (docs/physics.md) and no constant-coefficient option;
-MoorDyn has constant C_dn, C_dt only. MoorDyn gets the constants for which its normal and
-tangential drag on towsim's converged steady shape equal the Choo & Casarella drag there
-(weights: each element's share of the dynamic pressure). The two codes then solve nearby but
-different models, so each is measured against its OWN converged reference: the errors are each
-code's discretization error of its own model.
+Drag. Both codes take the same constant coefficients, C_DN on d and C_DT on pi d (towsim's
+line-type drag, docs/physics.md "Drag", given to it with --set cable.drag=...; MoorDyn's Cd and
+CdAx): the values that match Choo & Casarella's laws on this tow's steady shape (the scene's
+own drag law, docs/benchmarks.md "Against MoorDyn"). The two codes then solve the same model
+but for where the drag acts (towsim per stretched length, MoorDyn per unstretched length: the
+strain, 0.2-0.7 % along this cable: towsim's top tension is 0.25 % higher, --side-by-side);
+each is still measured against its OWN converged reference, so that the errors are each code's
+discretization error.
 
 Measures (each code against its reference, the sphere's position relative to the towing point,
 towsim's world frame):
@@ -58,7 +60,6 @@ DIAMETER = 0.041         # [m]
 DENSITY = 1300.0         # cable [kg/m^3]
 YOUNGS = 7.0e8           # [Pa]
 RHO_W = 1025.0           # [kg/m^3]
-MU_W = 1.0e-3            # [Pa s]
 GRAVITY = 9.81
 TOW_DEPTH = 3.5          # [m], NED z of the towing point
 SPEED = 6.0              # [m/s]
@@ -84,18 +85,9 @@ TOWSIM_REF = (80, 0.0125)
 MOORDYN_SEGMENTS = (20, 50, 100)
 MOORDYN_REF_SEGMENTS = 400
 MOORDYN_CHECK_SEGMENTS = 200
-
-
-def choo_casarella_cdn(re):
-    """C_Dn of Choo & Casarella (paper Eq. 18) above Re = 30, the value at 1e5 beyond."""
-    re = min(re, 1.0e5)
-    assert re > 30.0, re
-    return 1.1 + 4.0 / math.sqrt(re)
-
-
-def choo_casarella_nu(re):
-    """Nu of paper Eq. 19."""
-    return 0.55 * math.sqrt(re) + 0.084 * re ** (2.0 / 3.0)
+# the drag coefficients of both codes: Choo & Casarella's laws weighted by the dynamic pressure
+# along this tow's steady shape (within 1.1 % and 3.3 % of the local laws everywhere on it)
+C_DN, C_DT = 1.1253, 0.004894
 
 
 def read_rows(path):
@@ -103,30 +95,7 @@ def read_rows(path):
         return list(csv.DictReader(f))
 
 
-def constant_drag(cable_csv):
-    """C_dn, C_dt for MoorDyn (normal drag 1/2 rho d C_dn |v_n| v_n, tangential
-    1/2 rho pi d C_dt |v_t| v_t per unstretched length) whose totals on towsim's last cable
-    shape equal towsim's drag there (per stretched length, docs/physics.md)."""
-    rows = read_rows(cable_csv)
-    t_end = rows[-1]["t"]
-    nodes = [tuple(float(r[k]) for k in ("x", "y", "z")) for r in rows if r["t"] == t_end]
-    l0 = LENGTH / (len(nodes) - 1)
-    fn = fn_unit = ft = ft_unit = 0.0
-    for a, b in zip(nodes, nodes[1:]):
-        chord = [bi - ai for ai, bi in zip(a, b)]
-        ls = math.sqrt(sum(c * c for c in chord))
-        vt = abs(SPEED * chord[0] / ls)
-        vn = math.sqrt(max(SPEED ** 2 - vt ** 2, 0.0))
-        re_n, re_t = (RHO_W * v * DIAMETER / MU_W for v in (vn, vt))
-        stretch = ls / l0
-        fn += 0.5 * RHO_W * DIAMETER * choo_casarella_cdn(re_n) * vn * vn * stretch
-        ft += math.pi * MU_W * choo_casarella_nu(re_t) * vt * stretch
-        fn_unit += 0.5 * RHO_W * DIAMETER * vn * vn
-        ft_unit += 0.5 * RHO_W * math.pi * DIAMETER * vt * vt
-    return fn / fn_unit, ft / ft_unit
-
-
-def moordyn_input(segments, steps_per_output, cdn, cdt):
+def moordyn_input(segments, steps_per_output):
     sphere_r = (3.0 * SPHERE_VOLUME / (4.0 * math.pi)) ** (1.0 / 3.0)
     cda = SPHERE_CD * math.pi * sphere_r ** 2
     dt = OUTPUT_INTERVAL / steps_per_output
@@ -136,7 +105,7 @@ towsim steady tow (bench/moordyn_compare.py)
 ----------------------- LINE TYPES ------------------------------------------
 TypeName   Diam    Mass/m     EA      BA/-zeta  EI      Cd      Ca    CdAx     CaAx
 (name)     (m)     (kg/m)     (N)     (N-s/-)   (N-m^2) (-)     (-)   (-)      (-)
-cable {DIAMETER:.9g} {MASS_PER_LENGTH:.9g} {EA:.9g} {MOORDYN_BA} {EI:.9g} {cdn:.9g} 1.0 {cdt:.9g} 0.0
+cable {DIAMETER:.9g} {MASS_PER_LENGTH:.9g} {EA:.9g} {MOORDYN_BA} {EI:.9g} {C_DN:.9g} 1.0 {C_DT:.9g} 0.0
 ---------------------- POINTS --------------------------------
 ID  Attachment  X     Y     Z      M      V      CdA      CA
 (-) (-)        (m)   (m)   (m)    (kg)   (m^3)  (m^2)    (-)
@@ -203,8 +172,8 @@ def time_key(t):
 
 
 class MoorDyn:
-    def __init__(self, driver, work, cdn, cdt):
-        self.driver, self.work, self.cdn, self.cdt = driver, work, cdn, cdt
+    def __init__(self, driver, work):
+        self.driver, self.work = driver, work
 
     def files(self, segments, n):
         base = os.path.join(self.work, f"md_{segments}_{n}")
@@ -213,7 +182,7 @@ class MoorDyn:
     def command(self, segments, n):
         inp, out = self.files(segments, n)
         with open(inp, "w") as f:
-            f.write(moordyn_input(segments, n, self.cdn, self.cdt))
+            f.write(moordyn_input(segments, n))
         return [self.driver, inp, str(n), f"{DURATION:g}", f"{SPEED:g}", out]
 
     def run(self, segments, n):
@@ -285,7 +254,8 @@ class Towsim:
                 "--set", f"cable.elements={elements}", "--set", f"time.step={h:g}",
                 "--set", f"time.output_rate={1.0 / OUTPUT_INTERVAL:g}",
                 "--set", "cable.initial_velocity=[0,0,0]",
-                "--set", "bodies.towfish.velocity=[0,0,0]", "--csv", out]
+                "--set", "bodies.towfish.velocity=[0,0,0]",
+                "--set", f"cable.drag={{normal: {C_DN:g}, tangential: {C_DT:g}}}", "--csv", out]
         return argv, out
 
     def run(self, elements, h):
@@ -338,6 +308,21 @@ def hyperfine_pair(cmd_a, cmd_b, runs, rounds, work, tag):
     return statistics.fmean(means_a), statistics.fmean(means_b), ratios, cpu_ratios
 
 
+def side_by_side(md, towsim):
+    """The end states of both codes with the same drag coefficients, each well resolved."""
+    md_run, ts_run = md.run(100, 160), towsim.run(*TOWSIM_REF)
+    if md_run is None or ts_run is None:
+        sys.exit("moordyn_compare: a side-by-side run failed or did not settle")
+    (r_md, f_md), (r_ts, f_ts) = md_run.final(), ts_run.final()
+    print(f"C_dn = {C_DN:g}, C_dt = {C_DT:g} in both codes, the state at t = {DURATION:g} s")
+    print(f"  MoorDyn 100 segments, dtM {OUTPUT_INTERVAL / 160:.4g} s: sphere "
+          f"({r_md[0]:.4f}, {r_md[1]:.4f}, {r_md[2]:.4f}) m, top tension {f_md:.2f} N")
+    print(f"  towsim {TOWSIM_REF[0]} elements, h {TOWSIM_REF[1]:g} s: sphere "
+          f"({r_ts[0]:.4f}, {r_ts[1]:.4f}, {r_ts[2]:.4f}) m, top tension {f_ts:.2f} N")
+    print(f"  apart: {math.dist(r_md, r_ts):.4f} m ({math.dist(r_md, r_ts) / LENGTH:.2e} L), "
+          f"tension {f_ts / f_md - 1.0:+.2e}")
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--driver", required=True)
@@ -346,18 +331,22 @@ def main():
     p.add_argument("--rounds", type=int, default=5)
     p.add_argument("--runs", type=int, default=5)
     p.add_argument("--out", default=os.path.join(ROOT, "bench/results/moordyn_compare.csv"))
+    p.add_argument("--side-by-side", action="store_true",
+                   help="only the two codes' end states with the same coefficients (MoorDyn 100 "
+                        "segments at dtM 0.2 s / 160, towsim 80 elements at 0.0125 s), no timing")
     a = p.parse_args()
     os.makedirs(a.work, exist_ok=True)
     towsim = Towsim(a.sim_node, a.work)
+    if a.side_by_side:
+        side_by_side(MoorDyn(a.driver, a.work), towsim)
+        return
 
-    print("towsim references (80 elements, h 0.0125 s) and the drag constants for MoorDyn",
-          flush=True)
+    print(f"towsim reference (80 elements, h 0.0125 s); both codes: C_dn = {C_DN:g}, "
+          f"C_dt = {C_DT:g}", flush=True)
     ts_ref = towsim.run(*TOWSIM_REF)
     if ts_ref is None or not ts_ref.settled():
         sys.exit("moordyn_compare: the towsim reference run failed or did not settle")
-    cdn, cdt = constant_drag(towsim.command(*TOWSIM_REF)[1] + "/cable.csv")
-    print(f"  C_dn = {cdn:.5f}, C_dt = {cdt:.6f} (Choo & Casarella on the steady shape)")
-    md = MoorDyn(a.driver, a.work, cdn, cdt)
+    md = MoorDyn(a.driver, a.work)
 
     rows = []
     for segments in MOORDYN_SEGMENTS:
@@ -387,7 +376,7 @@ def main():
           f"{ts_check_dt.track_error(ts_ref):.2e} L")
     r_md, f_md = md_ref.final()
     r_ts, f_ts = ts_ref.final()
-    print(f"the two references (different drag models): sphere {math.dist(r_md, r_ts) / LENGTH:.2e} L"
+    print(f"the two references (the same drag coefficients): sphere {math.dist(r_md, r_ts) / LENGTH:.2e} L"
           f" apart, tension {f_md:.1f} N (MoorDyn) and {f_ts:.1f} N (towsim)")
 
     print("towsim grid", flush=True)

@@ -3,6 +3,8 @@
 # (docs/benchmarks.md, "Against MoorDyn", where the MoorDyn build is described).
 #   bench/moordyn_compare.sh MOORDYN_PREFIX [ROUNDS]
 # MOORDYN_PREFIX: a MoorDyn install (include/moordyn/MoorDyn2.h, lib/libmoordyn.so).
+# SIDE_BY_SIDE=1 in the environment: only both codes' end states with the same drag
+# coefficients (MoorDyn 100 segments, towsim 80 elements; seconds, no hyperfine).
 # ROUNDS (default 5): hyperfine rounds per pair, the order swapped every round; RUNS=R in the
 # environment sets the runs per command and round (default 5). Needs build/sim_node/app/sim_node
 # (BUILD_DIR=dir for another build), cc, hyperfine, python3. Work files go to WORK_DIR
@@ -26,7 +28,9 @@ for d in "$prefix/lib" "$prefix/lib64"; do
 done
 [[ -f "$header" ]] || { echo "moordyn_compare: MOORDYN_PREFIX = $prefix: no $header (install MoorDyn there: docs/benchmarks.md, \"Against MoorDyn\")" >&2; exit 2; }
 [[ -n "$libdir" ]] || { echo "moordyn_compare: MOORDYN_PREFIX = $prefix: no lib/libmoordyn.so or lib64/libmoordyn.so" >&2; exit 2; }
-for tool in cc hyperfine python3; do
+tools="cc python3"
+[[ -n "${SIDE_BY_SIDE:-}" ]] || tools+=" hyperfine"
+for tool in $tools; do
   command -v "$tool" >/dev/null || { echo "moordyn_compare: $tool not found (apt-get install ${tool/cc/gcc})" >&2; exit 2; }
 done
 cd "$(dirname "$0")/.."
@@ -45,6 +49,7 @@ cc -O2 -std=c11 -Wall -Wextra -Werror -I"$prefix/include" -o "$work/moordyn_driv
   bench/moordyn_driver.c -L"$libdir" -lmoordyn -Wl,-rpath,"$libdir" -lm
 echo "MoorDyn: $prefix ($(readlink -f "$libdir/libmoordyn.so")); towsim: $sim_node ($(git rev-parse --short HEAD 2>/dev/null || echo '?'))"
 echo "machine: $(nproc) cores, $(uname -srm), load average $(cut -d' ' -f1-3 /proc/loadavg), $(date -u '+%Y-%m-%d %H:%M UTC')"
+# SIDE_BY_SIDE=1: only the two codes' end states with the same drag coefficients (seconds)
 python3 bench/moordyn_compare.py --driver "$work/moordyn_driver" --sim-node "$sim_node" \
-  --work "$work" --rounds "$rounds" --runs "$runs"
+  --work "$work" --rounds "$rounds" --runs "$runs" ${SIDE_BY_SIDE:+--side-by-side}
 echo "load average at the end $(cut -d' ' -f1-3 /proc/loadavg)"

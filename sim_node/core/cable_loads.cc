@@ -1,5 +1,6 @@
 #include "core/cable_loads.h"
 
+#include "core/cable_drag.h"
 #include "core/seabed_contact.h"
 
 namespace towsim::core {
@@ -35,8 +36,9 @@ FlowSample FlowAt(const EnvironmentField& sea, const ShapeAtPoint& p, const Vec3
 // unit length f at each point, R = -int S^T f dx = -F N^T (3 x 4, F the weighted f).
 // kWithJacobian: also M_a, dR/de and dR/de_dot into *jac; the residual is the same to the bit
 // either way.
-// kSea = false: still water or a steady uniform current, no seabed (the sea's code compiled
-// out, so that a scene without it costs what it did before the sea existed)
+// kSea = false: still water or a steady uniform current, no seabed and no tangential added
+// mass (the sea's and the line types' code compiled out, so that a scene without them costs
+// what it did before they existed)
 template <bool kSea, bool kWithJacobian>
 Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const EnvironmentField& sea,
                double t, const ElementWaves* waves, const GaussFields& fields, double scale,
@@ -49,11 +51,13 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
     jac->d_dedot.setZero();
   }
   const bool added = ctx.added_mass_per_length > 0.0;
+  const bool added_t = kSea && ctx.tangential_added_mass_per_length > 0.0;
+  const bool any_added = added || added_t;  // M_a is assembled
   // water that moves differently from point to point or in time: sampled per Gauss point
   const bool local_flow = kSea && !sea.uniform();
   const bool fluid_inertia = local_flow && ctx.fluid_inertia_per_length > 0.0;
   const bool contact = kSea && sea.has_seabed();
-  if (!ctx.drag && !added && !fluid_inertia && !contact) return r;
+  if (!ctx.drag && !added && !added_t && !fluid_inertia && !contact) return r;
   Mat35 f_w;        // the load per unit length at each point, weighted
   FlowSample flow;  // the same at every point without local flow
   if (!local_flow) flow.velocity = sea.uniform_current();
@@ -76,7 +80,11 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
     }
     if (ctx.drag) {
       const Vec3 v_rel = RelativeVelocity(fields.v.col(g), flow);
-      const DragResult d = CableDrag(ctx.fluid, ctx.diameter, a, v_rel, kWithJacobian);
+      // the law's own instantiation (cable_drag.h)
+      const DragResult d =
+          ctx.drag_law.kind == CableDragLaw::kConstant
+              ? CableDragOf<true>(ctx.fluid, ctx.drag_law, ctx.diameter, a, v_rel, kWithJacobian)
+              : CableDragOf<false>(ctx.fluid, ctx.drag_law, ctx.diameter, a, v_rel, kWithJacobian);
       f = scale * d.f;
       if constexpr (kWithJacobian) {
         f_a += scale * d.df_da;
@@ -97,6 +105,18 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
         // d/da at fixed acc (the projector turns with the tangent)
         f_a += AddedMassTangentDerivative(1.0, a, acc);
         if (added) m_pt = ctx.added_mass_per_length * NormalProjector(a);
+      }
+    }
+    if (kSea && added_t) {
+      // the tangential added mass: f_at = -t t^T acc_t, acc_t = m_at (r_ddot - a_fluid)
+      Vec3 acc_t = fields.acc.col(g);
+      if (local_flow) acc_t -= flow.acceleration;
+      acc_t *= ctx.tangential_added_mass_per_length;
+      const Vec3 tn = a.normalized();
+      f -= tn.dot(acc_t) * tn;
+      if constexpr (kWithJacobian) {
+        f_a -= AddedMassTangentDerivative(1.0, a, acc_t);
+        m_pt += ctx.tangential_added_mass_per_length * (tn * tn.transpose());
       }
     }
     Mat3 f_pos;  // df/dr where f_r
@@ -137,7 +157,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
         d_j[j] = (w * p.dn[j]) * f_a;
         if (kSea && f_r) d_j[j] += (w * p.n[j]) * f_pos;
         v_j[j] = (w * p.n[j]) * f_v;
-        if (added) a_j[j] = (w * p.n[j]) * m_pt;
+        if (any_added) a_j[j] = (w * p.n[j]) * m_pt;
       }
       for (int k = 0; k < 4; ++k) {
         for (int j = 0; j < 4; ++j) jac->d_de.block<3, 3>(3 * k, 3 * j) -= p.n[k] * d_j[j];
@@ -145,7 +165,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
         // below)
         for (int j = k; j < 4; ++j) {
           jac->d_dedot.block<3, 3>(3 * k, 3 * j) -= p.n[k] * v_j[j];
-          if (added) jac->added_mass.block<3, 3>(3 * k, 3 * j) += p.n[k] * a_j[j];
+          if (any_added) jac->added_mass.block<3, 3>(3 * k, 3 * j) += p.n[k] * a_j[j];
         }
       }
     }
@@ -156,7 +176,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
     for (int k = 1; k < 4; ++k)
       for (int j = 0; j < k; ++j) {
         jac->d_dedot.block<3, 3>(3 * k, 3 * j) = jac->d_dedot.block<3, 3>(3 * j, 3 * k);
-        if (added)
+        if (any_added)
           jac->added_mass.block<3, 3>(3 * k, 3 * j) = jac->added_mass.block<3, 3>(3 * j, 3 * k);
       }
   }
@@ -177,7 +197,8 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
 unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea) {
   unsigned f = 0;
   if (ctx.drag) f |= kFieldVelocity;
-  if (ctx.added_mass_per_length > 0.0) f |= kFieldAcceleration;
+  if (ctx.added_mass_per_length > 0.0 || ctx.tangential_added_mass_per_length > 0.0)
+    f |= kFieldAcceleration;
   if (!sea.uniform() && !sea.steady_uniform_current()) f |= kFieldPosition;  // the current at r
   if (sea.has_seabed()) f |= kFieldPosition | kFieldVelocity;
   return f;
@@ -186,7 +207,8 @@ unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea) {
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
                           const EnvironmentField& sea, double t, const ElementWaves* waves,
                           const GaussFields& fields, double scale, ElementLoadJacobians* jac) {
-  const bool sea_code = !sea.uniform() || sea.has_seabed();
+  const bool sea_code =
+      !sea.uniform() || sea.has_seabed() || ctx.tangential_added_mass_per_length > 0.0;
   if (jac)
     return sea_code ? Residual<true, true>(element, ctx, sea, t, waves, fields, scale, jac)
                     : Residual<false, true>(element, ctx, sea, t, waves, fields, scale, jac);

@@ -1,13 +1,18 @@
 #pragma once
 // Distributed external loads of one cable element, as generalized forces (paper Eq. 14):
-// gravity and buoyancy (Eq. 15-16), drag (Eq. 17-21) on the velocity relative to the local
-// water, normal added mass (Eq. 22-23) and, in accelerating water (waves, an unsteady
+// gravity and buoyancy (Eq. 15-16), drag (Eq. 17-21, or a line type's constant coefficients:
+// hydrodynamics.h) on the velocity relative to the local water, normal added mass (Eq. 22-23)
+// and a line type's tangential added mass, and, in accelerating water (waves, an unsteady
 // current), the fluid-inertia (Froude-Krylov + added mass) force of Morison's equation in the
 // normal direction (docs/environment.md):
 //   f_fluid = (rho_w A + m_a) (I - t t^T) a_fluid,  m_a = C_a rho_w A,
 // so that with the added mass -m_a (I - t t^T) r_ddot the normal inertia load is
 // (1 + C_a) rho_w A a_n,fluid - C_a rho_w A a_n,cable (the rho_w A part goes with buoyancy,
-// the C_a part with added mass: a load left out of the scene drops its part). They enter the
+// the C_a part with added mass: a load left out of the scene drops its part). A tangential
+// added mass m_at = C_at rho_w A (line types; 0 by default) adds
+//   f_at = m_at t t^T (a_fluid - r_ddot)
+// (MoorDyn's CaAx; the tangential Froude-Krylov part rho_w A t t^T a_fluid stays out, as
+// without it: docs/physics.md "Added mass"). They enter the
 // residual as
 //   R_load(e, e_dot, e_ddot) = M_a(e) e_ddot - Q_drag(e, e_dot) - Q_fluid(e) - Q_weight
 // where M_a = int m_a S^T (I - t t^T) S dx depends on the tangent t; the implicit solve needs
@@ -30,7 +35,9 @@ namespace towsim::core {
 struct CableLoadContext {
   FluidProperties fluid;
   double diameter = 0.0;                  // d [m]
+  CableDragLaw drag_law;                  // Choo & Casarella or constant coefficients
   double added_mass_per_length = 0.0;     // m_a = C_a rho_w A [kg/m] (0: off)
+  double tangential_added_mass_per_length = 0.0;  // m_at = C_at rho_w A [kg/m] (0: off)
   double fluid_inertia_per_length = 0.0;  // rho_w A (buoyancy on) + m_a [kg/m]
   bool drag = false;
   Eigen::Vector3d weight_per_length = Eigen::Vector3d::Zero();  // (rho_c - rho_w) A g e_z [N/m]

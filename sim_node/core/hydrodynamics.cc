@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "core/cable_drag.h"
 #include "core/constants.h"
 
 namespace towsim::core {
@@ -69,45 +70,16 @@ DragLaw TangentialDragLaw(double re) {
   return {0.55 * s + 0.084 * t, 0.275 * s + 0.056 * t};
 }
 
-DragResult CableDrag(const FluidProperties& fluid, double diameter, const Vec3& a,
-                     const Vec3& v_rel, bool jacobians) {
-  DragResult out;
-  const double stretch = a.norm();
-  const Vec3 t = a / stretch;
-  const double vt_s = t.dot(v_rel);
-  const Vec3 vt = vt_s * t;
-  const Vec3 vn = v_rel - vt;
-  const double k = fluid.density * diameter / fluid.viscosity;  // Re per unit speed
-  const double mu = fluid.viscosity;
+// Choo & Casarella's instantiation here, the constant coefficients' in constant_drag.cc (one
+// each per file: the default law compiles to the code it had before line types)
+template DragResult CableDragOf<false>(const FluidProperties&, const CableDragLaw&, double,
+                                       const Vec3&, const Vec3&, bool);
 
-  const double vn_norm = vn.norm();
-  const double vt_norm = std::abs(vt_s);
-  const DragLaw ln = NormalDragLaw(k * vn_norm);
-  const DragLaw lt = TangentialDragLaw(k * vt_norm);
-  // per stretched length: h = h_n + h_t
-  const Vec3 h = -0.5 * mu * ln.g * vn - kPi * mu * lt.g * vt;
-  out.f = stretch * h;
-  if (!jacobians) return out;
-
-  const Mat3 I = Mat3::Identity();
-  const Mat3 tt = t * t.transpose();
-  // dh_n/dV_n = -1/2 mu (G I + Re G' nh nh^T), dh_t/dV_t = -pi mu (Nu I + Re Nu' th th^T)
-  Mat3 dn = -0.5 * mu * ln.g * I;
-  if (vn_norm > 0.0) {
-    const Vec3 nh = vn / vn_norm;
-    dn -= 0.5 * mu * ln.re_dg * nh * nh.transpose();
-  }
-  // V_t is parallel to t, so th th^T = t t^T
-  const Mat3 dt = -kPi * mu * (lt.g * I + lt.re_dg * tt);
-  // dh/dV = Dn (I - t t^T) + Dt t t^T
-  out.df_dv = stretch * (dn * (I - tt) + dt * tt);
-  // dV_t/dt = (t.V) I + t V^T, dV_n/dt = -dV_t/dt
-  const Mat3 dvt_dt = vt_s * I + t * v_rel.transpose();
-  const Mat3 dh_dt = (dt - dn) * dvt_dt;
-  const Mat3 dt_da = (I - tt) / stretch;
-  // f = |a| h: df/da = h t^T + |a| dh/dt dt/da
-  out.df_da = h * t.transpose() + stretch * dh_dt * dt_da;
-  return out;
+DragResult CableDrag(const FluidProperties& fluid, const CableDragLaw& law, double diameter,
+                     const Vec3& a, const Vec3& v_rel, bool jacobians) {
+  if (law.kind == CableDragLaw::kConstant)
+    return CableDragOf<true>(fluid, law, diameter, a, v_rel, jacobians);
+  return CableDragOf<false>(fluid, law, diameter, a, v_rel, jacobians);
 }
 
 Mat3 NormalProjector(const Vec3& a) {

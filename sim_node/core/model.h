@@ -10,6 +10,7 @@
 
 #include "core/constants.h"
 #include "core/current_field.h"
+#include "core/hydrodynamics.h"
 #include "core/publish_rates.h"
 #include "core/seabed.h"
 #include "core/vehicle_model.h"
@@ -74,15 +75,27 @@ enum class InitialShape {
   kStatic,    // static equilibrium solved before t = 0
 };
 
+// The added-mass coefficients of a cable on its displaced mass rho_w A (docs/physics.md
+// "Added mass"): normal (Eq. 23 has C_an = 1) and tangential (MoorDyn's CaAx; 0: none).
+struct AddedMassCoefficients {
+  double normal = 1.0;      // C_an
+  double tangential = 0.0;  // C_at
+};
+
 struct CableParams {
   // unstretched length L [m]; with a winch the initial paid-out length
   double length = 200.0;
-  int elements = 20;                    // number of ANCF elements
-  double diameter = 0.041;              // d [m]
-  double density = 1300.0;              // rho_c [kg/m^3]
-  double youngs_modulus = 7.0e8;        // E [Pa]
-  double axial_damping = 0.0;           // c in N = EA (eps + c deps/dt) [s]
-  double added_mass_coefficient = 1.0;  // C_a, normal direction only (Eq. 23 has C_a = 1)
+  int elements = 20;  // number of ANCF elements
+  // the line type (docs/scene_format.md "Line types"); the defaults: the paper's cable, a solid
+  // section of d = 0.041 m, rho_c = 1300 kg/m^3, E = 7e8 Pa
+  // hydrodynamic (volume-equivalent) diameter d: buoyancy rho_w A g, drag, added mass [m]
+  double diameter = 0.041;
+  double mass_per_length = 1300.0 * (0.25 * kPi * 0.041 * 0.041);                   // m [kg/m]
+  double axial_stiffness = 7.0e8 * (0.25 * kPi * 0.041 * 0.041);                    // EA [N]
+  double bending_stiffness = 7.0e8 * (kPi * 0.041 * 0.041 * 0.041 * 0.041 / 64.0);  // EI [N m^2]
+  double axial_damping = 0.0;  // c in N = EA (eps + c deps/dt) [s]
+  CableDragLaw drag;           // Choo & Casarella (default) or constant C_n, C_t
+  AddedMassCoefficients added_mass;
   CableLoads loads;
   InitialShape initial = InitialShape::kVertical;
   // velocity of every node at t = 0; for kStatic, the static shape is solved in the frame
@@ -93,8 +106,16 @@ struct CableParams {
   // the winch at the start (winch.h, docs/winch.md); absent: the length is fixed
   std::optional<WinchParams> winch;
 
+  // the circular section of diameter d: A = pi d^2 / 4, I = pi d^4 / 64
   double area() const { return 0.25 * kPi * diameter * diameter; }
   double second_moment() const { return kPi * diameter * diameter * diameter * diameter / 64.0; }
+  // a solid section of density rho_c [kg/m^3] and Young's modulus E [Pa]: m = rho_c A,
+  // EA = E A, EI = E I (the scene keys density and youngs_modulus)
+  void SetSolidSection(double density, double youngs_modulus) {
+    mass_per_length = density * area();
+    axial_stiffness = youngs_modulus * area();
+    bending_stiffness = youngs_modulus * second_moment();
+  }
 };
 
 // A point-mass body: translational dynamics with weight, buoyancy, quadratic drag and added

@@ -21,8 +21,10 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, cons
     const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.CableDof(i)), s.t);
     rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
   }
-  double f = std::abs(c.density - env.water_density) * c.area() * env.gravity * c.length;
-  f += 0.5 * env.water_density * c.diameter * 1.2 * rel * rel * c.length;
+  double f = std::abs(c.mass_per_length - env.water_density * c.area()) * env.gravity * c.length;
+  // C_n: the line type's, or about Choo & Casarella's (1.1-1.2)
+  const double c_n = c.drag.kind == CableDragLaw::kConstant ? c.drag.normal : 1.2;
+  f += 0.5 * env.water_density * c.diameter * c_n * rel * rel * c.length;
   for (const SphereBody& b : m.spheres)
     f += std::abs(b.mass - env.water_density * b.volume) * env.gravity +
          0.5 * env.water_density * b.drag_coefficient * rel * rel * std::pow(b.volume, 2.0 / 3.0) *

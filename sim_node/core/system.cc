@@ -17,10 +17,10 @@ using Eigen::VectorXd;
 ElementProperties MakeElementProperties(const CableParams& c) {
   ElementProperties p;
   p.length = c.length / c.elements;
-  p.ea = c.youngs_modulus * c.area();
-  p.ei = c.loads.bending ? c.youngs_modulus * c.second_moment() : 0.0;
+  p.ea = c.axial_stiffness;
+  p.ei = c.loads.bending ? c.bending_stiffness : 0.0;
   p.axial_damping = c.axial_damping;
-  p.mass_per_length = c.density * c.area();
+  p.mass_per_length = c.mass_per_length;
   return p;
 }
 
@@ -31,15 +31,19 @@ CableLoadContext MakeLoadContext(const Model& m) {
   ctx.fluid = {env.water_density, env.dynamic_viscosity};
   ctx.diameter = c.diameter;
   ctx.drag = c.loads.drag;
+  ctx.drag_law = c.drag;
   ctx.added_mass_per_length =
-      c.loads.added_mass ? c.added_mass_coefficient * env.water_density * c.area() : 0.0;
+      c.loads.added_mass ? c.added_mass.normal * env.water_density * c.area() : 0.0;
+  ctx.tangential_added_mass_per_length =
+      c.loads.added_mass ? c.added_mass.tangential * env.water_density * c.area() : 0.0;
   // Morison's fluid inertia (cable_loads.h): the Froude-Krylov part goes with buoyancy (both
   // are the pressure field on the section), the C_a part with added mass
   ctx.fluid_inertia_per_length =
       (c.loads.buoyancy ? env.water_density * c.area() : 0.0) + ctx.added_mass_per_length;
-  // Eq. 15-16: rho_c A g e_z (gravity) and -rho_w A g e_z (buoyancy), NED z down
+  // Eq. 15-16: m g e_z (gravity, m = rho_c A for a solid section) and -rho_w A g e_z
+  // (buoyancy), NED z down
   double w = 0.0;
-  if (c.loads.gravity) w += c.density * c.area() * env.gravity;
+  if (c.loads.gravity) w += c.mass_per_length * env.gravity;
   if (c.loads.buoyancy) w -= env.water_density * c.area() * env.gravity;
   ctx.weight_per_length = Vec3(0.0, 0.0, w);
   return ctx;
@@ -61,6 +65,7 @@ System::System(const Model& model)
       element_(MakeElementProperties(model.cable)),
       loads_(MakeLoadContext(model)) {
   state_dependent_loads_ = loads_.drag || loads_.added_mass_per_length > 0.0 ||
+                           loads_.tangential_added_mass_per_length > 0.0 ||
                            (!sea_.uniform() && loads_.fluid_inertia_per_length > 0.0) ||
                            sea_.has_seabed();
   weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
@@ -445,7 +450,7 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
     const AncfElement& element = winch_ && e == 0 ? *drum : element_;
     const Vec12 ed = v.segment<12>(o);
     Mat12 m = element.mass();
-    if (loads_.added_mass_per_length > 0.0) {
+    if (loads_.added_mass_per_length > 0.0 || loads_.tangential_added_mass_per_length > 0.0) {
       ElementLoadResidual(element, am_only, sea_, 0.0, nullptr, q.segment<12>(o), ed,
                           Vec12::Zero(), 1.0, &lj);
       m += lj.added_mass;

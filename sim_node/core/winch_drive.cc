@@ -62,7 +62,7 @@ void WinchDrive::SolveBrakeSlip(double h, double slip, State* state,
                                 const std::function<StepStatus(double)>& step_system,
                                 StepStatus* s) {
   const CableParams& c = system_->model().cable;
-  const double stiffness_h = c.youngs_modulus * c.area() * h / system_->drum_length();
+  const double stiffness_h = c.axial_stiffness * h / system_->drum_length();
   const double first = state->winch.slip_slope < 0.0 ? state->winch.slip_slope : -stiffness_h;
   BrakeSlipIteration brake(c.winch->brake_tension, MaxSlip(h), first);
   int iterations = s->iterations;

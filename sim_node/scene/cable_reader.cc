@@ -6,6 +6,7 @@
 
 #include "core/winch.h"
 #include "scene/body_reader.h"
+#include "scene/line_type_reader.h"
 
 namespace towsim::scene::internal {
 namespace {
@@ -247,27 +248,15 @@ core::WinchParams ReadWinch(const MapReader& cable, const core::CableParams& c,
 
 }  // namespace
 
-core::CableParams ReadCable(const Field& field, const core::Model& model) {
+core::CableParams ReadCable(const Field& field, const Field& line_types,
+                            const std::string& base_dir, const core::Model& model) {
   const MapReader cable(field, MapKind::kCable);
   core::CableParams c;
 
-  // material and discretization
+  // discretization, then the line type (line_type_reader.h)
   c.length = cable.Number("length", Range::Above(0.0));
   c.elements = cable.Integer("elements", Range::Closed(1, 10000));
-  // positive, and no larger than any cable could be (docs/scene_format.md "cable": the limits)
-  auto physical = [&cable](const std::string& key, double max, const std::string& why) {
-    const Field f = cable.Require(key);
-    const double x = f.Number(Range::Above(0.0));
-    if (x > max) f.Fail("must be <= " + internal::FormatNumber(max) + " " + why);
-    return x;
-  };
-  c.diameter = physical("diameter", 10.0, "m (a cable, not a structure)");
-  c.density = physical("density", 1.0e5, "kg/m^3 (the densest material, osmium, is 2.26e4)");
-  c.youngs_modulus =
-      physical("youngs_modulus", 1.0e13, "Pa (the stiffest material, diamond, is 1.2e12)");
-  c.axial_damping = cable.Number("axial_damping", Range::AtLeast(0.0), 0.0);
-  c.added_mass_coefficient =
-      cable.Number("added_mass_coefficient", Range::AtLeast(0.0), c.added_mass_coefficient);
+  const LineTypeFields line_type = ReadLineType(cable, line_types, base_dir, &c);
   // loads: absent means all on
   if (cable.Has("loads")) c.loads = ReadLoads(cable.Get("loads"));
   if (cable.Has("initial")) {
@@ -284,6 +273,7 @@ core::CableParams ReadCable(const Field& field, const core::Model& model) {
   CheckEnds(start, end, model);
   CheckInitialShape(c, start, end, model);
   if (cable.Has("winch")) c.winch = ReadWinch(cable, c, start, model);
+  CheckStaticStrain(c, model, line_type);
 
   // initial velocity: given, else that of a driven end, else zero
   core::Vec3 velocity = core::Vec3::Zero();

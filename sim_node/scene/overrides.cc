@@ -93,6 +93,11 @@ void ApplyOverrides(const std::vector<std::string>& overrides, YAML::Node root, 
               key, text, kSet,
               "no body named " + part + " in the scene (bodies: " + BodyList(node) + ")");
         }
+      } else if (kind == MapKind::kLineTypes) {
+        // a line type's keys may start a new type (its missing keys are then reported)
+        if (!IsValidName(part)) {
+          throw ConfigError(key, text, kSet, "line type name " + part + " " + kNameRule);
+        }
       } else {
         const std::vector<std::string>& allowed = AllowedKeys(kind);
         if (std::find(allowed.begin(), allowed.end(), part) == allowed.end()) {

@@ -90,7 +90,8 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   for (const internal::SphereInput& sphere : bodies.spheres) model.spheres.push_back(sphere.body);
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
   internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
-  model.cable = internal::ReadCable(scene.Require("cable"), model);
+  model.cable =
+      internal::ReadCable(scene.Require("cable"), scene.Get("line_types"), base_dir, model);
   // bodies that give no velocity start with the cable (vehicles: in their body frame)
   const core::Vec3& v_W = model.cable.initial_velocity;
   for (size_t i = 0; i < bodies.spheres.size(); ++i) {

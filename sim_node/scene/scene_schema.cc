@@ -36,6 +36,14 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       "source", "length",   "diameter",   "mass",        "inertia", "r_g",
       "r_b",    "volume",   "added_mass", "munk_moment", "damping", "surfaces",
       "rudder", "elevator", "propeller",  "waterplane"};
+  // a line type's properties (core::CableParams)
+  static const std::vector<std::string> kLineTypeKeys = {
+      "diameter",          "mass_per_length", "density", "axial_stiffness", "youngs_modulus",
+      "bending_stiffness", "axial_damping",   "drag",    "added_mass"};
+  static const std::vector<std::string> kSourceKey = {"source"};
+  // the cable's own keys after the line type's (added_mass_coefficient: C_an, before line types)
+  static const std::vector<std::string> kCableKeys = {
+      "added_mass_coefficient", "loads", "initial", "initial_velocity", "start", "end", "winch"};
   // type first, then the keys of `groups`, each once, in order
   const auto join = [](std::vector<std::string> keys,
                        std::initializer_list<const std::vector<std::string>*> groups) {
@@ -55,8 +63,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
       {MapKind::kScene,
-       {"name", "time", "environment", "cable", "bodies", "integrator", "script", "publish",
-        "security"}},
+       {"name", "time", "environment", "line_types", "cable", "bodies", "integrator", "script",
+        "publish", "security"}},
       {MapKind::kPublish, publish_keys()},
       {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
@@ -71,9 +79,13 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kSeabed,
        {"depth", "slope_deg", "slope_direction_deg", "grid", "stiffness", "damping", "friction",
         "friction_lateral"}},
-      {MapKind::kCable,
-       {"length", "elements", "diameter", "density", "youngs_modulus", "loads", "axial_damping",
-        "added_mass_coefficient", "initial", "initial_velocity", "start", "end", "winch"}},
+      // a line type's properties (docs/scene_format.md "Line types"), then its sources
+      {MapKind::kLineTypes, {}},
+      {MapKind::kLineType, join({}, {&kLineTypeKeys, &kSourceKey})},
+      {MapKind::kLineDrag, {"normal", "tangential"}},
+      {MapKind::kLineAddMass, {"normal", "tangential"}},
+      // the cable: a line type's properties inline (overriding cable.line_type's)
+      {MapKind::kCable, join({"length", "elements", "line_type"}, {&kLineTypeKeys, &kCableKeys})},
       {MapKind::kWinch,
        {"min_length", "max_length", "max_speed", "max_acceleration", "brake_tension"}},
       {MapKind::kEnd, {"fixed", "slope", "driven", "free", "body", "at"}},
@@ -114,6 +126,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "time") return MapKind::kTime;
       if (key == "environment") return MapKind::kEnvironment;
       if (key == "cable") return MapKind::kCable;
+      if (key == "line_types") return MapKind::kLineTypes;
       if (key == "bodies") return MapKind::kBodies;
       if (key == "integrator") return MapKind::kIntegrator;
       if (key == "publish") return MapKind::kPublish;
@@ -135,7 +148,14 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
     case MapKind::kCable:
       if (key == "start" || key == "end") return MapKind::kEnd;
       if (key == "winch") return MapKind::kWinch;
+      [[fallthrough]];
+    case MapKind::kLineType:
+      // drag may also be the name of a law (choo_casarella): --set it whole
+      if (key == "drag") return MapKind::kLineDrag;
+      if (key == "added_mass") return MapKind::kLineAddMass;
       return std::nullopt;
+    case MapKind::kLineTypes:
+      return MapKind::kLineType;
     case MapKind::kEnd:
       if (key == "driven") return MapKind::kDriven;
       return std::nullopt;
@@ -153,6 +173,12 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
     default:
       return std::nullopt;
   }
+}
+
+const char* NamedEntries(MapKind kind) {
+  if (kind == MapKind::kBodies) return "body names";
+  if (kind == MapKind::kLineTypes) return "line type names";
+  return nullptr;
 }
 
 bool IsValidName(const std::string& name) {

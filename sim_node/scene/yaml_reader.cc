@@ -304,8 +304,8 @@ MapReader::MapReader(const Field& field, MapKind kind) : field_(field) {
     // keys are plain names
     if (!key.IsScalar()) entry.Fail("keys must be plain names");
     // only the keys of the schema; body names follow the naming rule
-    if (kind == MapKind::kBodies) {
-      if (!IsValidName(name)) entry.Fail(std::string("body names ") + kNameRule);
+    if (const char* named = NamedEntries(kind)) {
+      if (!IsValidName(name)) entry.Fail(std::string(named) + " " + kNameRule);
     } else if (std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {
       entry.Fail(UnknownKeyRule(name, allowed));
     }

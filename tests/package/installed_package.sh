@@ -29,7 +29,8 @@ example)
   cmake --install "$build" --prefix "$work/prefix" > "$work/install.log" ||
     { cat "$work/install.log"; fail "cmake --install"; }
   for f in bin/sim_node bin/towfish_depth share/towsim/cyclonedds.xml \
-           share/towsim/scenes/case1_forward.yaml lib/cmake/towsim/towsimConfig.cmake; do
+           share/towsim/scenes/case1_forward.yaml share/towsim/line_types/park_kim_tow_cable.yaml \
+           lib/cmake/towsim/towsimConfig.cmake; do
     [[ -e "$work/prefix/$f" ]] || fail "the installation has no $f"
   done
   cmake -S "$source/examples/controller_ci" -B "$work/example" -DCMAKE_BUILD_TYPE=Release \
@@ -100,6 +101,13 @@ deb)
   "$work/root/usr/bin/sim_node" --scene case1_forward --mode offline --duration 1 \
     > "$work/run.txt" || fail "sim_node --scene case1_forward (packaged)"
   grep -q "^sim_node: case1_forward: 20 steps" "$work/run.txt" || fail "$(cat "$work/run.txt")"
+  # a packaged scene finds a line type of the packaged library by name
+  # (<root>/usr/share/towsim/line_types, docs/scene_format.md "Line types")
+  "$work/root/usr/bin/sim_node" --scene steady_tow --mode offline --duration 1 \
+    --set "cable={line_type: park_kim_tow_cable, length: 200, elements: 20, start: {driven: \
+{position: [0, 0, 3.5], velocity: [6, 0, 0]}}, end: {body: towfish}}" > "$work/run_lt.txt" ||
+    fail "sim_node --scene steady_tow with line_type: park_kim_tow_cable (packaged)"
+  grep -q "^sim_node: steady_tow: 20 steps" "$work/run_lt.txt" || fail "$(cat "$work/run_lt.txt")"
   # a DDS mode runs in the packaged DDS program, found beside the packaged sim_node
   # (<root>/usr/libexec/towsim), which finds the packaged scene and cyclonedds.xml itself;
   # domain 196 (tests/integration/README.md), inside a network namespace of its own if we may

@@ -44,4 +44,16 @@ Eigen::Vector3d CableDragPerStretchedLength(const Fluid& fluid, double diameter,
   return f;
 }
 
+Eigen::Vector3d CableDragPerStretchedLength(const Fluid& fluid, double diameter,
+                                            const ConstantDragCoefficients& c,
+                                            const Eigen::Vector3d& t_hat,
+                                            const Eigen::Vector3d& V) {
+  const Eigen::Vector3d v_t = V.dot(t_hat) * t_hat;
+  const Eigen::Vector3d v_n = V - v_t;
+  // 1/2 rho C |V| V on the area per length: d normal, pi d tangential
+  return -0.5 * fluid.density *
+         (c.normal * diameter * v_n.norm() * v_n +
+          c.tangential * kPi * diameter * v_t.norm() * v_t);
+}
+
 }  // namespace towsim::reference

@@ -5,7 +5,10 @@
 //   normal:     F_n = -1/2 rho_w d C_Dn(Re_n) |V_n| V_n,   Re_n = rho_w |V_n| d / mu
 //   tangential: F_t = -(s_c / d) mu Nu(Re_t) V_t = -pi mu Nu(Re_t) V_t,
 //               Re_t = rho_w |V_t| d / mu
-// both per unit *stretched* length; V = cable velocity minus current.
+// both per unit *stretched* length; V = cable velocity minus current. Or, with constant
+// coefficients (a line type's `drag: {normal, tangential}`, MoorDyn's Cd and CdAx):
+//   normal:     F_n = -1/2 rho_w C_n d |V_n| V_n        (on the projected area d per length)
+//   tangential: F_t = -1/2 rho_w C_t pi d |V_t| V_t     (on the wetted area pi d per length)
 
 #include <Eigen/Core>
 
@@ -30,6 +33,15 @@ struct Fluid {
 // drag per unit stretched length [N/m] on a cable of diameter d [m] whose unit tangent is
 // t_hat, moving with velocity V [m/s] relative to the water (cable velocity minus current)
 Eigen::Vector3d CableDragPerStretchedLength(const Fluid& fluid, double diameter,
+                                            const Eigen::Vector3d& t_hat, const Eigen::Vector3d& V);
+
+struct ConstantDragCoefficients {
+  double normal = 0.0;      // C_n on d
+  double tangential = 0.0;  // C_t on pi d
+};
+// the same with constant coefficients
+Eigen::Vector3d CableDragPerStretchedLength(const Fluid& fluid, double diameter,
+                                            const ConstantDragCoefficients& c,
                                             const Eigen::Vector3d& t_hat, const Eigen::Vector3d& V);
 
 }  // namespace towsim::reference

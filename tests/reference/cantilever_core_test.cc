@@ -29,8 +29,7 @@ core::Model Cantilever(int elements, double alpha) {
   c.length = kLength;
   c.elements = elements;
   c.diameter = 0.02;
-  c.density = 7850.0;
-  c.youngs_modulus = 2.0e11;
+  c.SetSolidSection(7850.0, 2.0e11);  // steel
   c.loads.gravity = false;
   c.loads.buoyancy = false;
   c.loads.drag = false;
@@ -46,7 +45,7 @@ core::Model Cantilever(int elements, double alpha) {
   c.end.at_B = Vec3::Zero();
   core::SphereBody tip;
   tip.name = "tip_mass";
-  const double ei = c.youngs_modulus * c.second_moment();
+  const double ei = c.bending_stiffness;
   tip.mass = alpha * ei / (kLength * kLength) / m.environment.gravity;  // P = m g
   tip.volume = 0.0;
   tip.position = Vec3(kLength, 0.0, 0.0);

@@ -40,8 +40,7 @@ core::Model HangingCable(int elements, bool bending) {
   c.length = 200.0;
   c.elements = elements;
   c.diameter = 0.041;
-  c.density = 1300.0;
-  c.youngs_modulus = 7.0e8;
+  c.SetSolidSection(1300.0, 7.0e8);
   c.loads.gravity = true;
   c.loads.buoyancy = true;
   c.loads.drag = false;        // static: no velocity
@@ -62,8 +61,8 @@ CatenaryProblem ReferenceProblem(const core::Model& m) {
   p.length = c.length;
   p.span = kSpan;
   p.height = 0.0;
-  p.weight = (c.density - env.water_density) * c.area() * env.gravity;  // w = (rho_c - rho_w) A g
-  p.ea = c.youngs_modulus * c.area();
+  p.weight = (c.mass_per_length - env.water_density * c.area()) * env.gravity;  // (m - rho_w A) g
+  p.ea = c.axial_stiffness;
   return p;
 }
 

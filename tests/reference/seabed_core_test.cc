@@ -28,7 +28,7 @@ const std::string kCatenary = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/c
 
 double WeightInWater(const Model& m) {
   const CableParams& c = m.cable;
-  return (c.density - m.environment.water_density) * c.area() * m.environment.gravity;
+  return (c.mass_per_length - m.environment.water_density * c.area()) * m.environment.gravity;
 }
 
 TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
@@ -45,7 +45,7 @@ TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
   p.span = kSpan;
   p.height = kDepth - kFairleadDepth;
   p.weight = WeightInWater(m);
-  p.ea = m.cable.youngs_modulus * m.cable.area();
+  p.ea = m.cable.axial_stiffness;
   const reference::GroundedCatenarySolution ref = reference::SolveGroundedCatenary(p);
   ASSERT_FALSE(ref.suspended);
   // touchdown: where the cable's height above the bed first exceeds the penalty's

@@ -43,8 +43,7 @@ core::Model SwingingCable(core::Scheme scheme, double rho_inf, double step) {
   c.length = kLength;
   c.elements = 10;
   c.diameter = 0.01;
-  c.density = 2000.0;
-  c.youngs_modulus = 1.0e8;
+  c.SetSolidSection(2000.0, 1.0e8);
   c.loads.gravity = true;
   c.loads.buoyancy = false;  // vacuum
   c.loads.drag = false;
@@ -64,7 +63,7 @@ core::Model SwingingCable(core::Scheme scheme, double rho_inf, double step) {
 
 double PotentialSwing(const core::Model& m) {
   const core::CableParams& c = m.cable;
-  return c.density * c.area() * m.environment.gravity * c.length * c.length / 2.0;
+  return c.mass_per_length * m.environment.gravity * c.length * c.length / 2.0;
 }
 
 // the simulation, released from rest straight along +x

@@ -39,8 +39,7 @@ core::Model String() {
   c.length = kLength;
   c.elements = 10;
   c.diameter = kDiameter;
-  c.youngs_modulus = kEA / c.area();
-  c.density = kRhoA / c.area();
+  c.SetSolidSection(kRhoA / c.area(), kEA / c.area());
   c.loads = {false, false, false, false, false};
   c.initial = core::InitialShape::kStraight;
   c.start.kind = core::EndKind::kFixed;

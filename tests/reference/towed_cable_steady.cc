@@ -30,7 +30,10 @@ struct Rhs {
     Eigen::Vector3d load = Eigen::Vector3d::Zero();
     if (p.cable_weight) load.z() += w;
     if (p.cable_drag) {
-      load += lambda * CableDragPerStretchedLength(p.fluid, p.diameter, t_hat, v_rel);
+      load += lambda * (p.drag_coefficients
+                            ? CableDragPerStretchedLength(p.fluid, p.diameter, *p.drag_coefficients,
+                                                          t_hat, v_rel)
+                            : CableDragPerStretchedLength(p.fluid, p.diameter, t_hat, v_rel));
     }
     Y dy;
     dy.head<3>() = -load;

@@ -10,7 +10,9 @@
 // Equilibrium of the piece below s, with f the external load per unit unstretched length:
 //
 //   dF/ds = -f,   f = w e_z + lambda(T) [F_n(V_n) + F_t(V_t)]   (cable_drag.h, per stretched
-//                                                                length, times the stretch)
+//                                                                length, times the stretch;
+//                                                                Choo & Casarella's laws or
+//                                                                constant coefficients)
 //   dr/ds = lambda(T) t_hat,  t_hat = F / |F|
 //   F(0) = -(sphere net weight + sphere drag)   (the sphere is in equilibrium; no shooting)
 //
@@ -24,6 +26,7 @@
 // everywhere and the shape does not depend on z_sphere).
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -43,6 +46,8 @@ struct TowedCableProblem {
   double diameter = 0.041;      // d [m]
   double density = 1300.0;      // rho_c [kg/m^3]
   double youngs_modulus = 7e8;  // E [Pa]
+  // constant drag coefficients instead of Choo & Casarella's laws (cable_drag.h)
+  std::optional<ConstantDragCoefficients> drag_coefficients;
   // sphere at the lower end
   double sphere_mass = 416.0;  // m [kg]
   double sphere_volume = 0.2;  // V [m^3]

@@ -19,8 +19,11 @@ inline TowedCableProblem SteadyTowProblem(const core::Model& m) {
   const core::CableParams& c = m.cable;
   p.length = c.length;
   p.diameter = c.diameter;
-  p.density = c.density;
-  p.youngs_modulus = c.youngs_modulus;
+  // the line as the solid section of its diameter with the same m and EA
+  p.density = c.mass_per_length / c.area();
+  p.youngs_modulus = c.axial_stiffness / c.area();
+  if (c.drag.kind == core::CableDragLaw::kConstant)
+    p.drag_coefficients = ConstantDragCoefficients{c.drag.normal, c.drag.tangential};
   const core::SphereBody& b = m.spheres.at(0);
   p.sphere_mass = b.mass;
   p.sphere_volume = b.volume;

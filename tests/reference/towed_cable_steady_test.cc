@@ -93,6 +93,27 @@ TEST(TowedCableSteady, LongCableReachesCriticalAngle) {
   EXPECT_NEAR(phi_top, phi_c, kAngleTol) << "phi_c = " << phi_c;
 }
 
+// the same with constant coefficients (a line type's drag): the critical angle in closed form
+// (Pode 1951), w cos(phi) = 1/2 rho d C_n V^2 sin^2(phi), a quadratic in c = cos(phi):
+//   q c^2 + w c - q = 0,  q = 1/2 rho d C_n V^2,  c = (sqrt(w^2 + 4 q^2) - w) / (2 q)
+TEST(TowedCableSteady, ConstantCoefficientsReachPodesCriticalAngle) {
+  TowedCableProblem p = PaperTow();
+  p.length = 3000.0;
+  p.youngs_modulus = 1e20;
+  p.drag_coefficients = ConstantDragCoefficients{1.5, 0.01};
+  const TowedCableSolution s = SolveTowedCableSteady(p, 60000, 300);
+  const Eigen::Vector3d d = s.shape.back().r - s.shape[s.shape.size() - 2].r;
+  const double phi_top = std::atan2(-d.z(), d.x());
+  const double w = (p.density - p.fluid.density) * 0.25 * kPi * p.diameter * p.diameter * p.gravity;
+  const double v = p.tow_velocity.norm();
+  const double q = 0.5 * p.fluid.density * p.diameter * 1.5 * v * v;
+  const double phi_c = std::acos((std::sqrt(w * w + 4.0 * q * q) - w) / (2.0 * q));
+  constexpr double kAngleTol = 1e-6;  // [rad], as with Choo & Casarella's law above
+  EXPECT_NEAR(phi_top, phi_c, kAngleTol) << "phi_c = " << phi_c;
+  // the shipped cable at 6 m/s: w = 3.5617 N/m, q = 1134.7 N/m: phi_c = 3.209 deg
+  EXPECT_NEAR(phi_c * 180.0 / kPi, 3.209, 1e-3);
+}
+
 // RK4 convergence by halving: the paper tow at 5000 and 10000 steps
 TEST(TowedCableSteady, ConvergedInSteps) {
   const TowedCableSolution a = SolveTowedCableSteady(PaperTow(), 5000, 20);

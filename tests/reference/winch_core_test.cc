@@ -82,7 +82,7 @@ TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
   const core::CableParams& c = m.cable;
   const double g = m.environment.gravity, rho = m.environment.water_density;
   // submerged weights: the cable per unstretched metre, the sphere
-  const double w_cable = (c.density - rho) * c.area() * g;
+  const double w_cable = (c.mass_per_length - rho * c.area()) * g;
   const double w_body = (m.spheres[0].mass - rho * m.spheres[0].volume) * g;
   // issue requirement; the slow drum's drag (0.1 m/s: under 3 N) and inertia (0.0025 m/s^2 on
   // about 700 kg: 1.8 N) are each under 0.1 % of the 2400 N, and so is the bounce of the weight on
@@ -106,7 +106,7 @@ TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
       worst = err;
       worst_at = sim.time();
     }
-    const double rho_a_l = c.density * c.area() * sim.cable_length();
+    const double rho_a_l = c.mass_per_length * sim.cable_length();
     worst_mass = std::max(worst_mass, std::abs(CableMass(sim) / rho_a_l - 1.0));
   }
   std::printf(
@@ -252,8 +252,8 @@ double DrumPower(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   const core::State& st = sim.state();
   const core::Model& m = sim.model();
-  const double w =
-      (m.cable.density - m.environment.water_density) * m.cable.area() * m.environment.gravity;
+  const double w = (m.cable.mass_per_length - m.environment.water_density * m.cable.area()) *
+                   m.environment.gravity;
   const core::Vec12 e = sys.ElementCoordinates(st.q, 0), e_dot = sys.ElementCoordinates(st.v, 0);
   auto lagrangian = [&](double l) {
     const core::AncfElement element = sys.DrumElement(l);
@@ -270,10 +270,10 @@ double DrumPower(const core::Simulation& sim) {
 // rho_c A (dL/dt (1 + eps))^2 / 2], eps = T / (E A)
 double DrumFluxPower(const core::Simulation& sim) {
   const core::CableParams& c = sim.model().cable;
-  const double ea = c.youngs_modulus * c.area(), rate = sim.winch_speed();
+  const double ea = c.axial_stiffness, rate = sim.winch_speed();
   const double t = sim.DrumTension(), eps = t / ea;
   const double v = rate * (1.0 + eps);
-  return rate * (-t * (1.0 + eps) + 0.5 * ea * eps * eps + 0.5 * c.density * c.area() * v * v);
+  return rate * (-t * (1.0 + eps) + 0.5 * ea * eps * eps + 0.5 * c.mass_per_length * v * v);
 }
 
 // the balance E(t) - E(0) - W_drum(t) over the hanging weight's payout (100 -> 120 m) and reel-in

@@ -46,7 +46,7 @@ TEST(ChooCasarella, DragStaysFiniteAndVanishesAsTheSpeedGoesToZero) {
   const Eigen::Vector3d a = Eigen::Vector3d::UnitX();
   for (double v : {1e-9, 1e-15, 1e-200, 0.0}) {
     const Eigen::Vector3d vel(0.3 * v, 0, v);
-    const DragResult d = CableDrag(fluid, 0.041, a, vel, true);
+    const DragResult d = CableDrag(fluid, {}, 0.041, a, vel, true);
     EXPECT_TRUE(d.f.allFinite() && d.df_dv.allFinite() && d.df_da.allFinite()) << v;
     // Re < 1 (Stokes-Oseen): |f| = mu G |V_n| / 2 with G = 8 pi (1/S - 0.87/S^3) < 10
     EXPECT_LE(d.f.norm(), 5.0 * fluid.viscosity * vel.norm()) << v;
@@ -59,16 +59,16 @@ TEST(CableDrag, JacobiansMatchFiniteDifferences) {
   for (const Eigen::Vector3d& v : {Eigen::Vector3d(0.5, -1.2, 2.0),        // Re ~ 1e5
                                    Eigen::Vector3d(1e-4, 2e-4, -1e-4),     // Re ~ 10
                                    Eigen::Vector3d(3e-6, -1e-6, 5e-6)}) {  // Re < 1
-    const DragResult d = CableDrag(fluid, 0.041, a, v, true);
+    const DragResult d = CableDrag(fluid, {}, 0.041, a, v, true);
     Eigen::Matrix3d fv, fa;
     for (int i = 0; i < 3; ++i) {
       const double hv = 1e-7 * v.norm(), ha = 1e-7;
       const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
-      fv.col(i) = (CableDrag(fluid, 0.041, a, v + hv * e, false).f -
-                   CableDrag(fluid, 0.041, a, v - hv * e, false).f) /
+      fv.col(i) = (CableDrag(fluid, {}, 0.041, a, v + hv * e, false).f -
+                   CableDrag(fluid, {}, 0.041, a, v - hv * e, false).f) /
                   (2 * hv);
-      fa.col(i) = (CableDrag(fluid, 0.041, a + ha * e, v, false).f -
-                   CableDrag(fluid, 0.041, a - ha * e, v, false).f) /
+      fa.col(i) = (CableDrag(fluid, {}, 0.041, a + ha * e, v, false).f -
+                   CableDrag(fluid, {}, 0.041, a - ha * e, v, false).f) /
                   (2 * ha);
     }
     constexpr double kJacRelTol = 1e-5;  // central differences on a smooth branch
@@ -124,13 +124,87 @@ TEST(CableLoads, NormalTranslationGetsDragAndAddedMassOfTheRightSize) {
   EXPECT_NEAR(-(r(0) + r(6)), -kPi * mu * u * nu * l, 1e-9 * kPi * mu * u * nu * l);
 }
 
-void CheckLoadJacobians(const Environment& env, const ElementWaves* waves) {
+// constant coefficients (a line type's drag): the forces of hydrodynamics.h written out,
+//   f = |a| (-1/2 rho C_n d |V_n| V_n - 1/2 rho C_t pi d |V_t| V_t)
+TEST(ConstantDrag, ForcesAreQuadraticOnDAndPiD) {
+  const FluidProperties fluid;  // rho 1025, mu 1e-3
+  const CableDragLaw law{CableDragLaw::kConstant, 1.5, 0.01};
+  const double d = 0.0173;
+  // stretched 1 %: a = 1.01 e_x; V = (2, 0, -3): V_t = 2 e_x, V_n = -3 e_z
+  const Eigen::Vector3d a(1.01, 0.0, 0.0), v(2.0, 0.0, -3.0);
+  const DragResult r = CableDrag(fluid, law, d, a, v, false);
+  const double fn = 0.5 * 1025.0 * 1.5 * d * 3.0 * 3.0 * 1.01;         // 120.8 N/m, along +z
+  const double ft = 0.5 * 1025.0 * 0.01 * kPi * d * 2.0 * 2.0 * 1.01;  // 1.125 N/m, along -x
+  constexpr double kForceRelTol = 1e-14;
+  EXPECT_NEAR(r.f.z(), fn, kForceRelTol * fn);
+  EXPECT_NEAR(r.f.x(), -ft, kForceRelTol * fn);
+  EXPECT_EQ(r.f.y(), 0.0);
+  // hand-checked: 512.5 x 1.5 = 768.75; x 0.0173 = 13.299375; x 9 x 1.01 = 120.8913 N/m
+  EXPECT_NEAR(fn, 120.8913, 1e-4);
+  // no viscosity in it: the same force at 10x the viscosity
+  const FluidProperties thick{1025.0, 1e-2};
+  EXPECT_EQ(CableDrag(thick, law, d, a, v, false).f, r.f);
+}
+
+TEST(ConstantDrag, JacobiansMatchFiniteDifferences) {
+  const FluidProperties fluid;
+  const CableDragLaw law{CableDragLaw::kConstant, 1.2, 0.008};
+  const Eigen::Vector3d a(1.003, 0.2, -0.1);
+  for (const Eigen::Vector3d& v :
+       {Eigen::Vector3d(0.5, -1.2, 2.0), Eigen::Vector3d(-3.0, 0.1, 0.2)}) {
+    const DragResult d = CableDrag(fluid, law, 0.041, a, v, true);
+    Eigen::Matrix3d fv, fa;
+    for (int i = 0; i < 3; ++i) {
+      const double hv = 1e-7 * v.norm(), ha = 1e-7;
+      const Eigen::Vector3d e = Eigen::Vector3d::Unit(i);
+      fv.col(i) = (CableDrag(fluid, law, 0.041, a, v + hv * e, false).f -
+                   CableDrag(fluid, law, 0.041, a, v - hv * e, false).f) /
+                  (2 * hv);
+      fa.col(i) = (CableDrag(fluid, law, 0.041, a + ha * e, v, false).f -
+                   CableDrag(fluid, law, 0.041, a - ha * e, v, false).f) /
+                  (2 * ha);
+    }
+    constexpr double kJacRelTol = 1e-6;  // central differences of a quadratic law
+    EXPECT_LT((d.df_dv - fv).norm(), kJacRelTol * fv.norm()) << v.transpose();
+    EXPECT_LT((d.df_da - fa).norm(), kJacRelTol * fa.norm()) << v.transpose();
+  }
+}
+
+// a line type's tangential added mass: an element along x accelerating along x carries
+// m_at a L, and none across (the normal part is C_an's)
+TEST(CableLoads, TangentialAddedMassActsAlongTheCable) {
+  const double l = 10.0, m_at = 0.4;
+  ElementProperties p;
+  p.length = l;
+  const AncfElement el(p);
+  CableLoadContext ctx;
+  ctx.tangential_added_mass_per_length = m_at;
+  const EnvironmentField sea{Environment()};
+  Vec12 e, ed, edd;
+  e << 0, 0, 0, 1, 0, 0, l, 0, 0, 1, 0, 0;
+  ed.setZero();
+  edd << 3.0, 0, 0, 0, 0, 0, 3.0, 0, 0, 0, 0, 0;
+  ElementLoadJacobians jac;
+  Vec12 r = ElementLoadResidual(el, ctx, sea, 0.0, nullptr, e, ed, edd, 1.0, &jac);
+  constexpr double kLoadRelTol = 1e-12;
+  EXPECT_NEAR(r(0) + r(6), m_at * 3.0 * l, kLoadRelTol * m_at * 3.0 * l);
+  // M_a e_ddot is the residual (the load is the added mass alone)
+  EXPECT_LT((jac.added_mass * edd - r).norm(), 1e-12);
+  edd << 0, 0, 3.0, 0, 0, 0, 0, 0, 3.0, 0, 0, 0;
+  r = ElementLoadResidual(el, ctx, sea, 0.0, nullptr, e, ed, edd, 1.0, nullptr);
+  EXPECT_LT(r.norm(), 1e-12);
+}
+
+void CheckLoadJacobians(const Environment& env, const ElementWaves* waves,
+                        const CableDragLaw& law = {}, double tangential_added_mass = 0.0) {
   ElementProperties p;
   p.length = 10.0;
   const AncfElement el(p);
   CableLoadContext ctx;
   ctx.diameter = 0.041;
   ctx.drag = true;
+  ctx.drag_law = law;
+  ctx.tangential_added_mass_per_length = tangential_added_mass;
   ctx.added_mass_per_length = 1.35;
   ctx.fluid_inertia_per_length = 1.35 + 1.1;
   const EnvironmentField sea(env);
@@ -205,6 +279,18 @@ Environment OnASlopingSeabed(Environment env) {
   c.friction = 0.6;
   env.seabed.set_contact(c);
   return env;
+}
+
+// a line type: constant drag coefficients and a tangential added mass
+TEST(CableLoads, JacobiansMatchFiniteDifferencesWithALineType) {
+  const CableDragLaw law{CableDragLaw::kConstant, 1.5, 0.01};
+  Environment env;
+  env.current = CurrentField::Uniform(Eigen::Vector3d(0.3, -0.2, 0.0));
+  CheckLoadJacobians(env, nullptr, law, 0.4);
+  Environment sea;
+  sea.waves = WaveField::Regular(1.0, 5.0, 0.0, 0.0, 50.0, sea.gravity, sea.water_density);
+  const ElementWaves w = SomeWaves();
+  CheckLoadJacobians(sea, &w, law, 0.4);
 }
 
 TEST(CableLoads, JacobiansMatchFiniteDifferencesInAShearedCurrent) {

@@ -161,7 +161,9 @@ TEST_F(SceneLoaderTest, BaseSceneLoads) {
   EXPECT_EQ(m.environment.water_density, 1025.0);
   EXPECT_EQ(m.integrator.max_iterations, 20);
   EXPECT_EQ(m.cable.axial_damping, 0.0);
-  EXPECT_EQ(m.cable.added_mass_coefficient, 1.0);
+  EXPECT_EQ(m.cable.added_mass.normal, 1.0);
+  EXPECT_EQ(m.cable.added_mass.tangential, 0.0);
+  EXPECT_EQ(m.cable.drag.kind, core::CableDragLaw::kChooCasarella);
 }
 
 TEST_F(SceneLoaderTest, MessageHasKeyValueFileLineAndRule) {
@@ -947,8 +949,8 @@ TEST_F(SceneLoaderTest, PaperCaseScenes) {
     EXPECT_EQ(m.cable.length, 200.0);
     EXPECT_EQ(m.cable.elements, 20);
     EXPECT_EQ(m.cable.diameter, 0.041);
-    EXPECT_EQ(m.cable.density, 1300.0);
-    EXPECT_EQ(m.cable.youngs_modulus, 7.0e8);
+    EXPECT_EQ(m.cable.mass_per_length, 1300.0 * m.cable.area());
+    EXPECT_EQ(m.cable.axial_stiffness, 7.0e8 * m.cable.area());
     const core::CableLoads& loads = m.cable.loads;
     EXPECT_TRUE(loads.gravity && loads.buoyancy && loads.drag && loads.added_mass && loads.bending);
     EXPECT_EQ(m.cable.initial, core::InitialShape::kVertical);
@@ -1193,8 +1195,10 @@ TEST_F(SceneLoaderTest, CatenaryScene) {
   EXPECT_EQ(m.cable.length, 200.0);
   EXPECT_EQ(m.cable.elements, 20);
   EXPECT_EQ(m.cable.diameter, 0.041);
-  EXPECT_EQ(m.cable.density, 1300.0);
-  EXPECT_EQ(m.cable.youngs_modulus, 7.0e8);
+  // the solid section: m = rho_c A, EA = E A, EI = E I
+  EXPECT_EQ(m.cable.mass_per_length, 1300.0 * m.cable.area());
+  EXPECT_EQ(m.cable.axial_stiffness, 7.0e8 * m.cable.area());
+  EXPECT_EQ(m.cable.bending_stiffness, 7.0e8 * m.cable.second_moment());
   EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
   EXPECT_EQ(m.cable.start.kind, core::EndKind::kFixed);
   EXPECT_EQ(m.cable.end.kind, core::EndKind::kFixed);

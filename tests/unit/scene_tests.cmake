@@ -11,3 +11,7 @@ towsim_add_test(yaml_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/yaml_reader_test.cc
   LIBS towsim::scene)
 target_include_directories(yaml_reader_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+# line types (scene/line_type_reader.h): the keys, the library lookup, the cable over the type
+towsim_add_test(line_type_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/line_type_reader_test.cc
+  LIBS towsim::scene)

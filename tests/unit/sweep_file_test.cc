@@ -65,12 +65,31 @@ results:
   EXPECT_EQ(s.combine, SweepCombine::kProduct);
 }
 
+// line types (docs/scene_format.md "Line types"): a sweep over the type, its drag and a
+// type's key; each value is the --set value of its case
+TEST(SweepFile, LineTypeKeysAreParameters) {
+  const SweepSpec s = Load(R"(scene: steady_tow.yaml
+parameters:
+  cable.drag: [{normal: 1.2, tangential: 0.008}, {normal: 1.5, tangential: 0.01}]
+  cable.bending_stiffness: [0, 9.71]
+  line_types.wire.drag.normal: [1.2, 1.5]
+)");
+  ASSERT_EQ(s.parameters.size(), 3u);
+  EXPECT_EQ(s.parameters[0].values[1], "{normal: 1.5, tangential: 0.01}");
+  EXPECT_EQ(s.parameters[1].path, "cable.bending_stiffness");
+  EXPECT_EQ(s.parameters[2].path, "line_types.wire.drag.normal");
+  EXPECT_EQ(Error("scene: steady_tow.yaml\nparameters:\n  cable.drag.cn: [1, 2]\n"),
+            "parameters.cable.drag.cn = [1, 2] (sweep.yaml:3): cable.drag: unknown key "
+            "(allowed: normal, tangential)");
+}
+
 TEST(SweepFile, BadKeyPathsAreReportedWithTheSweepFilesLine) {
   // the --set rules of sim_node, located in the sweep file
   EXPECT_EQ(Error("scene: steady_tow.yaml\nparameters:\n  cable.lenght: [100, 200]\n"),
             "parameters.cable.lenght = [100, 200] (sweep.yaml:3): cable: unknown key; did you "
-            "mean length? (allowed: length, elements, diameter, density, youngs_modulus, loads, "
-            "axial_damping, added_mass_coefficient, initial, initial_velocity, start, end, "
+            "mean length? (allowed: length, elements, line_type, diameter, mass_per_length, "
+            "density, axial_stiffness, youngs_modulus, bending_stiffness, axial_damping, drag, "
+            "added_mass, added_mass_coefficient, loads, initial, initial_velocity, start, end, "
             "winch)");
   EXPECT_NE(Error("scene: steady_tow.yaml\nparameters:\n  bodies.fish.mass: [1, 2]\n")
                 .find("parameters.bodies.fish.mass = [1, 2] (sweep.yaml:3): no body named fish "

@@ -58,7 +58,7 @@ double VerticalMomentum(const Simulation& sim) {
   double p = (vp.mass + vp.added_mass(2, 2)) * sim.vehicle_state(0).nu(2);
   // cable: int rho A r_dot dx = sum over elements of rho A l [1/2, l/12, 1/2, -l/12] . e_dot
   const double l = m.cable.length / m.cable.elements;
-  const double mu = m.cable.density * m.cable.area();
+  const double mu = m.cable.mass_per_length;
   for (int e = 0; e < m.cable.elements; ++e) {
     const State& st = sim.state();
     const int o = sim.cable_dof(e);
@@ -74,7 +74,7 @@ TEST(VehicleCoupling, MomentumBalanceAcrossTheJoint) {
   for (const Coupling coupling : {Coupling::kStrong, Coupling::kStaggered}) {
     const Model m = FallingModel(coupling, 0.01);
     Simulation sim(m);
-    const double w_cable = (m.cable.density - kRho) * m.cable.area() * kG * m.cable.length;
+    const double w_cable = (m.cable.mass_per_length - kRho * m.cable.area()) * kG * m.cable.length;
     const double w_sphere = (m.spheres[0].mass - kRho * m.spheres[0].volume) * kG;
     const double force = w_cable + w_sphere;
     for (int k = 0; k < 300; ++k) ASSERT_TRUE(sim.Step().ok());

@@ -25,7 +25,7 @@ std::string StrainWatch::Warning() const {
   char text[200];
   std::snprintf(text, sizeof text,
                 "warning: cable strain %.3g (%.0f %%) at node %d, t = %.6g s: beyond %.0f %% (no "
-                "cable material stretches that far; check cable.youngs_modulus)",
+                "cable material stretches that far; check cable.youngs_modulus or axial_stiffness)",
                 max_, 100.0 * max_, node_, t_, 100.0 * kExtremeStrain);
   return text;
 }

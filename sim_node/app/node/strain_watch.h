@@ -22,7 +22,7 @@ class StrainWatch {
   bool extreme() const { return max_ > kExtremeStrain; }
   double max() const { return max_; }
   // "cable strain 5.02 (502 %) at node 20, t = 5 s: beyond 20 % (no cable material stretches
-  // that far; check cable.youngs_modulus)"
+  // that far; check cable.youngs_modulus or axial_stiffness)"
   std::string Warning() const;
   // ", max cable strain 5.02 at node 20 (t = 5 s): extreme (> 0.2)", or empty when not extreme
   std::string SummaryPart() const;
