@@ -10,7 +10,7 @@
 #                              Security, ROS 2 graph, decoders), common/*.h (client library),
 #                              testing/*.h (test fixture)
 #   P/lib/                     libtowsim_msgs.a, libtowsim_wire.a, libtowsim_client.a (+ laws),
-#                              libtowsim_testing.a
+#                              libtowsim_testing.a (+ libtowsim_installed.a, which it links)
 #   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::wire, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
 #                              towsim::<name>), towsim_SIM_NODE, towsim_DATA_DIR, towsim_DDS_URI
@@ -47,7 +47,7 @@ install(TARGETS sim_node_dds RUNTIME DESTINATION libexec/towsim)
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
 install(TARGETS towsim_msgs towsim_wire towsim_controller_laws towsim_controller_common
-                towsim_testing
+                towsim_testing towsim_installed
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)

@@ -4,19 +4,23 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "common/laws.h"
 #include "dds/dds.h"
 #include "geometry_msgs.h"
+#include "installed/installed_data.h"
 #include "nav_msgs.h"
 #include "towsim_msgs.h"
 #include "wire/qos.h"
@@ -40,16 +44,38 @@ std::string DefaultLogDir(int domain) {
   return ::testing::TempDir() + name + "_d" + std::to_string(domain);
 }
 
-// a bare scene name finds data_dir/scenes/NAME[.yaml] (sim_node's own rule for installed scenes)
-std::string SceneFile(const std::string& scene, const std::string& data_dir) {
-  std::error_code ec;
-  if (fs::exists(scene, ec) || fs::path(scene).has_parent_path()) return scene;
-  for (const std::string& c :
-       {data_dir + "/scenes/" + scene, data_dir + "/scenes/" + scene + ".yaml"}) {
-    if (fs::is_regular_file(c, ec)) return c;
+// The log folders the fixture made (SimNodeOptions::log_dir empty) for the running test: at
+// the end of the test (after TearDown, the nodes stopped) they are removed if it passed, and
+// kept, their path printed, if it failed. One listener, appended to gtest's on first use.
+class LogDirs : public ::testing::EmptyTestEventListener {
+ public:
+  static void AtEndOfTest(const std::string& dir) {
+    static LogDirs* const listeners = [] {
+      auto* l = new LogDirs;  // owned by gtest's listener list
+      ::testing::UnitTest::GetInstance()->listeners().Append(l);
+      return l;
+    }();
+    std::lock_guard<std::mutex> lock(listeners->mutex_);
+    listeners->dirs_.push_back(dir);
   }
-  return scene;
-}
+
+  void OnTestEnd(const ::testing::TestInfo& info) override {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const std::string& dir : dirs_) {
+      if (info.result()->Failed()) {
+        std::printf("[towsim] the logs of the failed test are kept in %s\n", dir.c_str());
+      } else {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+      }
+    }
+    dirs_.clear();
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> dirs_;
+};
 
 // appends `sample` to `history`, or replaces the last one if it is of the same state: the
 // paused / waiting node repeats its state, one sample per state is kept
@@ -212,9 +238,13 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   m.lease =
       o.domain < 0 ? std::make_unique<DomainLease>() : std::make_unique<DomainLease>(o.domain);
   const int domain = m.lease->id();
-  if (m.opt.log_dir.empty()) m.opt.log_dir = DefaultLogDir(domain);
+  const bool own_log_dir = m.opt.log_dir.empty();
+  if (own_log_dir) m.opt.log_dir = DefaultLogDir(domain);
   fs::remove_all(o.log_dir);
   fs::create_directories(o.log_dir);
+  if (own_log_dir && ::testing::UnitTest::GetInstance()->current_test_info() != nullptr) {
+    LogDirs::AtEndOfTest(o.log_dir);
+  }
   m.names = std::make_unique<wire::TopicNames>(o.ns);
 
   // the project's loopback configuration, for this process and the node
@@ -249,10 +279,12 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
       m.Fail("sim_control writer: " + std::string(dds_strretcode(m.control_writer)));
   }
 
+  // a bare scene name finds data_dir/scenes/NAME[.yaml], as an installed sim_node does
+  const std::string scene =
+      installed::ResolveInstalled(o.scene, installed::kScenes, fs::path(o.data_dir));
   std::vector<std::string> argv = {
-      o.sim_node, "--scene",  SceneFile(o.scene, o.data_dir), "--mode",
-      o.mode,     "--domain", std::to_string(domain),         "--namespace",
-      o.ns,       "--paused"};
+      o.sim_node,    "--scene", scene,     "--mode", o.mode, "--domain", std::to_string(domain),
+      "--namespace", o.ns,      "--paused"};
   auto number = [](double x) {
     std::ostringstream s;
     s.precision(17);
