@@ -4,16 +4,13 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
-#include <string>
 #include <thread>
-#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -22,6 +19,7 @@
 #include "geometry_msgs.h"
 #include "installed/installed_data.h"
 #include "nav_msgs.h"
+#include "testing/test_logs.h"
 #include "towsim_msgs.h"
 #include "wire/qos.h"
 #include "wire/topic_names.h"
@@ -43,39 +41,6 @@ std::string DefaultLogDir(int domain) {
   }
   return ::testing::TempDir() + name + "_d" + std::to_string(domain);
 }
-
-// The log folders the fixture made (SimNodeOptions::log_dir empty) for the running test: at
-// the end of the test (after TearDown, the nodes stopped) they are removed if it passed, and
-// kept, their path printed, if it failed. One listener, appended to gtest's on first use.
-class LogDirs : public ::testing::EmptyTestEventListener {
- public:
-  static void AtEndOfTest(const std::string& dir) {
-    static LogDirs* const listeners = [] {
-      auto* l = new LogDirs;  // owned by gtest's listener list
-      ::testing::UnitTest::GetInstance()->listeners().Append(l);
-      return l;
-    }();
-    std::lock_guard<std::mutex> lock(listeners->mutex_);
-    listeners->dirs_.push_back(dir);
-  }
-
-  void OnTestEnd(const ::testing::TestInfo& info) override {
-    std::lock_guard<std::mutex> lock(mutex_);
-    for (const std::string& dir : dirs_) {
-      if (info.result()->Failed()) {
-        std::printf("[towsim] the logs of the failed test are kept in %s\n", dir.c_str());
-      } else {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-      }
-    }
-    dirs_.clear();
-  }
-
- private:
-  std::mutex mutex_;
-  std::vector<std::string> dirs_;
-};
 
 // appends `sample` to `history`, or replaces the last one if it is of the same state: the
 // paused / waiting node repeats its state, one sample per state is kept
@@ -242,9 +207,7 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   if (own_log_dir) m.opt.log_dir = DefaultLogDir(domain);
   fs::remove_all(o.log_dir);
   fs::create_directories(o.log_dir);
-  if (own_log_dir && ::testing::UnitTest::GetInstance()->current_test_info() != nullptr) {
-    LogDirs::AtEndOfTest(o.log_dir);
-  }
+  if (own_log_dir) RemoveAfterPassingTest(o.log_dir);
   m.names = std::make_unique<wire::TopicNames>(o.ns);
 
   // the project's loopback configuration, for this process and the node
