@@ -5,16 +5,19 @@
 #                              foxglove/,
 #                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
 #                              cyclonedds_two_hosts.xml, idl/*.idl,
-#                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/
+#                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/,
+#                              scripts/ (the plotting scripts and paper_cases.py they import)
 #   P/include/towsim/          msgs/*.h (generated from the IDL), wire/*.h (topic names, QoS,
 #                              Security, ROS 2 graph, decoders), common/*.h (client library),
 #                              testing/*.h (test fixture)
 #   P/lib/                     libtowsim_msgs.a, libtowsim_wire.a, libtowsim_client.a (+ laws),
-#                              libtowsim_testing.a
+#                              libtowsim_testing.a (+ libtowsim_installed.a, which it links)
 #   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::wire, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
 #                              towsim::<name>), towsim_SIM_NODE, towsim_DATA_DIR, towsim_DDS_URI
-# The programs find P/share/towsim from their own location (sim_node/app/common/installed_data.h).
+# The programs find P/share/towsim from their own location (installed/installed_data.h).
+# docs/testing_controllers.md's table of these paths is checked against this file
+# (tests/docs/doc_facts_test.cc).
 
 include(CMakePackageConfigHelpers)
 
@@ -39,13 +42,13 @@ endforeach()
 install(TARGETS ${TOWSIM_INSTALLED_PROGRAMS} EXPORT towsimTargets
         RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 # the programs only other programs run: sim_node's DDS modes (sim_node/app/node/node_main.h), found
-# by sim_node at P/libexec/towsim (kPrivateProgramDir in sim_node/app/common/installed_data.h)
+# by sim_node at P/libexec/towsim (kPrivateProgramDir in installed/installed_data.h)
 install(TARGETS sim_node_dds RUNTIME DESTINATION libexec/towsim)
 
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
 install(TARGETS towsim_msgs towsim_wire towsim_controller_laws towsim_controller_common
-                towsim_testing
+                towsim_testing towsim_installed
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(FILES ${TOWSIM_MSGS_HEADERS} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/towsim/msgs)
@@ -67,6 +70,12 @@ install(FILES ${TOWSIM_IDL_FILES} DESTINATION ${TOWSIM_DATA_DESTINATION}/idl)
 install(DIRECTORY msgs/towsim_msgs DESTINATION ${TOWSIM_DATA_DESTINATION}/ros2)
 install(DIRECTORY examples/controller_ci DESTINATION ${TOWSIM_DATA_DESTINATION}/examples
         PATTERN "build" EXCLUDE)
+# the plotting scripts (python3 P/share/towsim/scripts/plot_paper.py DIR; matplotlib) and the
+# module they import beside them; not in P/bin: they are python3 scripts with their own
+# dependency, run by path as in the source tree (docs/testing_controllers.md)
+install(PROGRAMS scripts/plot_paper.py scripts/plot_uturn_3d.py scripts/plot_waves.py
+                 scripts/paper_cases.py
+        DESTINATION ${TOWSIM_DATA_DESTINATION}/scripts)
 
 # the CMake package
 set(TOWSIM_CMAKE_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/towsim)

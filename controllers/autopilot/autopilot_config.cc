@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "common/config_file.h"
+#include "installed/installed_data.h"
 
 namespace towsim::controllers {
 namespace {
@@ -96,7 +97,9 @@ std::vector<std::string> AutopilotSwitchNames() { return {}; }
 AutopilotConfig ResolveAutopilot(const Flags& f) {
   AutopilotConfig c;
   std::unique_ptr<ConfigFile> file;
-  if (f.Has("config")) file = std::make_unique<ConfigFile>(f.String("config", ""), kFileKeys);
+  if (f.Has("config")) {
+    file = std::make_unique<ConfigFile>(f.String("config", ""), kFileKeys, installed::kAutopilot);
+  }
   const Number number{file.get(), &f};
   AutopilotGains& g = c.gains;
 

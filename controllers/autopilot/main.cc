@@ -1,18 +1,7 @@
 // autopilot: speed, heading and (optionally) depth hold for a vehicle of a running sim_node,
 // with waypoint following (LOS) and lawn-mower surveys (autopilot/autopilot_law.h,
-// autopilot/guidance.h):
-//   autopilot [--config FILE.yaml] [--body tow_vehicle] [--speed 6] [--heading-deg 0]
-//             [--depth Z] [--legs N --leg-length L --spacing S [--survey-origin X,Y]
-//              [--survey-heading-deg H] [--turn starboard|port]] [--lookahead 60]
-//             [--acceptance-radius 30] [--heading-kp ..] [--heading-ki ..] [--heading-kd ..]
-//             [--speed-kp ..] [--speed-ki ..] [--log FILE] [--domain 0] [--namespace /towsim]
-//             [--timeout 30] [--security DIR/NAME]
-// Setpoints from t = 0, changed by the file's `schedule`; with waypoints (file) or a survey
-// (flags or file) the heading setpoint comes from the guidance. --log writes one line per
-// step: "t x y yaw u speed_d heading_d thrust rudder elevator waypoint". At the end it prints
-// the waypoints with the time each was reached. Needs CYCLONEDDS_URI. Exit 0 at the end of
-// the node's run or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line or
-// configuration file (naming the flag or key, its value and the rule).
+// autopilot/guidance.h).
+// The command line, its parameters and exit codes: kUsage below (`autopilot --help`).
 
 #include <cstdio>
 #include <exception>
@@ -28,12 +17,35 @@
 
 using namespace towsim::controllers;
 
+namespace {
+constexpr char kUsage[] =
+    "usage: autopilot [--config FILE|NAME] [--body tow_vehicle] [--speed 6] [--heading-deg 0]\n"
+    "                 [--depth Z] [--legs N --leg-length L --spacing S [--survey-origin X,Y]\n"
+    "                  [--survey-heading-deg H] [--turn starboard|port]] [--lookahead 60]\n"
+    "                 [--acceptance-radius 30] [--heading-kp ..] [--heading-ki ..]\n"
+    "                 [--heading-kd ..] [--speed-kp ..] [--speed-ki ..] [--log FILE]\n"
+    "                 [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]\n"
+    "--config: config/autopilot/*.yaml; a bare NAME: the installed\n"
+    "P/share/towsim/autopilot/NAME.yaml.\n"
+    "Setpoints from t = 0, changed by the file's `schedule`; with waypoints (file) or a survey\n"
+    "(flags or file) the heading setpoint comes from the guidance. --log writes one line per\n"
+    "step: \"t x y yaw u speed_d heading_d thrust rudder elevator waypoint\". At the end it "
+    "prints\n"
+    "the waypoints with the time each was reached. Needs CYCLONEDDS_URI. Exit 0 at the end of\n"
+    "the node's run or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line or\n"
+    "configuration file (naming the flag or key, its value and the rule).\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   ClientOptions opt;
   opt.name = "autopilot";
   AutopilotConfig c;
   try {
     const Flags f(argc, argv, AutopilotFlagNames(), AutopilotSwitchNames());
+    if (f.Help()) {
+      std::printf("%s", kUsage);
+      return 0;
+    }
     c = ResolveAutopilot(f);
     opt.body = c.body;
     opt.domain = f.Domain();

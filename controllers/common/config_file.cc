@@ -6,6 +6,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "installed/installed_data.h"
+
 namespace towsim::controllers {
 namespace {
 
@@ -61,8 +63,12 @@ struct ConfigFile::Impl {
   YAML::Node root;
 };
 
-ConfigFile::ConfigFile(const std::string& path, const std::vector<std::string>& allowed)
-    : path_(path), name_(BaseName(path)), impl_(new Impl) {
+ConfigFile::ConfigFile(const std::string& name, const std::vector<std::string>& allowed,
+                       const char* installed_folder)
+    : path_(installed_folder ? installed::ResolveInstalled(name, installed_folder) : name),
+      name_(BaseName(path_)),
+      impl_(new Impl) {
+  const std::string& path = path_;
   try {
     impl_->root = YAML::LoadFile(path);
   } catch (const YAML::BadFile&) {

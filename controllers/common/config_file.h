@@ -3,7 +3,9 @@
 // config/autopilot/*.yaml): a flat map of keys, each known to the reader. Errors name the key,
 // the value, file:line and the rule, as the scene loader does:
 //   rudder_dg = 10 (zigzag.yaml:4): unknown key (allowed: maneuver, body, ...)
-// The controllers exit 2 on a ConfigError.
+// The controllers exit 2 on a ConfigError. `--config NAME` finds an installed file by bare
+// name, as sim_node --scene does (installed/installed_data.h):
+//   maneuver_runner --config zigzag_10_10  ->  P/share/towsim/maneuvers/zigzag_10_10.yaml
 
 #include <functional>
 #include <map>
@@ -24,8 +26,11 @@ struct ConfigError : std::runtime_error {
 // a loaded map file: every top-level key must be in `allowed`
 class ConfigFile {
  public:
-  // throws ConfigError (unreadable file, YAML syntax, not a map, unknown key)
-  ConfigFile(const std::string& path, const std::vector<std::string>& allowed);
+  // throws ConfigError (unreadable file, YAML syntax, not a map, unknown key). With
+  // `installed_folder` (installed::kManeuvers, kAutopilot), a bare name that is no file here
+  // is looked up in P/share/towsim/<installed_folder> (installed::ResolveInstalled).
+  ConfigFile(const std::string& path, const std::vector<std::string>& allowed,
+             const char* installed_folder = nullptr);
   ~ConfigFile();
   ConfigFile(const ConfigFile&) = delete;
   ConfigFile& operator=(const ConfigFile&) = delete;

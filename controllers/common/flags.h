@@ -1,5 +1,6 @@
 #pragma once
-// Minimal flag parsing for the controllers: --name value or --name=value.
+// Minimal flag parsing for the controllers: --name value or --name=value. Every controller
+// knows --help (Help()): it prints its usage on stdout and exits 0.
 
 #include <cmath>
 #include <cstdint>
@@ -15,11 +16,16 @@ namespace towsim::controllers {
 
 class Flags {
  public:
-  // `known`: flag names taking a value; `switches`: flags without one; throws on anything else
+  // `known`: flag names taking a value; `switches`: flags without one (and --help); throws on
+  // anything else
   Flags(int argc, char** argv, const std::vector<std::string>& known,
         const std::vector<std::string>& switches = {}) {
     for (int i = 1; i < argc; ++i) {
       std::string arg = argv[i], value;
+      if (arg == "--help") {
+        values_["help"] = "1";
+        continue;
+      }
       bool has_value = false;
       const auto eq = arg.find('=');
       if (arg.rfind("--", 0) == 0 && eq != std::string::npos) {
@@ -42,6 +48,8 @@ class Flags {
     }
   }
   bool Has(const std::string& name) const { return values_.count(name) > 0; }
+  // --help was given: print the usage on stdout and exit 0, before reading anything else
+  bool Help() const { return Has("help"); }
   std::string String(const std::string& name, const std::string& fallback) const {
     const auto it = values_.find(name);
     return it == values_.end() ? fallback : it->second;

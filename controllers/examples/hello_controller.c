@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "dds/dds.h"
 #include "nav_msgs.h"
@@ -28,6 +29,12 @@ static double arg(int argc, char** argv, int i, const char* name, double fallbac
 }
 
 int main(int argc, char** argv) {
+  if (argc > 1 && strcmp(argv[1], "--help") == 0) {
+    printf("usage: hello_controller [domain=0] [thrust_N=4165] [heading_deg=0]\n"
+           "  drives rt/towsim/tow_vehicle with a constant thrust and a rudder proportional to\n"
+           "  the heading error, answering every step of the node (needs CYCLONEDDS_URI)\n");
+    return 0;
+  }
   const double domain = arg(argc, argv, 1, "domain", 0.0, 0.0, 232.0);
   if (domain != floor(domain)) return fprintf(stderr, "hello_controller: error: domain = %s: "
                                                       "must be an integer\n", argv[1]), 2;

@@ -1,28 +1,6 @@
 // maneuver_runner: plays a manoeuvre on a vehicle of a running sim_node, against its live
-// state, and prints the trials sheet at the end:
-//   maneuver_runner [--maneuver case1|uturn|zigzag|turning_circle|payout] [--config FILE.yaml]
-//                   [--body tow_vehicle] [--thrust 4165] [--start 55] [--rudder-deg D]
-//                   [--heading-deg P] [--reversals 4] [--port-first] [--until-yaw-deg 170]
-//                   [--until-turn-deg 0] [--tow-speed 3] [--from-length 150]
-//                   [--to-length 250] [--payout-rate 1] [--hold 100] [--towfish towfish]
-//                   [--sample-period 10] [--results FILE.yaml] [--plot FILE.svg]
-//                   [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]
-//   case1           thrust T, rudder 0 (the paper's Case 1)
-//   uturn           from `start` the rudder at D until the yaw reaches --until-yaw-deg, then 0
-//                   (the paper's Case 2; the default manoeuvre)
-//   zigzag          the IMO / ITTC D/P zig-zag (maneuver_runner/zigzag.h): sheet with the
-//                   overshoot angles, initial turning time and period
-//   turning_circle  rudder D held from `start` (maneuver_runner/turning_circle.h): advance,
-//                   transfer, tactical and steady turning diameters
-//   payout          towing at --tow-speed (thrust: a PI on the surge, up to --thrust), the
-//                   winch pays out from --from-length to --to-length at --payout-rate from
-//                   `start`, holds --hold s, reels back in (maneuver_runner/payout.h): sheet
-//                   with the towfish's depth against the paid-out length and time, --plot
-//                   draws it (the scene needs cable.winch; commands on <ns>/winch/command)
-// Parameters from --config (config/maneuvers/*.yaml) and flags (flags win), see
-// maneuver_runner/maneuver_config.h. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's
-// run or on SIGINT/SIGTERM (the sheet printed either way), 1 on an error or a timeout, 2 on a
-// bad command line or file (the message names the flag or key, its value and the rule).
+// state, and prints the trials sheet at the end.
+// The command line, its parameters and exit codes: kUsage below (`maneuver_runner --help`).
 
 #include <algorithm>
 #include <cmath>
@@ -45,12 +23,46 @@
 
 using namespace towsim::controllers;
 
+namespace {
+constexpr char kUsage[] =
+    "usage: maneuver_runner [--maneuver case1|uturn|zigzag|turning_circle|payout]\n"
+    "                       [--config FILE|NAME] [--body tow_vehicle] [--thrust 4165]\n"
+    "                       [--start 55] [--rudder-deg D] [--heading-deg P] [--reversals 4]\n"
+    "                       [--port-first] [--until-yaw-deg 170] [--until-turn-deg 0]\n"
+    "                       [--tow-speed 3] [--from-length 150] [--to-length 250]\n"
+    "                       [--payout-rate 1] [--hold 100] [--towfish towfish]\n"
+    "                       [--sample-period 10] [--results FILE.yaml] [--plot FILE.svg]\n"
+    "                       [--domain 0] [--namespace /towsim] [--timeout 30]\n"
+    "                       [--security DIR/NAME]\n"
+    "  case1           thrust T, rudder 0 (the paper's Case 1)\n"
+    "  uturn           from `start` the rudder at D until the yaw reaches --until-yaw-deg, then 0\n"
+    "                  (the paper's Case 2; the default manoeuvre)\n"
+    "  zigzag          the IMO / ITTC D/P zig-zag (maneuver_runner/zigzag.h): sheet with the\n"
+    "                  overshoot angles, initial turning time and period\n"
+    "  turning_circle  rudder D held from `start` (maneuver_runner/turning_circle.h): advance,\n"
+    "                  transfer, tactical and steady turning diameters\n"
+    "  payout          towing at --tow-speed (thrust: a PI on the surge, up to --thrust), the\n"
+    "                  winch pays out from --from-length to --to-length at --payout-rate from\n"
+    "                  `start`, holds --hold s, reels back in (maneuver_runner/payout.h): sheet\n"
+    "                  with the towfish's depth against the paid-out length and time, --plot\n"
+    "                  draws it (the scene needs cable.winch; commands on <ns>/winch/command)\n"
+    "Parameters from --config (config/maneuvers/*.yaml; a bare NAME: the installed\n"
+    "P/share/towsim/maneuvers/NAME.yaml) and flags (flags win), see\n"
+    "maneuver_runner/maneuver_config.h. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's\n"
+    "run or on SIGINT/SIGTERM (the sheet printed either way), 1 on an error or a timeout, 2 on a\n"
+    "bad command line or file (the message names the flag or key, its value and the rule).\n";
+}  // namespace
+
 int main(int argc, char** argv) {
   ClientOptions opt;
   opt.name = "maneuver_runner";
   ManeuverConfig c;
   try {
     const Flags f(argc, argv, ManeuverFlagNames(), ManeuverSwitchNames());
+    if (f.Help()) {
+      std::printf("%s", kUsage);
+      return 0;
+    }
     c = ResolveManeuver(f);
     opt.body = c.body;
     opt.domain = f.Domain();
@@ -58,9 +70,9 @@ int main(int argc, char** argv) {
     opt.timeout = f.Number("timeout", 30.0);
     opt.security = f.String(kSecurityFlag, "");
     if (c.kind == ManeuverKind::kPayout) {
-      opt.winch = true;          // the drum's commands with each answer
-      opt.cable = true;          // the paid-out length, for the sheet
-      opt.observe = c.towfish;   // its depth, for the sheet
+      opt.winch = true;         // the drum's commands with each answer
+      opt.cable = true;         // the paid-out length, for the sheet
+      opt.observe = c.towfish;  // its depth, for the sheet
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
@@ -137,8 +149,8 @@ int main(int argc, char** argv) {
             payout_sheet.Add({b.t, b.cable.paid_out_length, b.observed.z, b.z, b.u});
           }
           Actuation a{p.vehicle.thrust, p.vehicle.rudder, p.vehicle.elevator};
-          a.winch.mode = p.winch_length_mode ? WinchDemand::Mode::kLength
-                                             : WinchDemand::Mode::kSpeed;
+          a.winch.mode =
+              p.winch_length_mode ? WinchDemand::Mode::kLength : WinchDemand::Mode::kSpeed;
           a.winch.value = p.winch_value;
           return a;
         }

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/config_file.h"
+#include "installed/installed_data.h"
 
 namespace towsim::controllers {
 namespace {
@@ -77,7 +78,9 @@ const char* ManeuverName(ManeuverKind kind) {
 ManeuverConfig ResolveManeuver(const Flags& f) {
   ManeuverConfig c;
   std::unique_ptr<ConfigFile> file;
-  if (f.Has("config")) file = std::make_unique<ConfigFile>(f.String("config", ""), kFileKeys);
+  if (f.Has("config")) {
+    file = std::make_unique<ConfigFile>(f.String("config", ""), kFileKeys, installed::kManeuvers);
+  }
   // the kind first: it sets the defaults the rest overrides
   if (f.Has("maneuver")) {
     const std::string m = f.String("maneuver", "");

@@ -14,6 +14,8 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/test_logs.h"
+
 namespace towsim::testing {
 
 std::string ReadFile(const std::string& path) {
@@ -25,8 +27,11 @@ std::string ReadFile(const std::string& path) {
 
 std::string LogPrefix(const std::string& what) {
   const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  return ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" +
-         what;
+  const std::string prefix =
+      ::testing::TempDir() + "/towsim_" + info->test_suite_name() + "_" + info->name() + "_" + what;
+  // the file itself (a test's results.yaml) or a Process's .out / .err
+  for (const char* suffix : {"", ".out", ".err"}) RemoveAfterPassingTest(prefix + suffix);
+  return prefix;
 }
 
 std::vector<std::string> SimNodeArgs(const std::string& program, const std::string& scene,

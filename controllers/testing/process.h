@@ -43,7 +43,9 @@ class Process {
 std::string ReadFile(const std::string& path);
 
 // a log path prefix for a child of the running GoogleTest test, unique to that test:
-// TempDir()/towsim_<suite>_<test>_<what> (Process adds .out / .err)
+// TempDir()/towsim_<suite>_<test>_<what> (Process adds .out / .err); the file itself and its
+// .out / .err are removed at the end of a passing test, kept after a failing one
+// (testing/test_logs.h)
 std::string LogPrefix(const std::string& what);
 
 // the command line `program --scene S --mode M --domain N` followed by `extra`, for sim_node

@@ -17,7 +17,9 @@
 #include "common/laws.h"
 #include "dds/dds.h"
 #include "geometry_msgs.h"
+#include "installed/installed_data.h"
 #include "nav_msgs.h"
+#include "testing/test_logs.h"
 #include "towsim_msgs.h"
 #include "wire/qos.h"
 #include "wire/topic_names.h"
@@ -38,17 +40,6 @@ std::string DefaultLogDir(int domain) {
     if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_') c = '_';
   }
   return ::testing::TempDir() + name + "_d" + std::to_string(domain);
-}
-
-// a bare scene name finds data_dir/scenes/NAME[.yaml] (sim_node's own rule for installed scenes)
-std::string SceneFile(const std::string& scene, const std::string& data_dir) {
-  std::error_code ec;
-  if (fs::exists(scene, ec) || fs::path(scene).has_parent_path()) return scene;
-  for (const std::string& c :
-       {data_dir + "/scenes/" + scene, data_dir + "/scenes/" + scene + ".yaml"}) {
-    if (fs::is_regular_file(c, ec)) return c;
-  }
-  return scene;
 }
 
 // appends `sample` to `history`, or replaces the last one if it is of the same state: the
@@ -212,9 +203,11 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   m.lease =
       o.domain < 0 ? std::make_unique<DomainLease>() : std::make_unique<DomainLease>(o.domain);
   const int domain = m.lease->id();
-  if (m.opt.log_dir.empty()) m.opt.log_dir = DefaultLogDir(domain);
+  const bool own_log_dir = m.opt.log_dir.empty();
+  if (own_log_dir) m.opt.log_dir = DefaultLogDir(domain);
   fs::remove_all(o.log_dir);
   fs::create_directories(o.log_dir);
+  if (own_log_dir) RemoveAfterPassingTest(o.log_dir);
   m.names = std::make_unique<wire::TopicNames>(o.ns);
 
   // the project's loopback configuration, for this process and the node
@@ -249,10 +242,12 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
       m.Fail("sim_control writer: " + std::string(dds_strretcode(m.control_writer)));
   }
 
+  // a bare scene name finds data_dir/scenes/NAME[.yaml], as an installed sim_node does
+  const std::string scene =
+      installed::ResolveInstalled(o.scene, installed::kScenes, fs::path(o.data_dir));
   std::vector<std::string> argv = {
-      o.sim_node, "--scene",  SceneFile(o.scene, o.data_dir), "--mode",
-      o.mode,     "--domain", std::to_string(domain),         "--namespace",
-      o.ns,       "--paused"};
+      o.sim_node,    "--scene", scene,     "--mode", o.mode, "--domain", std::to_string(domain),
+      "--namespace", o.ns,      "--paused"};
   auto number = [](double x) {
     std::ostringstream s;
     s.precision(17);

@@ -57,7 +57,9 @@ struct SimNodeOptions {
   // where the installation is: the defaults come from find_package(towsim)
   std::string sim_node = TOWSIM_TESTING_SIM_NODE;  // the sim_node executable
   std::string data_dir = TOWSIM_TESTING_DATA_DIR;  // share/towsim: scenes/, cyclonedds.xml
-  // the log directory; empty: <gtest TempDir>/towsim_<suite>_<test>_d<domain>
+  // the log directory; empty: <gtest TempDir>/towsim_<suite>_<test>_d<domain>, removed at the
+  // end of a passing test and kept (its path printed) after a failing one; a directory given
+  // here is always kept
   std::string log_dir;
 };
 

@@ -92,8 +92,8 @@ int main(int argc, char** argv) {
                    "altitude", "seabed-depth", "seabed-profile", "winch-gain", "winch-deadband",
                    "winch-filter", "winch-max-speed", "winch-max-acceleration", "winch-elevator-depth",
                    kSecurityFlag},
-                  {"hold", "help", "winch"});
-    if (f.Has("help")) {
+                  {"hold", "winch"});
+    if (f.Help()) {
       std::printf("%s", kUsage);
       return 0;
     }

@@ -3,12 +3,17 @@
 // the samples equal to the node's own bodies.csv, stop with exit code and summary, a bad scene
 // reported with the node's message, and parallel nodes on distinct automatic domain ids.
 // Realtime mode too; --fail-on-failsafe by default (exit 5 on a stalled controller), and
-// turned off. Domains 170 and 171 (fixed), automatic ones from 200-231
+// turned off. The log folders the fixture makes: removed after a passing test, kept after a
+// failing one. Domains 170 and 171 (fixed), automatic ones from 200-231
 // (tests/integration/README.md).
+
+#include <sys/wait.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -19,6 +24,7 @@
 
 #include "testing/csv_file.h"
 #include "testing/in_process_controller.h"
+#include "testing/process.h"
 #include "testing/sim_node.h"
 
 namespace towsim::testing {
@@ -93,6 +99,73 @@ TEST(SimNodeFixture, StartsPausedStepsAndStops) {
     ++rows;
   }
   EXPECT_EQ(rows, 4);
+}
+
+// The log folders (SimNodeOptions::log_dir empty) and the LogPrefix files: each case below runs
+// in a process of its own (this program again, the case enabled by name), so that its test has
+// ended when they are looked at. Each prints its folder on a line "log_dir DIR" and its
+// process log on a line "log_file FILE".
+void RunShortNode(bool fail) {
+  SimNodeOptions o;
+  o.scene = "steady_tow";
+  o.duration = 0.5;
+  SimNode node(o);
+  std::printf("log_dir %s\n", node.log_dir().c_str());
+  Process probe({"/bin/true"}, LogPrefix("probe"));
+  EXPECT_TRUE(probe.Wait(10.0));
+  std::printf("log_file %s.out\n", LogPrefix("probe").c_str());
+  EXPECT_EQ(node.Wait().exit_code, 0) << node.log();
+  EXPECT_TRUE(std::filesystem::is_regular_file(node.csv_dir() + "/bodies.csv"));
+  if (fail) ADD_FAILURE() << "this test fails on purpose (SimNodeFixture.LogFoldersGo...)";
+}
+TEST(SimNodeFixture, DISABLED_PassingCase) { RunShortNode(false); }
+TEST(SimNodeFixture, DISABLED_FailingCase) { RunShortNode(true); }
+
+struct CaseRun {
+  int exit_code = -1;
+  std::string output, log_dir, log_file;
+};
+
+CaseRun RunCase(const std::string& name) {
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe").string();
+  const std::string command = "'" + self + "' --gtest_also_run_disabled_tests --gtest_filter=" +
+                              "SimNodeFixture.DISABLED_" + name + " 2>&1";
+  CaseRun run;
+  std::FILE* out = ::popen(command.c_str(), "r");
+  if (out == nullptr) return run;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, out) != nullptr) {
+    const std::string line = buffer;
+    run.output += line;
+    if (line.rfind("log_dir ", 0) == 0) run.log_dir = line.substr(8, line.size() - 9);
+    if (line.rfind("log_file ", 0) == 0) run.log_file = line.substr(9, line.size() - 10);
+  }
+  const int status = ::pclose(out);
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return run;
+}
+
+TEST(SimNodeFixture, LogFoldersGoAfterAPassingTestAndStayAfterAFailingOne) {
+  const CaseRun passing = RunCase("PassingCase");
+  EXPECT_EQ(passing.exit_code, 0) << passing.output;
+  ASSERT_FALSE(passing.log_dir.empty()) << passing.output;
+  EXPECT_FALSE(std::filesystem::exists(passing.log_dir)) << passing.output;
+  ASSERT_FALSE(passing.log_file.empty()) << passing.output;
+  EXPECT_FALSE(std::filesystem::exists(passing.log_file)) << passing.output;
+
+  const CaseRun failing = RunCase("FailingCase");
+  EXPECT_EQ(failing.exit_code, 1) << failing.output;
+  ASSERT_FALSE(failing.log_dir.empty()) << failing.output;
+  EXPECT_TRUE(std::filesystem::is_regular_file(failing.log_dir + "/csv/bodies.csv"))
+      << failing.output;
+  EXPECT_NE(
+      failing.output.find("[towsim] the logs of the failed test are kept in " + failing.log_dir),
+      std::string::npos)
+      << failing.output;
+  EXPECT_TRUE(std::filesystem::is_regular_file(failing.log_file)) << failing.output;
+  std::filesystem::remove_all(failing.log_dir);
+  std::filesystem::remove(failing.log_file);
+  std::filesystem::remove(failing.log_file.substr(0, failing.log_file.size() - 4) + ".err");
 }
 
 // domain 171: the node exits 2 before scene_info; the exception carries its message

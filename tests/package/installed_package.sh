@@ -2,7 +2,10 @@
 # The installed package, tested from the outside (docs/testing_controllers.md):
 #
 #   installed_package.sh example BUILD_DIR SOURCE_DIR
-#     cmake --install BUILD_DIR into a temporary prefix, then configures, builds and tests
+#     cmake --install BUILD_DIR into a temporary prefix; every installed program answers --help
+#     (usage on stdout, exit 0); maneuver_runner and autopilot find the installed configuration
+#     by bare name (--config zigzag_10_10, heading_step); the plotting scripts are installed and
+#     start (--help) from there; then configures, builds and tests
 #     SOURCE_DIR/examples/controller_ci against it (find_package(towsim) with
 #     CMAKE_PREFIX_PATH=<prefix> only: nothing of the build or source tree)
 #   installed_package.sh deb BUILD_DIR SOURCE_DIR
@@ -30,9 +33,48 @@ example)
     { cat "$work/install.log"; fail "cmake --install"; }
   for f in bin/sim_node bin/towfish_depth share/towsim/cyclonedds.xml \
            share/towsim/scenes/case1_forward.yaml share/towsim/line_types/park_kim_tow_cable.yaml \
-           lib/cmake/towsim/towsimConfig.cmake; do
+           lib/cmake/towsim/towsimConfig.cmake \
+           share/towsim/scripts/plot_paper.py share/towsim/scripts/plot_uturn_3d.py \
+           share/towsim/scripts/plot_waves.py share/towsim/scripts/paper_cases.py; do
     [[ -e "$work/prefix/$f" ]] || fail "the installation has no $f"
   done
+  # every installed program (cmake/install.cmake TOWSIM_INSTALLED_PROGRAMS) answers --help
+  programs=0
+  for program in "$work/prefix"/bin/*; do
+    name="$(basename "$program")"
+    "$program" --help > "$work/help.txt" 2> "$work/help.err" ||
+      fail "$name --help: exit $?: $(cat "$work/help.err")"
+    grep -q "^usage: $name" "$work/help.txt" || fail "$name --help: no usage on stdout"
+    programs=$((programs + 1))
+  done
+  [[ "$programs" -eq 10 ]] || fail "bin/ holds $programs programs, not the 10 of TOWSIM_INSTALLED_PROGRAMS"
+  # a bare --config name finds the installed file (P/share/towsim/maneuvers, autopilot): the
+  # file is read, then the bad --timeout is the error (exit 2); a name installed nowhere is
+  # reported as the file it names
+  for run in "maneuver_runner zigzag_10_10" "autopilot heading_step"; do
+    read -r name config <<< "$run"
+    set +e
+    "$work/prefix/bin/$name" --config "$config" --timeout x > /dev/null 2> "$work/config.err"
+    code=$?
+    set -e
+    [[ "$code" -eq 2 ]] && grep -q -- "--timeout x: not a number" "$work/config.err" ||
+      fail "$name --config $config (installed): exit $code: $(cat "$work/config.err")"
+  done
+  set +e
+  "$work/prefix/bin/maneuver_runner" --config zigzag_none > /dev/null 2> "$work/config.err"
+  set -e
+  grep -q "zigzag_none: cannot read the file" "$work/config.err" ||
+    fail "maneuver_runner --config zigzag_none: $(cat "$work/config.err")"
+  # the plotting scripts start from the installation (paper_cases.py beside them), where a
+  # python3 with matplotlib is there to run them
+  if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
+    for script in plot_paper plot_uturn_3d plot_waves; do
+      /usr/bin/python3 "$work/prefix/share/towsim/scripts/$script.py" --help > /dev/null ||
+        fail "share/towsim/scripts/$script.py --help"
+    done
+  else
+    echo "note: /usr/bin/python3 has no matplotlib: the installed plotting scripts not started"
+  fi
   cmake -S "$source/examples/controller_ci" -B "$work/example" -DCMAKE_BUILD_TYPE=Release \
         -DCMAKE_PREFIX_PATH="$work/prefix" > "$work/configure.log" ||
     { cat "$work/configure.log"; fail "configuring examples/controller_ci"; }
@@ -62,6 +104,7 @@ deb)
            usr/bin/towfish_depth usr/share/towsim/cyclonedds.xml \
            usr/share/towsim/scenes/case1_forward.yaml usr/share/towsim/idl/towsim_msgs.idl \
            usr/share/towsim/ros2/towsim_msgs/package.xml usr/include/towsim/msgs/towsim_msgs.h \
+           usr/share/towsim/scripts/plot_paper.py usr/share/towsim/maneuvers/zigzag_10_10.yaml \
            usr/include/towsim/common/client.h usr/include/towsim/wire/topic_names.h \
            usr/include/towsim/testing/sim_node_test.h \
            usr/lib/cmake/towsim/towsimConfig.cmake; do

@@ -37,12 +37,10 @@ towsim_add_test(dds_tool_options_test LABEL unit
 foreach(t tool_flags_test tool_command_line_test dds_tool_options_test)
   target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_LIST_DIR})  # tool_argv.h
 endforeach()
-# the installed-scene lookup of sim_node --scene
+# the installed-file lookup of every program (sim_node --scene, the controllers' --config)
 towsim_add_test(installed_data_test LABEL unit
-  SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc
-          ${PROJECT_SOURCE_DIR}/sim_node/app/common/installed_data.cc)
-target_include_directories(installed_data_test PRIVATE ${PROJECT_SOURCE_DIR}/sim_node
-                                                       ${CMAKE_CURRENT_LIST_DIR})
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc LIBS towsim::installed)
+target_include_directories(installed_data_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
 
 # towsim_sweep (docs/sweeps.md): the sweep file (parser, ranges and seeded draws), the
 # combinator and the results of a case

@@ -1,8 +1,8 @@
-// The installed-scene lookup of sim_node --scene (app/common/installed_data.h): a path that exists
-// wins, a bare name finds <data>/scenes/NAME[.yaml], anything else is passed on unchanged; the
-// prefix of an installed program (P/bin, P/libexec/towsim).
+// The installed-file lookup of every program (installed/installed_data.h): a path that exists
+// wins, a bare name finds <data>/<folder>/NAME[.yaml], anything else is passed on unchanged;
+// the prefix of an installed program (P/bin, P/libexec/towsim).
 
-#include "app/common/installed_data.h"
+#include "installed/installed_data.h"
 
 #include <fstream>
 
@@ -10,7 +10,7 @@
 
 #include "temp_dir.h"
 
-namespace towsim::app {
+namespace towsim::installed {
 namespace {
 
 namespace fs = std::filesystem;
@@ -20,26 +20,43 @@ void Touch(const fs::path& p) {
   std::ofstream(p) << "name: x\n";
 }
 
-TEST(ResolveScene, BareNamesFindTheInstalledScenes) {
+TEST(ResolveInstalled, BareNamesFindTheInstalledScenes) {
   const test::TempDir tmp;
   const fs::path data = tmp.path() / "share" / "towsim";
   Touch(data / "scenes" / "case1_forward.yaml");
-  EXPECT_EQ(ResolveScene("case1_forward", data), (data / "scenes" / "case1_forward.yaml").string());
-  EXPECT_EQ(ResolveScene("case1_forward.yaml", data),
+  EXPECT_EQ(ResolveInstalled("case1_forward", kScenes, data),
+            (data / "scenes" / "case1_forward.yaml").string());
+  EXPECT_EQ(ResolveInstalled("case1_forward.yaml", kScenes, data),
             (data / "scenes" / "case1_forward.yaml").string());
   // not installed, or with a directory: unchanged (the loader names the missing file)
-  EXPECT_EQ(ResolveScene("nope", data), "nope");
-  EXPECT_EQ(ResolveScene("scenes/case1_forward.yaml", data), "scenes/case1_forward.yaml");
-  EXPECT_EQ(ResolveScene("case1_forward", std::nullopt), "case1_forward");
+  EXPECT_EQ(ResolveInstalled("nope", kScenes, data), "nope");
+  EXPECT_EQ(ResolveInstalled("scenes/case1_forward.yaml", kScenes, data),
+            "scenes/case1_forward.yaml");
+  EXPECT_EQ(ResolveInstalled("case1_forward", kScenes, std::nullopt), "case1_forward");
+  EXPECT_EQ(ResolveInstalled("", kScenes, data), "");
 }
 
-TEST(ResolveScene, AnExistingPathWins) {
+// the controllers' --config NAME: each program looks in its own folder only
+TEST(ResolveInstalled, EachFolderHoldsItsProgramsFiles) {
+  const test::TempDir tmp;
+  const fs::path data = tmp.path() / "share" / "towsim";
+  Touch(data / "maneuvers" / "zigzag_10_10.yaml");
+  Touch(data / "autopilot" / "heading_step.yaml");
+  EXPECT_EQ(ResolveInstalled("zigzag_10_10", kManeuvers, data),
+            (data / "maneuvers" / "zigzag_10_10.yaml").string());
+  EXPECT_EQ(ResolveInstalled("heading_step", kAutopilot, data),
+            (data / "autopilot" / "heading_step.yaml").string());
+  EXPECT_EQ(ResolveInstalled("zigzag_10_10", kAutopilot, data), "zigzag_10_10");
+  EXPECT_EQ(ResolveInstalled("heading_step", kScenes, data), "heading_step");
+}
+
+TEST(ResolveInstalled, AnExistingPathWins) {
   const test::TempDir tmp;
   const fs::path data = tmp.path() / "share" / "towsim";
   Touch(data / "scenes" / "mine.yaml");
   const fs::path own = tmp.path() / "mine.yaml";
   Touch(own);
-  EXPECT_EQ(ResolveScene(own.string(), data), own.string());
+  EXPECT_EQ(ResolveInstalled(own.string(), kScenes, data), own.string());
 }
 
 // P/bin/<program> and P/libexec/towsim/<program> (sim_node's DDS program) are installed
@@ -58,7 +75,8 @@ TEST(InstallPrefix, BinAndPrivateProgramDir) {
 TEST(InstalledDataDir, NoneInABuildTree) {
   // this test runs from the build tree (build/tests/unit/), not from P/bin
   EXPECT_FALSE(InstalledDataDir().has_value());
+  EXPECT_EQ(ResolveInstalled("case1_forward", kScenes), "case1_forward");
 }
 
 }  // namespace
-}  // namespace towsim::app
+}  // namespace towsim::installed

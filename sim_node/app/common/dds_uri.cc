@@ -6,15 +6,15 @@
 #include <optional>
 #include <string>
 
-#include "app/common/installed_data.h"
+#include "installed/installed_data.h"
 
 namespace towsim::app {
 
 std::string DdsUriFromEnvironment(const char* program) {
   const char* uri = std::getenv("CYCLONEDDS_URI");
   if (uri == nullptr || *uri == '\0') {
-    // an installed program names the installed file (app/common/installed_data.h)
-    const std::optional<std::filesystem::path> data = InstalledDataDir();
+    // an installed program names the installed file (installed/installed_data.h)
+    const std::optional<std::filesystem::path> data = installed::InstalledDataDir();
     const std::string config =
         data ? (*data / "cyclonedds.xml").string() : std::string("config/cyclonedds.xml");
     std::fprintf(stderr,

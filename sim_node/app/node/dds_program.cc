@@ -10,7 +10,7 @@
 #include <system_error>
 
 #include "app/common/exit_codes.h"
-#include "app/common/installed_data.h"
+#include "installed/installed_data.h"
 
 namespace towsim::app {
 
@@ -18,8 +18,8 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> DdsProgramCandidates(const fs::path& exe) {
   std::vector<fs::path> candidates = {exe.parent_path() / kDdsProgramName};
-  if (const std::optional<fs::path> prefix = InstallPrefix(exe)) {
-    const fs::path installed = *prefix / kPrivateProgramDir / kDdsProgramName;
+  if (const std::optional<fs::path> prefix = installed::InstallPrefix(exe)) {
+    const fs::path installed = *prefix / installed::kPrivateProgramDir / kDdsProgramName;
     if (installed != candidates.front()) candidates.push_back(installed);
   }
   return candidates;

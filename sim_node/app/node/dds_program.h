@@ -2,7 +2,7 @@
 // sim_node's DDS program (app/node/node_main.h): sim_node_dds, which sim_node replaces itself with
 // for --mode realtime, fast and lockstep, so that sim_node itself links no DDS library
 // (docs/benchmarks.md, "Start-up"). It lies beside sim_node in a build tree and in
-// P/libexec/towsim beside an installed P/bin/sim_node (app/common/installed_data.h).
+// P/libexec/towsim beside an installed P/bin/sim_node (installed/installed_data.h).
 
 #include <filesystem>
 #include <vector>
@@ -14,7 +14,7 @@ namespace towsim::app {
 inline constexpr const char* kDdsProgramName = "sim_node_dds";
 
 // where the DDS program of the program `exe` may be, in order: beside it (a build tree), then
-// P/libexec/towsim/ when `exe` is installed under P (InstallPrefix)
+// P/libexec/towsim/ when `exe` is installed under P (installed::InstallPrefix)
 std::vector<std::filesystem::path> DdsProgramCandidates(const std::filesystem::path& exe);
 
 // replaces this process with the first candidate for /proc/self/exe that is an executable

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "app/common/exit_codes.h"
-#include "app/common/installed_data.h"
+#include "installed/installed_data.h"
 #include "app/common/stop_signal.h"
 #include "app/node/dds_program.h"
 #include "app/node/offline_run.h"
@@ -48,7 +48,7 @@ int Run(const Options& options, DdsModeRunner run_dds) {
 
   core::Model model;
   // a bare scene name also finds the scenes of an installed towsim (P/share/towsim/scenes)
-  const std::string scene = ResolveScene(options.scene, InstalledDataDir());
+  const std::string scene = installed::ResolveInstalled(options.scene, installed::kScenes);
   try {
     model = scene::LoadScene(scene, options.overrides);
   } catch (const std::exception& e) {  // scene::ConfigError: what() is the full message

@@ -1,9 +1,9 @@
-#include "app/common/installed_data.h"
+#include "installed/installed_data.h"
 
 #include <iterator>
 #include <system_error>
 
-namespace towsim::app {
+namespace towsim::installed {
 
 namespace fs = std::filesystem;
 
@@ -32,16 +32,21 @@ std::optional<fs::path> InstalledDataDir() {
   return data;
 }
 
-std::string ResolveScene(const std::string& scene, const std::optional<fs::path>& data_dir) {
+std::string ResolveInstalled(const std::string& name, const char* folder,
+                             const std::optional<fs::path>& data_dir) {
   std::error_code ec;
-  if (fs::exists(scene, ec) || !data_dir) return scene;
-  const fs::path name(scene);
-  if (name.has_parent_path()) return scene;
+  if (name.empty() || fs::exists(name, ec) || !data_dir) return name;
+  const fs::path bare(name);
+  if (bare.has_parent_path()) return name;
   for (const fs::path& candidate :
-       {*data_dir / "scenes" / name, *data_dir / "scenes" / (scene + ".yaml")}) {
+       {*data_dir / folder / bare, *data_dir / folder / (name + ".yaml")}) {
     if (fs::is_regular_file(candidate, ec)) return candidate.string();
   }
-  return scene;
+  return name;
 }
 
-}  // namespace towsim::app
+std::string ResolveInstalled(const std::string& name, const char* folder) {
+  return ResolveInstalled(name, folder, InstalledDataDir());
+}
+
+}  // namespace towsim::installed
