@@ -252,6 +252,19 @@ TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
             std::string::npos)
       << s.err;
 
+  // an integer range beyond 2^53 was one case of value -2^63
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/steady_tow.yaml\n"
+                      << "parameters:\n  cable.elements: {from: 9223372036854775800, "
+                      << "to: 9223372036854775807, step: 1}\n";
+  s = RunSweep({file, "--out", dir + "/out"}, dir + "/log5");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: parameters.cable.elements.from = "
+                       "9223372036854775800 (bad.yaml:3): an integer range must lie within "
+                       "-9007199254740992 .. 9007199254740992 (2^53, exact in a double)"),
+            std::string::npos)
+      << s.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+
   s = RunSweep({file, "--workers", "0", "--out", dir + "/out"}, dir + "/log3");
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("--workers 0: must be an integer >= 1"), std::string::npos) << s.err;
