@@ -267,7 +267,13 @@ TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
 
   s = RunSweep({file, "--workers", "0", "--out", dir + "/out"}, dir + "/log3");
   EXPECT_EQ(s.exit_code, 2);
-  EXPECT_NE(s.err.find("--workers 0: must be an integer >= 1"), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("--workers 0: must be an integer from 1 to 4096"), std::string::npos)
+      << s.err;
+  s = RunSweep({file, "--workers", "100000", "--out", dir + "/out"}, dir + "/log6");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: --workers 100000: must be an integer from 1 to 4096"),
+            std::string::npos)
+      << s.err;
   s = RunSweep({file}, dir + "/log4");
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("--out DIR is required"), std::string::npos) << s.err;

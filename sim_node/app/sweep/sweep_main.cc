@@ -42,6 +42,8 @@ using towsim::app::kExitError;
 using towsim::app::kExitIncomplete;  // the sweep ran; some cases failed (see results.csv)
 using towsim::app::kExitOk;
 
+constexpr long kMaxWorkers = 4096;  // --workers: processes at once, locally or on Slurm
+
 struct Options {
   std::string file, out;
   int workers = 0;  // 0: the number of cores (locally); no limit on Slurm
@@ -78,8 +80,10 @@ towsim::app::ToolCommandLine CommandLine(Options* o) {
              [o](const std::string& v) -> std::string {
                char* end = nullptr;
                const long n = std::strtol(v.c_str(), &end, 10);
-               if (v.empty() || *end != '\0' || n < 1 || n > 4096) {
-                 return "--workers " + v + ": must be an integer >= 1";
+               // at most kMaxWorkers sim_node processes (each with its pipes and files)
+               if (v.empty() || *end != '\0' || n < 1 || n > kMaxWorkers) {
+                 return "--workers " + v + ": must be an integer from 1 to " +
+                        std::to_string(kMaxWorkers);
                }
                o->workers = static_cast<int>(n);
                return "";
