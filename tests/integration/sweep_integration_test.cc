@@ -72,6 +72,13 @@ std::vector<std::string> LastBodyRow(const std::string& bodies_csv, const std::s
   return last;
 }
 
+std::string Contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 fs::file_time_type Mtime(const fs::path& p) { return fs::last_write_time(p); }
 
 TEST_F(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
@@ -227,6 +234,37 @@ TEST_F(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   auto all = Table(out + "/results.csv");
   ASSERT_EQ(all.size(), 6u);
   for (auto& [name, row] : rows) EXPECT_EQ(all[name], row) << name;  // kept as they were
+}
+
+// a folder belongs to the sweep file that made it: --resume with another one replaced its table
+TEST_F(SweepLocal, ResumeWithAnotherSweepFileIsRefused) {
+  const std::string dir = Tmp("two");
+  fs::create_directories(dir);
+  const std::string first = dir + "/first.yaml", second = dir + "/second.yaml";
+  for (const auto& [file, elements] : {std::pair{first, "10"}, std::pair{second, "12"}}) {
+    std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                        << "duration: 2\nparameters:\n  cable.elements: [" << elements << "]\n";
+  }
+  const std::string out = dir + "/out";
+  Sweep s = RunSweep({first, "--out", out}, dir + "/log1");
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const std::string table = Contents(out + "/results.csv");
+  s = RunSweep({second, "--out", out, "--resume"}, dir + "/log2");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: --resume: --out " + out +
+                       " was made by the sweep file " + first + ", not " + second +
+                       "; pass that file, or choose another folder"),
+            std::string::npos)
+      << s.err;
+  s = RunSweep({second, "--out", out, "--collect"}, dir + "/log3");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("--collect: --out " + out + " was made by the sweep file " + first),
+            std::string::npos)
+      << s.err;
+  EXPECT_EQ(Contents(out + "/results.csv"), table);  // untouched
+  s = RunSweep({first, "--out", out, "--resume"}, dir + "/log4");
+  EXPECT_EQ(s.exit_code, 0) << s.err;
+  EXPECT_NE(s.out.find("1 ok, 0 failed, 0 not run; 0 run in"), std::string::npos) << s.out;
 }
 
 TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {

@@ -169,6 +169,22 @@ int Run(const Options& o) {
                  ec.message().c_str());
     return kExitBadInput;
   }
+  // the folder belongs to one sweep file (by absolute path): another one would replace its table
+  const std::string file_path = fs::absolute(o.file, ec).lexically_normal().string();
+  const fs::path made_by = out / "sweep_file.txt";
+  if (o.resume || o.collect) {
+    std::string recorded = towsim::app::ReadTextFile(made_by.string());
+    if (!recorded.empty() && recorded.back() == '\n') recorded.pop_back();
+    if (!recorded.empty() && recorded != file_path) {
+      std::fprintf(stderr,
+                   "towsim_sweep: error: %s: --out %s was made by the sweep file %s, not %s; "
+                   "pass that file, or choose another folder\n",
+                   o.resume ? "--resume" : "--collect", o.out.c_str(), recorded.c_str(),
+                   file_path.c_str());
+      return kExitBadInput;
+    }
+  }
+  if (!o.collect) towsim::app::WriteTextFileAtomically(made_by.string(), file_path + "\n");
   const std::string sim_node = FindSimNode();
   if (sim_node.empty() && !o.collect) {
     std::fprintf(stderr,
