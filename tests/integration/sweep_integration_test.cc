@@ -298,7 +298,7 @@ TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("towsim_sweep: error: parameters.cable.elements.from = "
                        "9223372036854775800 (bad.yaml:3): an integer range must lie within "
-                       "-9007199254740992 .. 9007199254740992 (2^53, exact in a double)"),
+                       "-(2^53 - 1) .. 2^53 - 1 = 9007199254740991 (exact in a double)"),
             std::string::npos)
       << s.err;
   EXPECT_FALSE(fs::exists(dir + "/out"));

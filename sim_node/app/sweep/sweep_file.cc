@@ -35,7 +35,7 @@ using scene::internal::UnknownKeyRule;
 constexpr const char* kValuesRule =
     "must be a list of values, a range {from, to, step} or {from, to, count}, or seeded draws "
     "{random: uniform|normal|integer, ..., count, seed}";
-constexpr double kMaxExactInteger = 9007199254740992.0;  // 2^53
+constexpr double kTwoTo53 = 9007199254740992.0;  // integers below it are exact in a double
 // the columns of results.csv before the parameters (docs/sweeps.md)
 const std::vector<std::string> kFixedColumns = {"case", "status", "exit_code", "message", "wall_s"};
 
@@ -129,9 +129,9 @@ std::vector<std::string> ReadRange(const Field& field) {
   if (integers) {
     // an integer is exact in a double up to 2^53; beyond, neighbours merge and llround overflows
     for (const Field* f : {&from, &to, &step}) {
-      if (std::fabs(f->Number()) > kMaxExactInteger) {
-        f->Fail("an integer range must lie within -9007199254740992 .. 9007199254740992 (2^53, "
-                "exact in a double)");
+      if (std::fabs(f->Number()) >= kTwoTo53) {
+        f->Fail("an integer range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 "
+                "(exact in a double)");
       }
     }
   }
