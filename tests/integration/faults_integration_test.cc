@@ -547,6 +547,33 @@ TEST_F(FaultsTest, RecoverKeepsEveryIntactChunkAndReportsTheLoss) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// An 8-byte file (the MCAP magic alone): towsim_replay --recover exited 4, towsim_export
+// --recover 2. Nothing survives, so both refuse it as bad input (2), saying so. Domain 127.
+
+TEST_F(FaultsTest, RecoverWithNothingToRecoverIsBadInputForBothTools) {
+  const std::string magic = WriteFile("magic.mcap", std::string("\x89MCAP0\r\n", 8));
+  const std::string expected = magic + ": nothing to recover: no intact chunk (no message " +
+                               "survives the 1 byte ranges skipped)";
+  std::string out, err;
+  EXPECT_EQ(Run({TOWSIM_EXPORT, magic, "--csv", Path("magic"), "--recover"}, "export_magic", &out,
+                &err),
+            2);
+  EXPECT_TRUE(Contains(err, "towsim_export: error: " + expected)) << err;
+  EXPECT_FALSE(fs::exists(Path("magic")));
+  EXPECT_EQ(Run({TOWSIM_REPLAY, magic, "--fast", "--recover", "--delay", "0", "--domain", "127"},
+                "replay_magic", &out, &err),
+            2);
+  EXPECT_TRUE(Contains(err, "towsim_replay: error: " + expected)) << err;
+  // eight bytes that are not the magic: not an MCAP file, 2 for both as before
+  const std::string junk = WriteFile("junk.mcap", "01234567");
+  EXPECT_EQ(Run({TOWSIM_EXPORT, junk, "--info", "--recover"}, "export_junk", &out, &err), 2);
+  EXPECT_TRUE(Contains(err, "not an MCAP file: bad leading magic")) << err;
+  EXPECT_EQ(Run({TOWSIM_REPLAY, junk, "--recover", "--domain", "127"}, "replay_junk", &out, &err),
+            2);
+  EXPECT_TRUE(Contains(err, "not an MCAP file: bad leading magic")) << err;
+}
+
+// ---------------------------------------------------------------------------------------------
 // Two sim_nodes on the same domain and namespace both ran: controllers drove both, status
 // samples interleaved. The second is refused (exit 2, naming the first's run id), or runs with
 // --allow-another-node and a warning in the status; the first reports it too. Domain 128.
