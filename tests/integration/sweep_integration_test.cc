@@ -236,6 +236,36 @@ TEST_F(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   for (auto& [name, row] : rows) EXPECT_EQ(all[name], row) << name;  // kept as they were
 }
 
+// two sweeps into one folder contradicted each other and marked good cases failed: the second
+// is refused while the first runs (DIR/.lock), naming the folder and the first one's pid
+TEST_F(SweepLocal, SecondSweepIntoARunningSweepsFolderIsRefused) {
+  const std::string dir = Tmp("locked");
+  fs::create_directories(dir);
+  const std::string file = dir + "/long.yaml";
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                      << "duration: 400\nparameters:\n  cable.elements: [10, 11, 12, 13]\n";
+  const std::string out = dir + "/out";
+  Process first({TOWSIM_SWEEP, file, "--out", out, "--workers", "1"}, dir + "/first");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!fs::exists(out + "/results.csv") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const std::string refused = "towsim_sweep: error: --out " + out + ": another towsim_sweep (pid " +
+                              std::to_string(first.pid()) + ") runs in it (" + out +
+                              "/.lock); wait for it to end or choose another folder";
+  for (const char* flag : {"--resume", "--collect"}) {
+    const Sweep second = RunSweep({file, "--out", out, flag}, dir + "/second" + flag);
+    EXPECT_EQ(second.exit_code, 2) << flag;
+    EXPECT_NE(second.err.find(refused), std::string::npos) << second.err;
+  }
+  first.Signal(SIGTERM);
+  ASSERT_TRUE(first.Wait(kTimeout));
+  EXPECT_EQ(first.exit_code(), 143) << first.err();
+  // the lock went with the first sweep
+  const Sweep after = RunSweep({file, "--out", out, "--collect"}, dir + "/after");
+  EXPECT_NE(after.exit_code, 2) << after.err;
+}
+
 // a folder belongs to the sweep file that made it: --resume with another one replaced its table
 TEST_F(SweepLocal, ResumeWithAnotherSweepFileIsRefused) {
   const std::string dir = Tmp("two");

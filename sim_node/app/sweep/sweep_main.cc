@@ -24,6 +24,7 @@
 #include "app/sweep/sweep_combinator.h"
 #include "app/sweep/sweep_file.h"
 #include "app/sweep/sweep_local.h"
+#include "app/sweep/sweep_lock.h"
 #include "app/sweep/sweep_plot.h"
 #include "app/sweep/sweep_signals.h"
 #include "app/sweep/sweep_slurm.h"
@@ -156,17 +157,23 @@ int Run(const Options& o) {
   const fs::path out(o.out);
   const fs::path table = out / "results.csv";
   std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) {
+    std::fprintf(stderr, "towsim_sweep: error: --out %s: cannot be created: %s\n", o.out.c_str(),
+                 ec.message().c_str());
+    return kExitBadInput;
+  }
+  // one sweep at a time in a folder, for this process's life
+  const towsim::app::SweepLock lock(o.out);
+  if (!lock.locked()) {
+    std::fprintf(stderr, "towsim_sweep: error: %s\n", lock.error().c_str());
+    return kExitBadInput;
+  }
   if (!o.resume && !o.collect && (fs::exists(table) || fs::exists(out / "slurm"))) {
     std::fprintf(stderr,
                  "towsim_sweep: error: --out %s: holds an earlier sweep (results.csv); pass "
                  "--resume to continue it, --collect to tabulate it, or choose another folder\n",
                  o.out.c_str());
-    return kExitBadInput;
-  }
-  fs::create_directories(out, ec);
-  if (ec) {
-    std::fprintf(stderr, "towsim_sweep: error: --out %s: cannot be created: %s\n", o.out.c_str(),
-                 ec.message().c_str());
     return kExitBadInput;
   }
   // the folder belongs to one sweep file (by absolute path): another one would replace its table
