@@ -470,6 +470,27 @@ TEST_F(FaultsTest, DiskFullWhileWritingCsvEndsTheRunFailed) {
   DiskFullEndsTheRun(this, "--csv", 124, Path("disk/csv"));
 }
 
+// a sweep whose folder fills the disk: its error was glued to the progress line
+// ("... about 0m03s left   towsim_sweep: error: ..."); now it starts on its own line
+TEST_F(FaultsTest, SweepDiskFullErrorStartsOnItsOwnLine) {
+  const SmallDisk disk(Path("disk"), 256);
+  ASSERT_TRUE(disk.mounted()) << "mount tmpfs: " << disk.error() << " (the test needs root)";
+  const std::string file = WriteFile("sweep.yaml", "scene: " + kCase1 +
+                                                       "\nduration: 400\nparameters:\n"
+                                                       "  cable.elements: [10, 11, 12, 13, 14]\n");
+  std::string out, err;
+  EXPECT_EQ(Run({TOWSIM_SWEEP, file, "--out", Path("disk/sweep"), "--workers", "1"}, "sweep", &out,
+                &err),
+            1);
+  // the progress line was drawn, then ended before the error (the first case's status)
+  EXPECT_TRUE(Contains(err, "[towsim_sweep] 0/5 cases done, 0 failed, 1 running, about -- left"))
+      << err;
+  EXPECT_TRUE(Contains(err, "left   \ntowsim_sweep: error: " +
+                                Path("disk/sweep/case_0000/case_status.txt.tmp") +
+                                ": write failed (disk full?)\n"))
+      << err;
+}
+
 // ---------------------------------------------------------------------------------------------
 // `towsim_export --recover` on a file with one flipped byte in chunk 2 exited 0 with the rows of
 // chunk 1 only; a flipped header length recovered nothing, also with exit 0. Now every intact
