@@ -1,11 +1,11 @@
 #include "app/foxglove/foxglove_commands.h"
 
 #include <cmath>
-#include <cstddef>
 #include <cstdio>
+#include <cstring>
+#include <new>
 #include <stdexcept>
 #include <utility>
-#include <vector>
 
 #include "app/common/mcap_recording.h"
 #include "dds/qos.h"
@@ -53,11 +53,13 @@ namespace {
 
 // the size of `data` serialized again by Cyclone (the bytes are a valid sample of `type`)
 std::size_t SampleSize(const dds::RawType& type, const uint8_t* data, std::size_t size) {
-  std::vector<std::max_align_t> storage(type.descriptor()->m_size / sizeof(std::max_align_t) + 1);
-  void* sample = storage.data();
-  if (!type.Deserialize(data, size, sample)) return size;
-  const std::size_t n = dds::CdrSample::FromSample(type, sample).size();
-  dds_sample_free(sample, type.descriptor(), DDS_FREE_CONTENTS);
+  // zeroed storage (every byte: padding too, where Cyclone may find a string's pointer)
+  void* sample = dds_alloc(type.descriptor()->m_size);
+  if (sample == nullptr) throw std::bad_alloc();
+  std::memset(sample, 0, type.descriptor()->m_size);
+  std::size_t n = size;
+  if (type.Deserialize(data, size, sample)) n = dds::CdrSample::FromSample(type, sample).size();
+  dds_sample_free(sample, type.descriptor(), DDS_FREE_ALL);
   return n;
 }
 
