@@ -352,6 +352,12 @@ std::string DescribeSkipped(const McapSkipped& s) {
   return text + "): " + s.reason;
 }
 
+std::string NothingRecovered(const McapReader& reader) {
+  if (reader.skipped().empty() || reader.statistics().message_count != 0) return "";
+  return "nothing to recover: no intact chunk (no message survives the " +
+         std::to_string(reader.skipped().size()) + " byte ranges skipped)";
+}
+
 void McapReader::ScanLinear() {
   const std::string& b = bytes_;
   CheckLeadingMagic(b);

@@ -86,6 +86,11 @@ struct McapSkipped {
 // "bytes 9505-41377 (31872 bytes, 120 messages by its message indexes): chunk CRC mismatch..."
 std::string DescribeSkipped(const McapSkipped& skipped);
 
+class McapReader;
+// Recover() that kept no message although it skipped damage (a file of the magic alone, one
+// cut off inside its first chunk): "nothing to recover: ...", bad input for the tools; else ""
+std::string NothingRecovered(const McapReader& reader);
+
 struct McapMessage {
   std::uint16_t channel_id = 0;
   std::uint32_t sequence = 0;

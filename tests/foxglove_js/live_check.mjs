@@ -130,6 +130,7 @@ const subscriptions = new Map(); // subscription id -> channel id
 const byTopic = new Map(); // topic -> [{timestamp, value}]
 const times = [];
 const statuses = [];
+let trailingSize = 0; // the size of the command sent with 8 bytes after it
 let decodeFailures = 0;
 const commandChannels = new Map(); // body -> client channel id
 let commandWriter;
@@ -210,10 +211,23 @@ const finished = new Promise((resolve) => {
     answered.add(step);
     const thrust = step >= kThrustStep ? kThrust : 0;
     const answer = () => {
-      if (step === kTeleopStep) {
+      if (step === kTeleopStep - 1) {
         // the bridge makes it the command answering the newest status: this step
         client.sendMessage(teleopChannel, twistWriter.writeMessage({
           linear: { x: thrust, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } }));
+      } else if (step === kTeleopStep) {
+        // a NaN thrust, rejected by the bridge (it once became the kept thrust of every later
+        // Twist: the vehicle went to failsafe), then a turn that keeps the thrust set above
+        client.sendMessage(teleopChannel, twistWriter.writeMessage({
+          linear: { x: NaN, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 0 } }));
+        client.sendMessage(teleopChannel, twistWriter.writeMessage({
+          linear: { x: 0, y: 0, z: 0 }, angular: { x: 0, y: 0, z: 1e-3 } }));
+        // a valid command with 8 bytes after it: malformed, once forwarded
+        const good = commandWriter.writeMessage(command(step, 0));
+        trailingSize = good.length;
+        const longer = new Uint8Array(good.length + 8);
+        longer.set(good);
+        client.sendMessage(commandChannels.get("towfish"), longer);
       } else {
         client.sendMessage(commandChannels.get("tow_vehicle"), commandWriter.writeMessage(command(step, thrust)));
       }
@@ -307,10 +321,17 @@ check(last !== undefined && Number(last.commands_rejected) === kBad, `node: comm
 check(last !== undefined && Number(last.lockstep_timeouts) === 0 && Number(last.failsafe_count) === 0,
   `lockstep timeouts ${last?.lockstep_timeouts}, failsafes ${last?.failsafe_count}`);
 check(statuses.some((s) => s.level === 2 && /malformed/.test(s.message)), `an error status for the malformed command (${JSON.stringify(statuses)})`);
+// the NaN Twist and the command with trailing bytes: rejected by the bridge, each on its own
+const nanTwist = "rejected: malformed geometry_msgs/msg/Twist on /towsim/tow_vehicle/command (52 bytes): linear.x is not finite (nan)";
+const trailing = `rejected: malformed towsim_msgs/msg/ActuatorCommand on /towsim/towfish/command (${trailingSize + 8} bytes): 8 bytes after the ${trailingSize}-byte sample (only padding to a multiple of 4 may follow)`;
+for (const text of [nanTwist, trailing]) {
+  check(statuses.some((s) => s.level === 2 && s.message.includes(text)), `an error status "${text}" (${JSON.stringify(statuses)})`);
+}
+const kMalformed = kBad + 2; // the truncated ones, the NaN Twist, the trailing bytes
 if (inNode) {
-  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === kBad, `sim_node's notes of the malformed commands: ${node.err}`);
+  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === kMalformed, `sim_node's notes of the malformed commands: ${node.err}`);
 } else {
-  check(new RegExp(`malformed ${kBad}\\)`).test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
+  check(new RegExp(`malformed ${kMalformed}\\)`).test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
 }
 if (!withWinch) {
   check(statuses.some((s) => s.level === 2 && /advertise \/towsim\/winch\/command: not a topic clients may publish on/.test(s.message)),

@@ -470,6 +470,27 @@ TEST_F(FaultsTest, DiskFullWhileWritingCsvEndsTheRunFailed) {
   DiskFullEndsTheRun(this, "--csv", 124, Path("disk/csv"));
 }
 
+// a sweep whose folder fills the disk: its error was glued to the progress line
+// ("... about 0m03s left   towsim_sweep: error: ..."); now it starts on its own line
+TEST_F(FaultsTest, SweepDiskFullErrorStartsOnItsOwnLine) {
+  const SmallDisk disk(Path("disk"), 256);
+  ASSERT_TRUE(disk.mounted()) << "mount tmpfs: " << disk.error() << " (the test needs root)";
+  const std::string file = WriteFile("sweep.yaml", "scene: " + kCase1 +
+                                                       "\nduration: 400\nparameters:\n"
+                                                       "  cable.elements: [10, 11, 12, 13, 14]\n");
+  std::string out, err;
+  EXPECT_EQ(Run({TOWSIM_SWEEP, file, "--out", Path("disk/sweep"), "--workers", "1"}, "sweep", &out,
+                &err),
+            1);
+  // the progress line was drawn, then ended before the error (the first case's status)
+  EXPECT_TRUE(Contains(err, "[towsim_sweep] 0/5 cases done, 0 failed, 1 running, about -- left"))
+      << err;
+  EXPECT_TRUE(Contains(err, "left   \ntowsim_sweep: error: " +
+                                Path("disk/sweep/case_0000/case_status.txt.tmp") +
+                                ": write failed (disk full?)\n"))
+      << err;
+}
+
 // ---------------------------------------------------------------------------------------------
 // `towsim_export --recover` on a file with one flipped byte in chunk 2 exited 0 with the rows of
 // chunk 1 only; a flipped header length recovered nothing, also with exit 0. Now every intact
@@ -544,6 +565,33 @@ TEST_F(FaultsTest, RecoverKeepsEveryIntactChunkAndReportsTheLoss) {
   // without --recover it is refused, as before
   EXPECT_EQ(Run({TOWSIM_REPLAY, damaged, "--fast", "--domain", "127"}, "replay_plain", &out, &err),
             2);
+}
+
+// ---------------------------------------------------------------------------------------------
+// An 8-byte file (the MCAP magic alone): towsim_replay --recover exited 4, towsim_export
+// --recover 2. Nothing survives, so both refuse it as bad input (2), saying so. Domain 127.
+
+TEST_F(FaultsTest, RecoverWithNothingToRecoverIsBadInputForBothTools) {
+  const std::string magic = WriteFile("magic.mcap", std::string("\x89MCAP0\r\n", 8));
+  const std::string expected = magic + ": nothing to recover: no intact chunk (no message " +
+                               "survives the 1 byte ranges skipped)";
+  std::string out, err;
+  EXPECT_EQ(Run({TOWSIM_EXPORT, magic, "--csv", Path("magic"), "--recover"}, "export_magic", &out,
+                &err),
+            2);
+  EXPECT_TRUE(Contains(err, "towsim_export: error: " + expected)) << err;
+  EXPECT_FALSE(fs::exists(Path("magic")));
+  EXPECT_EQ(Run({TOWSIM_REPLAY, magic, "--fast", "--recover", "--delay", "0", "--domain", "127"},
+                "replay_magic", &out, &err),
+            2);
+  EXPECT_TRUE(Contains(err, "towsim_replay: error: " + expected)) << err;
+  // eight bytes that are not the magic: not an MCAP file, 2 for both as before
+  const std::string junk = WriteFile("junk.mcap", "01234567");
+  EXPECT_EQ(Run({TOWSIM_EXPORT, junk, "--info", "--recover"}, "export_junk", &out, &err), 2);
+  EXPECT_TRUE(Contains(err, "not an MCAP file: bad leading magic")) << err;
+  EXPECT_EQ(Run({TOWSIM_REPLAY, junk, "--recover", "--domain", "127"}, "replay_junk", &out, &err),
+            2);
+  EXPECT_TRUE(Contains(err, "not an MCAP file: bad leading magic")) << err;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -72,6 +72,13 @@ std::vector<std::string> LastBodyRow(const std::string& bodies_csv, const std::s
   return last;
 }
 
+std::string Contents(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 fs::file_time_type Mtime(const fs::path& p) { return fs::last_write_time(p); }
 
 TEST_F(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
@@ -229,6 +236,67 @@ TEST_F(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   for (auto& [name, row] : rows) EXPECT_EQ(all[name], row) << name;  // kept as they were
 }
 
+// two sweeps into one folder contradicted each other and marked good cases failed: the second
+// is refused while the first runs (DIR/.lock), naming the folder and the first one's pid
+TEST_F(SweepLocal, SecondSweepIntoARunningSweepsFolderIsRefused) {
+  const std::string dir = Tmp("locked");
+  fs::create_directories(dir);
+  const std::string file = dir + "/long.yaml";
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                      << "duration: 400\nparameters:\n  cable.elements: [10, 11, 12, 13]\n";
+  const std::string out = dir + "/out";
+  Process first({TOWSIM_SWEEP, file, "--out", out, "--workers", "1"}, dir + "/first");
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!fs::exists(out + "/results.csv") && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  const std::string refused = "towsim_sweep: error: --out " + out + ": another towsim_sweep (pid " +
+                              std::to_string(first.pid()) + ") runs in it (" + out +
+                              "/.lock); wait for it to end or choose another folder";
+  for (const char* flag : {"--resume", "--collect"}) {
+    const Sweep second = RunSweep({file, "--out", out, flag}, dir + "/second" + flag);
+    EXPECT_EQ(second.exit_code, 2) << flag;
+    EXPECT_NE(second.err.find(refused), std::string::npos) << second.err;
+  }
+  first.Signal(SIGTERM);
+  ASSERT_TRUE(first.Wait(kTimeout));
+  EXPECT_EQ(first.exit_code(), 143) << first.err();
+  // the lock went with the first sweep
+  const Sweep after = RunSweep({file, "--out", out, "--collect"}, dir + "/after");
+  EXPECT_NE(after.exit_code, 2) << after.err;
+}
+
+// a folder belongs to the sweep file that made it: --resume with another one replaced its table
+TEST_F(SweepLocal, ResumeWithAnotherSweepFileIsRefused) {
+  const std::string dir = Tmp("two");
+  fs::create_directories(dir);
+  const std::string first = dir + "/first.yaml", second = dir + "/second.yaml";
+  for (const auto& [file, elements] : {std::pair{first, "10"}, std::pair{second, "12"}}) {
+    std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                        << "duration: 2\nparameters:\n  cable.elements: [" << elements << "]\n";
+  }
+  const std::string out = dir + "/out";
+  Sweep s = RunSweep({first, "--out", out}, dir + "/log1");
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  const std::string table = Contents(out + "/results.csv");
+  s = RunSweep({second, "--out", out, "--resume"}, dir + "/log2");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: --resume: --out " + out +
+                       " was made by the sweep file " + first + ", not " + second +
+                       "; pass that file, or choose another folder"),
+            std::string::npos)
+      << s.err;
+  s = RunSweep({second, "--out", out, "--collect"}, dir + "/log3");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("--collect: --out " + out + " was made by the sweep file " + first),
+            std::string::npos)
+      << s.err;
+  EXPECT_EQ(Contents(out + "/results.csv"), table);  // untouched
+  s = RunSweep({first, "--out", out, "--resume"}, dir + "/log4");
+  EXPECT_EQ(s.exit_code, 0) << s.err;
+  EXPECT_NE(s.out.find("1 ok, 0 failed, 0 not run; 0 run in"), std::string::npos) << s.out;
+}
+
 TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
   const std::string dir = Tmp("bad");
   fs::create_directories(dir);
@@ -252,9 +320,28 @@ TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
             std::string::npos)
       << s.err;
 
+  // an integer range beyond 2^53 was one case of value -2^63
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/steady_tow.yaml\n"
+                      << "parameters:\n  cable.elements: {from: 9223372036854775800, "
+                      << "to: 9223372036854775807, step: 1}\n";
+  s = RunSweep({file, "--out", dir + "/out"}, dir + "/log5");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: parameters.cable.elements.from = "
+                       "9223372036854775800 (bad.yaml:3): an integer range must lie within "
+                       "-(2^53 - 1) .. 2^53 - 1 = 9007199254740991 (exact in a double)"),
+            std::string::npos)
+      << s.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+
   s = RunSweep({file, "--workers", "0", "--out", dir + "/out"}, dir + "/log3");
   EXPECT_EQ(s.exit_code, 2);
-  EXPECT_NE(s.err.find("--workers 0: must be an integer >= 1"), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("--workers 0: must be an integer from 1 to 4096"), std::string::npos)
+      << s.err;
+  s = RunSweep({file, "--workers", "100000", "--out", dir + "/out"}, dir + "/log6");
+  EXPECT_EQ(s.exit_code, 2);
+  EXPECT_NE(s.err.find("towsim_sweep: error: --workers 100000: must be an integer from 1 to 4096"),
+            std::string::npos)
+      << s.err;
   s = RunSweep({file}, dir + "/log4");
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("--out DIR is required"), std::string::npos) << s.err;

@@ -18,6 +18,11 @@ foreach(t core_isolation_test csv_writer_test sim_node_cli_test)
   add_dependencies(${t} sim_node)
 endforeach()
 
+# what a Foxglove client's message must meet (app/foxglove/foxglove_commands)
+towsim_add_test(foxglove_commands_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_commands_test.cc
+  LIBS towsim::foxglove_commands)
+
 # the Foxglove WebSocket protocol messages (app/foxglove/foxglove_protocol), no sockets
 towsim_add_test(foxglove_protocol_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc

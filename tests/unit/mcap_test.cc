@@ -351,6 +351,25 @@ TEST(McapTest, ErrorsNameTheOffsetAndNeverCrash) {
   }
 }
 
+TEST(McapTest, NothingRecoveredOnlyWhenNoMessageSurvivesTheDamage) {
+  // the magic alone: the header is cut off, nothing survives
+  const McapReader magic = McapReader::RecoverBytes(std::string("\x89MCAP0\r\n", 8));
+  EXPECT_EQ(NothingRecovered(magic),
+            "nothing to recover: no intact chunk (no message survives the 1 byte ranges "
+            "skipped)");
+  // a whole file: nothing skipped; one cut off inside its first chunk: nothing survives
+  const std::string path = TempPath("nothing");
+  WriteRecording(path, 300);
+  const std::string b = Slurp(path);
+  EXPECT_EQ(NothingRecovered(McapReader::RecoverBytes(b)), "");
+  const McapChunkIndex first = McapReader::OpenBytes(b).chunk_indexes().at(0);
+  const McapReader cut =
+      McapReader::RecoverBytes(b.substr(0, first.chunk_start_offset + first.chunk_length / 2));
+  EXPECT_EQ(NothingRecovered(cut),
+            "nothing to recover: no intact chunk (no message survives the 1 byte ranges "
+            "skipped)");
+}
+
 TEST(McapTest, ByteLayoutMatchesTheSpecification) {
   const std::string path = TempPath("layout");
   {

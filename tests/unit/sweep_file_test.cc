@@ -114,6 +114,18 @@ TEST(SweepFile, BrokenValuesNameTheRule) {
   EXPECT_EQ(Error(head + "  cable.elements: {from: 10, to: 40, step: -5}\n"),
             "parameters.cable.elements.step = -5 (sweep.yaml:3): must point from `from` towards "
             "`to`");
+  EXPECT_EQ(Error(head + "  cable.elements: {from: 9223372036854775800, to: "
+                         "9223372036854775807, step: 1}\n"),
+            "parameters.cable.elements.from = 9223372036854775800 (sweep.yaml:3): an integer "
+            "range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 (exact in a "
+            "double)");
+  EXPECT_EQ(Error(head + "  cable.elements: {from: 1, to: 9007199254740991, step: 1}\n"),
+            "parameters.cable.elements.step = 1 (sweep.yaml:3): gives more than 1e6 values");
+  EXPECT_EQ(Error(head + "  cable.elements: {from: -9007199254740993, to: 1, step: "
+                         "9007199254740992}\n"),
+            "parameters.cable.elements.from = -9007199254740993 (sweep.yaml:3): an integer "
+            "range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 (exact in a "
+            "double)");
   EXPECT_EQ(Error(head + "  cable.density: {random: uniform, low: 1, high: 2, count: 3}\n"),
             "parameters.cable.density.seed = <missing> (sweep.yaml:3): is required: every draw "
             "is seeded (reproducible)");

@@ -93,6 +93,14 @@ int main(int argc, char** argv) {
   try {
     using towsim::io::McapReader;
     const McapReader reader = o.recover ? McapReader::Recover(o.file) : McapReader::Open(o.file);
+    for (const towsim::io::McapSkipped& skipped : reader.skipped()) {
+      std::fprintf(stderr, "towsim_export: %s: skipped %s\n", o.file.c_str(),
+                   towsim::io::DescribeSkipped(skipped).c_str());
+    }
+    if (const std::string nothing = towsim::io::NothingRecovered(reader); !nothing.empty()) {
+      std::fprintf(stderr, "towsim_export: error: %s: %s\n", o.file.c_str(), nothing.c_str());
+      return kExitBadInput;
+    }
     if (o.info) std::printf("%s", towsim::app::RecordingInfo(reader, o.file, o.recover).c_str());
     if (!o.csv_dir.empty()) {
       const auto n = towsim::app::ExportCsv(reader, o.csv_dir, o.ns);
@@ -109,10 +117,6 @@ int main(int argc, char** argv) {
                        : (", environment " + std::to_string(n.environment_rows)).c_str());
     }
     if (!reader.skipped().empty()) {
-      for (const towsim::io::McapSkipped& skipped : reader.skipped()) {
-        std::fprintf(stderr, "towsim_export: %s: skipped %s\n", o.file.c_str(),
-                     towsim::io::DescribeSkipped(skipped).c_str());
-      }
       std::fprintf(stderr,
                    "towsim_export: %s: recovered %llu messages in %zu chunks; %zu byte ranges "
                    "lost (exit 4)\n",

@@ -1,6 +1,9 @@
 #include "app/foxglove/foxglove_commands.h"
 
+#include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <new>
 #include <stdexcept>
 #include <utility>
 
@@ -21,6 +24,46 @@ dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& t, u
   cmd.elevator = t.linear.z;
   return cmd;
 }
+
+std::string NonFiniteTwistField(const geometry_msgs_msg_dds__Twist_& t) {
+  const std::pair<const char*, double> fields[] = {
+      {"linear.x", t.linear.x},   {"linear.y", t.linear.y},   {"linear.z", t.linear.z},
+      {"angular.x", t.angular.x}, {"angular.y", t.angular.y}, {"angular.z", t.angular.z}};
+  for (const auto& [name, value] : fields) {
+    if (!std::isfinite(value)) {
+      return std::string(name) + " is not finite (" + (std::isnan(value) ? "nan" : "inf") + ")";
+    }
+  }
+  return "";
+}
+
+std::string TrailingBytes(std::size_t size, std::size_t sample_size) {
+  const std::size_t padded = (sample_size + 3) / 4 * 4;
+  if (size <= padded) return "";
+  return std::to_string(size - sample_size) + " bytes after the " + std::to_string(sample_size) +
+         "-byte sample (only padding to a multiple of 4 may follow)";
+}
+
+bool NoteRejection(uint64_t count) {
+  constexpr uint64_t kNotesInFull = 10, kNoteEvery = 1000;
+  return count <= kNotesInFull || count % kNoteEvery == 0;
+}
+
+namespace {
+
+// the size of `data` serialized again by Cyclone (the bytes are a valid sample of `type`)
+std::size_t SampleSize(const dds::RawType& type, const uint8_t* data, std::size_t size) {
+  // zeroed storage (every byte: padding too, where Cyclone may find a string's pointer)
+  void* sample = dds_alloc(type.descriptor()->m_size);
+  if (sample == nullptr) throw std::bad_alloc();
+  std::memset(sample, 0, type.descriptor()->m_size);
+  std::size_t n = size;
+  if (type.Deserialize(data, size, sample)) n = dds::CdrSample::FromSample(type, sample).size();
+  dds_sample_free(sample, type.descriptor(), DDS_FREE_ALL);
+  return n;
+}
+
+}  // namespace
 
 FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
                                    const wire::TopicNames& names,
@@ -98,17 +141,23 @@ std::string FoxgloveCommands::Publish(const foxglove::ClientChannel& c, const ui
   if (it == inbound_.end() || !it->second.writer.valid()) return "not advertised: " + c.topic;
   Inbound& in = it->second;
   auto reject = [&](const std::string& type, const std::string& why) {
-    ++malformed_;
-    if (!quiet_) {
-      std::fprintf(stderr, "%s: rejected a malformed %s on %s (%zu bytes)\n", program_.c_str(),
-                   type.c_str(), c.topic.c_str(), size);
+    const uint64_t count = ++malformed_;
+    const std::string reason = "malformed " + type + " on " + c.topic + " (" +
+                               std::to_string(size) + " bytes)" + (why.empty() ? "" : ": " + why);
+    if (!quiet_ && NoteRejection(count)) {
+      std::fprintf(stderr, "%s: rejected a %s (%llu rejected so far)\n", program_.c_str(),
+                   reason.c_str(), static_cast<unsigned long long>(count));
     }
-    return "rejected: malformed " + type + " on " + c.topic + " (" + std::to_string(size) +
-           " bytes)" + (why.empty() ? "" : ": " + why);
+    return "rejected: " + reason;
   };
   if (in.teleop && c.schema_name.rfind("geometry_msgs/", 0) == 0) {
+    const char* kTwist = "geometry_msgs/msg/Twist";
     geometry_msgs_msg_dds__Twist_ t{};  // no pointers: nothing to free
-    if (!twist_type_.Deserialize(data, size, &t)) return reject("geometry_msgs/msg/Twist", "");
+    if (!twist_type_.Deserialize(data, size, &t)) return reject(kTwist, "");
+    const std::string trailing = TrailingBytes(size, SampleSize(twist_type_, data, size));
+    if (!trailing.empty()) return reject(kTwist, trailing);
+    // rejected before it reaches the kept thrust
+    if (const std::string bad = NonFiniteTwistField(t); !bad.empty()) return reject(kTwist, bad);
     dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load(), &in.teleop_thrust);
     cmd.header.frame_id = const_cast<char*>("");
     const dds_return_t rc = dds_write(in.writer.get(), &cmd);
@@ -121,6 +170,8 @@ std::string FoxgloveCommands::Publish(const foxglove::ClientChannel& c, const ui
   } catch (const std::invalid_argument& e) {
     return reject(in.schema_name, e.what());
   }
+  const std::string trailing = TrailingBytes(size, SampleSize(*in.type, data, size));
+  if (!trailing.empty()) return reject(in.schema_name, trailing);
   const dds_return_t rc = sample.Write(in.writer.get(), dds_time());
   if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
   return "";

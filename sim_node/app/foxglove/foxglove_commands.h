@@ -37,6 +37,18 @@ namespace towsim::app {
 dds::ActuatorCommandMsg TwistToCommand(const geometry_msgs_msg_dds__Twist_& twist, uint64_t step,
                                        double* thrust);
 
+// "" if every field of a Teleop Twist is finite, else the first that is not ("linear.x is not
+// finite (nan)"): a NaN linear.x would become the kept thrust and poison every later Twist
+std::string NonFiniteTwistField(const geometry_msgs_msg_dds__Twist_& twist);
+
+// "" if a message of `size` bytes whose sample takes `sample_size` bytes (both with the
+// encapsulation header) holds nothing after it but padding to a multiple of 4 (XCDR), else
+// "8 bytes after the 36-byte sample (only padding to a multiple of 4 may follow)"
+std::string TrailingBytes(std::size_t size, std::size_t sample_size);
+
+// the notes on stderr of rejected messages: the first kNotesInFull, then every kNoteEvery-th
+bool NoteRejection(uint64_t count);
+
 class FoxgloveCommands {
  public:
   // `program` names the notes on stderr ("towsim_foxglove: rejected a malformed ...");

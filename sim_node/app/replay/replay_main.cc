@@ -190,6 +190,9 @@ int Replay(const Options& opt) {
     std::fprintf(stderr, "towsim_replay: %s: skipped %s\n", opt.file.c_str(),
                  io::DescribeSkipped(skipped).c_str());
   }
+  if (const std::string nothing = io::NothingRecovered(reader); !nothing.empty()) {
+    return Bad(opt.file + ": " + nothing);
+  }
   const int done = reader.skipped().empty() ? kExitOk : kExitIncomplete;
 
   // channels -> outputs

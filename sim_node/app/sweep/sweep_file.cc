@@ -35,6 +35,7 @@ using scene::internal::UnknownKeyRule;
 constexpr const char* kValuesRule =
     "must be a list of values, a range {from, to, step} or {from, to, count}, or seeded draws "
     "{random: uniform|normal|integer, ..., count, seed}";
+constexpr double kTwoTo53 = 9007199254740992.0;  // integers below it are exact in a double
 // the columns of results.csv before the parameters (docs/sweeps.md)
 const std::vector<std::string> kFixedColumns = {"case", "status", "exit_code", "message", "wall_s"};
 
@@ -125,6 +126,15 @@ std::vector<std::string> ReadRange(const Field& field) {
   if ((b - a) * s < 0.0) step.Fail("must point from `from` towards `to`");
   if ((b - a) / s > 1e6) step.Fail("gives more than 1e6 values");
   const bool integers = IsIntegerText(from) && IsIntegerText(to) && IsIntegerText(step);
+  if (integers) {
+    // an integer is exact in a double up to 2^53; beyond, neighbours merge and llround overflows
+    for (const Field* f : {&from, &to, &step}) {
+      if (std::fabs(f->Number()) >= kTwoTo53) {
+        f->Fail("an integer range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 "
+                "(exact in a double)");
+      }
+    }
+  }
   return Formatted(RangeValues(a, b, s), integers);
 }
 

@@ -24,6 +24,7 @@
 #include "app/sweep/sweep_combinator.h"
 #include "app/sweep/sweep_file.h"
 #include "app/sweep/sweep_local.h"
+#include "app/sweep/sweep_lock.h"
 #include "app/sweep/sweep_plot.h"
 #include "app/sweep/sweep_signals.h"
 #include "app/sweep/sweep_slurm.h"
@@ -41,6 +42,8 @@ using towsim::app::kExitBadInput;
 using towsim::app::kExitError;
 using towsim::app::kExitIncomplete;  // the sweep ran; some cases failed (see results.csv)
 using towsim::app::kExitOk;
+
+constexpr long kMaxWorkers = 4096;  // --workers: processes at once, locally or on Slurm
 
 struct Options {
   std::string file, out;
@@ -78,8 +81,10 @@ towsim::app::ToolCommandLine CommandLine(Options* o) {
              [o](const std::string& v) -> std::string {
                char* end = nullptr;
                const long n = std::strtol(v.c_str(), &end, 10);
-               if (v.empty() || *end != '\0' || n < 1 || n > 4096) {
-                 return "--workers " + v + ": must be an integer >= 1";
+               // at most kMaxWorkers sim_node processes (each with its pipes and files)
+               if (v.empty() || *end != '\0' || n < 1 || n > kMaxWorkers) {
+                 return "--workers " + v + ": must be an integer from 1 to " +
+                        std::to_string(kMaxWorkers);
                }
                o->workers = static_cast<int>(n);
                return "";
@@ -152,6 +157,18 @@ int Run(const Options& o) {
   const fs::path out(o.out);
   const fs::path table = out / "results.csv";
   std::error_code ec;
+  fs::create_directories(out, ec);
+  if (ec) {
+    std::fprintf(stderr, "towsim_sweep: error: --out %s: cannot be created: %s\n", o.out.c_str(),
+                 ec.message().c_str());
+    return kExitBadInput;
+  }
+  // one sweep at a time in a folder, for this process's life
+  const towsim::app::SweepLock lock(o.out);
+  if (!lock.locked()) {
+    std::fprintf(stderr, "towsim_sweep: error: %s\n", lock.error().c_str());
+    return kExitBadInput;
+  }
   if (!o.resume && !o.collect && (fs::exists(table) || fs::exists(out / "slurm"))) {
     std::fprintf(stderr,
                  "towsim_sweep: error: --out %s: holds an earlier sweep (results.csv); pass "
@@ -159,12 +176,22 @@ int Run(const Options& o) {
                  o.out.c_str());
     return kExitBadInput;
   }
-  fs::create_directories(out, ec);
-  if (ec) {
-    std::fprintf(stderr, "towsim_sweep: error: --out %s: cannot be created: %s\n", o.out.c_str(),
-                 ec.message().c_str());
-    return kExitBadInput;
+  // the folder belongs to one sweep file (by absolute path): another one would replace its table
+  const std::string file_path = fs::absolute(o.file, ec).lexically_normal().string();
+  const fs::path made_by = out / "sweep_file.txt";
+  if (o.resume || o.collect) {
+    std::string recorded = towsim::app::ReadTextFile(made_by.string());
+    if (!recorded.empty() && recorded.back() == '\n') recorded.pop_back();
+    if (!recorded.empty() && recorded != file_path) {
+      std::fprintf(stderr,
+                   "towsim_sweep: error: %s: --out %s was made by the sweep file %s, not %s; "
+                   "pass that file, or choose another folder\n",
+                   o.resume ? "--resume" : "--collect", o.out.c_str(), recorded.c_str(),
+                   file_path.c_str());
+      return kExitBadInput;
+    }
   }
+  if (!o.collect) towsim::app::WriteTextFileAtomically(made_by.string(), file_path + "\n");
   const std::string sim_node = FindSimNode();
   if (sim_node.empty() && !o.collect) {
     std::fprintf(stderr,

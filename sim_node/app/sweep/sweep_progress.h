@@ -18,6 +18,10 @@ class SweepProgress {
   // `total`: cases of the sweep; `already`: finished before this invocation (--resume)
   SweepProgress(int total, int already, std::FILE* out = stderr)
       : total_(total), already_(already), out_(out) {}
+  // Finish(): an error that ends the sweep (a full disk) then starts on its own line
+  ~SweepProgress() { Finish(); }
+  SweepProgress(const SweepProgress&) = delete;
+  SweepProgress& operator=(const SweepProgress&) = delete;
 
   // done and failed: finished by this invocation (failed among them); wall: since its start [s]
   void Update(int done, int failed, int running, double wall, bool force = false);
