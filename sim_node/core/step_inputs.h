@@ -16,8 +16,8 @@
 //     winch set for the step;
 //   - the water at the vehicles: the vehicle coupling, once per step, at the start (or the
 //     previous step's end, CouplingHistory::flow_end) and at the predicted end pose.
-// Not here: the outputs' sea at a body (Simulation::water_velocity_at, surface_elevation_at,
-// body_depth) is at the accepted state's positions and time, which no step input holds (the
+// Not here: the outputs' sea at a body (Simulation::WaterVelocityAt, SurfaceElevationAt,
+// BodyDepth) is at the accepted state's positions and time, which no step input holds (the
 // step samples at predicted positions); the outputs query the sea there.
 
 #include <vector>

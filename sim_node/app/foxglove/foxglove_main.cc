@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "app/common/dds_tool_options.h"
+#include "app/common/dds_tool_run.h"
 #include "app/common/dds_uri.h"
 #include "app/common/exit_codes.h"
 #include "app/common/mcap_recording.h"
@@ -320,22 +321,5 @@ int Bridge::Run() {
 int main(int argc, char** argv) {
   Options options;
   if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
-  towsim::app::InstallStopHandlers();
-  const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_foxglove");
-  std::unique_ptr<Bridge> bridge;
-  try {
-    bridge = std::make_unique<Bridge>(options, uri);
-  } catch (const wire::SecurityError& e) {
-    std::fprintf(stderr, "towsim_foxglove: error: %s\n", e.what());
-    return kExitBadInput;
-  } catch (const dds::DdsError& e) {
-    std::fprintf(stderr, "towsim_foxglove: error: DDS setup failed: %s\n", e.what());
-    return kExitBadInput;
-  }
-  try {
-    return bridge->Run();
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "towsim_foxglove: error: %s\n", e.what());
-    return kExitError;
-  }
+  return towsim::app::RunDdsTool<Bridge>("towsim_foxglove", options, false);
 }

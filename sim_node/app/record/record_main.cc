@@ -40,6 +40,7 @@
 #include <vector>
 
 #include "app/common/dds_tool_options.h"
+#include "app/common/dds_tool_run.h"
 #include "app/common/dds_uri.h"
 #include "app/common/exit_codes.h"
 #include "app/common/mcap_recording.h"
@@ -337,22 +338,5 @@ int Recorder::Run() {
 int main(int argc, char** argv) {
   Options options;
   if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
-  towsim::app::InstallStopHandlers();
-  const std::string uri = towsim::app::DdsUriFromEnvironment("towsim_record");
-  std::unique_ptr<Recorder> recorder;
-  try {
-    recorder = std::make_unique<Recorder>(options, uri);
-  } catch (const wire::SecurityError& e) {
-    return Bad(e.what());
-  } catch (const dds::DdsError& e) {
-    return Bad(std::string("DDS setup failed: ") + e.what());
-  }
-  try {
-    return recorder->Run();
-  } catch (const dds::DdsError& e) {
-    return Bad(std::string("DDS: ") + e.what());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "towsim_record: error: %s\n", e.what());
-    return kExitError;
-  }
+  return towsim::app::RunDdsTool<Recorder>("towsim_record", options, true);
 }
