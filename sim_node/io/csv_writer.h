@@ -42,7 +42,7 @@
 //               the initial command), then the actuator states VehicleState::actuator
 //               [kThrust, kRudder, kElevator] after their rate limits and lags [N, rad, rad],
 //               and 1 if the vehicle was in failsafe (dds/command_arbiter.h) during that step,
-//               else 0 (offline: always 0) (docs/command_line.md, "CSV files")
+//               else 0 (offline: always 0) (docs/command_line.md, "Output files")
 //
 // And one file that only towsim_export writes (app/export/export_csv.h), from a recording:
 //   commands.csv  t,body,step,thrust,rudder,elevator
