@@ -160,18 +160,19 @@ TEST_F(ExportRoundTrip, RecordedCommandsExportedAsCommandsCsvMatchTheNodesActuat
   const std::string rec_file = (dir_ / "rec.mcap").string();
   Process rec({TOWSIM_RECORD, "--output", rec_file, "--domain", std::to_string(kDomain), "--quiet"},
               (dir_ / "rec").string());
+  // the lockstep node waits for the controller; the recorder starts on the node's scene_info
+  Process node({TOWSIM_SIM_NODE, "--scene",
+                std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml", "--mode",
+                "lockstep", "--domain", std::to_string(kDomain), "--duration", "2", "--csv",
+                (dir_ / "node").string()},
+               (dir_ / "node").string());
   for (int i = 0; i < 1000 && rec.running() &&
                   rec.err().find("towsim_record: recording") == std::string::npos;
        ++i) {
     ::usleep(20'000);
   }
   ASSERT_NE(rec.err().find("towsim_record: recording"), std::string::npos) << rec.err();
-  ::usleep(1'000'000);  // the recorder's readers match the node's and controller's writers
-  Process node({TOWSIM_SIM_NODE, "--scene",
-                std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml", "--mode",
-                "lockstep", "--domain", std::to_string(kDomain), "--duration", "2", "--csv",
-                (dir_ / "node").string()},
-               (dir_ / "node").string());
+  ::usleep(1'000'000);  // the recorder's readers match the node's writers, then the controller's
   Process controller({TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(kDomain), "--command",
                       "tow_vehicle@0=4165,0,0", "--command", "tow_vehicle@0.5=4165,0.3,-0.05"},
                      (dir_ / "controller").string());
