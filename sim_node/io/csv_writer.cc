@@ -29,7 +29,8 @@ class Row {
     AppendCsvNumber(x, line_);
     return *this;
   }
-  Row& Integer(long n) {
+  template <class Int>  // long, unsigned long long: in decimal
+  Row& Integer(Int n) {
     Comma();
     char text[24];
     const std::to_chars_result r = std::to_chars(text, text + sizeof text, n);
@@ -92,7 +93,38 @@ void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double
   row.Number(depth).Number(u).Number(v).Number(w).WriteTo(f);
 }
 
-CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), winch_(winch) {
+void WriteActuatorRow(std::FILE* f, double t, const std::string& body,
+                      const core::VehicleCommand& command, const core::VehicleState& state,
+                      bool failsafe) {
+  std::string line;
+  Row(&line)
+      .Number(t)
+      .Text(CsvField(body))
+      .Number(command.thrust)
+      .Number(command.rudder)
+      .Number(command.elevator)
+      .Number(state.actuator[core::kThrust])
+      .Number(state.actuator[core::kRudder])
+      .Number(state.actuator[core::kElevator])
+      .Integer(failsafe ? 1 : 0)
+      .WriteTo(f);
+}
+
+void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned long long step,
+                     double thrust, double rudder, double elevator) {
+  std::string line;
+  Row(&line)
+      .Number(t)
+      .Text(CsvField(body))
+      .Integer(step)
+      .Number(thrust)
+      .Number(rudder)
+      .Number(elevator)
+      .WriteTo(f);
+}
+
+CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles)
+    : dir_(dir), winch_(winch) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -105,8 +137,10 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), 
     Open(status_, "status.csv", kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
     if (winch) Open(winch_file_, "winch.csv", kCsvWinchHeader);
+    if (vehicles) Open(actuators_, "actuators.csv", kCsvActuatorsHeader);
   } catch (...) {
-    for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
+    for (File* file :
+         {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
     }
@@ -115,7 +149,8 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch) : dir_(dir), 
 }
 
 CsvWriter::~CsvWriter() {
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
+  for (File* file :
+       {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
 }
@@ -137,7 +172,8 @@ void CsvWriter::Check(const File& file) const {
   }
 }
 
-void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us) {
+void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us,
+                      const std::vector<bool>& failsafe) {
   if (bodies_.f == nullptr) throw std::runtime_error("CsvWriter::Write after Close");
   const core::Model& model = sim.model();
   const double t = sim.time();
@@ -214,6 +250,17 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
         .WriteTo(winch_file_.f);
     Check(winch_file_);
   }
+  if (actuators_.f != nullptr) WriteActuators(sim, failsafe);
+}
+
+void CsvWriter::WriteActuators(const core::Simulation& sim, const std::vector<bool>& failsafe) {
+  const double t = sim.time();
+  for (int v = 0; v < sim.num_vehicles(); ++v) {
+    const bool in_failsafe = v < static_cast<int>(failsafe.size()) && failsafe[v];
+    WriteActuatorRow(actuators_.f, t, sim.body_name(sim.num_spheres() + v), sim.vehicle_command(v),
+                     sim.vehicle_state(v), in_failsafe);
+  }
+  Check(actuators_);
 }
 
 void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
@@ -228,7 +275,8 @@ void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
 
 void CsvWriter::Close() {
   std::string error;
-  for (File* file : {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_}) {
+  for (File* file :
+       {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

@@ -34,6 +34,23 @@
 //               use (the rows of cable.csv at that time) (Simulation::cable_length,
 //               winch_speed, drum_tension, num_nodes; docs/winch_dds.md)
 //
+//   actuators.csv  t,body,thrust_command,rudder_command,elevator_command,
+//                  thrust,rudder,elevator,failsafe
+//               one row per vehicle (Model::vehicles order), only when the scene has vehicles:
+//               the command in force during the step that ended at t (Simulation::
+//               vehicle_command: the script's offline, the arbiter's choice over DDS; at t = 0
+//               the initial command), then the actuator states VehicleState::actuator
+//               [kThrust, kRudder, kElevator] after their rate limits and lags [N, rad, rad],
+//               and 1 if the vehicle was in failsafe (dds/command_arbiter.h) during that step,
+//               else 0 (offline: always 0) (docs/command_line.md, "Output files")
+//
+// And one file that only towsim_export writes (app/export/export_csv.h), from a recording:
+//   commands.csv  t,body,step,thrust,rudder,elevator
+//               one row per ActuatorCommand recorded on rt/<ns>/<body>/command, in recorded
+//               order, only when the recording holds any: the command's header stamp [s], the
+//               step it answers, thrust [N], rudder and elevator [rad] as sent (before the
+//               node's checks: a rejected NaN is written as nan, a clamped value as sent)
+//
 // Spheres: their frame stays aligned with the world, so roll = pitch = yaw = 0, p = q = r = 0,
 // (u, v, w) is the world velocity and the moment is 0.
 //
@@ -43,6 +60,7 @@
 
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "core/simulation.h"
 
@@ -56,6 +74,9 @@ inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wa
 inline constexpr char kCsvEnvironmentHeader[] =
     "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
 inline constexpr char kCsvWinchHeader[] = "t,paid_out_length,winch_speed,drum_tension,node_count";
+inline constexpr char kCsvActuatorsHeader[] =
+    "t,body,thrust_command,rudder_command,elevator_command,thrust,rudder,elevator,failsafe";
+inline constexpr char kCsvCommandsHeader[] = "t,body,step,thrust,rudder,elevator";
 
 // whether a run in `env` writes environment.csv: it has waves, a (non-zero) current or a seabed
 bool HasSea(const core::Environment& env);
@@ -73,23 +94,37 @@ void AppendCsvNumber(double x, std::string* line);
 void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
                          double altitude, double depth, double u, double v, double w);
 
+// one actuators.csv row (header kCsvActuatorsHeader) at time t [s] for the vehicle `body`: the
+// command in force, the actuator states of `state` and the failsafe flag as 0 / 1
+void WriteActuatorRow(std::FILE* f, double t, const std::string& body,
+                      const core::VehicleCommand& command, const core::VehicleState& state,
+                      bool failsafe);
+
+// one commands.csv row (header kCsvCommandsHeader): a recorded command stamped t [s] for `body`
+void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned long long step,
+                     double thrust, double rudder, double elevator);
+
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
-  // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has cable.winch)
-  // and writes their headers; throws std::runtime_error
-  // naming the path if a file cannot be opened
-  explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false);
+  // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has cable.winch;
+  // actuators.csv when `vehicles`, the scene has vehicles) and writes their headers; throws
+  // std::runtime_error naming the path if a file cannot be opened
+  explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false,
+                     bool vehicles = false);
   ~CsvWriter();  // closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
 
   // appends one row set for the current state of `sim`: one row per body, one per cable node,
   // one per body and held cable end in forces.csv, one status row (and one per body in
-  // environment.csv when it is written). `status` is the status of
-  // the step that produced the state (a default StepStatus at t = 0), `wall_us` its wall time.
-  // Throws std::runtime_error if writing fails (e.g. disk full).
-  void Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us);
+  // environment.csv when it is written, one per vehicle in actuators.csv). `status` is the
+  // status of the step that produced the state (a default StepStatus at t = 0), `wall_us` its
+  // wall time; `failsafe[v]` whether vehicle v was in failsafe during that step (a vehicle
+  // beyond its size: not; offline: empty). Throws std::runtime_error if writing fails (e.g.
+  // disk full).
+  void Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us,
+             const std::vector<bool>& failsafe = {});
 
   // flushes and closes the files; further Write() calls throw. Throws std::runtime_error if
   // the final flush fails.
@@ -105,6 +140,7 @@ class CsvWriter {
   void Open(File& file, const char* name, const char* header);
   void Check(const File& file) const;
   void WriteEnvironment(const core::Simulation& sim);
+  void WriteActuators(const core::Simulation& sim, const std::vector<bool>& failsafe);
 
   std::string dir_;
   bool winch_ = false;
@@ -114,6 +150,7 @@ class CsvWriter {
   File status_;
   File environment_;  // f == nullptr: not written (a calm scene)
   File winch_file_;   // f == nullptr: not written (no winch)
+  File actuators_;    // f == nullptr: not written (no vehicles)
 };
 
 }  // namespace towsim::io

@@ -4,13 +4,15 @@
 // set to the CSV output rate. The only rows that cannot come back are the support reactions
 // of cable ends held by fixed / driven points ("cable.start", "cable.end" in forces.csv): they
 // are not published. --info lists the topics; a damaged recording exits 2 naming the offset.
-// A sea scene's environment topic comes back as the node's environment.csv. DDS domains 91,
-// 92, 134 and 188.
+// A sea scene's environment topic comes back as the node's environment.csv; the commands
+// towsim_record captured come back as commands.csv. DDS domains 91, 92, 134, 188 and 198.
 #include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -142,6 +144,85 @@ TEST_F(ExportRoundTrip, TwoVehiclesRecordedAndExportedEqualsTheNodesCsv) {
   // calm water: neither the node nor the export writes environment.csv (no such topic)
   EXPECT_FALSE(fs::exists(dir_ / "node/environment.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "exported/environment.csv"));
+  // sim_node --record holds no commands (it publishes none): no commands.csv; the node's own
+  // actuators.csv is not on the wire either
+  EXPECT_TRUE(fs::exists(dir_ / "node/actuators.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "exported/commands.csv"));
+}
+
+// the commands a controller sent, recorded by towsim_record beside a lockstep node (Case 1,
+// test_controller with a rudder step at 0.5 s), exported as commands.csv: one row per
+// command with the step it answers, and the command answering step k is the one the node's
+// actuators.csv shows in force at step k + 1 (same printed digits). DDS domain 198.
+TEST_F(ExportRoundTrip, RecordedCommandsExportedAsCommandsCsvMatchTheNodesActuatorsCsv) {
+  constexpr int kDomain = 198;
+  constexpr double kStep = 0.05;  // case1_forward.yaml time.step [s]
+  const std::string rec_file = (dir_ / "rec.mcap").string();
+  Process rec({TOWSIM_RECORD, "--output", rec_file, "--domain", std::to_string(kDomain), "--quiet"},
+              (dir_ / "rec").string());
+  // the lockstep node waits for the controller; the recorder starts on the node's scene_info
+  Process node({TOWSIM_SIM_NODE, "--scene",
+                std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml", "--mode",
+                "lockstep", "--domain", std::to_string(kDomain), "--duration", "2", "--csv",
+                (dir_ / "node").string()},
+               (dir_ / "node").string());
+  for (int i = 0; i < 1000 && rec.running() &&
+                  rec.err().find("towsim_record: recording") == std::string::npos;
+       ++i) {
+    ::usleep(20'000);
+  }
+  ASSERT_NE(rec.err().find("towsim_record: recording"), std::string::npos) << rec.err();
+  ::usleep(1'000'000);  // the recorder's readers match the node's writers, then the controller's
+  Process controller({TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(kDomain), "--command",
+                      "tow_vehicle@0=4165,0,0", "--command", "tow_vehicle@0.5=4165,0.3,-0.05"},
+                     (dir_ / "controller").string());
+  ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
+  ASSERT_EQ(node.exit_code(), 0) << node.err();
+  ASSERT_TRUE(rec.Wait(20.0)) << "the recorder did not end with the node's run";
+  ASSERT_EQ(rec.exit_code(), 0) << rec.err();
+  controller.Wait(20.0);
+
+  Process exp = Export({rec_file, "--csv", (dir_ / "exported").string()}, "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  EXPECT_NE(exp.err().find(", commands "), std::string::npos) << exp.err();
+  const auto commands = Lines((dir_ / "exported/commands.csv").string());
+  ASSERT_FALSE(commands.empty());
+  EXPECT_EQ(commands[0], "t,body,step,thrust,rudder,elevator");
+  // (body, step) -> "thrust,rudder,elevator" as printed
+  std::map<std::pair<std::string, long>, std::string> sent;
+  for (std::size_t i = 1; i < commands.size(); ++i) {
+    std::vector<std::string> f;
+    std::stringstream in(commands[i]);
+    for (std::string x; std::getline(in, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 6u) << commands[i];
+    const long step = std::stol(f[2]);
+    EXPECT_NEAR(std::stod(f[0]), step * kStep, 1e-9) << "t = the stamp of step k: " << commands[i];
+    sent[{f[1], step}] = f[3] + "," + f[4] + "," + f[5];
+  }
+  // 40 steps, two commanded vehicles
+  EXPECT_GE(sent.size(), 80u);
+  EXPECT_EQ((sent[{"tow_vehicle", 5}]), "4165,0,0");
+  EXPECT_EQ((sent[{"tow_vehicle", 10}]), "4165,0.3,-0.05");
+  EXPECT_EQ((sent[{"towfish", 10}]), "0,0,0");
+
+  const auto actuators = Lines((dir_ / "node/actuators.csv").string());
+  ASSERT_EQ(actuators.size(), 1 + 2 * 21u) << "two vehicles at t = 0, 0.1, ..., 2";
+  int matched = 0;
+  for (std::size_t i = 1; i < actuators.size(); ++i) {
+    std::vector<std::string> f;
+    std::stringstream in(actuators[i]);
+    for (std::string x; std::getline(in, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 9u) << actuators[i];
+    EXPECT_EQ(f[8], "0") << "no failsafe: " << actuators[i];
+    const long k = std::lround(std::stod(f[0]) / kStep);
+    if (k == 0) continue;
+    const auto it = sent.find({f[1], k - 1});
+    ASSERT_NE(it, sent.end()) << "no command recorded for " << f[1] << " at step " << k - 1;
+    EXPECT_EQ(f[2] + "," + f[3] + "," + f[4], it->second) << actuators[i];
+    ++matched;
+  }
+  EXPECT_EQ(matched, 2 * 20);
 }
 
 // the sea on the wire (docs/environment.md): the steady tow in regular head waves, a sheared

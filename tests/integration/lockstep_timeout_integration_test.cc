@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdlib>
 #include <string>
 #include <thread>
@@ -101,6 +102,23 @@ TEST_F(LockstepTimeoutTest, PauseLongerThanTheTimeoutExits5NamingBodyAndStep) {
   ASSERT_GE(bodies.rows.size(), 2u);
   EXPECT_NEAR(std::strtod(bodies.rows.back()[0].c_str(), nullptr), 11 * kStep, 1e-9);
   EXPECT_EQ(bodies.rows.size(), 2u * 7u);  // t = 0, 0.1, ..., 0.5 and the last, 0.55
+
+  // actuators.csv: the arbiter's failsafe flag of the step that led to each row: 0 up to
+  // t = 0.5, 1 for both vehicles in the last row (step 11, taken in failsafe: zero thrust,
+  // fins centred)
+  const CsvTable actuators = ReadCsv(csv + "/actuators.csv");
+  ASSERT_EQ(actuators.header.size(), 9u);
+  EXPECT_EQ(actuators.header.back(), "failsafe");
+  ASSERT_EQ(actuators.rows.size(), 2u * 7u);
+  for (std::size_t i = 0; i < actuators.rows.size(); ++i) {
+    const std::vector<std::string>& row = actuators.rows[i];
+    ASSERT_EQ(row.size(), 9u);
+    const bool last = i >= actuators.rows.size() - 2;
+    EXPECT_EQ(row[8], last ? "1" : "0") << "row " << i << " at t = " << row[0];
+    if (last) {
+      EXPECT_EQ(row[2] + "," + row[3] + "," + row[4], "0,0,0") << row[1];
+    }
+  }
 }
 
 // domain 95: a pause shorter than --lockstep-timeout: no timeout, exit 0

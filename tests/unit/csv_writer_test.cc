@@ -45,6 +45,15 @@ using test::TempDir;
 
 using Rows = std::vector<std::vector<std::string>>;
 
+// the whole file
+std::string FileText(const fs::path& path) {
+  std::ifstream in(path);
+  EXPECT_TRUE(in.good()) << path;
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 // header line and the rows split at commas (the names used here hold none)
 Rows ReadCsv(const fs::path& path, std::string* header) {
   std::ifstream in(path);
@@ -192,6 +201,88 @@ core::Model VehicleModel() {
       boat.position + core::QuaternionFromEulerZYX(boat.euler) * model.cable.start.at_B;
   model.spheres[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
   return model;
+}
+
+// one actuators.csv row: t, the body, the command (thrust, rudder, elevator), the actuator states
+// in VehicleActuator order, failsafe as 0 / 1; "%.9g" numbers, the name quoted if it must be
+TEST(CsvWriterTest, WriteActuatorRowWritesCommandStatesAndFailsafe) {
+  TempDir tmp;
+  const fs::path path = tmp.path() / "actuators.csv";
+  core::VehicleCommand command;
+  command.thrust = 4165.0;
+  command.rudder = 0.349065850398866;  // 20 deg
+  command.elevator = -0.1;
+  core::VehicleState state;
+  state.actuator[core::kThrust] = 1234.5;
+  state.actuator[core::kRudder] = 0.0349065850398866;  // 2 deg, rate-limited on its way
+  state.actuator[core::kElevator] = -0.0125;
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  WriteActuatorRow(f, 0.6, "tow_vehicle", command, state, false);
+  WriteActuatorRow(f, 12.25, "fish, towed", core::VehicleCommand{}, core::VehicleState{}, true);
+  std::fclose(f);
+  EXPECT_EQ(FileText(path),
+            "0.6,tow_vehicle,4165,0.34906585,-0.1,1234.5,0.034906585,-0.0125,0\n"
+            "12.25,\"fish, towed\",0,0,0,0,0,0,1\n");
+}
+
+// one commands.csv row (towsim_export): t, the body, the step as an unsigned 64-bit integer,
+// then thrust, rudder, elevator as sent (a NaN as nan)
+TEST(CsvWriterTest, WriteCommandRowWritesTheRecordedCommand) {
+  TempDir tmp;
+  const fs::path path = tmp.path() / "commands.csv";
+  std::FILE* f = std::fopen(path.c_str(), "w");
+  ASSERT_NE(f, nullptr);
+  WriteCommandRow(f, 1.05, "tow_vehicle", 21, 4165.0, 0.1, -0.2);
+  WriteCommandRow(f, 0.0, "towfish", 18446744073709551615ULL, 0.0,
+                  std::numeric_limits<double>::quiet_NaN(), 1e-12);
+  std::fclose(f);
+  EXPECT_EQ(FileText(path),
+            "1.05,tow_vehicle,21,4165,0.1,-0.2\n"
+            "0,towfish,18446744073709551615,0,nan,1e-12\n");
+}
+
+// actuators.csv of a run: one row per vehicle per Write, the accessors' command and actuator
+// states, the failsafe flag given per vehicle (none given: 0); only when asked for (vehicles)
+TEST(CsvWriterTest, ActuatorRowsAreTheVehiclesCommandsAndStates) {
+  TempDir tmp;
+  const core::Model model = VehicleModel();
+  core::Simulation sim(model);
+  CsvWriter csv(tmp.path().string(), false, false, /*vehicles=*/true);
+  csv.Write(sim, core::StepStatus{}, 0);
+  core::VehicleCommand command;
+  command.rudder = 0.2;
+  command.elevator = -0.1;
+  sim.SetVehicleCommand(0, command);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+  csv.Write(sim, core::StepStatus{}, 0, {true});
+  csv.Close();
+  std::string header;
+  const Rows rows = ReadCsv(tmp.path() / "actuators.csv", &header);
+  EXPECT_EQ(header,
+            "t,body,thrust_command,rudder_command,elevator_command,thrust,rudder,elevator,failsafe");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"0", "boat", "0", "0", "0", "0", "0", "0", "0"}));
+  ASSERT_EQ(rows[1].size(), 9u);
+  EXPECT_EQ(rows[1][1], "boat");
+  ExpectNear(rows[1][0], sim.time(), "t");
+  ExpectNear(rows[1][3], 0.2, "rudder_command");
+  ExpectNear(rows[1][4], -0.1, "elevator_command");
+  const core::VehicleState& s = sim.vehicle_state(0);
+  ExpectNear(rows[1][6], s.actuator[core::kRudder], "rudder");
+  ExpectNear(rows[1][7], s.actuator[core::kElevator], "elevator");
+  // 0.05 s at the default fin rate limit (0.5236 rad/s): under way, not there
+  EXPECT_GT(s.actuator[core::kRudder], 0.0);
+  EXPECT_LE(s.actuator[core::kRudder], 0.5236 * 0.05 + 1e-12);
+  EXPECT_EQ(rows[1][8], "1");
+
+  // a scene without vehicles (not asked for): no actuators.csv
+  TempDir plain;
+  core::Simulation fixed(TinyModel());
+  CsvWriter csv_plain(plain.path().string());
+  csv_plain.Write(fixed, core::StepStatus{}, 0);
+  csv_plain.Close();
+  EXPECT_FALSE(fs::exists(plain.path() / "actuators.csv"));
 }
 
 // a scene with a winch: status.csv ends in the paid-out length (docs/winch.md)

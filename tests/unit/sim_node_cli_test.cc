@@ -409,6 +409,67 @@ TEST(SimNodeCliTest, VehicleSceneRunsTheScript) {
   }
 }
 
+// actuators.csv of an offline run: Case 1 with a 20 deg rudder step at 0.5 s. The command
+// column is the script's command in force during the step that ended at t: it steps at the
+// first row after 0.5 s. The actual rudder (VehicleState::actuator[kRudder]) starts at 0.5 s,
+// ramps at the vehicle file's rate limit (config/vehicles/tow_vehicle.yaml: rudder.max_rate_deg
+// 20) while the servo lag's demand (u - x) / T exceeds it (until 1 deg short, T = 0.05 s), and
+// reaches the command; failsafe is 0 offline. The towfish, never commanded, stays at 0.
+TEST(SimNodeCliTest, OfflineRudderStepIsInActuatorsCsv) {
+  TempDir tmp;
+  const fs::path csv = tmp.path() / "csv";
+  const SimNodeResult r = RunSimNode(
+      {"--scene", kCase1, "--mode", "offline", "--duration", "2", "--csv", csv.string(), "--set",
+       "script=[{at: 0, body: tow_vehicle, thrust: 4165}, "
+       "{at: 0.5, body: tow_vehicle, rudder_deg: 20}]"},
+      tmp.path());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<std::string> act = Lines(ReadFile(csv / "actuators.csv"));
+  ASSERT_FALSE(act.empty());
+  EXPECT_EQ(act[0],
+            "t,body,thrust_command,rudder_command,elevator_command,thrust,rudder,elevator,failsafe");
+  ASSERT_EQ(act.size(), 1 + 2 * 21u) << "one row per vehicle at t = 0, 0.1, ..., 2";
+  EXPECT_EQ(Times(act), Times(Lines(ReadFile(csv / "bodies.csv"))));
+  EXPECT_EQ(act[1], "0,tow_vehicle,0,0,0,0,0,0,0") << "t = 0: the initial command and state";
+
+  const double pi = std::acos(-1.0);
+  const double kStep = 20.0 * pi / 180.0;  // the scripted rudder [rad]
+  const double kRate = 20.0 * pi / 180.0;  // tow_vehicle.yaml rudder.max_rate_deg [rad/s]
+  constexpr double kDt = 0.1;              // the output interval (case1: output_rate 10)
+  constexpr double kStepAt = 0.5;          // [s]
+  // "%.9g" of values <= 0.35 rad, and RK4 of a constant rate: exact to the printed digits
+  constexpr double kPrintTol = 1e-8;
+  double previous = 0.0;
+  for (int k = 0; k <= 20; ++k) {
+    const double t = k * kDt;
+    std::ostringstream name;
+    name << t;
+    SCOPED_TRACE("t = " + name.str());
+    const double command = Value(act, name.str(), "tow_vehicle", 3);
+    const double rudder = Value(act, name.str(), "tow_vehicle", 6);
+    // the command steps at the first row after the scripted time
+    EXPECT_NEAR(command, t <= kStepAt + 1e-9 ? 0.0 : kStep, kPrintTol);
+    EXPECT_EQ(Value(act, name.str(), "tow_vehicle", 2), k == 0 ? 0.0 : 4165.0) << "thrust command";
+    EXPECT_EQ(Value(act, name.str(), "tow_vehicle", 9), 0.0) << "failsafe offline";
+    EXPECT_EQ(Value(act, name.str(), "towfish", 6), 0.0) << "the towfish's rudder";
+    // never faster than the rate limit
+    EXPECT_LE(rudder - previous, kRate * kDt + kPrintTol);
+    const double ramp = kRate * std::max(0.0, t - kStepAt);
+    if (ramp <= kStep - kRate * 0.05) {
+      // on the ramp: slope = the rate limit exactly
+      EXPECT_NEAR(rudder, ramp, kPrintTol);
+    } else {
+      // the last degree: the servo lag closes it (1 deg e^{-(t - 1.45 s) / 0.05 s})
+      EXPECT_LE(rudder, kStep + kPrintTol);
+      EXPECT_GE(rudder, kStep - kRate * 0.05);
+    }
+    previous = rudder;
+  }
+  // reached: the last degree decays by RK4's 0.375 per 0.05 s step (lambda h = -1) over the
+  // 0.55 s after the ramp: 0.375^11 of a degree, 4e-7 rad
+  EXPECT_NEAR(Value(act, "2", "tow_vehicle", 6), kStep, 1e-6);
+}
+
 TEST(SimNodeCliTest, BadScriptConditionExitsTwo) {
   TempDir tmp;
   const SimNodeResult r = RunSimNode(

@@ -11,6 +11,7 @@
 #include <optional>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "core/vehicle_model.h"
@@ -22,6 +23,7 @@
 namespace towsim::app {
 namespace {
 
+using io::cdr::ActuatorCommand;
 using io::cdr::BodyEnvironment;
 using io::cdr::CableState;
 using io::cdr::Odometry;
@@ -77,10 +79,10 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
 ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                        const std::string& ns) {
   // the channels of the node under `ns`, by what they carry
-  enum class Kind { kOdom, kForce, kEnvironment, kCable, kStatus, kSceneInfo };
+  enum class Kind { kOdom, kForce, kEnvironment, kCable, kStatus, kSceneInfo, kCommand };
   struct Route {
     Kind kind;
-    std::string body;  // kOdom, kForce, kEnvironment
+    std::string body;  // kOdom, kForce, kEnvironment, kCommand
   };
   bool sea = false;  // environment topics: environment.csv is written
   std::map<std::uint16_t, Route> routes;
@@ -121,6 +123,10 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
       expect("towsim_msgs/msg/BodyEnvironment");
       routes[id] = {Kind::kEnvironment, rest.substr(0, slash)};
       sea = true;
+    } else if (slash != std::string::npos && rest.substr(slash) == "/command" &&
+               type == "towsim_msgs/msg/ActuatorCommand" && channel.message_encoding == "cdr") {
+      // a vehicle's commands (the winch's, towsim_msgs/WinchCommand, are not exported)
+      routes[id] = {Kind::kCommand, rest.substr(0, slash)};
     }
   }
   if (routes.empty()) {
@@ -135,6 +141,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   std::vector<io::cdr::SimStatus> statuses;
   std::optional<std::vector<std::string>> scene_bodies;
   bool has_winch = false;  // the scene info says so: winch.csv, as the node writes it
+  std::vector<std::pair<std::string, ActuatorCommand>> commands;  // (body, command), recorded order
   std::uint64_t index = 0;
   reader.ForEachMessage([&](const io::McapMessage& m) {
     ++index;
@@ -176,6 +183,9 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           statuses.push_back(std::move(s));
           break;
         }
+        case Kind::kCommand:
+          commands.emplace_back(route->second.body, io::cdr::DecodeActuatorCommand(p, n));
+          break;
         case Kind::kSceneInfo:
           if (!scene_bodies) {
             io::cdr::SceneInfo info = io::cdr::DecodeSceneInfo(p, n);
@@ -211,6 +221,15 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   std::optional<CsvFile> winch_csv;
   if (has_winch) winch_csv.emplace(d / "winch.csv", io::kCsvWinchHeader);
   ExportCounts counts;
+  if (!commands.empty()) {
+    CsvFile commands_csv(d / "commands.csv", io::kCsvCommandsHeader);
+    for (const auto& [body, c] : commands) {
+      io::WriteCommandRow(commands_csv.get(), 1e-9 * static_cast<double>(StampNs(c.header.stamp)),
+                          body, c.step, c.thrust, c.rudder, c.elevator);
+    }
+    commands_csv.Close();
+    counts.commands_rows = commands.size();
+  }
 
   for (const auto& [stamp, frame] : frames) {
     const auto exact = sim_time_of_stamp.find(stamp);

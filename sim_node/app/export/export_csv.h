@@ -19,6 +19,11 @@
 //                                                 cable_length from the newest cable state
 //                                                 at or before the status)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
+//   NS/<b>/command     towsim_msgs/ActuatorCommand -> commands.csv (t,body,step,thrust,rudder,
+//                                                 elevator; t = the command's stamp; one row per
+//                                                 message in recorded order; written only when
+//                                                 the recording holds commands: towsim_record
+//                                                 captures them, sim_node --record does not)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).
 // Not on the wire, hence not exported: the forces.csv rows of cable ends held by fixed or
@@ -36,6 +41,7 @@ struct ExportCounts {
   std::uint64_t bodies_rows = 0, cable_rows = 0, forces_rows = 0, status_rows = 0;
   std::uint64_t environment_rows = 0;
   std::uint64_t winch_rows = 0;  // a scene with a winch
+  std::uint64_t commands_rows = 0;  // a recording with the vehicles' commands
 };
 
 // reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files

@@ -31,6 +31,7 @@ using towsim::app::kExitOk;
 constexpr char kUsage[] =
     "usage: towsim_export FILE.mcap [--csv DIR] [--info] [--namespace NS] [--recover]\n"
     "  --csv DIR         write bodies.csv, cable.csv, forces.csv, status.csv into DIR\n"
+    "                    (and winch.csv, environment.csv, commands.csv when recorded)\n"
     "  --info            print topics, types, counts and the time range (like ros2 bag info)\n"
     "  --namespace NS    the node's namespace in the recording (default /towsim)\n"
     "  --recover         read what a killed recorder or damage left: every intact chunk;\n"
@@ -104,17 +105,17 @@ int main(int argc, char** argv) {
     if (o.info) std::printf("%s", towsim::app::RecordingInfo(reader, o.file, o.recover).c_str());
     if (!o.csv_dir.empty()) {
       const auto n = towsim::app::ExportCsv(reader, o.csv_dir, o.ns);
-      std::fprintf(stderr,
-                   "towsim_export: %s -> %s: bodies %llu rows, cable %llu, forces %llu, status "
-                   "%llu%s\n",
-                   o.file.c_str(), o.csv_dir.c_str(),
-                   static_cast<unsigned long long>(n.bodies_rows),
-                   static_cast<unsigned long long>(n.cable_rows),
-                   static_cast<unsigned long long>(n.forces_rows),
-                   static_cast<unsigned long long>(n.status_rows),
-                   n.environment_rows == 0
-                       ? ""
-                       : (", environment " + std::to_string(n.environment_rows)).c_str());
+      std::fprintf(
+          stderr,
+          "towsim_export: %s -> %s: bodies %llu rows, cable %llu, forces %llu, status "
+          "%llu%s%s\n",
+          o.file.c_str(), o.csv_dir.c_str(), static_cast<unsigned long long>(n.bodies_rows),
+          static_cast<unsigned long long>(n.cable_rows),
+          static_cast<unsigned long long>(n.forces_rows),
+          static_cast<unsigned long long>(n.status_rows),
+          n.environment_rows == 0 ? ""
+                                  : (", environment " + std::to_string(n.environment_rows)).c_str(),
+          n.commands_rows == 0 ? "" : (", commands " + std::to_string(n.commands_rows)).c_str());
     }
     if (!reader.skipped().empty()) {
       std::fprintf(stderr,

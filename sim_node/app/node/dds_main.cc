@@ -3,6 +3,7 @@
 // and prints as sim_node.
 
 #include <limits>
+#include <vector>
 
 #include "app/node/dds_node.h"
 #include "app/node/node_main.h"
@@ -34,7 +35,8 @@ int RunDdsModes(const towsim::core::Model& model, const towsim::app::Options& op
   dds.fail_on_failsafe = options.fail_on_failsafe;
   if (csv != nullptr) {
     dds.output = [csv](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
-                       long us) { csv->Write(s, st, us); };
+                       long us,
+                       const std::vector<bool>& failsafe) { csv->Write(s, st, us, failsafe); };
   }
   return towsim::app::RunDdsNode(model, dds);
 }

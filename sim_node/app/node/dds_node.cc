@@ -145,6 +145,7 @@ class DdsNode {
   // status, with the commands on topics of no commandable body)
   uint64_t winch_script_rejected_ = 0;
   bool output_failed_ = false;  // opt_.output threw io::OutputError
+  std::vector<bool> failsafe_;  // by vehicle, for opt_.output (reused: no allocation per output)
   // --fail-on-failsafe: why the run ends (app/node/failsafe_failure.h); empty: no failsafe yet
   std::string failsafe_failure_;
   dds::StatusSample status_;  // reused: no allocation per step
@@ -563,8 +564,13 @@ bool DdsNode::DoReset() {
 
 void DdsNode::Output(const core::StepStatus& status, long wall_us) {
   if (!opt_.output) return;
+  // the arbiter's failsafe flags by vehicle: entry i is vehicle command_vehicles[i]
+  failsafe_.assign(model_.vehicles.size(), false);
+  for (int i = 0; i < num_command_vehicles(); ++i) {
+    failsafe_[n_.command_vehicles[i]] = n_.arbiter->failsafe(i);
+  }
   try {
-    opt_.output(*n_.sim, status, wall_us);
+    opt_.output(*n_.sim, status, wall_us, failsafe_);
   } catch (const io::OutputError&) {
     output_failed_ = true;
     throw;

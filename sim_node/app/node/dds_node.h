@@ -91,8 +91,12 @@ struct DdsNodeOptions {
   // script, docs/winch_dds.md); false: commanded over DDS like a vehicle
   bool winch_script = false;
   // called with the state at t = 0, every k = max(1, round(1 / (output_rate h))) steps and at
-  // the last state (e.g. CsvWriter::Write); may throw (then RunDdsNode throws)
-  std::function<void(const core::Simulation&, const core::StepStatus&, long wall_us)> output;
+  // the last state (e.g. CsvWriter::Write), and failsafe[v]: whether vehicle v (Model::vehicles)
+  // was in failsafe during the step that led there (dds/command_arbiter.h); may throw (then
+  // RunDdsNode throws)
+  std::function<void(const core::Simulation&, const core::StepStatus&, long wall_us,
+                     const std::vector<bool>& failsafe)>
+      output;
 };
 
 // Runs the node until the duration is reached or SIGINT / SIGTERM. Returns the exit code:

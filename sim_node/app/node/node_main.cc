@@ -76,7 +76,7 @@ int Run(const Options& options, DdsModeRunner run_dds) {
   if (!options.csv_dir.empty()) {
     try {
       csv = std::make_unique<io::CsvWriter>(options.csv_dir, io::HasSea(model.environment),
-                                            model.cable.winch.has_value());
+                                            model.cable.winch.has_value(), !model.vehicles.empty());
     } catch (const io::OutputError& e) {  // opened, not written: disk full
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitError;
