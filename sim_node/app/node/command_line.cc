@@ -71,6 +71,8 @@ std::string Usage() {
          "  --foxglove PORT       DDS modes: serve every topic to Foxglove on\n"
          "                        ws://127.0.0.1:PORT (0: a free port, printed)\n"
          "  --overwrite           --record may replace an existing file\n"
+         "  --record-wall-time    --record stamps log time by the wall clock (the old\n"
+         "                        behaviour), not by the simulation time\n"
          "  --allow-another-node  DDS modes: run although another node publishes in the\n"
          "                        same domain and namespace (else exit 2; status warns)\n"
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
@@ -129,6 +131,10 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     if (arg == "--allow-another-node") {
       o.allow_another_node = true;
+      continue;
+    }
+    if (arg == "--record-wall-time") {
+      o.record_wall_time = true;
       continue;
     }
     if (arg == "--fail-on-failsafe") {
