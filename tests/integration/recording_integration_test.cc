@@ -284,7 +284,7 @@ TEST(RecordingTest, RecorderBesideTheNodeRecordsWhatTheNodeRecorded) {
 // sub-millisecond lateness and far below a wall-clock timeline's error (the run takes a few
 // seconds of wall time).
 TEST(RecordingTest, LockstepRecordingRunsOnTheSimClockAndReplaysInRealTime) {
-  constexpr int kDomain = 88, kDomainReplay = 89;
+  constexpr int kDomain = 76, kDomainReplay = 77;
   constexpr double kSimSpan = 20.0;  // [s] simulated
   constexpr double kStep = 0.05;     // [s] case1_forward's time step
   const std::string node_file = Temp("node.mcap"), rec_file = Temp("rec.mcap"),
@@ -387,7 +387,7 @@ TEST(RecordingTest, LockstepRecordingRunsOnTheSimClockAndReplaysInRealTime) {
 // the old behaviour, by its flag: sim_node --record-wall-time stamps log time by the wall
 // clock at publication (= the publish time), so a fast run records as its wall time
 TEST(RecordingTest, RecordWallTimeKeepsTheWallClockTimeline) {
-  constexpr int kDomain = 90;
+  constexpr int kDomain = 78;
   const std::string file = Temp("wall.mcap");
   const uint64_t before = static_cast<uint64_t>(dds_time());
   Process node(NodeArgs(kSteadyTow, "fast", kDomain,
