@@ -345,7 +345,9 @@ TEST(RecordingTest, LockstepRecordingRunsOnTheSimClockAndReplaysInRealTime) {
       const uint64_t t = msgs[i].log_time;
       EXPECT_EQ(t % static_cast<uint64_t>(kStep * 1e9), 0u) << topic << " " << i;
       EXPECT_LE(t, static_cast<uint64_t>(kSimSpan * 1e9)) << topic << " " << i;
-      if (i > 0) EXPECT_GE(t, msgs[i - 1].log_time) << topic << " " << i;
+      if (i > 0) {
+        EXPECT_GE(t, msgs[i - 1].log_time) << topic << " " << i;
+      }
     }
   }
   EXPECT_GT(compared, static_cast<size_t>(kSimSpan / kStep) * 5);
@@ -408,6 +410,15 @@ TEST(RecordingTest, RecordWallTimeKeepsTheWallClockTimeline) {
   }
   // the last /clock carries 5 s of simulated time; the file spans the run's wall time
   EXPECT_EQ(ClockNs(m.at("/clock").back().data), 5'000'000'000u);
+
+  // towsim_record --use-sim-time reads /clock: with --topics, /clock must be one of them
+  Process rec(RecordArgs(Temp("rec.mcap"), kDomain,
+                         {"--use-sim-time", "--topics", "/towsim/status"}),
+              Temp("rec"), Env());
+  ASSERT_TRUE(rec.Wait(20.0));
+  EXPECT_EQ(rec.exit_code(), 2);
+  EXPECT_NE(rec.err().find("--use-sim-time needs /clock among --topics"), std::string::npos)
+      << rec.err();
 }
 
 double Quantile(std::vector<double> v, double q) {

@@ -246,6 +246,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +
                 ": needs a DDS mode (realtime, fast or lockstep); offline takes no commands");
   }
+  if (o.record_wall_time && o.record_file.empty()) {
+    return fail("--record-wall-time: needs --record FILE.mcap");
+  }
   if (o.lockstep_timeout && o.mode != Mode::kLockstep) {
     return fail("--lockstep-timeout: needs --mode lockstep (the mode is " +
                 std::string(ModeName(o.mode)) + ")");
