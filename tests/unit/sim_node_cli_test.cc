@@ -210,6 +210,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadArgs{"RecordOffline",
                 {"--scene", kCatenary, "--mode", "offline", "--record", "x.mcap"},
                 {"--record x.mcap", "needs a DDS mode"}},
+        BadArgs{"RecordWallTimeWithoutRecord",
+                {"--scene", kCatenary, "--mode", "fast", "--record-wall-time"},
+                {"--record-wall-time: needs --record FILE.mcap"}},
         BadArgs{"BadWinchSource",
                 {"--scene", kCatenary, "--mode", "fast", "--winch", "manual"},
                 {"--winch manual", "must be dds or script"}},
@@ -247,6 +250,7 @@ TEST(SimNodeCliTest, HelpAndVersionExitZero) {
   EXPECT_NE(r.out.find("usage: sim_node --scene FILE"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("--lockstep-timeout S"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("--fail-on-failsafe"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--record-wall-time"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("5 failsafe or lockstep timeout"), std::string::npos) << r.out;
   r = RunSimNode({"--version"}, tmp.path());
   EXPECT_EQ(r.exit_code, 0);

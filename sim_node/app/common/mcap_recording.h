@@ -42,7 +42,9 @@ class McapRecording {
   std::uint16_t AddTopic(const std::string& dds_topic, const std::string& dds_type_name,
                          bool transient_local = false, int depth = 1);
 
-  // one message: log time (receive or publish time) and publish time [ns since the epoch]
+  // one message: log time [ns] (the simulation time, sim t = 0 at 0; or, on the wall clock,
+  // the receive or publish time since the Unix epoch: docs/recording.md) and publish time
+  // [ns since the Unix epoch]
   void Write(std::uint16_t channel, std::uint64_t log_time_ns, std::uint64_t publish_time_ns,
              const std::uint8_t* data, std::size_t size);
   // flushes the open chunk if kFlushPeriod has passed since the last flush

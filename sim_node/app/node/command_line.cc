@@ -72,6 +72,8 @@ std::string Usage() {
          "  --foxglove PORT       DDS modes: serve every topic to Foxglove on\n"
          "                        ws://127.0.0.1:PORT (0: a free port, printed)\n"
          "  --overwrite           --record may replace an existing file\n"
+         "  --record-wall-time    --record stamps log time by the wall clock (the old\n"
+         "                        behaviour), not by the simulation time\n"
          "  --allow-another-node  DDS modes: run although another node publishes in the\n"
          "                        same domain and namespace (else exit 2; status warns)\n"
          "  --paused              DDS modes: start paused; SimControl RESUME or STEP starts\n"
@@ -130,6 +132,10 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
     }
     if (arg == "--allow-another-node") {
       o.allow_another_node = true;
+      continue;
+    }
+    if (arg == "--record-wall-time") {
+      o.record_wall_time = true;
       continue;
     }
     if (arg == "--fail-on-failsafe") {
@@ -240,6 +246,9 @@ ParseResult ParseCommandLine(int argc, const char* const* argv) {
   if (o.mode == Mode::kOffline && (o.paused || o.wait_for_controllers)) {
     return fail(std::string(o.paused ? "--paused" : "--wait-for-controllers") +
                 ": needs a DDS mode (realtime, fast or lockstep); offline takes no commands");
+  }
+  if (o.record_wall_time && o.record_file.empty()) {
+    return fail("--record-wall-time: needs --record FILE.mcap");
   }
   if (o.lockstep_timeout && o.mode != Mode::kLockstep) {
     return fail("--lockstep-timeout: needs --mode lockstep (the mode is " +

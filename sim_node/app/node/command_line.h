@@ -2,7 +2,8 @@
 // The sim_node command line (docs/contract.md §5):
 //
 //   sim_node --scene FILE [--mode realtime|fast|lockstep|offline] [--duration S] [--rate R]
-//            [--set key.path=value ...] [--csv DIR] [--record FILE.mcap] [--help] [--version]
+//            [--set key.path=value ...] [--csv DIR] [--record FILE.mcap [--record-wall-time]]
+//            [--help] [--version]
 //            [--security DIR/NAME] [--lockstep-timeout S] [--fail-on-failsafe]
 //
 // Every option also accepts the --name=value form. Parsing only checks the syntax and the
@@ -27,6 +28,7 @@ struct Options {
   std::vector<std::string> overrides;  // --set key.path=value, in command-line order
   std::string csv_dir;                 // --csv DIR; empty: no CSV
   std::string record_file;             // --record FILE.mcap; empty: no recording
+  bool record_wall_time = false;       // --record-wall-time: log time = wall clock, not sim time
   bool overwrite = false;              // --overwrite: --record may replace an existing file
   bool allow_another_node = false;     // --allow-another-node: run beside another node
   std::optional<uint32_t> domain;      // --domain N: DDS domain id (DDS modes; default 0)

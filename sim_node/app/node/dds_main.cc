@@ -27,6 +27,7 @@ int RunDdsModes(const towsim::core::Model& model, const towsim::app::Options& op
   dds.record_file = options.record_file;
   dds.foxglove_port = options.foxglove_port.value_or(-1);
   dds.overwrite = options.overwrite;
+  dds.record_wall_time = options.record_wall_time;
   dds.allow_another_node = options.allow_another_node;
   dds.start_paused = options.paused;
   dds.wait_for_controllers = options.wait_for_controllers;

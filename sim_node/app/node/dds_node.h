@@ -80,6 +80,8 @@ struct DdsNodeOptions {
   // publishes (docs/foxglove.md; 0: a free port); < 0: none
   int foxglove_port = -1;
   bool overwrite = false;  // record_file may replace an existing file (else exit 2)
+  // record_file's log time = the wall clock (else the simulation time, docs/recording.md)
+  bool record_wall_time = false;
   // run although another node publishes in this domain and namespace (else exit 2; the
   // status warns either way, app/node/peer_nodes.h)
   bool allow_another_node = false;

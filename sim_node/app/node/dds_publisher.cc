@@ -88,7 +88,7 @@ void NodeEndpoints::Emit(dds::Writer<T>& writer, const Recorded& recorded, const
   }
   sample.CopyTo(&buffer_);
   if (recording_ != nullptr) {
-    recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+    recording_->Write(recorded.channel, RecordLogTime(now), static_cast<uint64_t>(now),
                       buffer_.data(), buffer_.size());
   }
   if (served) fox_->Publish(recorded.fox, sim_ns_, buffer_.data(), buffer_.size());
@@ -106,7 +106,7 @@ void NodeEndpoints::EmitAlways(dds::Writer<T>& writer, const Recorded& recorded,
   if (rc < 0) throw dds::DdsError("writing to " + writer.topic_name(), rc);
   s.CopyTo(&buffer_);
   if (recording_ != nullptr) {
-    recording_->Write(recorded.channel, static_cast<uint64_t>(now), static_cast<uint64_t>(now),
+    recording_->Write(recorded.channel, RecordLogTime(now), static_cast<uint64_t>(now),
                       buffer_.data(), buffer_.size());
   }
   // latched: kept for the clients that subscribe later
@@ -169,8 +169,10 @@ NodeEndpoints::Recorded NodeEndpoints::AddRecorded(const dds::Participant& parti
   return r;
 }
 
-void NodeEndpoints::StartRecording(const dds::Participant& participant, McapRecording* recording) {
+void NodeEndpoints::StartRecording(const dds::Participant& participant, McapRecording* recording,
+                                   bool wall_time) {
   recording_ = recording;
+  record_wall_time_ = wall_time;
   if (recording_ == nullptr) return;
   scene_rec_ = AddRecorded(participant, scene_.topic_name(), &towsim_msgs_msg_dds__SceneInfo__desc,
                            /*transient_local=*/true);

@@ -42,9 +42,13 @@ class NodeEndpoints {
   void PublishStatus(const dds::StatusSample& sample);
   void PublishSceneInfo(const dds::SceneInfoSample& sample);
   // from now on, every message published is also written to `recording` (one channel per
-  // writer); throws dds::DdsError (serializer probe) or std::invalid_argument (a type without
-  // ROS 2 definition)
-  void StartRecording(const dds::Participant& participant, McapRecording* recording);
+  // writer), log time = the message's simulation time (sim t = 0 at log time 0 ns, the epoch
+  // of its header stamps, docs/recording_formats.md) or, with `wall_time`, the wall clock of
+  // its publication; publish time = the wall clock of its publication (its DDS source
+  // timestamp) either way. Throws dds::DdsError (serializer probe) or std::invalid_argument (a
+  // type without ROS 2 definition).
+  void StartRecording(const dds::Participant& participant, McapRecording* recording,
+                      bool wall_time = false);
   // from now on, every message is also served to the Foxglove clients of `server` subscribed
   // to its channel (one channel per writer, docs/foxglove.md; scene info and /tf_static
   // latched), log time = the simulation time; clients may publish commands and sim_control
@@ -93,6 +97,11 @@ class NodeEndpoints {
   // writes `msg` whether matched or not (transient local topics) and records it
   template <class T>
   void EmitAlways(dds::Writer<T>& writer, const Recorded& recorded, const void* msg);
+  // the log time of a message published at wall time `now` [ns]: its simulation time, or
+  // `now` with --record-wall-time
+  std::uint64_t RecordLogTime(std::int64_t now) const {
+    return record_wall_time_ ? static_cast<std::uint64_t>(now) : sim_ns_;
+  }
   Recorded AddRecorded(const dds::Participant& participant, const std::string& topic,
                        const dds_topic_descriptor_t* descriptor, bool transient_local);
 
@@ -119,6 +128,7 @@ class NodeEndpoints {
   std::unique_ptr<dds::TransformsMessage> tf_static_msg_;
 
   McapRecording* recording_ = nullptr;
+  bool record_wall_time_ = false;  // log time = wall clock (--record-wall-time)
   std::vector<std::unique_ptr<dds::RawType>> raw_types_;  // one per type recorded
   Recorded status_rec_, scene_rec_, tf_static_rec_;
   std::vector<std::uint8_t> buffer_;  // the bytes of the message being recorded

@@ -158,7 +158,7 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
   if (!opt.record_file.empty()) {
     try {
       n.recording = std::make_unique<McapRecording>(opt.record_file, opt.overwrite);
-      n.endpoints->StartRecording(*n.participant, n.recording.get());
+      n.endpoints->StartRecording(*n.participant, n.recording.get(), opt.record_wall_time);
     } catch (const io::OutputError& e) {  // created, not written: disk full
       std::fprintf(stderr, "sim_node: error: --record %s: %s\n", opt.record_file.c_str(), e.what());
       return kExitError;

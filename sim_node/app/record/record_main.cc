@@ -1,7 +1,7 @@
 // towsim_record: records the topics of a towsim node from DDS into MCAP.
 //
 //   towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]
-//                 [--duration S] [--overwrite] [--quiet]
+//                 [--duration S] [--use-sim-time] [--overwrite] [--quiet]
 //                 [--security DIR/NAME]
 //
 // The file is created exclusively: one that exists is refused (exit 2) unless --overwrite,
@@ -15,7 +15,10 @@
 // --topics given (ROS names, "/towsim/towfish/odom"). The payloads are stored as received
 // (dds_takecdr: the CDR bytes, never deserialized and serialized again), log time = the wall
 // clock when taken from the reader (receive time), publish time = the writer's source
-// timestamp, as rosbag2 does. Readers are reliable with keep-all history (XCDR1), so a node in
+// timestamp, as rosbag2 does. With --use-sim-time (rosbag2's option of that name) the receive
+// time is read from /clock instead: log time = the last /clock value taken (0 before the
+// first), so the file's timeline is the simulation time of `sim_node --record`
+// (docs/recording.md). Readers are reliable with keep-all history (XCDR1), so a node in
 // fast or lockstep mode loses nothing to the recorder (the reliable protocol holds the node's
 // writer back instead).
 //
@@ -70,7 +73,8 @@ namespace wire = towsim::wire;
 
 const char* kUsage =
     "usage: towsim_record --output FILE.mcap [--domain N] [--namespace NS] [--topics T ...]\n"
-    "                     [--duration S] [--overwrite] [--quiet] [--security DIR/NAME]\n"
+    "                     [--duration S] [--use-sim-time] [--overwrite] [--quiet]\n"
+    "                     [--security DIR/NAME]\n"
     "  --output FILE.mcap  the recording (created; refused if it exists)\n"
     "  --overwrite         replace FILE.mcap if it exists (never while another writer holds it)\n"
     "  --domain N          DDS domain id (default 0)\n"
@@ -78,6 +82,8 @@ const char* kUsage =
     "  --topics T ...      only these topics (ROS names: /towsim/towfish/odom /clock ...);\n"
     "                      default: every towsim topic of the namespace and /clock\n"
     "  --duration S        stop after S seconds of wall time (> 0)\n"
+    "  --use-sim-time      log time = the last /clock received (simulation time), not the\n"
+    "                      wall clock; with --topics, /clock must be one of them\n"
     "  --quiet             no progress line\n"
     "  --security DIR/NAME DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
     "                      docs/security.md)\n"
@@ -91,6 +97,7 @@ struct Options {
   double duration = INFINITY;
   bool quiet = false;
   bool overwrite = false;
+  bool use_sim_time = false;  // log time from /clock
   std::string security;  // --security DIR/NAME (wire/security.h); empty: none
 };
 
@@ -104,6 +111,7 @@ towsim::app::ToolCommandLine CommandLine(Options* o) {
   towsim::app::ToolCommandLine line("towsim_record", kUsage);
   line.Shared(towsim::app::DdsToolOptions({&o->domain, &o->ns, &o->security, &o->quiet}))
       .Flag("--overwrite", &o->overwrite)
+      .Flag("--use-sim-time", &o->use_sim_time)
       .Value("--output", &o->output)
       .Value("--duration",
              [o](const std::string& v) -> std::string {
@@ -118,7 +126,12 @@ towsim::app::ToolCommandLine CommandLine(Options* o) {
           "--topics",
           [o](towsim::app::ToolFlags& flags) { return towsim::app::ReadTopics(flags, &o->topics); })
       .Require(
-          [o]() -> std::string { return o->output.empty() ? "missing --output FILE.mcap" : ""; });
+          [o]() -> std::string { return o->output.empty() ? "missing --output FILE.mcap" : ""; })
+      .Require([o]() -> std::string {
+        const bool clock = o->topics.empty() || std::find(o->topics.begin(), o->topics.end(),
+                                                          "/clock") != o->topics.end();
+        return o->use_sim_time && !clock ? "--use-sim-time needs /clock among --topics" : "";
+      });
   return line;
 }
 
@@ -160,7 +173,8 @@ class Recorder {
   dds::WaitSet waitset_;
   std::unique_ptr<McapRecording> recording_;
   std::vector<std::unique_ptr<Subscription>> subs_;
-  std::unique_ptr<dds::RawType> scene_type_, status_type_;
+  std::unique_ptr<dds::RawType> scene_type_, status_type_, clock_type_;
+  uint64_t sim_now_ = 0;  // the last /clock taken [ns] (--use-sim-time)
   std::vector<std::string> bodies_;
   bool have_scene_ = false;
   double start_ = 0.0, last_progress_ = -1.0;
@@ -195,9 +209,17 @@ bool Recorder::TakeAll() {
   for (auto& s : subs_) {
     const bool is_scene = s->descriptor == &towsim_msgs_msg_dds__SceneInfo__desc;
     const bool is_status = s->descriptor == &towsim_msgs_msg_dds__SimStatus__desc;
+    const bool is_clock = s->descriptor == &rosgraph_msgs_msg_dds__Clock__desc;
     const int n = dds::TakeRaw(
         s->reader.get(), [&](const uint8_t* p, size_t size, const dds_sample_info_t& info) {
-          const uint64_t received = static_cast<uint64_t>(dds_time());
+          if (is_clock && opt_.use_sim_time) {
+            dds::ClockMsg msg{};
+            if (clock_type_->Deserialize(p, size, &msg) && msg.clock.sec >= 0) {
+              sim_now_ = static_cast<uint64_t>(msg.clock.sec) * 1'000'000'000u + msg.clock.nanosec;
+            }
+          }
+          const uint64_t received =
+              opt_.use_sim_time ? sim_now_ : static_cast<uint64_t>(dds_time());
           recording_->Write(s->channel, received, static_cast<uint64_t>(info.source_timestamp), p,
                             size);
           ++s->count;
@@ -252,6 +274,7 @@ int Recorder::Run() {
   scene_type_ = std::make_unique<dds::RawType>(participant_, &towsim_msgs_msg_dds__SceneInfo__desc);
   status_type_ =
       std::make_unique<dds::RawType>(participant_, &towsim_msgs_msg_dds__SimStatus__desc);
+  clock_type_ = std::make_unique<dds::RawType>(participant_, &rosgraph_msgs_msg_dds__Clock__desc);
 
   // the explicit topic list: every one must be a towsim topic of the namespace; bodies come
   // from the names (<ns>/<body>/odom ...)

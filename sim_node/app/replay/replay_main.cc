@@ -8,8 +8,10 @@
 // Cyclone validates them against the type) on a writer of the channel's type (the schema name,
 // "nav_msgs/msg/Odometry", mapped to the generated descriptor of msgs/) with the QoS of the
 // towsim topics (docs/contract.md §3: reliable keep-last 1; scene_info transient local). Timing: message
-// i is written at t0 + (log_time_i - log_time_first) / rate of wall time (log time = receive
-// time of towsim_record, publish time of sim_node --record); --rate 0 or --fast: as fast as
+// i is written at t0 + (log_time_i - log_time_first) / rate of wall time, on the recording's
+// own clock: the simulation time for sim_node --record and towsim_record --use-sim-time (so
+// --rate 1 plays a lockstep run at real time), the wall clock for sim_node --record-wall-time
+// and towsim_record (receive time), docs/recording.md; --rate 0 or --fast: as fast as
 // possible. /clock is replayed like any topic, so nodes with use_sim_time follow it.
 //
 // Discovery: the first scene_info message (if replayed) is written first, then the replay
