@@ -46,7 +46,9 @@ TEST(SweepCase, CommandShRunsTheCaseAndWritesItsStatus) {
   ASSERT_EQ(std::system(("chmod +x '" + fake + "'").c_str()), 0);
   const std::vector<std::string> args = {"--set", "script=[{at: 0, thrust: 1}]", "--set",
                                          "name=it's"};
-  PrepareCase(case_dir, fake, args);
+  CaseRunner runner;
+  runner.sim_node = fake;
+  PrepareCase(case_dir, runner, args);
   EXPECT_TRUE(SameArguments(case_dir, args));
   EXPECT_FALSE(SameArguments(case_dir, {"--set", "other"}));
   EXPECT_FALSE(ReadCaseStatus(case_dir));  // not run yet
