@@ -143,6 +143,7 @@ void WriteCaseStatus(const std::string& case_dir, const CaseStatus& status) {
   char text[96];
   std::snprintf(text, sizeof text, "exit_code=%d\nwall_s=%.3f\n", status.exit_code, status.wall_s);
   std::string all = text;
+  if (status.domain >= 0) all += "domain=" + std::to_string(status.domain) + "\n";
   if (!status.message.empty()) {
     std::string line = status.message;
     for (char& ch : line) ch = ch == '\n' || ch == '\r' ? ' ' : ch;
@@ -164,6 +165,8 @@ std::optional<CaseStatus> ReadCaseStatus(const std::string& case_dir) {
     } else if (line.rfind("wall_s=", 0) == 0) {
       s.wall_s = std::atof(line.c_str() + 7);
       wall = true;
+    } else if (line.rfind("domain=", 0) == 0) {
+      s.domain = std::atoi(line.c_str() + 7);
     } else if (line.rfind("message=", 0) == 0) {
       s.message = line.substr(8);
     }

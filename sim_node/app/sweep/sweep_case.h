@@ -8,8 +8,8 @@
 //                     --resume): "controller <name> <n>", then n lines: the program, the args
 //   sim_node.out/.err sim_node's stdout (the summary line) and stderr; <controller>.out/.err
 //   bodies.csv cable.csv forces.csv status.csv   the CSV files of --csv
-//   case_status.txt   "exit_code=N", "wall_s=S" and, when a controller failed,
-//                     "message=..." written (atomically) when the run ended
+//   case_status.txt   "exit_code=N", "wall_s=S", with controllers "domain=D" and, when a
+//                     controller failed, "message=...", written (atomically) when it ended
 // A case without case_status.txt has not run (or was stopped); with it, it is finished.
 
 #include <optional>
@@ -63,6 +63,7 @@ struct CaseStatus {
   int exit_code = 0;
   double wall_s = 0.0;
   std::string message;  // a controller's failure (one line); empty: sim_node's stderr says
+  int domain = -1;      // the DDS domain id it ran on (with controllers), else -1
 };
 
 // writes case_status.txt atomically (a temporary file renamed); throws std::runtime_error

@@ -99,6 +99,7 @@ CaseOutcome CaseJudge::Outcome() const {
 
 CaseRun::CaseRun(const std::string& sim_node, const LocalCase& c) {
   start_ = end_ = Clock::now();
+  grace_ = c.grace;
   std::vector<std::string> names;
   for (const CaseController& k : c.controllers) names.push_back(k.name);
   judge_ = CaseJudge(names);
@@ -172,7 +173,12 @@ bool CaseRun::Poll() {
   }
   if (reap(node_)) {
     node_end_ = now;
-    if (!node_.signalled) judge_.NodeEnded(node_.code);
+    // sim_node stopped by SIGINT / SIGTERM from outside (offline: exit 130 / 143)
+    if (node_.code == 130 || node_.code == 143) {
+      interrupted_ = true;
+    } else if (!node_.signalled) {
+      judge_.NodeEnded(node_.code);
+    }
   }
   // a controller failed: stop the rest
   if (judge_.failed() && !stopped_) {
@@ -182,7 +188,7 @@ bool CaseRun::Poll() {
   // the node has ended: the controllers' grace, then SIGTERM, then SIGKILL
   if (!node_.running) {
     for (Child& k : controllers_) {
-      if (!k.signalled && Seconds(now - node_end_) > kControllerGrace) Signal(k, SIGTERM);
+      if (!k.signalled && Seconds(now - node_end_) > grace_) Signal(k, SIGTERM);
     }
   }
   for (Child* c : [&] {
@@ -190,7 +196,7 @@ bool CaseRun::Poll() {
          for (Child& k : controllers_) all.push_back(&k);
          return all;
        }()) {
-    if (c->running && c->signalled && Seconds(now - c->term_at) > kControllerGrace) {
+    if (c->running && c->signalled && Seconds(now - c->term_at) > grace_) {
       kill(c->pid, SIGKILL);
     }
   }
@@ -210,8 +216,8 @@ void CaseRun::Stop() {
 std::optional<CaseOutcome> CaseRun::outcome() const {
   if (immediate_) return immediate_;
   if (stopped_) return std::nullopt;
-  if (!judge_.failed() && (node_.code == 130 || node_.code == 143)) return std::nullopt;
-  if (!judge_.node_ended() && !judge_.failed()) return std::nullopt;
+  if (judge_.failed()) return judge_.Outcome();
+  if (interrupted_ || !judge_.node_ended()) return std::nullopt;
   return judge_.Outcome();
 }
 

@@ -60,6 +60,7 @@ struct LocalCase {
   std::vector<CaseController> controllers;
   int domain_first = kDefaultSweepDomain;  // with controllers: the ids it may take
   int domain_last = kMaxSweepDomain;
+  double grace = kControllerGrace;  // [s] for the controllers after the node ended
 };
 
 class CaseRun {
@@ -99,9 +100,11 @@ class CaseRun {
   std::vector<Child> controllers_;
   CaseJudge judge_{{}};
   Clock::time_point start_, end_, node_end_;
-  bool stopped_ = false;
+  bool stopped_ = false;      // by the sweep (Stop)
+  bool interrupted_ = false;  // sim_node ended by SIGINT / SIGTERM from outside
   bool done_ = false;
   std::optional<CaseOutcome> immediate_;  // ended before it started (no domain)
+  double grace_ = kControllerGrace;
 };
 
 }  // namespace towsim::app

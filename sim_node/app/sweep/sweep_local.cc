@@ -50,10 +50,11 @@ int RunLocal(const std::string& sim_node, const std::vector<LocalCase>& cases, i
       if (StopRequested() != 0) break;
       const std::optional<CaseOutcome> outcome = running[i].run->outcome();
       const double wall = running[i].run->wall_s();
+      const int domain = running[i].run->domain();
       const size_t number = running[i].number;
       running.erase(running.begin() + static_cast<long>(i));
       if (!outcome) continue;
-      WriteCaseStatus(cases[number].dir, {outcome->exit_code, wall, outcome->message});
+      WriteCaseStatus(cases[number].dir, {outcome->exit_code, wall, outcome->message, domain});
       ++done;
       if (!on_finished(number)) ++failed;
       progress->Update(done, failed, static_cast<int>(running.size()),
