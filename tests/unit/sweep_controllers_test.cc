@@ -37,7 +37,7 @@ TEST(SweepControllers, ACaseSubstitutesItsValuesThenItsDomain) {
   spec.controllers = {k};
   SweepCase c;
   c.name = "case_0002";
-  c.values = {{"depth", "25"}, {"cable.length", "[1, 2]"}};
+  c.values = {{"depth", "\"25\""}, {"cable.length", "[1, 2]"}};  // "25": a quoted YAML string
   const std::vector<CaseController> cs =
       CaseControllers(spec, c, "/sweep/out/./case_0002", {"/bin/towfish_depth"});
   ASSERT_EQ(cs.size(), 1u);

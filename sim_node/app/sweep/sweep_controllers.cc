@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <yaml-cpp/yaml.h>
+
 namespace towsim::app {
 namespace {
 
@@ -31,6 +33,17 @@ void Scan(const std::string& text, const std::function<void(const std::string&)>
     on_name(name);
     at = close + 1;
   }
+}
+
+// a parameter's value (YAML flow style, as --set takes it) as a controller's argument: a
+// scalar's text without YAML's quotes ("\"20=3\"" -> 20=3), anything else as it is ([1, 2])
+std::string ArgumentText(const std::string& flow) {
+  try {
+    const YAML::Node node = YAML::Load(flow);
+    if (node.IsScalar()) return node.Scalar();
+  } catch (const YAML::Exception&) {
+  }
+  return flow;
 }
 
 bool Executable(const fs::path& p) {
@@ -67,7 +80,7 @@ std::vector<CaseController> CaseControllers(const SweepSpec& spec, const SweepCa
     if (name == "case") return c.name;
     if (name == "case_dir") return dir;
     for (const auto& [path, value] : c.values) {
-      if (path == name) return value;
+      if (path == name) return ArgumentText(value);
     }
     return std::nullopt;  // ${domain}: when the case starts
   };
