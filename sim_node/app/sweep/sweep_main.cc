@@ -79,6 +79,8 @@ std::string Usage() {
          "  --no-wait      with --slurm: submit and return; --collect later\n"
          "  --resume       run only the cases that are missing or failed in DIR\n"
          "  --collect      run nothing: tabulate the cases finished in DIR\n"
+         "  --run-case DIR/CASE --sim-node PATH --domain N [--domain-last M]\n"
+         "                 run one case with controllers from its folder (its command.sh)\n"
          "  --help         print this and exit\n"
          "\n"
          "exit codes: 0 every case ok, 4 some cases failed (results.csv), 2 bad input,\n"
