@@ -555,6 +555,28 @@ TEST_F(SweepLocal, ControllersThatFailMarkTheirCaseFailedWithTheReason) {
                        "2: "),
             std::string::npos)
       << s.out;
+
+  // refused before anything runs (exit 2): too many workers for the domain ids left, no
+  // CYCLONEDDS_URI, --domain for a sweep without controllers
+  Sweep bad = RunSweep({file, "--out", Tmp("out2"), "--domain", "230", "--workers", "3"},
+                       Tmp("log_workers"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("towsim_sweep: error: domain = 230 with 3 workers: the cases running at "
+                         "once each take a DDS domain id from 230 up, and the highest is 231"),
+            std::string::npos)
+      << bad.err;
+  Process no_uri({TOWSIM_SWEEP, file, "--out", Tmp("out2")}, Tmp("log_uri"),
+                 {"CYCLONEDDS_URI="});
+  ASSERT_TRUE(no_uri.Wait(kTimeout));
+  EXPECT_EQ(no_uri.exit_code(), 2);
+  EXPECT_NE(no_uri.err().find("failing.yaml has controllers: and CYCLONEDDS_URI is not set"),
+            std::string::npos)
+      << no_uri.err();
+  bad = RunSweep({kLocalSweep, "--out", Tmp("out2"), "--domain", "206"}, Tmp("log_domain"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--domain 206: local_sweep.yaml has no controllers:"), std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(Tmp("out2")));
 }
 
 }  // namespace

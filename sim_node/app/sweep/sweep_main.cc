@@ -260,6 +260,13 @@ int Run(const Options& o) {
     return kExitBadInput;
   }
 
+  if (o.domain >= 0 && spec.controllers.empty()) {
+    std::fprintf(stderr,
+                 "towsim_sweep: error: --domain %d: %s has no controllers: (its cases run "
+                 "offline, without DDS)\n",
+                 o.domain, spec.name.c_str());
+    return kExitBadInput;
+  }
   if (o.domain >= 0) spec.domain = o.domain;
   // the cases' sim_node and controllers talk DDS: the loopback configuration, as they require
   const char* uri = std::getenv("CYCLONEDDS_URI");
