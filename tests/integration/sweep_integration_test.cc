@@ -20,8 +20,8 @@
 #include <gtest/gtest.h>
 
 #include "io/csv_reader.h"
-#include "testing/process.h"
 #include "temp_dir.h"
+#include "testing/process.h"
 
 namespace towsim::testing {
 namespace {
@@ -284,10 +284,10 @@ TEST_F(SweepLocal, ResumeWithAnotherSweepFileIsRefused) {
   const std::string table = Contents(out + "/results.csv");
   s = RunSweep({second, "--out", out, "--resume"}, dir + "/log2");
   EXPECT_EQ(s.exit_code, 2);
-  EXPECT_NE(s.err.find("towsim_sweep: error: --resume: --out " + out +
-                       " was made by the sweep file " + first + ", not " + second +
-                       "; pass that file, or choose another folder"),
-            std::string::npos)
+  EXPECT_NE(
+      s.err.find("towsim_sweep: error: --resume: --out " + out + " was made by the sweep file " +
+                 first + ", not " + second + "; pass that file, or choose another folder"),
+      std::string::npos)
       << s.err;
   s = RunSweep({second, "--out", out, "--collect"}, dir + "/log3");
   EXPECT_EQ(s.exit_code, 2);
@@ -435,8 +435,7 @@ TEST_F(SweepLocal, ControllersInLockstepTheirSweptArgumentsAndSettledResults) {
     // sim_node ran in lockstep with both controllers answering every step
     const std::string summary = ReadFile(dir + "/sim_node.out");
     EXPECT_NE(summary.find("lockstep, 200 steps"), std::string::npos) << summary;
-    EXPECT_NE(summary.find("failsafes 0, commands 400 (rejected 0"), std::string::npos)
-        << summary;
+    EXPECT_NE(summary.find("failsafes 0, commands 400 (rejected 0"), std::string::npos) << summary;
     // each case on a domain of its own from 206 (the cases at once take different ones)
     const std::string status = ReadFile(dir + "/case_status.txt");
     const size_t at = status.find("domain=");
@@ -499,8 +498,8 @@ TEST_F(SweepLocal, ControllersInLockstepTheirSweptArgumentsAndSettledResults) {
   // the plots of two parameters: a family of curves and a heat map per result, PNG and SVG
   Process plot({"/usr/bin/python3", kSource + "/scripts/plot_sweep.py", out}, Tmp("log_plot"));
   ASSERT_TRUE(plot.Wait(kTimeout));
-  ASSERT_EQ(plot.exit_code(), 0)
-      << plot.err() << "(needs /usr/bin/python3 with matplotlib: python3-matplotlib)";
+  ASSERT_EQ(plot.exit_code(), 0) << plot.err()
+                                 << "(needs /usr/bin/python3 with matplotlib: python3-matplotlib)";
   for (const std::string result : {"towfish_depth", "tow_speed"}) {
     for (const std::string kind : {"curves", "heatmap"}) {
       const std::string stem = out + "/plots/" + result + "_" + kind;
@@ -565,8 +564,7 @@ TEST_F(SweepLocal, ControllersThatFailMarkTheirCaseFailedWithTheReason) {
                          "once each take a DDS domain id from 230 up, and the highest is 231"),
             std::string::npos)
       << bad.err;
-  Process no_uri({TOWSIM_SWEEP, file, "--out", Tmp("out2")}, Tmp("log_uri"),
-                 {"CYCLONEDDS_URI="});
+  Process no_uri({TOWSIM_SWEEP, file, "--out", Tmp("out2")}, Tmp("log_uri"), {"CYCLONEDDS_URI="});
   ASSERT_TRUE(no_uri.Wait(kTimeout));
   EXPECT_EQ(no_uri.exit_code(), 2);
   EXPECT_NE(no_uri.err().find("failing.yaml has controllers: and CYCLONEDDS_URI is not set"),

@@ -90,11 +90,11 @@ TEST(SweepCase, ArgumentsWithControllersRunInLockstep) {
   spec.parameters = {{"kp", {"1"}, "", true}, {"cable.length", {"300"}, "", false}};
   SweepCase c;
   c.values = {{"kp", "1"}, {"cable.length", "300"}};
-  EXPECT_EQ(CaseArguments(spec, c, "/out/case_0000"),
-            (std::vector<std::string>{"--scene", "/scenes/case1_forward.yaml", "--mode",
-                                      "lockstep", "--fail-on-failsafe", "--lockstep-timeout",
-                                      "2.5", "--duration", "10", "--set", "cable.length=300",
-                                      "--csv", "/out/case_0000"}));
+  EXPECT_EQ(
+      CaseArguments(spec, c, "/out/case_0000"),
+      (std::vector<std::string>{"--scene", "/scenes/case1_forward.yaml", "--mode", "lockstep",
+                                "--fail-on-failsafe", "--lockstep-timeout", "2.5", "--duration",
+                                "10", "--set", "cable.length=300", "--csv", "/out/case_0000"}));
 }
 
 // controllers.txt and case_status.txt's domain and message, read back; --resume sees a changed
@@ -121,8 +121,8 @@ TEST(SweepCase, ControllersFileStatusMessageAndCommand) {
   changed[0].args[0] = "--y";
   EXPECT_FALSE(SameArguments(case_dir, {"--mode", "lockstep"}, changed));
   EXPECT_FALSE(SameArguments(case_dir, {"--mode", "lockstep"}));
-  EXPECT_EQ(ReadTextFile(case_dir + "/command.sh").substr(
-                ReadTextFile(case_dir + "/command.sh").find("exec ")),
+  EXPECT_EQ(ReadTextFile(case_dir + "/command.sh")
+                .substr(ReadTextFile(case_dir + "/command.sh").find("exec ")),
             "exec '/opt/bin/towsim_sweep' --run-case '" + case_dir +
                 "' --sim-node '/opt/bin/sim_node' --domain 206 --domain-last 231\n");
 

@@ -32,7 +32,7 @@ TEST(SweepControllers, ACaseSubstitutesItsValuesThenItsDomain) {
   SweepSpec spec;
   SweepController k;
   k.name = "depth";
-  k.args = {"--depth", "${depth}", "--at", "${cable.length}", "--log", "${case_dir}/${case}.log",
+  k.args = {"--depth",  "${depth}", "--at", "${cable.length}", "--log", "${case_dir}/${case}.log",
             "--domain", "${domain}"};
   spec.controllers = {k};
   SweepCase c;
@@ -43,10 +43,9 @@ TEST(SweepControllers, ACaseSubstitutesItsValuesThenItsDomain) {
   ASSERT_EQ(cs.size(), 1u);
   EXPECT_EQ(cs[0].name, "depth");
   EXPECT_EQ(cs[0].program, "/bin/towfish_depth");
-  EXPECT_EQ(cs[0].args,
-            (std::vector<std::string>{"--depth", "25", "--at", "[1, 2]", "--log",
-                                      "/sweep/out/case_0002/case_0002.log", "--domain",
-                                      "${domain}"}));
+  EXPECT_EQ(cs[0].args, (std::vector<std::string>{"--depth", "25", "--at", "[1, 2]", "--log",
+                                                  "/sweep/out/case_0002/case_0002.log", "--domain",
+                                                  "${domain}"}));
   EXPECT_EQ(WithDomain(cs[0].args, 207).back(), "207");
   EXPECT_EQ(WithDomain({"x${domain}y"}, 0), (std::vector<std::string>{"x0y"}));
 }

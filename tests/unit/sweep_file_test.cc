@@ -143,10 +143,11 @@ TEST(SweepFile, BrokenValuesNameTheRule) {
 }
 
 TEST(SweepFile, BrokenTopLevelAndResults) {
-  EXPECT_EQ(Error("scene: steady_tow.yaml\nparameter:\n  cable.elements: [1]\n"),
-            "parameter = {cable.elements: [1]} (sweep.yaml:2): unknown key; did you mean "
-            "parameters? (allowed: scene, duration, combine, parameters, results, controllers, domain, "
-            "lockstep_timeout)");
+  EXPECT_EQ(
+      Error("scene: steady_tow.yaml\nparameter:\n  cable.elements: [1]\n"),
+      "parameter = {cable.elements: [1]} (sweep.yaml:2): unknown key; did you mean "
+      "parameters? (allowed: scene, duration, combine, parameters, results, controllers, domain, "
+      "lockstep_timeout)");
   EXPECT_EQ(Error("scene: nope.yaml\nparameters:\n  cable.elements: [1]\n"),
             "scene = " + kScenes +
                 "/nope.yaml (sweep.yaml:1): cannot read the scene file (no "
@@ -189,9 +190,9 @@ results:
   EXPECT_EQ(s.controllers[0].name, "maneuver_runner");  // the program's name
   EXPECT_EQ(s.controllers[0].program, "maneuver_runner");
   // no ${domain}: --domain ${domain} appended
-  EXPECT_EQ(s.controllers[0].args, (std::vector<std::string>{"--maneuver", "case1", "--thrust",
-                                                             "${thrust}", "--domain",
-                                                             "${domain}"}));
+  EXPECT_EQ(s.controllers[0].args,
+            (std::vector<std::string>{"--maneuver", "case1", "--thrust", "${thrust}", "--domain",
+                                      "${domain}"}));
   EXPECT_EQ(s.controllers[0].location, "sweep.yaml:6");
   EXPECT_EQ(s.controllers[1].name, "depth");
   EXPECT_EQ(s.controllers[1].program, "../bin/towfish_depth");
@@ -254,8 +255,9 @@ TEST(SweepFile, BrokenControllersAndSettled) {
   EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [[1, 2]]}\n" + params),
             "controllers[0].args[0] = [1, 2] (sweep.yaml:4): an argument must be a scalar "
             "(quote it)");
-  EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [\"${gain\"]}\n" + params),
-            "controllers[0].args[0] = \"${gain\" (sweep.yaml:4): \"${\" without its \"}\" in ${gain");
+  EXPECT_EQ(
+      Error(head + "controllers:\n  - {program: a, args: [\"${gain\"]}\n" + params),
+      "controllers[0].args[0] = \"${gain\" (sweep.yaml:4): \"${\" without its \"}\" in ${gain");
   EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [\"${gian}\"]}\n" +
                   "parameters:\n  gain: [1, 2]\n"),
             "controllers[0].args[0] = \"${gian}\" (sweep.yaml:4): ${gian} names no parameter; the "
@@ -278,10 +280,10 @@ TEST(SweepFile, BrokenControllersAndSettled) {
             "results.d.settled.window = 0 (sweep.yaml:6): must be > 0");
   EXPECT_EQ(Error(head + params + "results:\n  d: {signal: towfish.z, settled: {window: 2}}\n"),
             "results.d.settled.tolerance = <missing> (sweep.yaml:6): is required");
-  EXPECT_EQ(Error(head + params +
-                  "results:\n  d: {signal: towfish.z, settled: {window: 2, tol: 1}}\n"),
-            "results.d.settled.tol = 1 (sweep.yaml:6): unknown key (allowed: window, "
-            "tolerance)");
+  EXPECT_EQ(
+      Error(head + params + "results:\n  d: {signal: towfish.z, settled: {window: 2, tol: 1}}\n"),
+      "results.d.settled.tol = 1 (sweep.yaml:6): unknown key (allowed: window, "
+      "tolerance)");
 }
 
 }  // namespace

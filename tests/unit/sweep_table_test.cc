@@ -109,7 +109,7 @@ std::vector<std::optional<SweepRow>> SettledRows() {
   moving.settled = {SettledCheck{true, false, 2.25, 20.0}, SettledCheck{}};
   SweepRow shorter{"case_0002", true, 0, "", 1.5, {"30", "[0, 0, 1]"}, {16.5, 4}};
   shorter.settled = {SettledCheck{true, false, 0.0, 2.0}, SettledCheck{}};
-  SweepRow failed{"case_0003", false, 5, "sim_node: error: lockstep timeout", 0.5,
+  SweepRow failed{"case_0003",         false, 5, "sim_node: error: lockstep timeout", 0.5,
                   {"40", "[0, 0, 1]"}, {}};
   return {settled, moving, shorter, failed};
 }

@@ -49,8 +49,8 @@ std::vector<std::string> CaseArguments(const SweepSpec& spec, const SweepCase& c
 std::string ControllersText(const std::vector<CaseController>& controllers) {
   std::string text;
   for (const CaseController& k : controllers) {
-    text += "controller " + k.name + " " + std::to_string(1 + k.args.size()) + "\n" + k.program +
-            "\n";
+    text +=
+        "controller " + k.name + " " + std::to_string(1 + k.args.size()) + "\n" + k.program + "\n";
     for (const std::string& a : k.args) text += a + "\n";
   }
   return text;
@@ -97,7 +97,8 @@ void PrepareCase(const std::string& case_dir, const CaseRunner& runner,
         "# one case of a towsim sweep with controllers (docs/sweeps.md): sim_node in lockstep\n"
         "# beside the controllers of controllers.txt on a free DDS domain id, then\n"
         "# case_status.txt\n"
-        "exec " + ShellWord(runner.sweep) + " --run-case " + dir + " --sim-node " +
+        "exec " +
+        ShellWord(runner.sweep) + " --run-case " + dir + " --sim-node " +
         ShellWord(runner.sim_node) + " --domain " + std::to_string(runner.domain_first) +
         " --domain-last " + std::to_string(runner.domain_last) + "\n";
     WriteTextFileAtomically((fs::path(case_dir) / "command.sh").string(), script);

@@ -38,7 +38,7 @@ std::string ShellWord(const std::string& s);
 // what runs a case: towsim_sweep itself, sim_node, and the DDS domain ids of a case with
 // controllers
 struct CaseRunner {
-  std::string sweep;     // towsim_sweep (command.sh of a case with controllers runs it)
+  std::string sweep;  // towsim_sweep (command.sh of a case with controllers runs it)
   std::string sim_node;
   int domain_first = kDefaultSweepDomain;
   int domain_last = kMaxSweepDomain;

@@ -67,8 +67,7 @@ pid_t Spawn(const std::vector<std::string>& argv_text, const std::string& out,
   posix_spawnattr_setsigdefault(&attr, &defaults);
   posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGDEF);
   pid_t pid = -1;
-  const int error =
-      posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), envp.data());
+  const int error = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attr);
   if (error != 0) {
@@ -109,10 +108,10 @@ CaseRun::CaseRun(const std::string& sim_node, const LocalCase& c) {
   if (!c.controllers.empty()) {
     lock_ = DomainLock::Take(c.domain_first, c.domain_last);
     if (!lock_) {
-      immediate_ = CaseOutcome{
-          1, "no free DDS domain id in " + std::to_string(c.domain_first) + "-" +
-                 std::to_string(c.domain_last) + ": other sweeps or tests hold them all (" +
-                 DomainLock::LockPath(c.domain_first) + ", ...)"};
+      immediate_ = CaseOutcome{1, "no free DDS domain id in " + std::to_string(c.domain_first) +
+                                      "-" + std::to_string(c.domain_last) +
+                                      ": other sweeps or tests hold them all (" +
+                                      DomainLock::LockPath(c.domain_first) + ", ...)"};
       done_ = true;
       return;
     }

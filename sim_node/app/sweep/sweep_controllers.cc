@@ -55,7 +55,8 @@ bool Executable(const fs::path& p) {
 
 std::vector<std::string> PlaceholderNames(const std::string& text) {
   std::vector<std::string> names;
-  Scan(text, [](const std::string&) {}, [&](const std::string& n) { names.push_back(n); });
+  Scan(
+      text, [](const std::string&) {}, [&](const std::string& n) { names.push_back(n); });
   return names;
 }
 
@@ -101,8 +102,7 @@ std::vector<std::string> WithDomain(const std::vector<std::string>& args, int do
   std::vector<std::string> out;
   for (const std::string& a : args) {
     out.push_back(ExpandPlaceholders(a, [domain](const std::string& name) {
-      return name == "domain" ? std::optional<std::string>(std::to_string(domain))
-                              : std::nullopt;
+      return name == "domain" ? std::optional<std::string>(std::to_string(domain)) : std::nullopt;
     }));
   }
   return out;

@@ -3,7 +3,8 @@
 // placeholders ${NAME} substituted, and their programs found.
 //
 // Placeholders: ${<parameter key path>} the case's value of that parameter (a scalar's text
-// without YAML's quotes: "20=3" gives 20=3; a list or map in flow style, as in results.csv), ${case} the case's name (case_0003), ${case_dir} its folder (absolute),
+// without YAML's quotes: "20=3" gives 20=3; a list or map in flow style, as in results.csv),
+// ${case} the case's name (case_0003), ${case_dir} its folder (absolute),
 // ${domain} the DDS domain id the case runs on (known only when it starts). A controller whose
 // arguments do not name ${domain} gets `--domain ${domain}` appended (every towsim controller
 // takes --domain). No escape: every "${" opens a placeholder.

@@ -131,8 +131,9 @@ std::vector<std::string> ReadRange(const Field& field) {
     // an integer is exact in a double up to 2^53; beyond, neighbours merge and llround overflows
     for (const Field* f : {&from, &to, &step}) {
       if (std::fabs(f->Number()) >= kTwoTo53) {
-        f->Fail("an integer range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 "
-                "(exact in a double)");
+        f->Fail(
+            "an integer range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 "
+            "(exact in a double)");
       }
     }
   }
@@ -219,8 +220,9 @@ SweepResult ReadResult(const std::string& name, const Field& field) {
   const Field settled = Get(entries, "settled", field);
   if (settled.present()) {
     if (!settled.node().IsMap()) {
-      settled.Fail("must be a map {window: W, tolerance: T}: the signal settled when its change "
-                   "(max - min) over the final W seconds is below T");
+      settled.Fail(
+          "must be a map {window: W, tolerance: T}: the signal settled when its change "
+          "(max - min) over the final W seconds is below T");
     }
     const auto keys = CheckedEntries(settled, {"window", "tolerance"});
     SweepSettled s;
@@ -247,11 +249,10 @@ std::vector<SweepController> ReadControllers(const Field& list) {
     k.program = Trim(program.String());
     if (k.program.empty()) program.Fail("must name an executable");
     const Field name = Get(keys, "name", item);
-    k.name = name.present() ? name.String()
-                            : std::filesystem::path(k.program).filename().string();
+    k.name = name.present() ? name.String() : std::filesystem::path(k.program).filename().string();
     if (!IsValidName(k.name)) {
-      (name.present() ? name : program).Fail(std::string("a controller's name ") + kNameRule +
-                                             " (give one with name:)");
+      (name.present() ? name : program)
+          .Fail(std::string("a controller's name ") + kNameRule + " (give one with name:)");
     }
     if (k.name == "sim_node") {
       (name.present() ? name : program).Fail("sim_node's logs have this name; give another name:");
@@ -299,8 +300,10 @@ void CheckPlaceholders(const Field& list, const SweepSpec& spec) {
         if (!known) {
           std::string names;
           for (const SweepParameter& p : spec.parameters) names += p.path + ", ";
-          arg_fields[j].Fail("${" + name + "} names no parameter; the placeholders are the "
-                             "parameters (" + names + "...) and domain, case, case_dir");
+          arg_fields[j].Fail("${" + name +
+                             "} names no parameter; the placeholders are the "
+                             "parameters (" +
+                             names + "...) and domain, case, case_dir");
         }
       }
     }
@@ -334,8 +337,8 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
     } catch (const ConfigError& e) {
       std::string rule = e.rule();
       if (!spec.controllers.empty() && p.path.find('.') == std::string::npos) {
-        rule += " (a parameter of the controllers only is named in their args as ${" + p.path +
-                "})";
+        rule +=
+            " (a parameter of the controllers only is named in their args as ${" + p.path + "})";
       }
       fields[i].Fail(rule);
     }
@@ -370,9 +373,8 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
       "a sweep file must be a map of keys (scene, duration, combine, parameters, results, "
       "controllers, domain, lockstep_timeout)");
   const Field top(root, root.Mark(), "", source);
-  const auto entries =
-      CheckedEntries(top, {"scene", "duration", "combine", "parameters", "results",
-                           "controllers", "domain", "lockstep_timeout"});
+  const auto entries = CheckedEntries(top, {"scene", "duration", "combine", "parameters", "results",
+                                            "controllers", "domain", "lockstep_timeout"});
 
   SweepSpec spec;
   spec.name = name_for_messages;
@@ -415,8 +417,9 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
   if (controllers.present()) {
     spec.controllers = ReadControllers(controllers);
     if (!duration.present()) {
-      controllers.Fail("need duration: (a DDS node runs until stopped; a case runs `duration` "
-                       "seconds of simulated time)");
+      controllers.Fail(
+          "need duration: (a DDS node runs until stopped; a case runs `duration` "
+          "seconds of simulated time)");
     }
   } else {
     for (const Field* f : {&domain, &lockstep_timeout}) {
@@ -429,13 +432,13 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
     spec.domain = domain.Integer(Range::Closed(0, kMaxSweepDomain));
     spec.domain_location = domain.location();
   }
-  if (lockstep_timeout.present()) spec.lockstep_timeout = lockstep_timeout.Number(Range::AtLeast(0));
+  if (lockstep_timeout.present())
+    spec.lockstep_timeout = lockstep_timeout.Number(Range::AtLeast(0));
   for (size_t i = 0; i < spec.parameters.size(); ++i) {
     SweepParameter& p = spec.parameters[i];
     for (const std::string& b : BuiltinPlaceholders()) {
       if (p.path == b && !spec.controllers.empty()) {
-        parameter_fields[i].Fail("is a placeholder of its own (${" + b +
-                                 "}); choose another name");
+        parameter_fields[i].Fail("is a placeholder of its own (${" + b + "}); choose another name");
       }
     }
     if (p.path.find('.') != std::string::npos) continue;  // a scene key path

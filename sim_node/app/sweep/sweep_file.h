@@ -75,9 +75,9 @@ struct SweepSpec {
   // (the first free id from `domain` up to kMaxSweepDomain) beside these processes
   std::vector<SweepController> controllers;
   int domain = kDefaultSweepDomain;
-  std::string domain_location;              // where `domain` was given (empty: the default)
-  std::optional<double> lockstep_timeout;   // sim_node --lockstep-timeout [s]
-  std::string base_dir;                     // the sweep file's folder (relative programs)
+  std::string domain_location;             // where `domain` was given (empty: the default)
+  std::optional<double> lockstep_timeout;  // sim_node --lockstep-timeout [s]
+  std::string base_dir;                    // the sweep file's folder (relative programs)
 };
 
 // the statistics a result may ask for, in documentation order

@@ -197,7 +197,8 @@ int RunOneCase(const Options& o) {
   {
     towsim::app::SweepProgress progress(1, 0, quiet != nullptr ? quiet : stderr);
     towsim::app::InstallStopHandlers();
-    code = towsim::app::RunLocal(o.sim_node, {c}, 1, [](size_t) { return true; }, &progress);
+    code = towsim::app::RunLocal(
+        o.sim_node, {c}, 1, [](size_t) { return true; }, &progress);
   }
   if (quiet != nullptr) std::fclose(quiet);
   if (code != 0) return code;
@@ -250,9 +251,9 @@ int Run(const Options& o) {
       programs.push_back(towsim::app::ResolveProgram(k.program, spec.base_dir,
                                                      SelfPath().parent_path().string(), &why));
       if (programs.back().empty()) {
-        throw towsim::scene::ConfigError("controllers[" + std::to_string(programs.size() - 1) +
-                                             "].program",
-                                         k.program, k.location, why);
+        throw towsim::scene::ConfigError(
+            "controllers[" + std::to_string(programs.size() - 1) + "].program", k.program,
+            k.location, why);
       }
     }
   } catch (const std::exception& e) {
@@ -357,8 +358,7 @@ int Run(const Options& o) {
     dirs.push_back((out / c.name).string());
     arguments.push_back(towsim::app::CaseArguments(spec, c, dirs.back()));
     controllers.push_back(towsim::app::CaseControllers(spec, c, dirs.back(), programs));
-    const bool same =
-        towsim::app::SameArguments(dirs.back(), arguments.back(), controllers.back());
+    const bool same = towsim::app::SameArguments(dirs.back(), arguments.back(), controllers.back());
     if (o.resume || o.collect) {
       if (same) rows[c.index] = towsim::app::CollectCase(spec, c, dirs.back());
       if (o.collect) continue;
@@ -411,8 +411,8 @@ int Run(const Options& o) {
     timing.workers = workers;
     std::vector<towsim::app::LocalCase> local;
     for (size_t i : todo) {
-      local.push_back({dirs[i], arguments[i], controllers[i], runner.domain_first,
-                       runner.domain_last});
+      local.push_back(
+          {dirs[i], arguments[i], controllers[i], runner.domain_first, runner.domain_last});
     }
     code = towsim::app::RunLocal(
         sim_node, local, workers, [&](size_t k) { return on_finished(todo[k]); }, &progress);

@@ -185,15 +185,16 @@ std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<
                        [](const Point& a, const Point& b) { return a.x < b.x; });
       if (curve.size() > 1) {
         std::string line;
-        for (const Point& p : curve) line += Fmt("%.1f", px(p.x)) + "," + Fmt("%.1f", py(p.y)) + " ";
+        for (const Point& p : curve)
+          line += Fmt("%.1f", px(p.x)) + "," + Fmt("%.1f", py(p.y)) + " ";
         svg += "<polyline points=\"" + line + "\" fill=\"none\" stroke=\"" +
                color_of(*curve.front().row) + "\" stroke-width=\"1.5\"/>\n";
       }
     }
     bool hollow_any = false;
     for (const Point& p : points) {
-      const bool hollow = i < p.row->settled.size() && p.row->settled[i].asked &&
-                          !p.row->settled[i].settled;
+      const bool hollow =
+          i < p.row->settled.size() && p.row->settled[i].asked && !p.row->settled[i].settled;
       hollow_any = hollow_any || hollow;
       const std::string color = color_of(*p.row);
       svg += "<circle cx=\"" + Fmt("%.1f", px(p.x)) + "\" cy=\"" + Fmt("%.1f", py(p.y)) +

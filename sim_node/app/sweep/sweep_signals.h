@@ -18,7 +18,8 @@
 // Statistics over the output rows in the window [from, to]: final, initial, min, max,
 // max_abs, mean, rms, std (population). `settled` (SweepSettled): over the rows of that window
 // with t >= t_last - window, change = max - min; settled when change < tolerance and the rows
-// span the window (t_last - t_first >= window: a shorter run has not shown it settled). Run totals, from the summary line (no statistic):
+// span the window (t_last - t_first >= window: a shorter run has not shown it settled). Run totals,
+// from the summary line (no statistic):
 //   steps, rtf, run_wall_s (the stepping loop), newton_iterations_mean, newton_iterations_max,
 //   substeps, coupling_iterations_mean.
 

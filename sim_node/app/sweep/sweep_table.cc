@@ -53,9 +53,9 @@ std::string JsonString(const std::string& text) {
 std::string ColumnsJson(const SweepSpec& spec) {
   std::string json = "{\n  \"parameters\": [";
   for (size_t i = 0; i < spec.parameters.size(); ++i) {
-    json += std::string(i ? ",\n" : "\n") + "    {\"name\": " + JsonString(spec.parameters[i].path) +
-            ", \"controllers_only\": " + (spec.parameters[i].controllers_only ? "true" : "false") +
-            "}";
+    json +=
+        std::string(i ? ",\n" : "\n") + "    {\"name\": " + JsonString(spec.parameters[i].path) +
+        ", \"controllers_only\": " + (spec.parameters[i].controllers_only ? "true" : "false") + "}";
   }
   json += "\n  ],\n  \"results\": [";
   for (size_t i = 0; i < spec.results.size(); ++i) {
@@ -145,8 +145,7 @@ std::string SweepSummary(const SweepSpec& spec, const std::vector<SweepCase>& ca
         std::snprintf(part, sizeof part, "%s (the run's %.6g s are shorter than the window %.6g s)",
                       spec.results[i].name.c_str(), c.span, s.window);
       } else {
-        std::snprintf(part, sizeof part,
-                      "%s (change %.6g over the final %.6g s, tolerance %.6g)",
+        std::snprintf(part, sizeof part, "%s (change %.6g over the final %.6g s, tolerance %.6g)",
                       spec.results[i].name.c_str(), c.change, s.window, s.tolerance);
       }
       what += (what.empty() ? "" : ", ") + std::string(part);
