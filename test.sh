@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# test.sh — installs what is missing (Debian packages, Node.js, npm, Slurm and munge included), builds build/
+# test.sh — installs what is missing (Debian packages, Node.js, npm, Slurm and munge, python3 with
+# matplotlib included), builds build/
 # (Release), installs the Node.js test dependencies of tests/ from their lockfiles (npm ci) and
 # runs every test (unit, reference, integration, and package: the installed package and the
 # Debian package, tests/package/) with ctest. Exits non-zero on any failure.
 set -euo pipefail
 TOWSIM_WITH_NODE=1
 TOWSIM_WITH_SLURM=1
-source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh"
+# python3 (with matplotlib and numpy): the sweep test draws scripts/plot_sweep.py's plots
+source "$(dirname "${BASH_SOURCE[0]}")/scripts/setup.sh" python3
 
 # the independent readers of the recordings (@mcap/core, @foxglove/rosmsg,
 # @foxglove/rosmsg2-serialization): exactly the locked versions; a failure stops the run

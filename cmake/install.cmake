@@ -74,6 +74,7 @@ install(DIRECTORY examples/controller_ci DESTINATION ${TOWSIM_DATA_DESTINATION}/
 # module they import beside them; not in P/bin: they are python3 scripts with their own
 # dependency, run by path as in the source tree (docs/testing_controllers.md)
 install(PROGRAMS scripts/plot_paper.py scripts/plot_uturn_3d.py scripts/plot_waves.py
+                 scripts/plot_sweep.py
                  scripts/paper_cases.py
         DESTINATION ${TOWSIM_DATA_DESTINATION}/scripts)
 

@@ -20,7 +20,8 @@ cd "$towsim_root"
 towsim_packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev cyclonedds-dev
                  cyclonedds-tools libgtest-dev libbenchmark-dev dpkg-dev libssl-dev
                  openssl libwebsocketpp-dev libasio-dev nlohmann-json3-dev "$@")
-# who asks for python3 (run.sh) gets matplotlib too, for scripts/plot_paper.py
+# who asks for python3 (run.sh, test.sh) gets matplotlib too, for scripts/plot_paper.py and
+# scripts/plot_sweep.py
 for towsim_pkg in "$@"; do
   # and numpy, for scripts/plot_waves.py
   if [[ "$towsim_pkg" == python3 ]]; then towsim_packages+=(python3-matplotlib python3-numpy); fi

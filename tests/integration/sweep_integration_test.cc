@@ -1,11 +1,14 @@
 // towsim_sweep run locally as a process (docs/sweeps.md): the table against sim_node run
 // directly with the same values, failed cases recorded with sim_node's message, --resume
 // rerunning only the missing and failed cases, SIGTERM losing no finished case, bad sweep
-// files exiting 2. Offline only: no DDS.
+// files exiting 2; and sweeps with controllers: sim_node in lockstep beside maneuver_runner,
+// towfish_depth and test_controller over loopback DDS (domains 206-211), the table against
+// the cases' CSV files, settled, failures with their reasons, the plots.
 
 #include <signal.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -17,8 +20,8 @@
 #include <gtest/gtest.h>
 
 #include "io/csv_reader.h"
-#include "testing/process.h"
 #include "temp_dir.h"
+#include "testing/process.h"
 
 namespace towsim::testing {
 namespace {
@@ -281,10 +284,10 @@ TEST_F(SweepLocal, ResumeWithAnotherSweepFileIsRefused) {
   const std::string table = Contents(out + "/results.csv");
   s = RunSweep({second, "--out", out, "--resume"}, dir + "/log2");
   EXPECT_EQ(s.exit_code, 2);
-  EXPECT_NE(s.err.find("towsim_sweep: error: --resume: --out " + out +
-                       " was made by the sweep file " + first + ", not " + second +
-                       "; pass that file, or choose another folder"),
-            std::string::npos)
+  EXPECT_NE(
+      s.err.find("towsim_sweep: error: --resume: --out " + out + " was made by the sweep file " +
+                 first + ", not " + second + "; pass that file, or choose another folder"),
+      std::string::npos)
       << s.err;
   s = RunSweep({second, "--out", out, "--collect"}, dir + "/log3");
   EXPECT_EQ(s.exit_code, 2);
@@ -345,6 +348,233 @@ TEST_F(SweepLocal, BadSweepFilesAndFlagsExit2) {
   s = RunSweep({file}, dir + "/log4");
   EXPECT_EQ(s.exit_code, 2);
   EXPECT_NE(s.err.find("--out DIR is required"), std::string::npos) << s.err;
+}
+
+// --- sweeps with controllers (docs/sweeps.md "Controllers"): every case sim_node in lockstep
+// beside real controller processes over loopback DDS, each case on a domain of its own from
+// 206 (this test's domains: 206-211) -------------------------------------------------------
+
+// the rows of `body` in a bodies.csv: (t, u, v, w, z)
+struct BodyRow {
+  double t, z, speed;
+};
+std::vector<BodyRow> BodyRows(const std::string& bodies_csv, const std::string& body) {
+  const io::CsvTable t = io::ReadCsvFile(bodies_csv);
+  std::vector<BodyRow> rows;
+  for (const auto& r : t.rows) {
+    if (r[1] != body) continue;
+    const double u = std::stod(r[8]), v = std::stod(r[9]), w = std::stod(r[10]);
+    rows.push_back({std::stod(r[0]), std::stod(r[4]), std::sqrt(u * u + v * v + w * w)});
+  }
+  return rows;
+}
+
+// the reference of `settled` (docs/sweeps.md "Settled"), computed here from the rows: max - min
+// over t >= t_last - window, below the tolerance
+bool SettledHere(const std::vector<std::pair<double, double>>& tx, double window,
+                 double tolerance) {
+  double lo = 1e300, hi = -1e300;
+  for (const auto& [t, x] : tx) {
+    if (t < tx.back().first - window - 1e-9) continue;
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  return hi - lo < tolerance;
+}
+
+bool StartsWith(const std::string& text, const std::string& head) {
+  return text.compare(0, head.size(), head) == 0;
+}
+
+TEST_F(SweepLocal, ControllersInLockstepTheirSweptArgumentsAndSettledResults) {
+  const std::string file = Tmp("controllers.yaml");
+  // two parameters: the tow vehicle's thrust, an argument of maneuver_runner, and the cable's
+  // elements, a scene key; at thrust 0 the system hangs still (settles), at 4165 N it
+  // accelerates for the whole 10 s (made not to settle)
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                      << "duration: 10\n"
+                      << "domain: 206\n"
+                      << "lockstep_timeout: 10\n"  // a loaded machine: no timeout by load
+                      << "controllers:\n"
+                      << "  - program: " << TOWSIM_MANEUVER_RUNNER << "\n"
+                      << "    args: [--maneuver, case1, --body, tow_vehicle, --thrust, "
+                         "\"${thrust}\"]\n"
+                      << "  - program: " << TOWSIM_TOWFISH_DEPTH << "\n"
+                      << "    name: depth\n"
+                      << "    args: [--body, towfish, --depth, 200, --log, "
+                         "\"${case_dir}/depth.log\"]\n"
+                      << "parameters:\n"
+                      << "  thrust: [0, 4165]\n"
+                      << "  cable.elements: [10, 20]\n"
+                      << "results:\n"
+                      << "  towfish_depth: {signal: towfish.depth, settled: {window: 4, "
+                         "tolerance: 0.5}}\n"
+                      << "  tow_speed: {signal: tow_vehicle.speed, stat: max, settled: "
+                         "{window: 4, tolerance: 0.2}}\n";
+  const std::string out = Tmp("out");
+  const Sweep s = RunSweep({file, "--out", out, "--workers", "2"}, Tmp("log"));
+  ASSERT_EQ(s.exit_code, 0) << s.out << s.err;
+  EXPECT_NE(s.out.find("4 cases: 4 ok (2 not settled), 0 failed, 0 not run"), std::string::npos)
+      << s.out;
+  std::ifstream table_in(out + "/results.csv");
+  std::string header;
+  std::getline(table_in, header);
+  EXPECT_EQ(header,
+            "case,status,exit_code,message,wall_s,thrust,cable.elements,towfish_depth,tow_speed,"
+            "towfish_depth.settled,tow_speed.settled");
+  auto rows = Table(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 4u);
+  const char* thrusts[] = {"0", "0", "4165", "4165"};
+  const int elements[] = {10, 20, 10, 20};
+  for (int i = 0; i < 4; ++i) {
+    const std::string name = "case_000" + std::to_string(i);
+    const std::string dir = out + "/" + name;
+    auto& row = rows[name];
+    EXPECT_EQ(row["status"], "ok") << row["message"];
+    EXPECT_EQ(row["thrust"], thrusts[i]);
+    // sim_node ran in lockstep with both controllers answering every step
+    const std::string summary = ReadFile(dir + "/sim_node.out");
+    EXPECT_NE(summary.find("lockstep, 200 steps"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("failsafes 0, commands 400 (rejected 0"), std::string::npos) << summary;
+    // each case on a domain of its own from 206 (the cases at once take different ones)
+    const std::string status = ReadFile(dir + "/case_status.txt");
+    const size_t at = status.find("domain=");
+    ASSERT_NE(at, std::string::npos) << status;
+    const int domain = std::stoi(status.substr(at + 7));
+    EXPECT_GE(domain, 206);
+    EXPECT_LE(domain, 231);
+    // the swept argument reached maneuver_runner: its thrust command in actuators.csv
+    const io::CsvTable act = io::ReadCsvFile(dir + "/actuators.csv");
+    std::string last_thrust;
+    for (const auto& r : act.rows) {
+      if (r[1] == "tow_vehicle") last_thrust = r[2];
+    }
+    EXPECT_EQ(std::stod(last_thrust), std::stod(thrusts[i]));
+    // the scene parameter reached sim_node: elements + 1 nodes per time
+    const io::CsvTable cable = io::ReadCsvFile(dir + "/cable.csv");
+    int nodes = 0;
+    for (const auto& r : cable.rows) nodes += r[0] == "0" ? 1 : 0;
+    EXPECT_EQ(nodes, elements[i] + 1);
+    EXPECT_TRUE(fs::exists(dir + "/depth.log"));  // ${case_dir} substituted
+    // the table's numbers against this test's own reading of bodies.csv
+    const std::vector<BodyRow> fish = BodyRows(dir + "/bodies.csv", "towfish");
+    const std::vector<BodyRow> tow = BodyRows(dir + "/bodies.csv", "tow_vehicle");
+    ASSERT_FALSE(fish.empty());
+    EXPECT_NEAR(fish.back().t, 10.0, 1e-9);
+    constexpr double kNineDigits = 1e-8;  // the table holds %.9g of the CSV's %.9g values
+    EXPECT_NEAR(std::stod(row["towfish_depth"]), fish.back().z,
+                kNineDigits * std::abs(fish.back().z));
+    double speed_max = 0.0;
+    std::vector<std::pair<double, double>> fish_z, tow_speed;
+    for (const BodyRow& b : tow) {
+      speed_max = std::max(speed_max, b.speed);
+      tow_speed.emplace_back(b.t, b.speed);
+    }
+    for (const BodyRow& b : fish) fish_z.emplace_back(b.t, b.z);
+    EXPECT_NEAR(std::stod(row["tow_speed"]), speed_max, kNineDigits * std::max(1.0, speed_max));
+    EXPECT_EQ(row["towfish_depth.settled"], SettledHere(fish_z, 4.0, 0.5) ? "1" : "0") << name;
+    EXPECT_EQ(row["tow_speed.settled"], SettledHere(tow_speed, 4.0, 0.2) ? "1" : "0") << name;
+    // thrust 0 settles, 4165 N does not: flagged in the table and the summary
+    const std::string flag = i < 2 ? "1" : "0";
+    EXPECT_EQ(row["towfish_depth.settled"], flag) << name;
+    EXPECT_EQ(row["tow_speed.settled"], flag) << name;
+    EXPECT_EQ(s.out.find("not settled: " + name + ": towfish_depth (change ") != std::string::npos,
+              i >= 2)
+        << s.out;
+  }
+
+  // --resume: the same controllers and values, nothing to run
+  const Sweep again = RunSweep({file, "--out", out, "--resume"}, Tmp("log_resume"));
+  EXPECT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("0 run in"), std::string::npos) << again.out;
+
+  // a case again by hand (command.sh: towsim_sweep --run-case): lockstep gives the same run
+  const std::string bodies = ReadFile(out + "/case_0003/bodies.csv");
+  Process by_hand({"/bin/bash", out + "/case_0003/command.sh"}, Tmp("log_by_hand"));
+  ASSERT_TRUE(by_hand.Wait(kTimeout));
+  EXPECT_EQ(by_hand.exit_code(), 0) << by_hand.err();
+  EXPECT_EQ(ReadFile(out + "/case_0003/bodies.csv"), bodies);
+
+  // the plots of two parameters: a family of curves and a heat map per result, PNG and SVG
+  Process plot({"/usr/bin/python3", kSource + "/scripts/plot_sweep.py", out}, Tmp("log_plot"));
+  ASSERT_TRUE(plot.Wait(kTimeout));
+  ASSERT_EQ(plot.exit_code(), 0) << plot.err()
+                                 << "(needs /usr/bin/python3 with matplotlib: python3-matplotlib)";
+  for (const std::string result : {"towfish_depth", "tow_speed"}) {
+    for (const std::string kind : {"curves", "heatmap"}) {
+      const std::string stem = out + "/plots/" + result + "_" + kind;
+      EXPECT_TRUE(StartsWith(ReadFile(stem + ".png"), "\x89PNG\r\n\x1a\n")) << stem;
+      const std::string svg = ReadFile(stem + ".svg");
+      EXPECT_TRUE(StartsWith(svg, "<?xml")) << stem;
+      EXPECT_NE(svg.find("<svg"), std::string::npos) << stem;
+      EXPECT_NE(plot.out().find(stem + ".png\n"), std::string::npos) << plot.out();
+    }
+  }
+  // and the table's own plot: one curve per number of elements
+  const std::string svg = ReadFile(out + "/results.svg");
+  EXPECT_NE(svg.find(">cable.elements = 10</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">cable.elements = 20</text>"), std::string::npos);
+}
+
+// a case fails with its reason: sim_node's lockstep timeout (exit 5, --fail-on-failsafe by
+// default) when a controller pauses, a controller's own error
+TEST_F(SweepLocal, ControllersThatFailMarkTheirCaseFailedWithTheReason) {
+  const std::string file = Tmp("failing.yaml");
+  std::ofstream(file) << "scene: " << kSource << "/config/scenes/case1_forward.yaml\n"
+                      << "duration: 10\n"
+                      << "domain: 206\n"
+                      << "lockstep_timeout: 0.5\n"
+                      << "combine: zip\n"
+                      << "controllers:\n"
+                      << "  - {program: " << TOWSIM_TEST_CONTROLLER
+                      << ", name: tow, args: [--body, tow_vehicle, --pause, \"${pause}\"]}\n"
+                      << "  - {program: " << TOWSIM_TOWFISH_DEPTH
+                      << ", args: [--body, towfish, --depth, 200, --kp, \"${kp}\"]}\n"
+                      << "parameters:\n"
+                      << "  pause: [\"20=3\", \"1000=0\"]\n"
+                      << "  kp: [0.15, nan]\n"
+                      << "results:\n"
+                      << "  d: {signal: towfish.depth}\n";
+  const std::string out = Tmp("out");
+  const Sweep s = RunSweep({file, "--out", out, "--workers", "2"}, Tmp("log"));
+  EXPECT_EQ(s.exit_code, 4) << s.out << s.err;
+  auto rows = Table(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows["case_0000"]["status"], "failed");
+  EXPECT_EQ(rows["case_0000"]["exit_code"], "5");
+  EXPECT_EQ(rows["case_0000"]["message"],
+            "sim_node: error: lockstep timeout: body tow_vehicle at step 20 (t = 1 s): no "
+            "command after 0.5 s (--lockstep-timeout 0.5) (--fail-on-failsafe)");
+  EXPECT_EQ(rows["case_0001"]["status"], "failed");
+  EXPECT_EQ(rows["case_0001"]["exit_code"], "2");
+  EXPECT_EQ(rows["case_0001"]["message"],
+            "controller towfish_depth exited with code 2: towfish_depth: error: --kp nan: must "
+            "be a finite number");
+  EXPECT_NE(s.out.find("  failed: case_0001 (exit 2): controller towfish_depth exited with code "
+                       "2: "),
+            std::string::npos)
+      << s.out;
+
+  // refused before anything runs (exit 2): too many workers for the domain ids left, no
+  // CYCLONEDDS_URI, --domain for a sweep without controllers
+  Sweep bad = RunSweep({file, "--out", Tmp("out2"), "--domain", "230", "--workers", "3"},
+                       Tmp("log_workers"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("towsim_sweep: error: domain = 230 with 3 workers: the cases running at "
+                         "once each take a DDS domain id from 230 up, and the highest is 231"),
+            std::string::npos)
+      << bad.err;
+  Process no_uri({TOWSIM_SWEEP, file, "--out", Tmp("out2")}, Tmp("log_uri"), {"CYCLONEDDS_URI="});
+  ASSERT_TRUE(no_uri.Wait(kTimeout));
+  EXPECT_EQ(no_uri.exit_code(), 2);
+  EXPECT_NE(no_uri.err().find("failing.yaml has controllers: and CYCLONEDDS_URI is not set"),
+            std::string::npos)
+      << no_uri.err();
+  bad = RunSweep({kLocalSweep, "--out", Tmp("out2"), "--domain", "206"}, Tmp("log_domain"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--domain 206: local_sweep.yaml has no controllers:"), std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(Tmp("out2")));
 }
 
 }  // namespace

@@ -35,7 +35,8 @@ example)
            share/towsim/scenes/case1_forward.yaml share/towsim/line_types/park_kim_tow_cable.yaml \
            lib/cmake/towsim/towsimConfig.cmake \
            share/towsim/scripts/plot_paper.py share/towsim/scripts/plot_uturn_3d.py \
-           share/towsim/scripts/plot_waves.py share/towsim/scripts/paper_cases.py; do
+           share/towsim/scripts/plot_waves.py share/towsim/scripts/plot_sweep.py \
+           share/towsim/scripts/paper_cases.py; do
     [[ -e "$work/prefix/$f" ]] || fail "the installation has no $f"
   done
   # every installed program (cmake/install.cmake TOWSIM_INSTALLED_PROGRAMS) answers --help
@@ -68,7 +69,7 @@ example)
   # the plotting scripts start from the installation (paper_cases.py beside them), where a
   # python3 with matplotlib is there to run them
   if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then
-    for script in plot_paper plot_uturn_3d plot_waves; do
+    for script in plot_paper plot_uturn_3d plot_waves plot_sweep; do
       /usr/bin/python3 "$work/prefix/share/towsim/scripts/$script.py" --help > /dev/null ||
         fail "share/towsim/scripts/$script.py --help"
     done

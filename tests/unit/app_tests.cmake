@@ -61,6 +61,12 @@ towsim_add_test(sweep_combinator_test LABEL unit
 towsim_add_test(sweep_signals_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_signals_test.cc
   LIBS towsim_sweep_lib)
+towsim_add_test(sweep_controllers_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_controllers_test.cc
+  LIBS towsim_sweep_lib)
+towsim_add_test(sweep_case_run_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_case_run_test.cc
+  LIBS towsim_sweep_lib)
 towsim_add_test(sweep_case_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sweep_case_test.cc
   LIBS towsim_sweep_lib)

@@ -143,9 +143,11 @@ TEST(SweepFile, BrokenValuesNameTheRule) {
 }
 
 TEST(SweepFile, BrokenTopLevelAndResults) {
-  EXPECT_EQ(Error("scene: steady_tow.yaml\nparameter:\n  cable.elements: [1]\n"),
-            "parameter = {cable.elements: [1]} (sweep.yaml:2): unknown key; did you mean "
-            "parameters? (allowed: scene, duration, combine, parameters, results)");
+  EXPECT_EQ(
+      Error("scene: steady_tow.yaml\nparameter:\n  cable.elements: [1]\n"),
+      "parameter = {cable.elements: [1]} (sweep.yaml:2): unknown key; did you mean "
+      "parameters? (allowed: scene, duration, combine, parameters, results, controllers, domain, "
+      "lockstep_timeout)");
   EXPECT_EQ(Error("scene: nope.yaml\nparameters:\n  cable.elements: [1]\n"),
             "scene = " + kScenes +
                 "/nope.yaml (sweep.yaml:1): cannot read the scene file (no "
@@ -162,6 +164,126 @@ TEST(SweepFile, BrokenTopLevelAndResults) {
             "max_abs, mean, rms, std");
   EXPECT_EQ(Error(head + "results:\n  d: {signal: towfish.z, from: 5, to: 2}\n"),
             "results.d.to = 2 (sweep.yaml:5): must be > 5");
+}
+
+// controllers (docs/sweeps.md "Controllers"): programs and arguments as written, a plain
+// parameter named by an argument goes to the controllers only, every controller is told the
+// domain, domain and lockstep_timeout read
+TEST(SweepFile, ControllersTheirParametersAndTheDomain) {
+  const SweepSpec s = Load(R"(scene: case1_forward.yaml
+duration: 10
+domain: 206
+lockstep_timeout: 2.5
+controllers:
+  - program: maneuver_runner
+    args: [--maneuver, case1, --thrust, "${thrust}"]
+  - {program: ../bin/towfish_depth, name: depth, args: [--depth, 25, --domain, "${domain}",
+                                                       --log, "${case_dir}/depth.log"]}
+parameters:
+  thrust: [0, 4165]
+  cable.elements: [10, 20]
+results:
+  d: {signal: towfish.depth, settled: {window: 5, tolerance: 0.05}}
+  n: {signal: newton_iterations_max}
+)");
+  ASSERT_EQ(s.controllers.size(), 2u);
+  EXPECT_EQ(s.controllers[0].name, "maneuver_runner");  // the program's name
+  EXPECT_EQ(s.controllers[0].program, "maneuver_runner");
+  // no ${domain}: --domain ${domain} appended
+  EXPECT_EQ(s.controllers[0].args,
+            (std::vector<std::string>{"--maneuver", "case1", "--thrust", "${thrust}", "--domain",
+                                      "${domain}"}));
+  EXPECT_EQ(s.controllers[0].location, "sweep.yaml:6");
+  EXPECT_EQ(s.controllers[1].name, "depth");
+  EXPECT_EQ(s.controllers[1].program, "../bin/towfish_depth");
+  // ${domain} named: nothing appended
+  EXPECT_EQ(s.controllers[1].args,
+            (std::vector<std::string>{"--depth", "25", "--domain", "${domain}", "--log",
+                                      "${case_dir}/depth.log"}));
+  EXPECT_EQ(s.domain, 206);
+  EXPECT_EQ(s.domain_location, "sweep.yaml:3");
+  ASSERT_TRUE(s.lockstep_timeout);
+  EXPECT_EQ(*s.lockstep_timeout, 2.5);
+  EXPECT_EQ(s.base_dir, kScenes);
+  ASSERT_EQ(s.parameters.size(), 2u);
+  EXPECT_TRUE(s.parameters[0].controllers_only);   // thrust: not a scene key, named ${thrust}
+  EXPECT_FALSE(s.parameters[1].controllers_only);  // cable.elements: a scene key path
+  ASSERT_TRUE(s.results[0].settled);
+  EXPECT_EQ(s.results[0].settled->window, 5.0);
+  EXPECT_EQ(s.results[0].settled->tolerance, 0.05);
+  EXPECT_FALSE(s.results[1].settled);
+
+  // without controllers: the defaults
+  const SweepSpec plain = Load("scene: steady_tow.yaml\nparameters:\n  cable.elements: [1]\n");
+  EXPECT_TRUE(plain.controllers.empty());
+  EXPECT_EQ(plain.domain, kDefaultSweepDomain);
+  EXPECT_FALSE(plain.lockstep_timeout);
+}
+
+TEST(SweepFile, BrokenControllersAndSettled) {
+  const std::string head = "scene: case1_forward.yaml\nduration: 5\n";
+  const std::string params = "parameters:\n  cable.elements: [10]\n";
+  EXPECT_EQ(Error("scene: case1_forward.yaml\ncontrollers:\n  - {program: a}\n" + params),
+            "controllers = [{program: a}] (sweep.yaml:2): need duration: (a DDS node runs until "
+            "stopped; a case runs `duration` seconds of simulated time)");
+  EXPECT_EQ(Error(head + "domain: 7\n" + params),
+            "domain = 7 (sweep.yaml:3): needs controllers: (cases without controllers run "
+            "offline, without DDS)");
+  EXPECT_EQ(Error(head + "lockstep_timeout: 2\n" + params),
+            "lockstep_timeout = 2 (sweep.yaml:3): needs controllers: (cases without controllers "
+            "run offline, without DDS)");
+  const std::string one = "controllers:\n  - {program: a}\n";
+  EXPECT_EQ(Error(head + one + "domain: 232\n" + params),
+            "domain = 232 (sweep.yaml:5): must be <= 231");
+  EXPECT_EQ(Error(head + one + "lockstep_timeout: -1\n" + params),
+            "lockstep_timeout = -1 (sweep.yaml:5): must be >= 0");
+  EXPECT_EQ(Error(head + "controllers: []\n" + params),
+            "controllers = [] (sweep.yaml:3): must be a list of controllers, each {program: P, "
+            "args: [...], name: N}");
+  EXPECT_EQ(Error(head + "controllers:\n  - {args: [x]}\n" + params),
+            "controllers[0].program = <missing> (sweep.yaml:4): is required: the controller's "
+            "executable");
+  EXPECT_EQ(Error(head + "controllers:\n  - {program: a, arg: [x]}\n" + params),
+            "controllers[0].arg = [x] (sweep.yaml:4): unknown key; did you mean args? (allowed: "
+            "program, args, name)");
+  EXPECT_EQ(Error(head + "controllers:\n  - {program: bin/a}\n  - {program: a}\n" + params),
+            "controllers[1].program = a (sweep.yaml:5): a second controller named a (first at "
+            "sweep.yaml:4); give each its own name:");
+  EXPECT_EQ(Error(head + "controllers:\n  - {program: a, name: sim_node}\n" + params),
+            "controllers[0].name = sim_node (sweep.yaml:4): sim_node's logs have this name; give "
+            "another name:");
+  EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [[1, 2]]}\n" + params),
+            "controllers[0].args[0] = [1, 2] (sweep.yaml:4): an argument must be a scalar "
+            "(quote it)");
+  EXPECT_EQ(
+      Error(head + "controllers:\n  - {program: a, args: [\"${gain\"]}\n" + params),
+      "controllers[0].args[0] = \"${gain\" (sweep.yaml:4): \"${\" without its \"}\" in ${gain");
+  EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [\"${gian}\"]}\n" +
+                  "parameters:\n  gain: [1, 2]\n"),
+            "controllers[0].args[0] = \"${gian}\" (sweep.yaml:4): ${gian} names no parameter; the "
+            "placeholders are the parameters (gain, ...) and domain, case, case_dir");
+  // a plain parameter no argument names is a scene key path, and says how to name it
+  EXPECT_EQ(Error(head + one + "parameters:\n  gain: [1, 2]\n"),
+            "parameters.gain = [1, 2] (sweep.yaml:6): the scene: unknown key (allowed: name, time, "
+            "environment, line_types, cable, bodies, integrator, script, publish, security) (a "
+            "parameter of the controllers only is named in their args as ${gain})");
+  EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [\"${domain}\"]}\n" +
+                  "parameters:\n  domain: [1, 2]\n"),
+            "parameters.domain = [1, 2] (sweep.yaml:6): is a placeholder of its own (${domain}); "
+            "choose another name");
+  // settled
+  EXPECT_EQ(Error(head + params + "results:\n  d: {signal: towfish.z, settled: 0.1}\n"),
+            "results.d.settled = 0.1 (sweep.yaml:6): must be a map {window: W, tolerance: T}: "
+            "the signal settled when its change (max - min) over the final W seconds is below T");
+  EXPECT_EQ(Error(head + params +
+                  "results:\n  d: {signal: towfish.z, settled: {window: 0, tolerance: 1}}\n"),
+            "results.d.settled.window = 0 (sweep.yaml:6): must be > 0");
+  EXPECT_EQ(Error(head + params + "results:\n  d: {signal: towfish.z, settled: {window: 2}}\n"),
+            "results.d.settled.tolerance = <missing> (sweep.yaml:6): is required");
+  EXPECT_EQ(
+      Error(head + params + "results:\n  d: {signal: towfish.z, settled: {window: 2, tol: 1}}\n"),
+      "results.d.settled.tol = 1 (sweep.yaml:6): unknown key (allowed: window, "
+      "tolerance)");
 }
 
 }  // namespace

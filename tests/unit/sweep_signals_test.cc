@@ -146,3 +146,81 @@ TEST(SweepSignalNames, UnknownSignalsAreBadInput) {
 
 }  // namespace
 }  // namespace towsim::app
+
+namespace towsim::app {
+namespace {
+
+// settled (docs/sweeps.md "Settled"): change = max - min over t >= t_last - window, below the
+// tolerance, over a run at least as long as the window; the values by hand
+TEST(SweepSettled, ChangeOverTheFinalWindowAgainstTheTolerance) {
+  const std::vector<std::pair<double, double>> rows = {
+      {0, 1.0}, {1, 2.0}, {2, 1.5}, {3, 1.75}, {4, 1.625}};
+  // window 2: t >= 2: 1.5, 1.75, 1.625: change 0.25 (exact in binary)
+  SettledCheck c = CheckSettled(rows, {2.0, 0.3});
+  EXPECT_TRUE(c.asked);
+  EXPECT_EQ(c.change, 0.25);
+  EXPECT_EQ(c.span, 4.0);
+  EXPECT_TRUE(c.settled);
+  EXPECT_FALSE(CheckSettled(rows, {2.0, 0.25}).settled);  // below: not equal
+  // window 3: t >= 1 takes 2.0 in: change 0.5
+  c = CheckSettled(rows, {3.0, 0.3});
+  EXPECT_EQ(c.change, 0.5);
+  EXPECT_FALSE(c.settled);
+  // window 4 = the run: every row; window 5 > the run: not shown to settle, whatever the change
+  EXPECT_EQ(CheckSettled(rows, {4.0, 2.0}).change, 1.0);
+  EXPECT_TRUE(CheckSettled(rows, {4.0, 2.0}).settled);
+  c = CheckSettled(rows, {5.0, 2.0});
+  EXPECT_EQ(c.change, 1.0);
+  EXPECT_FALSE(c.settled);
+  // a window of one row is refused
+  try {
+    CheckSettled(rows, {0.5, 1.0});
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "settled.window 0.5 s holds 1 output row(s) before t = 4 s; it needs at least 2 "
+              "(a longer window, or a higher time.output_rate)");
+  }
+}
+
+// through the case's files: towfish z is 25, 28, 30 at t = 0, 1, 2; the window within the
+// result's [from, to]
+TEST_F(SweepSignals, SettledOfAResultFromItsFiles) {
+  SweepResult r = R("towfish.depth", "final");
+  r.settled = SweepSettled{1.0, 2.5};  // t >= 1: 28, 30: change 2 < 2.5
+  std::vector<SettledCheck> checks;
+  const std::vector<double> v =
+      ComputeSweepResults({R("towfish.x", "final"), r}, dir_.path().string(), "", &checks);
+  ASSERT_EQ(checks.size(), 2u);
+  EXPECT_FALSE(checks[0].asked);
+  EXPECT_TRUE(checks[1].asked);
+  EXPECT_NEAR(checks[1].change, 2.0, kExact);
+  EXPECT_TRUE(checks[1].settled);
+  EXPECT_NEAR(v[1], 30.0, kExact);
+  r.settled = SweepSettled{1.0, 2.0};  // change 2 is not below 2
+  ComputeSweepResults({r}, dir_.path().string(), "", &checks);
+  EXPECT_FALSE(checks[0].settled);
+  r.to = 1.0;  // the rows t <= 1: 25, 28; the final window t >= 0: change 3
+  r.settled = SweepSettled{1.0, 2.5};
+  ComputeSweepResults({r}, dir_.path().string(), "", &checks);
+  EXPECT_NEAR(checks[0].change, 3.0, kExact);
+  EXPECT_FALSE(checks[0].settled);
+  // a run total has no time series
+  SweepResult total;
+  total.name = "rtf";
+  total.signal = "rtf";
+  total.settled = SweepSettled{1.0, 1.0};
+  total.location = "sweep.yaml:3";
+  std::vector<SweepResult> results = {total};
+  try {
+    CheckSweepResults(&results, {"towfish"});
+    ADD_FAILURE() << "no error";
+  } catch (const scene::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "results.rtf.signal = rtf (sweep.yaml:3): is a total of the whole run (sim_node's "
+              "summary line): it takes no stat, from, to or settled");
+  }
+}
+
+}  // namespace
+}  // namespace towsim::app

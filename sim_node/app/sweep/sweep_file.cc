@@ -8,6 +8,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "app/sweep/sweep_controllers.h"
 #include "app/sweep/sweep_values.h"
 #include "scene/config_error.h"
 #include "scene/overrides.h"
@@ -130,8 +131,9 @@ std::vector<std::string> ReadRange(const Field& field) {
     // an integer is exact in a double up to 2^53; beyond, neighbours merge and llround overflows
     for (const Field* f : {&from, &to, &step}) {
       if (std::fabs(f->Number()) >= kTwoTo53) {
-        f->Fail("an integer range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 "
-                "(exact in a double)");
+        f->Fail(
+            "an integer range must lie within -(2^53 - 1) .. 2^53 - 1 = 9007199254740991 "
+            "(exact in a double)");
       }
     }
   }
@@ -206,7 +208,7 @@ SweepResult ReadResult(const std::string& name, const Field& field) {
   r.name = name;
   r.location = field.location();
   if (!field.node().IsMap()) field.Fail("must be a map {signal: S, stat: final|max|...}");
-  const auto entries = CheckedEntries(field, {"signal", "stat", "from", "to"});
+  const auto entries = CheckedEntries(field, {"signal", "stat", "from", "to", "settled"});
   r.signal = Trim(Get(entries, "signal", field).String());
   if (r.signal.empty()) Get(entries, "signal", field).Fail("must name a signal");
   const Field stat = Get(entries, "stat", field);
@@ -215,7 +217,97 @@ SweepResult ReadResult(const std::string& name, const Field& field) {
   const Field to = Get(entries, "to", field);
   if (from.present()) r.from = from.Number(Range::AtLeast(0.0));
   if (to.present()) r.to = to.Number(Range::Above(r.from.value_or(0.0)));
+  const Field settled = Get(entries, "settled", field);
+  if (settled.present()) {
+    if (!settled.node().IsMap()) {
+      settled.Fail(
+          "must be a map {window: W, tolerance: T}: the signal settled when its change "
+          "(max - min) over the final W seconds is below T");
+    }
+    const auto keys = CheckedEntries(settled, {"window", "tolerance"});
+    SweepSettled s;
+    s.window = Get(keys, "window", settled).Number(Range::Above(0.0));
+    s.tolerance = Get(keys, "tolerance", settled).Number(Range::Above(0.0));
+    r.settled = s;
+  }
   return r;
+}
+
+// `controllers`: a list of {program, args, name}
+std::vector<SweepController> ReadControllers(const Field& list) {
+  std::vector<SweepController> out;
+  if (!list.node().IsSequence() || list.node().size() == 0) {
+    list.Fail("must be a list of controllers, each {program: P, args: [...], name: N}");
+  }
+  for (const Field& item : list.Items()) {
+    if (!item.node().IsMap()) item.Fail("must be a map {program: P, args: [...], name: N}");
+    const auto keys = CheckedEntries(item, {"program", "args", "name"});
+    SweepController k;
+    k.location = item.location();
+    const Field program = Get(keys, "program", item);
+    if (!program.present()) program.Fail("is required: the controller's executable");
+    k.program = Trim(program.String());
+    if (k.program.empty()) program.Fail("must name an executable");
+    const Field name = Get(keys, "name", item);
+    k.name = name.present() ? name.String() : std::filesystem::path(k.program).filename().string();
+    if (!IsValidName(k.name)) {
+      (name.present() ? name : program)
+          .Fail(std::string("a controller's name ") + kNameRule + " (give one with name:)");
+    }
+    if (k.name == "sim_node") {
+      (name.present() ? name : program).Fail("sim_node's logs have this name; give another name:");
+    }
+    for (const SweepController& seen : out) {
+      if (seen.name == k.name) {
+        (name.present() ? name : program)
+            .Fail("a second controller named " + k.name + " (first at " + seen.location +
+                  "); give each its own name:");
+      }
+    }
+    const Field args = Get(keys, "args", item);
+    if (args.present() && !args.node().IsNull()) {
+      if (!args.node().IsSequence()) args.Fail("must be a list of arguments");
+      for (const Field& a : args.Items()) {
+        if (!a.node().IsScalar()) a.Fail("an argument must be a scalar (quote it)");
+        const std::string text = a.node().Scalar();
+        if (text.find('\n') != std::string::npos) a.Fail("an argument must be one line");
+        try {
+          PlaceholderNames(text);
+        } catch (const std::invalid_argument& e) {
+          a.Fail(e.what());
+        }
+        k.args.push_back(text);
+      }
+    }
+    out.push_back(std::move(k));
+  }
+  return out;
+}
+
+// the placeholders every controller argument names exist: parameters or built-ins
+void CheckPlaceholders(const Field& list, const SweepSpec& spec) {
+  const std::vector<Field> items = list.Items();
+  for (size_t i = 0; i < spec.controllers.size(); ++i) {
+    const auto keys = CheckedEntries(items[i], {"program", "args", "name"});
+    const Field args = Get(keys, "args", items[i]);
+    const std::vector<Field> arg_fields =
+        args.present() && !args.node().IsNull() ? args.Items() : std::vector<Field>{};
+    for (size_t j = 0; j < spec.controllers[i].args.size(); ++j) {
+      for (const std::string& name : PlaceholderNames(spec.controllers[i].args[j])) {
+        bool known = false;
+        for (const std::string& b : BuiltinPlaceholders()) known = known || b == name;
+        for (const SweepParameter& p : spec.parameters) known = known || p.path == name;
+        if (!known) {
+          std::string names;
+          for (const SweepParameter& p : spec.parameters) names += p.path + ", ";
+          arg_fields[j].Fail("${" + name +
+                             "} names no parameter; the placeholders are the "
+                             "parameters (" +
+                             names + "...) and domain, case, case_dir");
+        }
+      }
+    }
+  }
 }
 
 // the key path must be one sim_node's --set accepts for this scene (same code: ApplyOverrides)
@@ -237,12 +329,18 @@ void CheckAgainstScene(const SweepSpec& spec, const std::string& scene_location,
   }
   for (size_t i = 0; i < spec.parameters.size(); ++i) {
     const SweepParameter& p = spec.parameters[i];
+    if (p.controllers_only) continue;
     Source source;
     source.name = std::filesystem::path(spec.scene).filename().string();
     try {
       ApplyOverrides({p.path + "=" + p.values.front()}, root, &source);
     } catch (const ConfigError& e) {
-      fields[i].Fail(e.rule());
+      std::string rule = e.rule();
+      if (!spec.controllers.empty() && p.path.find('.') == std::string::npos) {
+        rule +=
+            " (a parameter of the controllers only is named in their args as ${" + p.path + "})";
+      }
+      fields[i].Fail(rule);
     }
   }
 }
@@ -272,13 +370,15 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
   source->name = name_for_messages;
   const YAML::Node root = LoadYamlMap(
       yaml, name_for_messages,
-      "a sweep file must be a map of keys (scene, duration, combine, parameters, results)");
+      "a sweep file must be a map of keys (scene, duration, combine, parameters, results, "
+      "controllers, domain, lockstep_timeout)");
   const Field top(root, root.Mark(), "", source);
-  const auto entries =
-      CheckedEntries(top, {"scene", "duration", "combine", "parameters", "results"});
+  const auto entries = CheckedEntries(top, {"scene", "duration", "combine", "parameters", "results",
+                                            "controllers", "domain", "lockstep_timeout"});
 
   SweepSpec spec;
   spec.name = name_for_messages;
+  spec.base_dir = base_dir;
   const Field scene = Get(entries, "scene", top);
   const std::filesystem::path scene_path(scene.String());
   spec.scene = scene_path.is_absolute() ? scene_path.string()
@@ -308,6 +408,56 @@ SweepSpec LoadSweepFromString(const std::string& yaml, const std::string& name_f
                                  std::to_string(n) + ": combine: zip needs lists of one length");
       }
     }
+  }
+
+  // the controllers, and what only they need
+  const Field controllers = Get(entries, "controllers", top);
+  const Field domain = Get(entries, "domain", top);
+  const Field lockstep_timeout = Get(entries, "lockstep_timeout", top);
+  if (controllers.present()) {
+    spec.controllers = ReadControllers(controllers);
+    if (!duration.present()) {
+      controllers.Fail(
+          "need duration: (a DDS node runs until stopped; a case runs `duration` "
+          "seconds of simulated time)");
+    }
+  } else {
+    for (const Field* f : {&domain, &lockstep_timeout}) {
+      if (f->present()) {
+        f->Fail("needs controllers: (cases without controllers run offline, without DDS)");
+      }
+    }
+  }
+  if (domain.present()) {
+    spec.domain = domain.Integer(Range::Closed(0, kMaxSweepDomain));
+    spec.domain_location = domain.location();
+  }
+  if (lockstep_timeout.present())
+    spec.lockstep_timeout = lockstep_timeout.Number(Range::AtLeast(0));
+  for (size_t i = 0; i < spec.parameters.size(); ++i) {
+    SweepParameter& p = spec.parameters[i];
+    for (const std::string& b : BuiltinPlaceholders()) {
+      if (p.path == b && !spec.controllers.empty()) {
+        parameter_fields[i].Fail("is a placeholder of its own (${" + b + "}); choose another name");
+      }
+    }
+    if (p.path.find('.') != std::string::npos) continue;  // a scene key path
+    for (const SweepController& k : spec.controllers) {
+      for (const std::string& a : k.args) {
+        for (const std::string& name : PlaceholderNames(a)) {
+          p.controllers_only = p.controllers_only || name == p.path;
+        }
+      }
+    }
+  }
+  if (controllers.present()) CheckPlaceholders(controllers, spec);
+  // every controller is told the case's domain
+  for (SweepController& k : spec.controllers) {
+    bool named = false;
+    for (const std::string& a : k.args) {
+      for (const std::string& name : PlaceholderNames(a)) named = named || name == "domain";
+    }
+    if (!named) k.args.insert(k.args.end(), {"--domain", "${domain}"});
   }
 
   for (const auto& [name, field] : NamedEntries(Get(entries, "results", top), "result names")) {

@@ -22,7 +22,31 @@ struct SweepParameter {
   std::string path;
   std::vector<std::string> values;
   std::string location;  // "sweep.yaml:7", for messages
+  // a plain name (no dot) that the controllers' arguments name as ${path}: it goes to the
+  // controllers only, never to sim_node (--set); every other parameter is a scene key path
+  bool controllers_only = false;
 };
+
+// `settled` of a result (docs/sweeps.md "Settled"): the signal's change over the final
+// `window` seconds of the result's rows, max - min, must be below `tolerance` (the signal's
+// unit); results.csv gains the column <name>.settled (1 or 0)
+struct SweepSettled {
+  double window = 0.0;     // [s], > 0
+  double tolerance = 0.0;  // > 0
+};
+
+// a controller process beside every case's sim_node (docs/sweeps.md "Controllers")
+struct SweepController {
+  std::string name;               // its logs <case>/<name>.out, .err; default the program's name
+  std::string program;            // as written: a path (relative to the sweep file) or a name
+  std::vector<std::string> args;  // ${parameter}, ${domain}, ${case}, ${case_dir} substituted
+  std::string location;           // "sweep.yaml:12"
+};
+
+// the DDS domain ids of controller cases: from the sweep's `domain` up to this one, the
+// highest with config/cyclonedds.xml (docs/command_line.md, --domain)
+inline constexpr int kMaxSweepDomain = 231;
+inline constexpr int kDefaultSweepDomain = 100;
 
 enum class SweepCombine {
   kProduct,  // every combination; the first parameter varies slowest
@@ -36,7 +60,8 @@ struct SweepResult {
   std::string signal;  // e.g. towfish.z, layback, top_tension, newton_iterations
   std::string stat;    // final, initial, min, max, max_abs, mean, rms, std; empty if not given
   std::optional<double> from, to;  // time window [s]; all the run if absent
-  std::string location;            // "sweep.yaml:12"
+  std::optional<SweepSettled> settled;
+  std::string location;  // "sweep.yaml:12"
 };
 
 struct SweepSpec {
@@ -46,6 +71,13 @@ struct SweepSpec {
   SweepCombine combine = SweepCombine::kProduct;
   std::vector<SweepParameter> parameters;  // file order; at least one
   std::vector<SweepResult> results;        // file order
+  // with controllers: every case runs sim_node --mode lockstep on a DDS domain of its own
+  // (the first free id from `domain` up to kMaxSweepDomain) beside these processes
+  std::vector<SweepController> controllers;
+  int domain = kDefaultSweepDomain;
+  std::string domain_location;             // where `domain` was given (empty: the default)
+  std::optional<double> lockstep_timeout;  // sim_node --lockstep-timeout [s]
+  std::string base_dir;                    // the sweep file's folder (relative programs)
 };
 
 // the statistics a result may ask for, in documentation order

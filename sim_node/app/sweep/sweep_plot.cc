@@ -10,6 +10,10 @@ namespace {
 
 constexpr double kWidth = 640.0, kPanelHeight = 240.0;  // [px]
 constexpr double kLeft = 80.0, kRight = 20.0, kTop = 30.0, kBottom = 40.0;
+constexpr double kLegendWidth = 220.0;  // [px] right of the panels, with a family
+// the family's colours (matplotlib's tab10), in turn
+const char* const kColors[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd",
+                               "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
 
 std::string Escape(const std::string& text) {
   std::string out;
@@ -56,10 +60,33 @@ std::pair<double, double> Span(double lo, double hi) {
 std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<SweepRow>>& rows) {
   const size_t panels = std::max<size_t>(1, spec.results.size());
   const double height = kPanelHeight * static_cast<double>(panels);
+  // the family of a row: the values of every parameter but the first ("b = 2, c = x")
+  std::vector<std::string> families;
+  auto family_of = [&](const SweepRow& row) {
+    std::string key;
+    for (size_t p = 1; p < row.parameters.size() && p < spec.parameters.size(); ++p) {
+      key += (key.empty() ? "" : ", ") + spec.parameters[p].path + " = " + row.parameters[p];
+    }
+    return key;
+  };
+  for (const auto& row : rows) {
+    if (!row) continue;
+    const std::string key = family_of(*row);
+    if (std::find(families.begin(), families.end(), key) == families.end()) {
+      families.push_back(key);
+    }
+  }
+  const bool legend = families.size() > 1;
+  const double width = kWidth + (legend ? kLegendWidth : 0.0);
+  auto color_of = [&](const SweepRow& row) {
+    const size_t k = static_cast<size_t>(
+        std::find(families.begin(), families.end(), family_of(row)) - families.begin());
+    return std::string(kColors[k % (sizeof kColors / sizeof kColors[0])]);
+  };
   std::string svg =
       "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
       "width=\"" +
-      Fmt("%.0f", kWidth) + "\" height=\"" + Fmt("%.0f", height) +
+      Fmt("%.0f", width) + "\" height=\"" + Fmt("%.0f", height) +
       "\" font-family=\"sans-serif\" font-size=\"11\">\n"
       "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   const std::string x_name = spec.parameters.empty() ? "" : spec.parameters.front().path;
@@ -91,7 +118,11 @@ std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<
     const double top = kPanelHeight * static_cast<double>(i);
     const double x0 = kLeft, x1 = kWidth - kRight, y0 = top + kTop,
                  y1 = top + kPanelHeight - kBottom;
-    std::vector<std::pair<double, double>> points;
+    struct Point {
+      double x, y;
+      const SweepRow* row;
+    };
+    std::vector<Point> points;
     int failed = 0;
     for (const auto& row : rows) {
       if (!row) continue;
@@ -99,12 +130,12 @@ std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<
         ++failed;
         continue;
       }
-      if (std::isfinite(row->results[i])) points.emplace_back(x_of(*row), row->results[i]);
+      if (std::isfinite(row->results[i])) points.push_back({x_of(*row), row->results[i], &*row});
     }
     double xlo = INFINITY, xhi = -INFINITY, ylo = INFINITY, yhi = -INFINITY;
-    for (const auto& [x, y] : points) {
-      xlo = std::min(xlo, x), xhi = std::max(xhi, x), ylo = std::min(ylo, y),
-      yhi = std::max(yhi, y);
+    for (const Point& p : points) {
+      xlo = std::min(xlo, p.x), xhi = std::max(xhi, p.x), ylo = std::min(ylo, p.y),
+      yhi = std::max(yhi, p.y);
     }
     if (points.empty()) xlo = xhi = ylo = yhi = 0.0;
     const auto [xa, xb] = Span(xlo, xhi);
@@ -144,9 +175,48 @@ std::string SweepPlotSvg(const SweepSpec& spec, const std::vector<std::optional<
     }
     svg += "<text x=\"" + Fmt("%.1f", 0.5 * (x0 + x1)) + "\" y=\"" + Fmt("%.1f", y1 + 30) +
            "\" text-anchor=\"middle\">" + Escape(x_name) + "</text>\n";
-    for (const auto& [x, y] : points) {
-      svg += "<circle cx=\"" + Fmt("%.1f", px(x)) + "\" cy=\"" + Fmt("%.1f", py(y)) +
-             "\" r=\"3.5\" fill=\"#1f77b4\"/>\n";
+    // each family's curve in x order, then its points (hollow: not settled)
+    for (const std::string& family : families) {
+      std::vector<Point> curve;
+      for (const Point& p : points) {
+        if (family_of(*p.row) == family) curve.push_back(p);
+      }
+      std::stable_sort(curve.begin(), curve.end(),
+                       [](const Point& a, const Point& b) { return a.x < b.x; });
+      if (curve.size() > 1) {
+        std::string line;
+        for (const Point& p : curve)
+          line += Fmt("%.1f", px(p.x)) + "," + Fmt("%.1f", py(p.y)) + " ";
+        svg += "<polyline points=\"" + line + "\" fill=\"none\" stroke=\"" +
+               color_of(*curve.front().row) + "\" stroke-width=\"1.5\"/>\n";
+      }
+    }
+    bool hollow_any = false;
+    for (const Point& p : points) {
+      const bool hollow =
+          i < p.row->settled.size() && p.row->settled[i].asked && !p.row->settled[i].settled;
+      hollow_any = hollow_any || hollow;
+      const std::string color = color_of(*p.row);
+      svg += "<circle cx=\"" + Fmt("%.1f", px(p.x)) + "\" cy=\"" + Fmt("%.1f", py(p.y)) +
+             "\" r=\"3.5\" fill=\"" + (hollow ? "white" : color) + "\" stroke=\"" + color +
+             "\"/>\n";
+    }
+    if (hollow_any) {
+      svg += "<text x=\"" + Fmt("%.1f", x1) + "\" y=\"" + Fmt("%.1f", top + 18) +
+             "\" text-anchor=\"end\">hollow: not settled</text>\n";
+    }
+  }
+  if (legend) {
+    const double lx = kWidth + 10.0;
+    svg += "<text x=\"" + Fmt("%.1f", lx) + "\" y=\"" + Fmt("%.1f", kTop + 8) +
+           "\" font-size=\"12\">curves:</text>\n";
+    for (size_t k = 0; k < families.size(); ++k) {
+      const double y = kTop + 26.0 + 16.0 * static_cast<double>(k);
+      svg += "<line x1=\"" + Fmt("%.1f", lx) + "\" x2=\"" + Fmt("%.1f", lx + 18) + "\" y1=\"" +
+             Fmt("%.1f", y - 4) + "\" y2=\"" + Fmt("%.1f", y - 4) + "\" stroke=\"" +
+             kColors[k % (sizeof kColors / sizeof kColors[0])] + "\" stroke-width=\"2\"/>\n";
+      svg += "<text x=\"" + Fmt("%.1f", lx + 24) + "\" y=\"" + Fmt("%.1f", y) + "\">" +
+             Escape(families[k]) + "</text>\n";
     }
   }
   svg += "</svg>\n";

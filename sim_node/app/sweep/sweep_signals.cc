@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <optional>
@@ -220,6 +221,36 @@ double RunTotal(const std::string& signal, const RunSummary& r) {
 
 }  // namespace
 
+SettledCheck CheckSettled(const std::vector<std::pair<double, double>>& rows,
+                          const SweepSettled& settled) {
+  SettledCheck c;
+  c.asked = true;
+  const double t_last = rows.back().first;
+  c.span = t_last - rows.front().first;
+  // the final window t >= t_last - window, with the CSV's 9-digit times
+  const double from = t_last - settled.window - 1e-9 * std::max(1.0, std::abs(t_last));
+  double lo = INFINITY, hi = -INFINITY;
+  int n = 0;
+  for (const auto& [t, x] : rows) {
+    if (t < from) continue;
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+    ++n;
+  }
+  if (n < 2) {
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "settled.window %g s holds %d output row(s) before t = %g s; it needs at "
+                  "least 2 (a longer window, or a higher time.output_rate)",
+                  settled.window, n, t_last);
+    throw std::runtime_error(text);
+  }
+  c.change = hi - lo;
+  const bool spans = c.span >= settled.window * (1.0 - 1e-9);
+  c.settled = spans && c.change < settled.tolerance;
+  return c;
+}
+
 void CheckSweepResults(std::vector<SweepResult>* results,
                        const std::vector<std::string>& body_names) {
   for (SweepResult& r : *results) {
@@ -229,10 +260,10 @@ void CheckSweepResults(std::vector<SweepResult>* results,
     };
     const auto [body, quantity] = Split(r.signal);
     if (body.empty() && In(kRunTotals, quantity)) {
-      if (!r.stat.empty() || r.from || r.to) {
+      if (!r.stat.empty() || r.from || r.to || r.settled) {
         fail(
-            "is a total of the whole run (sim_node's summary line): it takes no stat, from "
-            "or to");
+            "is a total of the whole run (sim_node's summary line): it takes no stat, from, "
+            "to or settled");
       }
       continue;
     }
@@ -256,8 +287,10 @@ void CheckSweepResults(std::vector<SweepResult>* results,
 
 std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
                                         const std::string& case_dir,
-                                        const std::string& sim_node_stdout) {
+                                        const std::string& sim_node_stdout,
+                                        std::vector<SettledCheck>* settled) {
   CaseFiles files(case_dir);
+  if (settled != nullptr) settled->assign(results.size(), SettledCheck{});
   std::optional<RunSummary> summary;
   std::vector<double> values;
   for (const SweepResult& r : results) {
@@ -285,6 +318,13 @@ std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
                                (r.from || r.to ? " in the window" : "") + " in " + case_dir);
     }
     values.push_back(Statistic(s, r.stat));
+    if (r.settled && settled != nullptr) {
+      try {
+        (*settled)[values.size() - 1] = CheckSettled(s, *r.settled);
+      } catch (const std::runtime_error& e) {
+        throw std::runtime_error("results." + r.name + ": " + e.what());
+      }
+    }
   }
   return values;
 }

@@ -16,7 +16,10 @@
 //                                             largest over the nodes [N] (cable.csv)
 //   newton_iterations, residual, step_wall_us status.csv (the steps at the output times)
 // Statistics over the output rows in the window [from, to]: final, initial, min, max,
-// max_abs, mean, rms, std (population). Run totals, from the summary line (no statistic):
+// max_abs, mean, rms, std (population). `settled` (SweepSettled): over the rows of that window
+// with t >= t_last - window, change = max - min; settled when change < tolerance and the rows
+// span the window (t_last - t_first >= window: a shorter run has not shown it settled). Run totals,
+// from the summary line (no statistic):
 //   steps, rtf, run_wall_s (the stepping loop), newton_iterations_mean, newton_iterations_max,
 //   substeps, coupling_iterations_mean.
 
@@ -33,11 +36,25 @@ namespace towsim::app {
 void CheckSweepResults(std::vector<SweepResult>* results,
                        const std::vector<std::string>& body_names);
 
+// the settled check of one result
+struct SettledCheck {
+  bool asked = false;    // the result has `settled`
+  bool settled = false;  // change < tolerance over a window the rows span
+  double change = 0.0;   // max - min over the final window [the signal's unit]
+  double span = 0.0;     // t_last - t_first of the result's rows [s]
+};
+
+// the check of `settled` on the (t, value) rows of a result's window, in time order (at
+// least one); throws std::runtime_error if the final window holds fewer than 2 rows
+SettledCheck CheckSettled(const std::vector<std::pair<double, double>>& rows,
+                          const SweepSettled& settled);
+
 // The value of each result for the case whose CSV files are in `case_dir`; `sim_node_stdout`
-// holds its summary line. Throws std::runtime_error naming the file, or the result and window
-// with no rows.
+// holds its summary line; `settled` (if not null) gets each result's settled check. Throws
+// std::runtime_error naming the file, or the result and window with no rows.
 std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
                                         const std::string& case_dir,
-                                        const std::string& sim_node_stdout);
+                                        const std::string& sim_node_stdout,
+                                        std::vector<SettledCheck>* settled = nullptr);
 
 }  // namespace towsim::app
