@@ -9,7 +9,9 @@
 //       build/bench/step_driver config/scenes/case1_forward.yaml 10
 //
 // --skip S runs the first S seconds before the measured part (e.g. past a start-up transient);
-// the printed wall time covers the measured part only.
+// the printed wall time covers the measured part only. It also prints each body's mean depth
+// (z, NED) over the measured part, sampled every step (docs/environment.md: the vehicles' mean
+// depth in waves).
 
 #include <chrono>
 #include <cmath>
@@ -61,6 +63,7 @@ int main(int argc, char** argv) {
     const double h = model.time.step;
     const long skip_steps = std::lround(skip / h), steps = std::lround(seconds / h);
     long newton = 0, coupling = 0;
+    std::vector<double> z_sum(sim.num_bodies(), 0.0);
     auto t0 = std::chrono::steady_clock::now();
     for (long k = 0; k < skip_steps + steps; ++k) {
       if (k == skip_steps) {
@@ -75,6 +78,8 @@ int main(int argc, char** argv) {
       }
       newton += s.iterations;
       coupling += sim.coupling_iterations();
+      if (k >= skip_steps)
+        for (int b = 0; b < sim.num_bodies(); ++b) z_sum[b] += sim.body_position(b).z();
     }
     const double wall =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -82,6 +87,8 @@ int main(int argc, char** argv) {
         "%s: %ld steps (h = %g s), %.3f s wall, RTF %.0f, Newton/step %.3f, coupling/step %.3f\n",
         model.name.c_str(), steps, h, wall, seconds / wall, static_cast<double>(newton) / steps,
         static_cast<double>(coupling) / steps);
+    for (int b = 0; b < sim.num_bodies(); ++b)
+      std::printf("%s: mean depth %.4f m\n", sim.body_name(b).c_str(), z_sum[b] / steps);
     // the last body's position (the towfish in the shipped scenes): a check that two builds
     // or settings reach the same state
     const int last = sim.num_bodies() - 1;

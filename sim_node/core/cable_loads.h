@@ -4,7 +4,8 @@
 // hydrodynamics.h) on the velocity relative to the local water, normal added mass (Eq. 22-23)
 // and a line type's tangential added mass, and, in accelerating water (waves, an unsteady
 // current), the fluid-inertia (Froude-Krylov + added mass) force of Morison's equation in the
-// normal direction (docs/environment.md):
+// normal direction (docs/environment.md), on the water's material acceleration a_fluid = Du/Dt
+// (environment_field.h; docs/physics.md, "Fluid inertia in waves"):
 //   f_fluid = (rho_w A + m_a) (I - t t^T) a_fluid,  m_a = C_a rho_w A,
 // so that with the added mass -m_a (I - t t^T) r_ddot the normal inertia load is
 // (1 + C_a) rho_w A a_n,fluid - C_a rho_w A a_n,cable (the rho_w A part goes with buoyancy,

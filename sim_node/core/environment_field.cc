@@ -37,10 +37,15 @@ struct RawSums {
   double uh = 0.0, ah = 0.0;                      // long-crested: along the direction of travel
   double ux = 0.0, uy = 0.0, ax = 0.0, ay = 0.0;  // short-crested: resolved per component
   double uu = 0.0, au = 0.0;                      // upward
-  // long-crested derivative: sum a w k S cos th, a w k C sin th, a w^2 k S sin th, a w^2 k C cos th
-  double d_sc = 0.0, d_cs = 0.0, d2_ss = 0.0, d2_cc = 0.0;
+  // long-crested gradient: Q = sum a w k S cos th, P = sum a w k C sin th (always), and the
+  // derivative: sum a w^2 k S sin th, a w^2 k C cos th, a w k^2 C cos th, a w k^2 S sin th
+  double d_sc = 0.0, d_cs = 0.0, d2_ss = 0.0, d2_cc = 0.0, h_cc = 0.0, h_ss = 0.0;
   // short-crested derivative
   double dux = 0.0, duy = 0.0, duu = 0.0, dax = 0.0, day = 0.0, dau = 0.0;
+  // short-crested gradient: sum P e e^T (xx, xy, yy), sum Q e (x, y), sum P; and their
+  // derivatives along d
+  double pxx = 0.0, pxy = 0.0, pyy = 0.0, qx = 0.0, qy = 0.0, pp = 0.0;
+  double dpxx = 0.0, dpxy = 0.0, dpyy = 0.0, dqx = 0.0, dqy = 0.0, dpp = 0.0;
 };
 
 // where and when: x, y, the clamped height ze and its rate dze along d, the along-track
@@ -58,7 +63,9 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
   WavePack eta = zero, uh_s = zero, ah_s = zero;
   WavePack ux = zero, uy = zero, uu = zero, ax = zero, ay = zero, au = zero;
   WavePack dux = zero, duy = zero, duu = zero, dax = zero, day = zero, dau = zero;
-  WavePack d_sc = zero, d_cs = zero, d2_ss = zero, d2_cc = zero;
+  WavePack d_sc = zero, d_cs = zero, d2_ss = zero, d2_cc = zero, h_cc = zero, h_ss = zero;
+  WavePack pxx = zero, pxy = zero, pyy = zero, qx = zero, qy = zero, pp = zero;
+  WavePack dpxx = zero, dpxy = zero, dpyy = zero, dqx = zero, dqy = zero, dpp = zero;
   for (size_t i = 0; i < a.packets; ++i) {
     const WavePack k = P(s.k, i);
     // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: C = S = E):
@@ -82,26 +89,41 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
     const WavePack uh = aw * cc_c, ah = aw2 * cc_sn;
     uu += aw * ss_sn;
     au -= aw2 * ss_c;
+    // the velocity gradient's P = a w k C sin th and Q = a w k S cos th (wave_field.h)
+    const WavePack awk = P(s.a_omega_k, i);
+    const WavePack gp = awk * cc_sn, gq = awk * ss_c;
     if (kLongCrested) {
       uh_s += uh;
       ah_s += ah;
-    } else {
-      ux += uh * P(s.cos_b, i), uy += uh * P(s.sin_b, i);
-      ax += ah * P(s.cos_b, i), ay += ah * P(s.sin_b, i);
-    }
-    if (!kDerivative) continue;
-    // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
-    if (kLongCrested) {
-      // d u_h / ds = a w k (S cos th dzeta/ds - C sin th ds_along/ds), and alike: the
-      // point's two rates come out of the sums (SumWaves)
-      const WavePack awk = P(s.a_omega_k, i), aw2k = P(s.a_omega2_k, i);
-      d_sc += awk * ss_c;
-      d_cs += awk * cc_sn;
+      // (also d u_h / ds = a w k (S cos th dzeta/ds - C sin th ds_along/ds), and alike: the
+      // point's two rates come out of the sums, SumWaves)
+      d_sc += gq;
+      d_cs += gp;
+      if (!kDerivative) continue;
+      // along d: dth/ds = k ds_along/ds, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
+      const WavePack aw2k = P(s.a_omega2_k, i), awk2 = P(s.a_omega_k2, i);
       d2_ss += aw2k * ss_sn;
       d2_cc += aw2k * cc_c;
+      h_cc += awk2 * cc_c;
+      h_ss += awk2 * ss_sn;
       continue;
     }
+    const WavePack cb = P(s.cos_b, i), sb = P(s.sin_b, i);
+    ux += uh * cb, uy += uh * sb;
+    ax += ah * cb, ay += ah * sb;
+    const WavePack gpc = gp * cb, gps = gp * sb;
+    pxx += gpc * cb, pxy += gpc * sb, pyy += gps * sb;
+    qx += gq * cb, qy += gq * sb, pp += gp;
+    if (!kDerivative) continue;
+    // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
     const WavePack g = P(s.kx, i) * a.dx + P(s.ky, i) * a.dy;
+    // dP/ds = a w k (k S sin th dzeta/ds + C cos th dth/ds), dQ/ds = a w k (k C cos th dzeta/ds
+    // - S sin th dth/ds)
+    const WavePack dgp = awk * (k * ss_sn * a.dze + cc_c * g);
+    const WavePack dgq = awk * (k * cc_c * a.dze - ss_sn * g);
+    const WavePack dgpc = dgp * cb, dgps = dgp * sb;
+    dpxx += dgpc * cb, dpxy += dgpc * sb, dpyy += dgps * sb;
+    dqx += dgq * cb, dqy += dgq * sb, dpp += dgp;
     const WavePack dcc = k * ss * a.dze, dss = k * cc * a.dze;
     const WavePack duh = aw * (dcc * c - cc * sn * g), dah = aw2 * (dcc * sn + cc * c * g);
     duu += aw * (dss * sn + ss * c * g);
@@ -114,13 +136,20 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
   r.uu = Sum(uu), r.au = Sum(au);
   if (kLongCrested) {
     r.uh = Sum(uh_s), r.ah = Sum(ah_s);
-    if (kDerivative)
-      r.d_sc = Sum(d_sc), r.d_cs = Sum(d_cs), r.d2_ss = Sum(d2_ss), r.d2_cc = Sum(d2_cc);
+    r.d_sc = Sum(d_sc), r.d_cs = Sum(d_cs);
+    if (kDerivative) {
+      r.d2_ss = Sum(d2_ss), r.d2_cc = Sum(d2_cc);
+      r.h_cc = Sum(h_cc), r.h_ss = Sum(h_ss);
+    }
   } else {
     r.ux = Sum(ux), r.uy = Sum(uy), r.ax = Sum(ax), r.ay = Sum(ay);
+    r.pxx = Sum(pxx), r.pxy = Sum(pxy), r.pyy = Sum(pyy);
+    r.qx = Sum(qx), r.qy = Sum(qy), r.pp = Sum(pp);
     if (kDerivative) {
       r.dux = Sum(dux), r.duy = Sum(duy), r.duu = Sum(duu);
       r.dax = Sum(dax), r.day = Sum(day), r.dau = Sum(dau);
+      r.dpxx = Sum(dpxx), r.dpxy = Sum(dpxy), r.dpyy = Sum(dpyy);
+      r.dqx = Sum(dqx), r.dqy = Sum(dqy), r.dpp = Sum(dpp);
     }
   }
   return r;
@@ -202,7 +231,7 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   s.packets = packets;
   for (std::vector<double>* v :
        {&s.kx, &s.ky, &s.k, &s.omega, &s.phase, &s.a, &s.a_omega, &s.a_omega2, &s.a_omega_k,
-        &s.a_omega2_k, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
+        &s.a_omega2_k, &s.a_omega_k2, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
     v->assign(packets * kWaveLanes, 0.0);
   for (size_t j = 0; j < packets * kWaveLanes; ++j) {
     // the padding repeats the last component with zero amplitude: it adds exactly 0
@@ -219,6 +248,7 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
     s.a_omega2[j] = a * p.omega * p.omega;
     s.a_omega_k[j] = a * p.omega * p.k;
     s.a_omega2_k[j] = a * p.omega * p.omega * p.k;
+    s.a_omega_k2[j] = a * p.omega * p.k * p.k;
     s.q[j] = q;
     s.inv_1mq[j] = 1.0 / (1.0 - q);
     s.cos_b[j] = std::cos(p.direction);
@@ -320,8 +350,9 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   // crest rule: between the mean and the instantaneous surface, the kinematics at zeta = 0;
   // below the seabed those at zeta = -h (wave_field.h); the clamped coordinate does not move
   pa.ze = zeta, pa.dze = -d_W.z();
-  if (pa.ze > 0.0) pa.ze = 0.0, pa.dze = 0.0;
-  if (pa.ze < -wave_depth_) pa.ze = -wave_depth_, pa.dze = 0.0;
+  double vf = 1.0;  // the kinematics vary with z here (0: clamped, they do not)
+  if (pa.ze > 0.0) pa.ze = 0.0, pa.dze = 0.0, vf = 0.0;
+  if (pa.ze < -wave_depth_) pa.ze = -wave_depth_, pa.dze = 0.0, vf = 0.0;
   // a point below every possible trough is always wet: its elevation is not needed, and it
   // may stop at the first decayed component
   const bool always_wet = zeta < -r * amplitude_sum_;
@@ -334,34 +365,55 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   const RawSums m = Sums<kDerivative, kLongCrested, kDeep>(avx2_, waves_, pa);
   // above the instantaneous surface (zeta > eta) the water is not there
   if (!always_wet && zeta > r * m.eta) return out;
-  // the horizontal sums resolved along (cos b, sin b)
-  Vec3 u, a, du, da;
+  // the horizontal sums resolved along (cos b, sin b); c = G u, the convective acceleration
+  // before the ramp (wave_field.h: G = [-P e e^T, -Q e; -Q e^T, P], its last column zero where
+  // the kinematics are clamped), and dc/ds = dG/ds u + G du/ds
+  Vec3 u, a, du, da, c, dc;
   if (kLongCrested) {
     u << m.uh * cos_b_, m.uh * sin_b_, -m.uu;
     a << m.ah * cos_b_, m.ah * sin_b_, -m.au;
+    // along b and upward: c_h = -P u_h + Q u_up, c_up = Q u_h + P u_up
+    const double gp = m.d_cs, gq = m.d_sc;
+    const double ch = -gp * m.uh + vf * gq * m.uu, cu = gq * m.uh + vf * gp * m.uu;
+    c << ch * cos_b_, ch * sin_b_, -cu;
     if (kDerivative) {
       // du_h/ds = dzeta sum awk S c - ds_along sum awk C s, du_up/ds = dzeta sum awk C s +
       // ds_along sum awk S c; da_h/ds = dzeta sum aw2k S s + ds_along sum aw2k C c,
       // da_up/ds = -(dzeta sum aw2k C c - ds_along sum aw2k S s)
       const double dze = pa.dze, dal = pa.d_along;
       const double duh = dze * m.d_sc - dal * m.d_cs, dah = dze * m.d2_ss + dal * m.d2_cc;
-      du << duh * cos_b_, duh * sin_b_, -(dze * m.d_cs + dal * m.d_sc);
+      const double duu = dze * m.d_cs + dal * m.d_sc;
+      du << duh * cos_b_, duh * sin_b_, -duu;
       da << dah * cos_b_, dah * sin_b_, dze * m.d2_cc - dal * m.d2_ss;
+      // dP/ds = dzeta sum awk2 S s + ds_along sum awk2 C c, dQ/ds = dzeta sum awk2 C c -
+      // ds_along sum awk2 S s
+      const double dgp = dze * m.h_ss + dal * m.h_cc, dgq = dze * m.h_cc - dal * m.h_ss;
+      const double dch = -dgp * m.uh - gp * duh + vf * (dgq * m.uu + gq * duu);
+      const double dcu = dgq * m.uh + gq * duh + vf * (dgp * m.uu + gp * duu);
+      dc << dch * cos_b_, dch * sin_b_, -dcu;
     }
   } else {
     u << m.ux, m.uy, -m.uu;
     a << m.ax, m.ay, -m.au;
+    Eigen::Matrix3d g;
+    g << -m.pxx, -m.pxy, -vf * m.qx, -m.pxy, -m.pyy, -vf * m.qy, -m.qx, -m.qy, vf * m.pp;
+    c = g * u;
     if (kDerivative) {
       du << m.dux, m.duy, -m.duu;
       da << m.dax, m.day, -m.dau;
+      Eigen::Matrix3d dg;
+      dg << -m.dpxx, -m.dpxy, -vf * m.dqx, -m.dpxy, -m.dpyy, -vf * m.dqy, -m.dqx, -m.dqy,
+          vf * m.dpp;
+      dc = dg * u + g * du;
     }
   }
-  // NED: w = -u_up; the ramp scales the velocity, and its rate adds r' u to the acceleration
+  // NED: w = -u_up; the ramp scales the velocity, and its rate adds r' u to the acceleration;
+  // the material acceleration Du/Dt = du/dt + (r G)(r u)
   out.velocity = r * u;
-  out.acceleration = r * a + r_rate * u;
+  out.acceleration = r * a + r_rate * u + (r * r) * c;
   if (kDerivative) {
     out.d_velocity = r * du;
-    out.d_acceleration = r * da + r_rate * du;
+    out.d_acceleration = r * da + r_rate * du + (r * r) * dc;
   }
   return out;
 }

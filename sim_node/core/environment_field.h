@@ -6,7 +6,13 @@
 // velocity off their own in one place, RelativeVelocity below.
 //
 //   u(p, t) = U_c(z, t) + u_w(p, t)     [m/s]   current (current_field.h) + waves (wave_field.h)
-//   a(p, t) = DU_c/Dt  + du_w/dt        [m/s^2] (the waves' local acceleration: linear theory)
+//   a(p, t) = DU_c/Dt  + Du_w/Dt        [m/s^2] each one's material acceleration,
+//             Du_w/Dt = du_w/dt + (u_w . grad) u_w   (wave_field.h; docs/physics.md, "Fluid
+//             inertia in waves")
+// The waves ride on the current without interacting with it (their frequencies and
+// dispersion are those of still water), and the cross terms of the material derivative of the
+// sum, (U_c . grad) u_w + (u_w . grad) U_c, which are that interaction's Doppler shift and
+// refraction, are left out with it.
 //
 // Two costs are kept apart because they differ by two orders of magnitude:
 //   - the current is a table look-up: loads evaluate it exactly wherever and whenever they
@@ -41,8 +47,8 @@ using WavePack = Pack4;
 struct WavePackets {
   size_t packets = 0;
   std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
-  // a w k, a w^2 k: the long-crested sums' derivative along a direction
-  std::vector<double> a_omega_k, a_omega2_k;
+  // a w k, a w^2 k, a w k^2: the velocity gradient and the sums' derivative along a direction
+  std::vector<double> a_omega_k, a_omega2_k, a_omega_k2;
   // per component (unpadded): k and ln(1 / (1 - q)), for the depth cut-off's search
   std::vector<double> k_scalar, log_inv_1mq;
 };
@@ -51,7 +57,7 @@ struct WavePackets {
 // d/ds u_w(p + s d) at s = 0 (d = r' at a cable node: the derivative along the cable).
 struct WaveSample {
   Vec3 velocity = Vec3::Zero();      // [m/s]
-  Vec3 acceleration = Vec3::Zero();  // [m/s^2]
+  Vec3 acceleration = Vec3::Zero();  // Du/Dt = du/dt + (u . grad) u [m/s^2] (material)
   Vec3 d_velocity = Vec3::Zero();    // d u / ds [1/s] (per unit s of p + s d)
   Vec3 d_acceleration = Vec3::Zero();
 };

@@ -307,7 +307,7 @@ void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
                              const EvaluateOptions& options, const SystemResidual& out) const {
   // spheres (Morison): (m + m_a) a - (rho V + m_a) a_w - (m - rho V) g e_z * scale
   //   + k |V| V * scale, V = v - u_w, m_a = C_a rho V, u_w and a_w the water's velocity and
-  //   acceleration at the sphere (a neutrally buoyant sphere follows the water)
+  //   material acceleration Du/Dt at the sphere (a neutrally buoyant sphere follows the water)
   const VectorXd &q = x.q, &v = x.v, &a = x.a;
   const JacobianCoefficients& cf = options.coeffs;
   const double load_scale = options.load_scale;

@@ -16,6 +16,7 @@
 // Morison's fluid-inertia force, by strips along the hull (slender-body sections; the hull as a
 // prism of length L, section V / L and translational added mass diag(M_A)_{11..33} / L):
 //   dF = (rho V / L + diag(M_A) / L) R_WB^T a_W(x) dx at x_B = (x, 0, 0), x in [-L/2, L/2],
+// a_W the water's material acceleration Du/Dt (environment_field.h),
 // with its moment about O, and a surface-piercing vehicle the hydrostatic force of the wave
 // elevation eta along its waterline (a rectangle of length L_w = sqrt(12 I_L / A_wp) about
 // waterplane_point_B):

@@ -224,7 +224,10 @@ WaveKinematics WaveField::Kinematics(const Vec3& p_W, double t) const {
   }
   // zeta: height above the mean surface, held in [-h, 0] (see the header)
   const double zeta = std::clamp(-p_W.z(), std::isfinite(depth_) ? -depth_ : -1e300, 0.0);
+  // clamped (a crest, below the seabed): the kinematics do not vary with z there
+  const double vertical = zeta == -p_W.z() ? 1.0 : 0.0;
   double eta = 0.0, ux = 0.0, uy = 0.0, uup = 0.0, ax = 0.0, ay = 0.0, aup = 0.0, p = 0.0;
+  Eigen::Matrix3d grad = Eigen::Matrix3d::Zero();
   for (const Term& c : terms_) {
     const double th = c.kx * p_W.x() + c.ky * p_W.y() - c.omega * t + c.phase;
     const double cs = std::cos(th), sn = std::sin(th);
@@ -250,6 +253,14 @@ WaveKinematics WaveField::Kinematics(const Vec3& p_W, double t) const {
     aup -= c.a_omega2 * sh * cs;
     // p_d = rho g a K cos th
     p += c.rho_g_a * kk * cs;
+    // G = [-P e e^T, -Q e; -Q e^T, P], P = a w k C sin th, Q = a w k S cos th (NED, the
+    // header); d/dz = -d/dzeta
+    const Eigen::Vector3d e_h(c.cos_b, c.sin_b, 0.0);
+    const double gp = c.a_omega * c.k * ch * sn, gq = c.a_omega * c.k * sh * cs;
+    grad.topLeftCorner<2, 2>() -= gp * e_h.head<2>() * e_h.head<2>().transpose();
+    grad.block<2, 1>(0, 2) -= vertical * gq * e_h.head<2>();
+    grad.block<1, 2>(2, 0) -= gq * e_h.head<2>().transpose();
+    grad(2, 2) += vertical * gp;
   }
   const double r = Ramp(t);
   out.elevation = r * eta;
@@ -260,6 +271,9 @@ WaveKinematics WaveField::Kinematics(const Vec3& p_W, double t) const {
   const Vec3 u(ux, uy, -uup);
   out.velocity = r * u;
   out.acceleration = r * Vec3(ax, ay, -aup) + RampRate(t) * u;
+  out.velocity_gradient = r * grad;
+  // Du/Dt = du/dt + G u
+  out.material_acceleration = out.acceleration + out.velocity_gradient * out.velocity;
   out.dynamic_pressure = r * p;
   return out;
 }

@@ -17,9 +17,19 @@
 // In deep water (h infinite) C = S = K = exp(k zeta). They are evaluated with one exponential
 // per component: E = exp(k zeta), q = exp(-2 k h), F = q / E,
 //   C = (E + F) / (1 - q),  S = (E - F) / (1 - q),  K = (E + F) / (1 + q).
-// The NED vertical velocity is w = -u_up. Particle acceleration is the local (Eulerian)
-// derivative du/dt; the convective term is second order in the amplitude and left out, as
-// linear theory does.
+// The NED vertical velocity is w = -u_up. With P = a w k C sin th, Q = a w k S cos th and the
+// unit direction e = [cos b, sin b] the velocity gradient G_ij = du_i/dx_j (NED) is, per
+// component,
+//   G = r(t) [ -P e e^T   -Q e ]
+//            [ -Q e^T      P   ]
+// (symmetric: the flow is irrotational; trace 0: it is incompressible), and the acceleration a
+// fluid particle has is the material derivative
+//   Du/Dt = du/dt + (u . grad) u = du/dt + G u.
+// The convective part G u is second order in the amplitude, but it is what keeps a body that
+// moves with the water at its mean depth: du/dt alone, taken at a particle's displaced
+// position, has the mean -(u . grad) u, e.g. a^2 w^2 k e^{2 k zeta} downward in deep water
+// (docs/physics.md, "Fluid inertia in waves"). Kinematics gives both, the local du/dt and the
+// material Du/Dt.
 //
 // Where linear theory is silent:
 //   - above the instantaneous surface (z < -eta) the flow is zero (velocity, acceleration and
@@ -27,7 +37,8 @@
 //   - between the mean and the instantaneous surface (-eta <= z < 0, a crest) the kinematics are
 //     those at the mean surface z = 0 ("vertical stretching" by constant extension, as OrcaFlex
 //     and MoorDyn offer it), so they stay bounded;
-//   - below the seabed depth h (z > h) they are those at z = h.
+//   - below the seabed depth h (z > h) they are those at z = h;
+//   in both the kinematics do not vary with z there: the gradient's last column is zero.
 // The ramp r(t) = (1 - cos(pi t / T_r)) / 2 for 0 <= t < T_r, 1 after (and 0 before t = 0),
 // lets the waves start from calm water without a start-up shock.
 //
@@ -43,7 +54,7 @@
 // UniformUnit, not by a std distribution (those differ between standard libraries): the same
 // seed gives the same sea everywhere.
 //
-// Per point, Kinematics costs one exp, one sin/cos pair and about 20 flops per component; the
+// Per point, Kinematics costs one exp, one sin/cos pair and about 40 flops per component; the
 // per-component constants (k cos b, k sin b, a w, a w^2, rho g a, q, ...) are precomputed.
 // Queries never allocate.
 
@@ -72,7 +83,11 @@ struct WaveComponent {
 // What the water does at a point and time (world frame NED).
 struct WaveKinematics {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();      // u [m/s]
-  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // du/dt [m/s^2]
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // du/dt [m/s^2] (local)
+  // G_ij = du_i/dx_j [1/s] (NED)
+  Eigen::Matrix3d velocity_gradient = Eigen::Matrix3d::Zero();
+  // Du/Dt = du/dt + G u [m/s^2]: the acceleration of the water particle at the point
+  Eigen::Vector3d material_acceleration = Eigen::Vector3d::Zero();
   double dynamic_pressure = 0.0;  // p_d [Pa] (the hydrostatic rho g z not included)
   double elevation = 0.0;         // eta at the point's (x, y) [m], positive up
   bool wet = false;               // the point is below the instantaneous surface (z >= -eta)

@@ -165,6 +165,51 @@ TEST(WaveField, IncompressibleAndSatisfiesTheSurfaceConditions) {
   }
 }
 
+// the velocity gradient G_ij = du_i/dx_j against central differences of the velocity, and the
+// material acceleration Du/Dt = du/dt + G u against the rate of change of the velocity seen by
+// a point that moves with the local water velocity, (u(p + u dt, t + dt) - u(p - u dt,
+// t - dt)) / (2 dt)
+TEST(WaveField, VelocityGradientAndMaterialAcceleration) {
+  constexpr double kD = 1e-4;          // [m], [s]: truncation (k kD)^2 ~ 1e-9
+  constexpr double kGradTol = 1e-8;    // [1/s], gradients ~ 0.1 1/s
+  constexpr double kAccelTol = 1e-7;   // [m/s^2]
+  for (const WaveField& w : TestSeas()) {
+    for (const Vec3& p : {Vec3(3.0, -7.0, 1.5), Vec3(-40.0, 12.0, 6.0), Vec3(100.0, 50.0, 20.0)}) {
+      for (double t : {0.0, 3.7, 61.0}) {
+        const WaveKinematics k = w.Kinematics(p, t);
+        ASSERT_TRUE(k.wet);
+        Eigen::Matrix3d g;
+        for (int j = 0; j < 3; ++j) {
+          Vec3 e = Vec3::Zero();
+          e(j) = kD;
+          g.col(j) = (w.Kinematics(p + e, t).velocity - w.Kinematics(p - e, t).velocity) / (2 * kD);
+        }
+        EXPECT_LT((k.velocity_gradient - g).norm(), kGradTol) << p.transpose() << " t " << t;
+        // irrotational and incompressible
+        EXPECT_LT((k.velocity_gradient - k.velocity_gradient.transpose()).norm(), 1e-14);
+        EXPECT_LT(std::abs(k.velocity_gradient.trace()), 1e-14);
+        const Vec3 du = k.velocity * kD;
+        const Vec3 dudt_material =
+            (w.Kinematics(p + du, t + kD).velocity - w.Kinematics(p - du, t - kD).velocity) /
+            (2.0 * kD);
+        EXPECT_LT((k.material_acceleration - dudt_material).norm(), kAccelTol)
+            << p.transpose() << " t " << t;
+      }
+    }
+  }
+  // one deep-water component: (u . grad) u = grad |u|^2 / 2 = a^2 w^2 k e^{2 k zeta} upward,
+  // the same at every phase (the mean force a body at a displaced position feels without it)
+  const WaveField one = WaveField::Regular(2.0, 8.0, 0.0, 0.0, kInf, kG, 1025.0);
+  const double omega = 2.0 * kPi / 8.0, k = omega * omega / kG;
+  const double expected = omega * omega * k * std::exp(-2.0 * k * 10.0);
+  for (double t : {0.0, 1.0, 2.5, 5.0}) {
+    const WaveKinematics kin = one.Kinematics(Vec3(3.0, 0.0, 10.0), t);
+    const Vec3 convective = kin.material_acceleration - kin.acceleration;
+    EXPECT_NEAR(convective.z(), -expected, 1e-14) << t;
+    EXPECT_NEAR(convective.x(), 0.0, 1e-14) << t;
+  }
+}
+
 TEST(WaveField, DryAboveTheSurfaceAndBoundedInTheCrest) {
   const WaveField w = WaveField::Regular(2.0, 8.0, 0.0, 0.0, kInf, kG, 1025.0);
   // t = 0, x = 0: a crest, eta = 1 m; the surface is at z = -1
