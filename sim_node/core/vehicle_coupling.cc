@@ -147,9 +147,8 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   std::vector<Mat3>& point_compliance = point_compliance_;
   for (int a = 0; a < na; ++a) {
     const Mat3 r_wb = start_.vehicles[attachments_[a].vehicle].q_WB.toRotationMatrix();
-    point_compliance[a] = strong ? Mat3((0.25 * h * h) * (r_wb * attachments_[a].g_B *
-                                                          r_wb.transpose()))
-                                 : Mat3::Zero();
+    point_compliance[a].setZero();
+    if (strong) point_compliance[a] = (0.25 * h * h) * (r_wb * attachments_[a].g_B * r_wb.transpose());
   }
   // vehicles over [t_n, t_n + h] under the joint forces (Eq. 29-30), each at its point;
   // strong: the mean of lambda_n and the guess of lambda_{n+1}, constant over the step (see

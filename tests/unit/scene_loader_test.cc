@@ -367,8 +367,8 @@ INSTANTIATE_TEST_SUITE_P(
         // bodies
         BrokenCase{"bad_body_name", Edit("  fish:", "  2fish:"), "bodies.2fish",
                    "body names must match [A-Za-z_][A-Za-z0-9_]*", ""},
-        BrokenCase{"negative_mass", Edit("mass: 10", "mass: -1"), "bodies.fish.mass", "must be > 0",
-                   ""},
+        BrokenCase{"negative_mass", Edit("mass: 10", "mass: -1"), "bodies.fish.mass",
+                   "must be >= 0", ""},
         BrokenCase{"body_without_position", Edit(", position: [0, 0, 100]", ""),
                    "bodies.fish.position", "is required", "t.yaml:14"},
         BrokenCase{"unknown_type", Edit("type: sphere", "type: box"), "bodies.fish.type",
