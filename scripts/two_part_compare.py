@@ -8,11 +8,13 @@ Runs sim_node offline on config/scenes/two_part_tow_single.yaml (the towing vehi
 armoured cable straight to the towfish) and config/scenes/two_part_tow.yaml (the same vehicle
 and sea, 400 m of the cable to a 500 kg depressor, a 75 m near-neutral tether to the towfish),
 writing their CSV files to OUT/single_part and OUT/two_part (default OUT: out/two_part). From
---from seconds on (default 200: the start-up and the waves' ramp left out) it takes the heave
-(height above the mean depth, m, up positive) and the pitch (deg) of the towing vehicle and of
-the towfish, prints their standard deviations and the ratios towfish / vehicle (how much of the
-vehicle's motion reaches the towfish) and two-part / single-part (what the depressor takes
-out), and draws both time series side by side into OUT/two_part_compare.png (and .svg).
+--from seconds on (default 200: the start-up and the waves' ramp left out) it takes the
+wave-frequency heave (height above the 30 s centred moving average of the depth, m, up
+positive: the slow drift of the mean depth as the tow settles in the waves left out) and pitch
+(deg, the same way) of the towing vehicle and of the towfish, prints their standard deviations
+and the ratios towfish / vehicle (how much of the vehicle's motion reaches the towfish) and
+two-part / single-part (what the depressor takes out), and draws both time series side by side
+into OUT/two_part_compare.png (and .svg). sim_node's own output goes to OUT/<run>.log.
 
 Needs python3 with matplotlib and numpy (Debian: python3-matplotlib python3-numpy); draws
 off-screen. sim_node: --sim-node, else build/sim_node/app/sim_node of this checkout, else
@@ -87,15 +89,32 @@ def main():
         cmd = [sim_node, "--scene", os.path.join(ROOT, "config", "scenes", scene), "--mode",
                "offline", "--duration", str(args.duration), "--csv", out]
         print("[two_part_compare] " + " ".join(cmd), file=sys.stderr)
-        done = subprocess.run(cmd, stdout=subprocess.DEVNULL)
+        os.makedirs(args.out, exist_ok=True)
+        with open(os.path.join(args.out, key + ".log"), "w") as log:
+            done = subprocess.run(cmd, stdout=log, stderr=log)
         if done.returncode != 0:
             sys.exit(f"two_part_compare: sim_node failed on {scene} (exit {done.returncode})")
         series[key] = {b: body_series(out, b, args.t_from) for b in ("tow_vehicle", "towfish")}
 
-    def std(x):
-        return float(np.std(x - np.mean(x)))
+    def wave_part(t, x):
+        # x less its 30 s centred moving average (edges: the window shrinks)
+        dt = float(np.median(np.diff(t)))
+        half = max(1, int(round(15.0 / dt)))
+        c = np.concatenate(([0.0], np.cumsum(x)))
+        i = np.arange(len(x))
+        lo, hi = np.maximum(0, i - half), np.minimum(len(x), i + half + 1)
+        return x - (c[hi] - c[lo]) / (hi - lo)
 
-    print(f"heave and pitch, standard deviations from {args.t_from:g} s to {args.duration:g} s:")
+    def std(x):
+        return float(np.std(x))
+
+    for key in series:
+        for body in series[key]:
+            t_s, z, pitch = series[key][body]
+            series[key][body] = (t_s, -wave_part(t_s, z), wave_part(t_s, pitch))
+
+    print(f"wave-frequency heave and pitch (30 s moving average removed), standard deviations "
+          f"from {args.t_from:g} s to {args.duration:g} s:")
     print(f"{'':26s} {'vehicle heave':>13s} {'towfish heave':>13s} {'ratio':>7s} "
           f"{'vehicle pitch':>13s} {'towfish pitch':>13s} {'ratio':>7s}")
     ratios = {}
@@ -116,10 +135,9 @@ def main():
             for body, color in (("tow_vehicle", "tab:blue"), ("towfish", "tab:orange")):
                 t_s, *values = series[key][body]
                 y = values[index - 1]
-                y = -(y - np.mean(y)) if index == 1 else y - np.mean(y)
                 ax.plot(t_s, y, color=color, lw=0.8, label=f"{body} (std {std(y):.3f} {unit})")
             ax.set_title(f"{label}: {what}")
-            ax.set_ylabel(f"{what} about the mean [{unit}]")
+            ax.set_ylabel(f"{what}, wave frequency [{unit}]")
             ax.grid(alpha=0.3)
             ax.legend(loc="upper right", fontsize=8)
             if row == 1:
