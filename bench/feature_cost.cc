@@ -251,7 +251,7 @@ __attribute__((noinline)) void ProfileEvaluateJacobian(const Simulation& sim, in
   const towsim::core::State& s = sim.state();
   const towsim::core::StepInputs in = CalmInputs(sim);
   const towsim::core::EvaluateOptions options = ProfileOptions(sim);
-  towsim::core::BlockTridiagonal jac = sys.MakeMatrix();
+  towsim::core::NetworkMatrix jac = sys.MakeMatrix();
   Eigen::VectorXd r, phi;
   for (int i = 0; i < n; ++i)
     sys.Evaluate({s.q, s.v, s.a, s.lambda, s.t}, in, options, {&r, &phi, &jac});

@@ -127,9 +127,9 @@ bool RunOnce(const towsim::core::Model& model, double duration, Run* out, double
   const double h = model.time.step;
   const long steps = std::lround(duration / h);
   const long every = std::max(1L, std::lround(kSampleInterval / h));
-  const bool driven = model.cable.start.kind == towsim::core::EndKind::kDriven;
+  const bool driven = model.cables[0].start.kind == towsim::core::EndKind::kDriven;
   auto top = [&] {
-    return driven ? Vec3(model.cable.start.position + sim.time() * model.cable.start.velocity)
+    return driven ? Vec3(model.cables[0].start.position + sim.time() * model.cables[0].start.velocity)
                   : sim.node_position(0);
   };
   out->fish.clear();
@@ -188,7 +188,7 @@ double PositionError(const Run& r, const Run& ref) {
   const size_t n = std::min(r.fish.size(), ref.fish.size());
   double e = 0.0;
   for (size_t i = 0; i < n; ++i) e = std::max(e, (r.fish[i] - ref.fish[i]).norm());
-  return e / ref.model.cable.length;
+  return e / ref.model.cables[0].length;
 }
 
 // RMS(T - T_ref) / RMS(T_ref)
@@ -286,7 +286,7 @@ int Sweep(const std::string& out_path, const std::vector<SceneSweep>& scenes, bo
                   << Num(TensionError(r, ref)) << ',';
               if (steady) {
                 const Vec3 d = r.final_offset - analytic.top_minus_sphere;
-                row << Num(d.norm() / r.model.cable.length) << ','
+                row << Num(d.norm() / r.model.cables[0].length) << ','
                     << Num(std::abs(r.final_tension / analytic.top_tension - 1.0)) << ',';
               } else {
                 row << "nan,nan,";
@@ -325,7 +325,7 @@ int Targets() {
         m.vehicles.empty()
             ? ""
             : (m.integrator.coupling == towsim::core::Coupling::kStrong ? "strong" : "staggered");
-    const Spec spec{t.scene, m.cable.elements, m.time.step, method, coupling, m.time.duration};
+    const Spec spec{t.scene, m.cables[0].elements, m.time.step, method, coupling, m.time.duration};
     const Run r = Execute(spec, 5);
     Spec fine = spec;
     fine.step /= 4.0;

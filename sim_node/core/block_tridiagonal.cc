@@ -111,11 +111,11 @@ void SubtractProduct(const BlockTridiagonal::Map& a, const Eigen::Map<Eigen::Vec
 
 }  // namespace
 
-bool BlockTridiagonal::SolveFactored(Eigen::VectorXd* b) {
+bool BlockTridiagonal::SolveFactored(Eigen::VectorXd* b, int at) {
   const int n = num_blocks();
   for (int i = first_; i < n; ++i) {
     // y_i = b_i - L_{i-1} z_{i-1};  z_i = D^_i^-1 y_i
-    auto bi = b->segment(offsets_[i], sizes_[i]);
+    auto bi = b->segment(at + offsets_[i], sizes_[i]);
     if (i > first_) SubtractProduct(lower(i - 1), tmp(i - 1), bi);
     if (sizes_[i] == 6)
       Eigen::Map<Vec6>(tmp_[i].data()) = lu6_[i].solve(Eigen::Map<const Vec6>(bi.data()));
@@ -123,17 +123,17 @@ bool BlockTridiagonal::SolveFactored(Eigen::VectorXd* b) {
       tmp(i) = lu(i).solve(bi);
   }
   // back substitution: x_i = z_i - X_i x_{i+1}
-  b->segment(offsets_[n - 1], sizes_[n - 1]) = tmp(n - 1);
+  b->segment(at + offsets_[n - 1], sizes_[n - 1]) = tmp(n - 1);
   for (int i = n - 2; i >= first_; --i) {
-    const auto next = b->segment(offsets_[i + 1], sizes_[i + 1]);
+    const auto next = b->segment(at + offsets_[i + 1], sizes_[i + 1]);
     if (sizes_[i] == 6 && sizes_[i + 1] == 6)
       Eigen::Map<Vec6>(tmp_[i].data()).noalias() -=
           ConstMap6(x_[i].data()) * Eigen::Map<const Vec6>(next.data());
     else
       tmp(i).noalias() -= x(i) * next;
-    b->segment(offsets_[i], sizes_[i]) = tmp(i);
+    b->segment(at + offsets_[i], sizes_[i]) = tmp(i);
   }
-  return std::isfinite(b->segment(0, size_).squaredNorm());
+  return std::isfinite(b->segment(at, size_).squaredNorm());
 }
 
 }  // namespace towsim::core

@@ -59,8 +59,9 @@ class BlockTridiagonal {
   // LU of the stored matrix; false if a pivot block is singular or non-finite. The factors
   // stay valid until the next Factor or Solve; the diagonal blocks are overwritten.
   bool Factor();
-  // x = A^-1 b in place with the factors of the last successful Factor (false: non-finite x)
-  bool SolveFactored(Eigen::VectorXd* b);
+  // x = A^-1 b in place with the factors of the last successful Factor (false: non-finite x);
+  // x and b are the size() entries of *b from `at` on (a network's cable, network_matrix.h)
+  bool SolveFactored(Eigen::VectorXd* b, int at = 0);
 
  private:
   Map x(int i) { return Map(x_[i].data(), sizes_[i], sizes_[i + 1]); }

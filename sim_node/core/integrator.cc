@@ -18,12 +18,23 @@ AlphaParameters AlphaParameters::FromSettings(const IntegratorSettings& s) {
   return p;
 }
 
+namespace {
+
+// the position scale of the increment test: the longest cable, at least 1 m
+double LengthScale(const Model& m) {
+  double l = 1.0;
+  for (const CableParams& c : m.cables) l = std::max(l, c.length);
+  return l;
+}
+
+}  // namespace
+
 Integrator::Integrator(const System& system, StepInputs* inputs)
     : system_(system),
       sampler_(system),
       inputs_(inputs),
       ap_(AlphaParameters::FromSettings(system.model().integrator)),
-      q_scale_(std::max(1.0, system.model().cable.length)),
+      q_scale_(LengthScale(system.model())),
       jac_(system.MakeMatrix()) {
   const int n = system_.num_q(), m = system_.num_lambda();
   r_.setZero(n);
@@ -136,7 +147,9 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.drum_length = st.winch.drum.LengthAt(t1);
       kept.drum_rate = st.winch.drum.RateAt(t1);
       if (waves_) kept.wave_q = waves_each_iteration ? st.q : wave_q_;
-      for (int e = 0; e < 2; ++e) kept.support_compliance[e] = st.supports[e].compliance;
+      kept.support_compliance.resize(st.supports.size());  // once: no allocation after
+      for (size_t e = 0; e < st.supports.size(); ++e)
+        kept.support_compliance[e] = st.supports[e].compliance;
       kept.theta = 0.0;
       // its rate at the point it was formed: ~0 (quadratic convergence); the test below takes
       // it at least kMaxContraction, and later steps measure it
@@ -252,7 +265,7 @@ bool Integrator::RestoreNewtonMatrix(const State& s) {
   // depends on nothing else of the supports), and the drum element as it was then (a constant
   // motion at its length and rate)
   sampler_.TakeMotions(s, inputs_);
-  for (int e = 0; e < 2; ++e) {
+  for (size_t e = 0; e < inputs_->supports.size(); ++e) {
     SupportMotion& support = inputs_->supports[e];
     support.compliance = kept.support_compliance[e];
     support.t0 = kept.t - h;

@@ -59,7 +59,7 @@
 
 #include <Eigen/Core>
 
-#include "core/block_tridiagonal.h"
+#include "core/network_matrix.h"
 #include "core/simulation.h"
 #include "core/state.h"
 #include "core/step_inputs.h"
@@ -136,7 +136,7 @@ class Integrator {
   StepInputs* inputs_;  // the step's inputs (step_inputs.h), shared with the vehicle coupling
   AlphaParameters ap_;
   double q_scale_;
-  BlockTridiagonal jac_;
+  NetworkMatrix jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
   std::vector<State> backup_;                          // one saved state per sub-stepping level

@@ -83,6 +83,9 @@ struct AddedMassCoefficients {
 };
 
 struct CableParams {
+  // the cable's name (docs/scene_format.md "Networks"): `cable` for the one-cable form, the
+  // key of `cables:` otherwise; it names the cable's topic, CSV file and rows
+  std::string name = "cable";
   // unstretched length L [m]; with a winch the initial paid-out length
   double length = 200.0;
   int elements = 20;  // number of ANCF elements
@@ -135,10 +138,6 @@ enum class Scheme {
   kTrapezoidal,       // Newmark average acceleration (= generalized-alpha, rho_inf = 1)
 };
 
-// How 6-DOF vehicles and the cable are coupled within a step:
-//   kStaggered: the paper's Fig. 7: vehicles advance with the previous step's joint force, then
-//               the cable with the vehicles' attachment points as boundary conditions;
-//   kStrong:    the same two solves iterated to convergence of the joint force within the step.
 // How 6-DOF vehicles and the cable are coupled within a step (vehicle_coupling.h):
 //   kStaggered: the paper's Fig. 7: vehicles advance with the previous step's joint force, then
 //               the cable with the vehicles' attachment points as boundary conditions;
@@ -208,8 +207,11 @@ struct Model {
   std::string name;
   TimeSettings time;
   Environment environment;
-  CableParams cable;
-  std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cable's Newton solve
+  // the cables (docs/scene_format.md "Networks"): one for the one-cable form `cable:`, else
+  // the entries of `cables:`; a winched cable comes first (its drum's nodes are the ones that
+  // change, system.h). Any number of cable ends may hold the same sphere or vehicle.
+  std::vector<CableParams> cables = std::vector<CableParams>(1);
+  std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cables' Newton solve
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;

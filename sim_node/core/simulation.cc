@@ -43,8 +43,13 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   impl_->winch.Initialize(&s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
   impl_->coupling.HoldSupports(&s);
-  if (model.cable.initial == InitialShape::kStatic) {
-    const StaticResult r = SolveStatic(sys, model.cable.initial_velocity, &s, stop_requested);
+  // a static start solves the whole network, in the frame moving with the cables' common
+  // initial velocity (the scene requires it common, docs/scene_format.md)
+  const CableParams* static_cable = nullptr;
+  for (const CableParams& c : model.cables)
+    if (c.initial == InitialShape::kStatic && !static_cable) static_cable = &c;
+  if (static_cable) {
+    const StaticResult r = SolveStatic(sys, static_cable->initial_velocity, &s, stop_requested);
     if (r.stopped) {
       throw StopRequestedError("stopped during the static solve after " +
                                std::to_string(r.iterations) + " iterations");
@@ -107,7 +112,7 @@ void Simulation::CheckStateShape(const State& s) const {
   const System& sys = impl_->system;
   std::ostringstream why;
   why << "3 per sphere body and 6 per cable node: " << sys.num_spheres() << " bodies, "
-      << sys.max_nodes() << " nodes";
+      << sys.total_array_nodes() << " nodes";
   const long n = sys.num_q();
   CheckSize("q", s.q.size(), n, why.str());
   CheckSize("v", s.v.size(), n, why.str());
@@ -129,8 +134,10 @@ void Simulation::CheckStateShape(const State& s) const {
   }
   const long nv = num_vehicles();
   CheckSize("vehicles", static_cast<long>(s.vehicles.size()), nv, "one per scene vehicle");
-  CheckSize("coupling.f_previous", static_cast<long>(s.coupling.f_previous.size()), nv,
-            "one per scene vehicle");
+  CheckSize("coupling.f_previous", static_cast<long>(s.coupling.f_previous.size()),
+            impl_->coupling.num_attachments(), "one per cable end held by a vehicle");
+  CheckSize("supports", static_cast<long>(s.supports.size()), sys.num_ends(),
+            "one per cable end");
   CheckSize("coupling.flow_end", static_cast<long>(s.coupling.flow_end.size()), nv,
             "one per scene vehicle");
   if (s.newton.valid) {
@@ -156,7 +163,8 @@ void Simulation::StartFrom(const State& state) {
   s.a_alpha = s.v;
   s.lambda.setZero(impl_->system.num_lambda());
   s.newton = NewtonPoint();
-  s.coupling.f_previous.assign(num_vehicles(), Vec3::Zero());
+  s.coupling.f_previous.assign(impl_->coupling.num_attachments(), Vec3::Zero());
+  s.supports.resize(impl_->system.num_ends());
   s.coupling.flow_end.assign(num_vehicles(), VehicleFlow());
   CheckStateShape(s);
   impl_->state = s;
@@ -166,9 +174,11 @@ void Simulation::StartFrom(const State& state) {
     throw SolverError("StartFrom: accelerations could not be computed for the given state");
 }
 
-int Simulation::cable_dof(int node) const { return impl_->system.CableDof(node); }
+int Simulation::cable_dof(int node, int c) const { return impl_->system.CableDof(node, c); }
 int Simulation::sphere_dof(int sphere) const { return impl_->system.SphereDof(sphere); }
-int Simulation::num_nodes() const { return impl_->system.num_nodes(); }
+int Simulation::num_nodes(int c) const { return impl_->system.num_nodes(c); }
+int Simulation::num_cables() const { return impl_->system.num_cables(); }
+const std::string& Simulation::cable_name(int c) const { return model().cables[c].name; }
 int Simulation::num_spheres() const { return impl_->system.num_spheres(); }
 int Simulation::num_vehicles() const { return static_cast<int>(model().vehicles.size()); }
 int Simulation::num_bodies() const { return num_spheres() + num_vehicles(); }
@@ -178,14 +188,18 @@ const std::string& Simulation::body_name(int b) const {
   return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().spheres[b].name;
 }
 
-Vec3 Simulation::node_position(int i) const { return impl_->state.q.segment<3>(cable_dof(i)); }
-Vec3 Simulation::node_velocity(int i) const { return impl_->state.v.segment<3>(cable_dof(i)); }
-double Simulation::NodeTension(int i) const {
+Vec3 Simulation::node_position(int i, int c) const {
+  return impl_->state.q.segment<3>(cable_dof(i, c));
+}
+Vec3 Simulation::node_velocity(int i, int c) const {
+  return impl_->state.v.segment<3>(cable_dof(i, c));
+}
+double Simulation::NodeTension(int i, int c) const {
   // at a held end the joint force is the force the cable transmits there (exact, where the
   // element's interpolated strain misses a bend sharper than the element, e.g. at a towfish)
-  const int end = i == 0 ? 0 : (i == num_nodes() - 1 ? 1 : -1);
-  if (end >= 0 && impl_->system.end_lambda_count(end) > 0) return end_force(end).norm();
-  return impl_->system.NodeTension(impl_->state.q, impl_->state.v, i);
+  const int end = i == 0 ? 0 : (i == num_nodes(c) - 1 ? 1 : -1);
+  if (end >= 0 && impl_->system.end_lambda_count(end, c) > 0) return end_force(end, c).norm();
+  return impl_->system.NodeTension(impl_->state.q, impl_->state.v, i, c);
 }
 
 Vec3 Simulation::body_position(int b) const {
@@ -213,35 +227,34 @@ Vec6 Simulation::body_twist(int b) const {
   return t;
 }
 
+int Simulation::EndBody(int end, int c) const {
+  const CableEnd& e = impl_->system.End(end, c);
+  if (e.kind == EndKind::kSphere) return e.body;
+  if (e.kind == EndKind::kVehicle) return num_spheres() + e.body;
+  return -1;
+}
+
 Vec3 Simulation::BodyCableForce(int b) const {
-  const CableParams& c = model().cable;
-  const bool vehicle = body_is_vehicle(b);
-  const int index = vehicle ? b - num_spheres() : b;
-  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kSphere;
   Vec3 f = Vec3::Zero();
-  for (int end = 0; end < 2; ++end) {
-    const CableEnd& e = end == 0 ? c.start : c.end;
-    if (e.kind == kind && e.body == index) f += end_force(end);
-  }
+  for (int c = 0; c < num_cables(); ++c)
+    for (int end = 0; end < 2; ++end)
+      if (EndBody(end, c) == b) f += end_force(end, c);
   return f;
 }
 
 void Simulation::BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const {
-  // F_B = R_WB^T lambda, M_B = r_attach x F_B (Eq. 29-30)
-  const CableParams& c = model().cable;
+  // F_B = R_WB^T lambda, M_B = r_attach x F_B (Eq. 29-30), summed over the attachments
   const bool vehicle = body_is_vehicle(b);
-  const int index = vehicle ? b - num_spheres() : b;
-  const EndKind kind = vehicle ? EndKind::kVehicle : EndKind::kSphere;
   const Eigen::Quaterniond q = body_attitude(b);
   force_B->setZero();
   moment_B->setZero();
-  for (int end = 0; end < 2; ++end) {
-    const CableEnd& e = end == 0 ? c.start : c.end;
-    if (e.kind != kind || e.body != index) continue;
-    const Vec3 f = q.conjugate() * end_force(end);
-    *force_B += f;
-    if (vehicle) *moment_B += e.at_B.cross(f);
-  }
+  for (int c = 0; c < num_cables(); ++c)
+    for (int end = 0; end < 2; ++end) {
+      if (EndBody(end, c) != b) continue;
+      const Vec3 f = q.conjugate() * end_force(end, c);
+      *force_B += f;
+      if (vehicle) *moment_B += impl_->system.End(end, c).at_B.cross(f);
+    }
 }
 
 const VehicleState& Simulation::vehicle_state(int v) const { return impl_->state.vehicles[v]; }
@@ -257,10 +270,10 @@ double Simulation::cable_length() const { return impl_->state.winch.length; }
 double Simulation::winch_speed() const { return impl_->state.winch.speed; }
 double Simulation::DrumTension() const { return NodeTension(0); }
 
-Vec3 Simulation::end_force(int end) const {
+Vec3 Simulation::end_force(int end, int c) const {
   const System& sys = impl_->system;
-  if (sys.end_lambda_count(end) == 0) return Vec3::Zero();
-  return impl_->state.lambda.segment<3>(sys.EndLambda(end));
+  if (sys.end_lambda_count(end, c) == 0) return Vec3::Zero();
+  return impl_->state.lambda.segment<3>(sys.EndLambda(end, c));
 }
 
 double Simulation::KineticEnergy() const {

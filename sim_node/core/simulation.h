@@ -74,19 +74,22 @@ class Simulation {
   // are recomputed or cleared so that the next step starts consistent; shape errors as
   // SetState
   void StartFrom(const State& state);
-  int cable_dof(int node) const;  // offset of node's e = [r, r'] in q
+  int cable_dof(int node, int c = 0) const;  // offset of cable c's node's e = [r, r'] in q
   int sphere_dof(int sphere) const;  // offset of sphere's p_WB in q
   double time() const;
   long step_count() const;
 
   // --- outputs (world NED, SI) ---
-  // nodes in use now (elements in use + 1; with a winch it changes as the drum pays out and
-  // reels in); node 0 is at the cable's start (the drum)
-  int num_nodes() const;
-  Vec3 node_position(int i) const;  // r at node i [m]
-  Vec3 node_velocity(int i) const;  // dr/dt at node i [m/s]
+  // the cables (Model::cables order; one: the scene's `cable`) and their names
+  int num_cables() const;
+  const std::string& cable_name(int c) const;
+  // nodes of cable c in use now (elements in use + 1; with a winch it changes as the drum pays
+  // out and reels in); node 0 is at the cable's start (the drum)
+  int num_nodes(int c = 0) const;
+  Vec3 node_position(int i, int c = 0) const;  // r at node i [m]
+  Vec3 node_velocity(int i, int c = 0) const;  // dr/dt at node i [m/s]
   // axial force at node i [N]: the elements' average; |joint force| at a held end
-  double NodeTension(int i) const;
+  double NodeTension(int i, int c = 0) const;
   // bodies: the spheres (Model::spheres) first, then the vehicles (Model::vehicles)
   int num_bodies() const;
   int num_spheres() const;
@@ -97,11 +100,13 @@ class Simulation {
   Vec3 body_velocity(int b) const;                // v_WB expressed in W [m/s]
   Eigen::Quaterniond body_attitude(int b) const;  // q_WB (identity for spheres)
   Vec6 body_twist(int b) const;                   // [u v w p q r] in the body frame
-  // force the cable exerts on body b (its joint multiplier, Eq. 29-30), world frame [N];
-  // zero if b is not attached
+  // force the cables exert on body b (the sum of its joint multipliers, Eq. 29-30), world
+  // frame [N]; zero if b is not attached
   Vec3 BodyCableForce(int b) const;
   // the same force and its moment about the body origin, body frame (Eq. 29-30) [N, N m]
   void BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const;
+  // the body (index as above) end `end` of cable c is attached to, -1 for none
+  int EndBody(int end, int c = 0) const;
 
   // --- vehicles (index v into Model::vehicles) ---
   const VehicleState& vehicle_state(int v) const;
@@ -120,9 +125,9 @@ class Simulation {
   double winch_speed() const;   // dL/dt now [m/s], + pays out (no winch: 0)
   double DrumTension() const;   // axial tension at the cable's start (the drum) [N]
 
-  // force the cable exerts on its support at the start (end = 0) or the end (end = 1),
+  // force cable c exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end
-  Vec3 end_force(int end) const;
+  Vec3 end_force(int end, int c = 0) const;
 
   // joint-force iterations of the last step (kStrong; 1 for kStaggered, 0 without vehicles)
   int coupling_iterations() const;

@@ -57,8 +57,9 @@ struct NewtonPoint {
   // the waves it was evaluated with: sampled at wave_q at t (only with waves)
   Eigen::VectorXd wave_q;
   double drum_length = 0.0, drum_rate = 0.0;  // element 0's l_0 and dl_0/dt then (winch)
-  // the support compliances it holds in its multiplier blocks (SupportMotion::compliance)
-  Eigen::Matrix3d support_compliance[2] = {Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
+  // the support compliances it holds in its multiplier blocks (SupportMotion::compliance), one
+  // per cable end (2 c + end)
+  std::vector<Eigen::Matrix3d> support_compliance;
   double theta = 0.0;  // its measured contraction rate
   int theta_age = 0;   // steps since theta was measured
   // the last re-measurement of theta (core/integrator.h, kMaxThetaAge) found it small: the
@@ -102,7 +103,8 @@ struct State {
   Eigen::VectorXd a_alpha;  // generalized-alpha pseudo acceleration (equals a for trapezoidal)
   Eigen::VectorXd lambda;   // constraint multipliers: start end, then end end [N]
   std::vector<VehicleState> vehicles;  // 6-DOF vehicles (Model::vehicles order)
-  SupportMotion supports[2];           // vehicle attachment points (start end, end end)
+  // vehicle attachment points, one per cable end (2 c + end: cable c's start, end)
+  std::vector<SupportMotion> supports;
   CouplingHistory coupling;
   NewtonPoint newton;
   WinchState winch;

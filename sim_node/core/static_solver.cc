@@ -14,17 +14,20 @@ namespace {
 // largest speed relative to the water at the initial node positions
 double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, const State& s) {
   const Model& m = sys.model();
-  const CableParams& c = m.cable;
   const Environment& env = m.environment;
   double rel = 0.0;
-  for (int i = 0; i < sys.num_nodes(); ++i) {
-    const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.CableDof(i)), s.t);
-    rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
+  for (int k = 0; k < sys.num_cables(); ++k)
+    for (int i = 0; i < sys.num_nodes(k); ++i) {
+      const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.CableDof(i, k)), s.t);
+      rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
+    }
+  double f = 0.0;
+  for (const CableParams& c : m.cables) {
+    f += std::abs(c.mass_per_length - env.water_density * c.area()) * env.gravity * c.length;
+    // C_n: the line type's, or about Choo & Casarella's (1.1-1.2)
+    const double c_n = c.drag.kind == CableDragLaw::kConstant ? c.drag.normal : 1.2;
+    f += 0.5 * env.water_density * c.diameter * c_n * rel * rel * c.length;
   }
-  double f = std::abs(c.mass_per_length - env.water_density * c.area()) * env.gravity * c.length;
-  // C_n: the line type's, or about Choo & Casarella's (1.1-1.2)
-  const double c_n = c.drag.kind == CableDragLaw::kConstant ? c.drag.normal : 1.2;
-  f += 0.5 * env.water_density * c.diameter * c_n * rel * rel * c.length;
   for (const SphereBody& b : m.spheres)
     f += std::abs(b.mass - env.water_density * b.volume) * env.gravity +
          0.5 * env.water_density * b.drag_coefficient * rel * rel * std::pow(b.volume, 2.0 / 3.0) *
@@ -40,18 +43,21 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   const int n = sys.num_q(), m = sys.num_lambda();
   const double tol = sys.model().integrator.tolerance;
   const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
-  const double q_scale = std::max(1.0, sys.model().cable.length);
+  double q_scale = 1.0;
+  for (const CableParams& c : sys.model().cables) q_scale = std::max(q_scale, c.length);
   s->v.setZero(n);
-  for (int i = 0; i < sys.num_nodes(); ++i) s->v.segment<3>(sys.CableDof(i)) = frame_velocity;
+  for (int k = 0; k < sys.num_cables(); ++k)
+    for (int i = 0; i < sys.num_nodes(k); ++i)
+      s->v.segment<3>(sys.CableDof(i, k)) = frame_velocity;
   for (int b = 0; b < sys.num_spheres(); ++b) s->v.segment<3>(sys.SphereDof(b)) = frame_velocity;
   s->a.setZero(n);
   s->lambda.setZero(m);
 
-  BlockTridiagonal jac = sys.MakeMatrix();
+  NetworkMatrix jac = sys.MakeMatrix();
   // calm water (no wave samples), the supports as the state holds them and the drum element
   // at its rest length now (held: no rate)
   StepInputs inputs;
-  for (int e = 0; e < 2; ++e) inputs.supports[e] = s->supports[e];
+  inputs.supports = s->supports;
   inputs.drum.t0 = s->t;
   inputs.drum.length = sys.drum_length();
   VectorXd r, phi, rhs, dq, dl;

@@ -28,8 +28,8 @@
 
 namespace towsim::core {
 
-// The waves at every cable node (array nodes, system.h; with their derivative along the cable,
-// d = r' at the node) and at every sphere (d = 0).
+// The waves at every cable node (the array nodes of every cable, System::NodeIndex; with their
+// derivative along the cable, d = r' at the node) and at every sphere (d = 0).
 struct WaveSamples {
   std::vector<WaveSample> nodes;
   std::vector<WaveSample> spheres;
@@ -39,8 +39,8 @@ struct StepInputs {
   // the waves were sampled into `waves` (false: calm water, or a solve that ignores them)
   bool has_waves = false;
   WaveSamples waves;
-  // the cable ends' vehicle attachment points over the step (start end, end end; state.h)
-  SupportMotion supports[2];
+  // the cable ends' vehicle attachment points over the step (2 c + end; state.h)
+  std::vector<SupportMotion> supports;
   // element 0's rest length over the step (a winch; state.h)
   DrumMotion drum;
   // the water at each vehicle at the start and the end of the step (Model::vehicles order;

@@ -3,7 +3,8 @@
 namespace towsim::core {
 
 void StepSampler::Resize(StepInputs* in) const {
-  in->waves.nodes.assign(system_.max_nodes(), WaveSample());
+  in->waves.nodes.assign(system_.total_array_nodes(), WaveSample());
+  in->supports.assign(system_.num_ends(), SupportMotion());
   in->waves.spheres.assign(system_.num_spheres(), WaveSample());
   const size_t nv = system_.model().vehicles.size();
   in->vehicle_flow_start.assign(nv, VehicleFlow());
@@ -13,10 +14,11 @@ void StepSampler::Resize(StepInputs* in) const {
 void StepSampler::SampleWaves(const Eigen::VectorXd& q, double t, StepInputs* in) const {
   const EnvironmentField& sea = system_.sea();
   // nodes: the waves at r and their derivative along r' (= d/dx, x the unstretched arc length)
-  for (int n = 0; n < system_.num_nodes(); ++n) {
-    const int o = system_.CableDof(n);
-    in->waves.nodes[n] = sea.Waves(q.segment<3>(o), q.segment<3>(o + 3), t);
-  }
+  for (int c = 0; c < system_.num_cables(); ++c)
+    for (int n = 0; n < system_.num_nodes(c); ++n) {
+      const int o = system_.CableDof(n, c);
+      in->waves.nodes[system_.NodeIndex(n, c)] = sea.Waves(q.segment<3>(o), q.segment<3>(o + 3), t);
+    }
   for (int s = 0; s < system_.num_spheres(); ++s)
     in->waves.spheres[s] = sea.Waves(q.segment<3>(system_.SphereDof(s)), Vec3::Zero(), t);
   in->has_waves = true;
@@ -43,7 +45,7 @@ void StepSampler::SampleVehicleFlows(const State& start, double h, StepInputs* i
 }
 
 void StepSampler::TakeMotions(const State& state, StepInputs* in) const {
-  for (int e = 0; e < 2; ++e) in->supports[e] = state.supports[e];
+  in->supports = state.supports;  // same size: copies in place
   in->drum = state.winch.drum;
 }
 

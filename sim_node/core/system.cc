@@ -24,8 +24,7 @@ ElementProperties MakeElementProperties(const CableParams& c) {
   return p;
 }
 
-CableLoadContext MakeLoadContext(const Model& m) {
-  const CableParams& c = m.cable;
+CableLoadContext MakeLoadContext(const Model& m, const CableParams& c) {
   const Environment& env = m.environment;
   CableLoadContext ctx;
   ctx.fluid = {env.water_density, env.dynamic_viscosity};
@@ -59,32 +58,59 @@ void Normals(const Vec3& s, Vec3* n1, Vec3* n2) {
 
 }  // namespace
 
-System::System(const Model& model)
-    : model_(model),
-      sea_(model.environment),
-      element_(MakeElementProperties(model.cable)),
-      loads_(MakeLoadContext(model)) {
-  state_dependent_loads_ = loads_.drag || loads_.added_mass_per_length > 0.0 ||
-                           loads_.tangential_added_mass_per_length > 0.0 ||
-                           (!sea_.uniform() && loads_.fluid_inertia_per_length > 0.0) ||
-                           sea_.has_seabed();
-  weight_load_ = UniformLoad(loads_.weight_per_length, element_.props().length);
-  load_fields_ = state_dependent_loads_ ? LoadFields(loads_, sea_) : 0;
+System::System(const Model& model) : model_(model), sea_(model.environment) {
   const int nb = num_spheres();
-  winch_ = model_.cable.winch.has_value();
-  num_nodes_ = model_.cable.elements + 1;
-  max_nodes_ = winch_ ? std::max(num_nodes_, WinchMaxNodes(model_.cable)) : num_nodes_;
-  first_node_ = max_nodes_ - num_nodes_;
-  drum_length_ = element_.props().length;
-  cable_offset_ = 3 * nb;
-  num_q_ = cable_offset_ + 6 * max_nodes_;
-  const CableEnd* ends[2] = {&model_.cable.start, &model_.cable.end};
-  for (int k = 0; k < 2; ++k) {
-    const CableEnd& end = *ends[k];
-    lambda_count_[k] = end.kind == EndKind::kFree ? 0 : 3 + (end.clamped ? 2 : 0);
-    if (end.clamped) Normals(end.slope, &clamp_dirs_[k][0], &clamp_dirs_[k][1]);
+  const int nc = static_cast<int>(model_.cables.size());
+  // which cable ends hold each sphere: one folds the sphere into that end's block, two or
+  // more make it a hub
+  std::vector<int> holders(nb, 0);
+  sphere_end_.assign(nb, -1);
+  for (int c = 0; c < nc; ++c)
+    for (int k = 0; k < 2; ++k) {
+      const CableEnd& end = k == 0 ? model_.cables[c].start : model_.cables[c].end;
+      if (end.kind != EndKind::kSphere) continue;
+      ++holders[end.body];
+      sphere_end_[end.body] = 2 * c + k;
+    }
+  hub_local_.assign(nb, -1);
+  for (int b = 0; b < nb; ++b) {
+    if (holders[b] < 2) continue;
+    sphere_end_[b] = -2;
+    hub_local_[b] = 3 * static_cast<int>(hubs_.size());
+    hubs_.push_back(b);
   }
-  num_lambda_ = lambda_count_[0] + lambda_count_[1];
+  int q_offset = 3 * nb, node_base = 0, lambda_offset = 0;
+  for (int c = 0; c < nc; ++c) {
+    const CableParams& cp = model_.cables[c];
+    CablePart p{AncfElement(MakeElementProperties(cp)), MakeLoadContext(model_, cp)};
+    p.state_dependent_loads = p.loads.drag || p.loads.added_mass_per_length > 0.0 ||
+                              p.loads.tangential_added_mass_per_length > 0.0 ||
+                              (!sea_.uniform() && p.loads.fluid_inertia_per_length > 0.0) ||
+                              sea_.has_seabed();
+    p.weight_load = UniformLoad(p.loads.weight_per_length, p.element.props().length);
+    p.load_fields = p.state_dependent_loads ? LoadFields(p.loads, sea_) : 0;
+    p.winch = cp.winch.has_value();  // the scene puts a winched cable first (model.h)
+    p.num_nodes = cp.elements + 1;
+    p.max_nodes = p.winch ? std::max(p.num_nodes, WinchMaxNodes(cp)) : p.num_nodes;
+    p.first_node = p.max_nodes - p.num_nodes;
+    p.drum_length = p.element.props().length;
+    p.q_offset = q_offset;
+    p.node_base = node_base;
+    p.lambda_offset = lambda_offset;
+    const CableEnd* ends[2] = {&cp.start, &cp.end};
+    for (int k = 0; k < 2; ++k) {
+      const CableEnd& end = *ends[k];
+      p.lambda_count[k] = end.kind == EndKind::kFree ? 0 : 3 + (end.clamped ? 2 : 0);
+      if (end.clamped) Normals(end.slope, &p.clamp_dirs[k][0], &p.clamp_dirs[k][1]);
+    }
+    q_offset += 6 * p.max_nodes;
+    node_base += p.max_nodes;
+    lambda_offset += p.lambda_count[0] + p.lambda_count[1];
+    cables_.push_back(std::move(p));
+  }
+  num_q_ = q_offset;
+  total_array_nodes_ = node_base;
+  num_lambda_ = lambda_offset;
 
   for (const SphereBody& b : model_.spheres) {
     const double rho = model_.environment.water_density;
@@ -93,41 +119,50 @@ System::System(const Model& model)
     sphere_drag_k_.push_back(0.5 * rho * b.drag_coefficient * kPi * radius * radius);
     sphere_radius_.push_back(radius);
   }
-  q_index_.assign(num_q_, {-1, -1});
-  lambda_index_.assign(num_lambda_, {-1, -1});
+  q_index_.assign(num_q_, {0, -1, -1});
+  lambda_index_.assign(num_lambda_, {0, -1, -1});
+  q_pos_.assign(num_q_, -1);
+  lambda_pos_.assign(num_lambda_, -1);
   // the block sizes with node 0 at array node 0 (MakeMatrix), then the layout in use
-  const int saved_first = first_node_, saved_nodes = num_nodes_;
-  first_node_ = 0;
-  num_nodes_ = max_nodes_;
-  BuildLayout();
-  base_block_sizes_ = block_sizes_;
-  first_node_ = saved_first;
-  num_nodes_ = saved_nodes;
+  for (int c = 0; c < nc; ++c) {
+    CablePart& p = cables_[c];
+    const int saved_first = p.first_node, saved_nodes = p.num_nodes;
+    p.first_node = 0;
+    p.num_nodes = p.max_nodes;
+    BuildCableLayout(c);
+    p.base_block_sizes = p.block_sizes;
+    p.first_node = saved_first;
+    p.num_nodes = saved_nodes;
+  }
   BuildLayout();
 }
 
-void System::BuildLayout() {
-  // block k = array node k; the parked nodes' blocks are empty
+void System::BuildCableLayout(int c) {
+  // block k = array node k of cable c; the parked nodes' blocks are empty
+  CablePart& p = cables_[c];
   const int nb = num_spheres();
-  const CableEnd* ends[2] = {&model_.cable.start, &model_.cable.end};
-  std::fill(q_index_.begin(), q_index_.end(), BlockIndex{-1, -1});
-  const int sphere_at[2] = {ends[0]->kind == EndKind::kSphere ? ends[0]->body : -1,
-                            ends[1]->kind == EndKind::kSphere ? ends[1]->body : -1};
+  auto folded_at = [&](int end) {
+    const CableEnd& e = End(end, c);
+    return e.kind == EndKind::kSphere && sphere_end_[e.body] == 2 * c + end ? e.body : -1;
+  };
+  const int sphere_at[2] = {folded_at(0), folded_at(1)};
   auto place_sphere = [&](int b, int block, int* local) {
-    for (int i = 0; i < 3; ++i) q_index_[SphereDof(b) + i] = {block, (*local)++};
+    for (int i = 0; i < 3; ++i) q_index_[SphereDof(b) + i] = {c, block, (*local)++};
   };
   auto place_lambda = [&](int end, int block, int* local) {
-    for (int i = 0; i < lambda_count_[end]; ++i)
-      lambda_index_[EndLambda(end) + i] = {block, (*local)++};
+    for (int i = 0; i < p.lambda_count[end]; ++i)
+      lambda_index_[EndLambda(end, c) + i] = {c, block, (*local)++};
   };
   auto place_node = [&](int node, int block, int* local) {
-    for (int i = 0; i < 6; ++i) q_index_[CableDof(node) + i] = {block, (*local)++};
+    for (int i = 0; i < 6; ++i) q_index_[CableDof(node, c) + i] = {c, block, (*local)++};
   };
-  const int nn = num_nodes_;
-  block_sizes_.assign(max_nodes_, 0);  // same size after the first call: no allocation
+  for (int k = 0; k < p.max_nodes; ++k)
+    for (int i = 0; i < 6; ++i) q_index_[ArrayDof(k, c) + i] = {c, -1, -1};
+  const int nn = p.num_nodes;
+  p.block_sizes.assign(p.max_nodes, 0);  // same size after the first call: no allocation
   for (int node = 0; node < nn; ++node) {
     int local = 0;
-    const int block = first_node_ + node;
+    const int block = p.first_node + node;
     if (node == 0) {
       if (sphere_at[0] >= 0) place_sphere(sphere_at[0], block, &local);
       place_lambda(0, block, &local);
@@ -137,38 +172,75 @@ void System::BuildLayout() {
       place_lambda(1, block, &local);
       if (sphere_at[1] >= 0) place_sphere(sphere_at[1], block, &local);
     }
-    block_sizes_[block] = local;
+    p.block_sizes[block] = local;
   }
-  for (int b = 0; b < nb; ++b) {
-    if (b == sphere_at[0] || b == sphere_at[1]) continue;
-    int local = 0;
-    const int block = static_cast<int>(block_sizes_.size());
-    place_sphere(b, block, &local);
-    block_sizes_.push_back(local);
+  if (c == 0) {
+    for (int b = 0; b < nb; ++b) {
+      if (sphere_end_[b] != -1) continue;  // held by a cable end, or a hub
+      int local = 0;
+      const int block = static_cast<int>(p.block_sizes.size());
+      place_sphere(b, block, &local);
+      p.block_sizes.push_back(local);
+    }
   }
-  block_offsets_.assign(block_sizes_.size(), 0);
-  for (size_t i = 1; i < block_sizes_.size(); ++i)
-    block_offsets_[i] = block_offsets_[i - 1] + block_sizes_[i - 1];
+  p.block_offsets.assign(p.block_sizes.size(), 0);
+  for (size_t i = 1; i < p.block_sizes.size(); ++i)
+    p.block_offsets[i] = p.block_offsets[i - 1] + p.block_sizes[i - 1];
+}
+
+void System::BuildLayout() {
+  int offset = 0;
+  for (int c = 0; c < num_cables(); ++c) {
+    BuildCableLayout(c);
+    const CablePart& p = cables_[c];
+    for (int i = 0; i < num_q_; ++i) {
+      const BlockIndex& bi = q_index_[i];
+      if (bi.part != c) continue;
+      q_pos_[i] = bi.block < 0 ? -1 : offset + p.block_offsets[bi.block] + bi.local;
+    }
+    for (int i = 0; i < num_lambda_; ++i) {
+      const BlockIndex& bi = lambda_index_[i];
+      if (bi.part == c) lambda_pos_[i] = offset + p.block_offsets[bi.block] + bi.local;
+    }
+    offset += p.block_offsets.back() + p.block_sizes.back();
+  }
+  for (int h = 0; h < num_hubs(); ++h)
+    for (int i = 0; i < 3; ++i) {
+      const int dof = SphereDof(hubs_[h]) + i;
+      q_index_[dof] = {kHub, 0, 3 * h + i};
+      q_pos_[dof] = offset + 3 * h + i;
+    }
 }
 
 void System::SetLayout(int nodes, double length) {
-  drum_length_ = length - (nodes - 2) * element_length();
-  if (nodes == num_nodes_) return;
-  num_nodes_ = nodes;
-  first_node_ = max_nodes_ - nodes;
+  CablePart& p = cables_[0];
+  p.drum_length = length - (nodes - 2) * element_length();
+  if (nodes == p.num_nodes) return;
+  p.num_nodes = nodes;
+  p.first_node = p.max_nodes - nodes;
   BuildLayout();
 }
 
 AncfElement System::DrumElement(double length) const {
-  ElementProperties p = element_.props();
+  ElementProperties p = cables_[0].element.props();
   p.length = length;
   return AncfElement(p);
 }
 
-BlockTridiagonal System::MakeMatrix() const {
-  BlockTridiagonal m(base_block_sizes_, winch_ ? max_nodes_ - 2 : 0);
-  m.SetFirstBlock(first_node_);
-  return m;
+NetworkMatrix System::MakeMatrix() const {
+  std::vector<BlockTridiagonal> parts;
+  std::vector<std::vector<int>> touched(num_cables());
+  for (int c = 0; c < num_cables(); ++c) {
+    const CablePart& p = cables_[c];
+    parts.emplace_back(p.base_block_sizes, p.winch ? p.max_nodes - 2 : 0);
+    parts.back().SetFirstBlock(p.first_node);
+    for (int k = 0; k < 2; ++k) {
+      const CableEnd& e = End(k, c);
+      if (e.kind != EndKind::kSphere || hub_local_[e.body] < 0) continue;
+      for (int i = 0; i < 3; ++i) touched[c].push_back(hub_local_[e.body] + i);
+    }
+  }
+  return NetworkMatrix(std::move(parts), 3 * num_hubs(), std::move(touched));
 }
 
 void System::Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m) const {
@@ -182,17 +254,34 @@ void System::Add3(BlockTridiagonal* jac, int i, int j, const Eigen::Matrix3d& m)
   }
 }
 
-void System::AddQL(BlockTridiagonal* jac, int qi, int li, const Vec3& col) const {
-  // a multiplier sits in the block of the node / sphere it constrains
+void System::Add3(NetworkMatrix* jac, int i, int j, const Eigen::Matrix3d& m) const {
+  const BlockIndex bi = q_index_[i], bj = q_index_[j];
+  if (bi.part != kHub) return Add3(&jac->cable(bi.part), i, j, m);
+  for (int r = 0; r < 3; ++r)
+    for (int s = 0; s < 3; ++s) jac->hub(bi.local + r, bj.local + s) += m(r, s);
+}
+
+void System::AddQL(NetworkMatrix* jac, int qi, int li, const Vec3& col) const {
+  // a multiplier sits in the block of the node / sphere it constrains; a hub's column of a
+  // cable's joint rows goes to the border (network_matrix.h)
   const BlockIndex bq = q_index_[qi], bl = lambda_index_[li];
-  BlockTridiagonal::Map d = jac->diag(bq.block);
+  BlockTridiagonal& t = jac->cable(bl.part);
+  if (bq.part == kHub) {
+    const int row = t.block_offset(bl.block) + bl.local;
+    for (int k = 0; k < 3; ++k) {
+      jac->border_column(bl.part, row, bq.local + k) += col(k);
+      jac->border_row(bl.part, bq.local + k, row) += col(k);
+    }
+    return;
+  }
+  BlockTridiagonal::Map d = t.diag(bq.block);
   d.block<3, 1>(bq.local, bl.local) += col;
   d.block<1, 3>(bl.local, bq.local) += col.transpose();
 }
 
 Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
-                             const SupportMotion* supports) const {
-  const CableEnd& e = end == 0 ? model_.cable.start : model_.cable.end;
+                             const std::vector<SupportMotion>* supports, int c) const {
+  const CableEnd& e = End(end, c);
   switch (e.kind) {
     case EndKind::kFixed:
       return e.position;
@@ -202,7 +291,7 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
       return q.segment<3>(SphereDof(e.body)) + e.at_B;  // sphere frames stay world-aligned
     case EndKind::kVehicle: {
       if (!supports) break;
-      const SupportMotion& s = supports[end];
+      const SupportMotion& s = (*supports)[2 * c + end];
       if (s.t1 <= s.t0) return s.p1;
       return s.p0 + ((t - s.t0) / (s.t1 - s.t0)) * (s.p1 - s.p0);
     }
@@ -217,15 +306,19 @@ void System::Evaluate(const SystemPoint& x, const StepInputs& in, const Evaluate
   out.residual->setZero(num_q_);
   out.phi->setZero(num_lambda_);
   if (out.jac) {
-    if (out.jac->first_block() != first_node_) out.jac->SetFirstBlock(first_node_);
+    for (int c = 0; c < num_cables(); ++c) {
+      BlockTridiagonal& t = out.jac->cable(c);
+      if (t.first_block() != cables_[c].first_node) t.SetFirstBlock(cables_[c].first_node);
+    }
     out.jac->SetZero();
   }
-  AssembleCable(x, in, options, out);
+  for (int c = 0; c < num_cables(); ++c) AssembleCable(c, x, in, options, out);
   AssembleSpheres(x, in, options, out);
-  for (int end = 0; end < 2; ++end) AssembleJoint(end, x, in, out);
+  for (int c = 0; c < num_cables(); ++c)
+    for (int end = 0; end < 2; ++end) AssembleJoint(c, end, x, in, out);
 }
 
-void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
+void System::AssembleCable(int cable_index, const SystemPoint& x, const StepInputs& in,
                            const EvaluateOptions& options, const SystemResidual& out) const {
   // cable elements: M e_ddot + F_int + R_load (Eq. 25), element e of `element` (the drum
   // element's rest length moves: its own element, weight load and rate; system.h); R_load the
@@ -233,7 +326,9 @@ void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
   const VectorXd &q = x.q, &v = x.v, &a = x.a;
   const JacobianCoefficients& cf = options.coeffs;
   VectorXd* residual = out.residual;
-  BlockTridiagonal* jac = out.jac;
+  const int ci = cable_index;
+  const CablePart& part = cables_[ci];
+  BlockTridiagonal* jac = out.jac ? &out.jac->cable(ci) : nullptr;
   const bool waves = in.has_waves;
   Vec12 force;
   Mat12 k, c, j;
@@ -242,22 +337,22 @@ void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
   ElementWaves ew;
   const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
                                double drum_rate) {
-    const int o = CableDof(e);
+    const int o = CableDof(e, ci);
     const Mat12& mass = element.mass();
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
     if (waves) {
       // [w, dw/dx] at the element's two nodes, in the layout of e (cable_loads.h)
       for (int k = 0; k < 2; ++k) {
-        const WaveSample& ws = in.waves.nodes[e + k];
+        const WaveSample& ws = in.waves.nodes[part.node_base + e + k];
         ew.velocity.segment<3>(6 * k) = ws.velocity;
         ew.velocity.segment<3>(6 * k + 3) = ws.d_velocity;
         ew.acceleration.segment<3>(6 * k) = ws.acceleration;
         ew.acceleration.segment<3>(6 * k + 3) = ws.d_acceleration;
       }
     }
-    element.InterpolateFields(ee, ed, ea, load_fields_, &fields);
+    element.InterpolateFields(ee, ed, ea, part.load_fields, &fields);
     element.InternalForce(fields, &force, jac ? &k : nullptr, jac ? &c : nullptr);
-    if (!state_dependent_loads_) {
+    if (!part.state_dependent_loads) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
       residual->segment<12>(o) += element.MassTimes(ea) + force - options.load_scale * qw;
       if (jac) {
@@ -266,7 +361,7 @@ void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
       }
     } else {
       const ElementWaves* w = waves ? &ew : nullptr;
-      const Vec12 rl = ElementLoadResidual(element, loads_, sea_, x.t, w, fields,
+      const Vec12 rl = ElementLoadResidual(element, part.loads, sea_, x.t, w, fields,
                                            options.load_scale, jac ? &lj : nullptr);
       residual->segment<12>(o) += element.MassTimes(ea) + force + rl;
       if (jac) {
@@ -292,15 +387,16 @@ void System::AssembleCable(const SystemPoint& x, const StepInputs& in,
       for (int s = 0; s < 4; ++s) Add3(jac, o + 3 * r, o + 3 * s, j.block<3, 3>(3 * r, 3 * s));
   };
   int first_plain = 0;  // the elements from here on have the nominal length l_e
-  if (winch_) {
+  if (part.winch) {
     // the drum element's rest length l_0(t) and its rate at t (DrumMotion, state.h)
     const double drum_l = in.drum.LengthAt(x.t);
     const double drum_rate = in.drum.RateAt(x.t);
     const AncfElement drum = DrumElement(drum_l);  // on the stack: Evaluate does not allocate
-    add_element(0, drum, UniformLoad(loads_.weight_per_length, drum_l), drum_rate);
+    add_element(0, drum, UniformLoad(part.loads.weight_per_length, drum_l), drum_rate);
     first_plain = 1;
   }
-  for (int e = first_plain; e < NumElements(); ++e) add_element(e, element_, weight_load_, 0.0);
+  for (int e = first_plain; e < NumElements(ci); ++e)
+    add_element(e, part.element, part.weight_load, 0.0);
 }
 
 void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
@@ -359,21 +455,22 @@ void System::AssembleSpheres(const SystemPoint& x, const StepInputs& in,
   }
 }
 
-void System::AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
+void System::AssembleJoint(int c, int end, const SystemPoint& x, const StepInputs& in,
                            const SystemResidual& out) const {
   // the joint at a cable end (Eq. 24): Phi = r_end - p_support; R += Phi_q^T lambda (Eq. 26)
-  const int nl = lambda_count_[end];
+  const CablePart& part = cables_[c];
+  const int nl = part.lambda_count[end];
   if (nl == 0) return;
   const VectorXd &q = x.q, &lambda = x.lambda;
   VectorXd* residual = out.residual;
   VectorXd* phi = out.phi;
-  const CableEnd& ce = end == 0 ? model_.cable.start : model_.cable.end;
-  const int nd = CableDof(end == 0 ? 0 : num_nodes() - 1);
-  const int lo = EndLambda(end);
-  phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, x.t, in.supports);
+  const CableEnd& ce = End(end, c);
+  const int nd = CableDof(end == 0 ? 0 : num_nodes(c) - 1, c);
+  const int lo = EndLambda(end, c);
+  phi->segment<3>(lo) = q.segment<3>(nd) - SupportPosition(end, q, x.t, &in.supports, c);
   // a support that answers the force (state.h, vehicle_coupling.h):
   //   Phi -= f C (lambda - lambda1), f the fraction of its motion at t
-  const SupportMotion& sm = in.supports[end];
+  const SupportMotion& sm = in.supports[2 * c + end];
   double f_c = 0.0;
   if (ce.kind == EndKind::kVehicle && !sm.compliance.isZero()) {
     f_c = sm.t1 <= sm.t0 ? 1.0 : (x.t - sm.t0) / (sm.t1 - sm.t0);
@@ -385,77 +482,63 @@ void System::AssembleJoint(int end, const SystemPoint& x, const StepInputs& in,
   if (ce.clamped) {
     // direction held: n_k . r' = 0 for the two normals of the slope
     for (int i = 0; i < 2; ++i) {
-      const Vec3& n = clamp_dirs_[end][i];
+      const Vec3& n = part.clamp_dirs[end][i];
       (*phi)(lo + 3 + i) = n.dot(q.segment<3>(nd + 3));
       residual->segment<3>(nd + 3) += lambda(lo + 3 + i) * n;
     }
   }
-  BlockTridiagonal* jac = out.jac;
+  NetworkMatrix* jac = out.jac;
   if (!jac) return;
   for (int i = 0; i < 3; ++i) {
     AddQL(jac, nd, lo + i, Vec3::Unit(i));
     if (sphere) AddQL(jac, SphereDof(ce.body), lo + i, -Vec3::Unit(i));
   }
   if (ce.clamped)
-    for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, clamp_dirs_[end][i]);
+    for (int i = 0; i < 2; ++i) AddQL(jac, nd + 3, lo + 3 + i, part.clamp_dirs[end][i]);
   if (f_c != 0.0) {
     // dPhi/dlambda = -f C
     const BlockIndex bl = lambda_index_[lo];
-    jac->diag(bl.block).block<3, 3>(bl.local, bl.local) -= f_c * sm.compliance;
+    jac->cable(c).diag(bl.block).block<3, 3>(bl.local, bl.local) -= f_c * sm.compliance;
   }
 }
 
 void System::ToBlocks(const VectorXd& r, const VectorXd& phi, VectorXd* x) const {
   x->resize(num_q_ + num_lambda_);
-  const std::vector<int>& offsets = block_offsets_;
-  if (first_node_ == 0) {  // no parked nodes
-    for (int i = 0; i < num_q_; ++i) (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
-  } else {
-    for (int i = 0; i < num_q_; ++i) {
-      if (q_index_[i].block < 0) continue;  // a parked node (winch)
-      (*x)(offsets[q_index_[i].block] + q_index_[i].local) = r(i);
-    }
-  }
-  for (int i = 0; i < num_lambda_; ++i)
-    (*x)(offsets[lambda_index_[i].block] + lambda_index_[i].local) = phi(i);
+  for (int i = 0; i < num_q_; ++i)
+    if (q_pos_[i] >= 0) (*x)(q_pos_[i]) = r(i);  // not a parked node (winch)
+  for (int i = 0; i < num_lambda_; ++i) (*x)(lambda_pos_[i]) = phi(i);
 }
 
 void System::FromBlocks(const VectorXd& x, VectorXd* dq, VectorXd* dlambda) const {
   dq->resize(num_q_);
   dlambda->resize(num_lambda_);
-  const std::vector<int>& offsets = block_offsets_;
-  if (first_node_ == 0) {  // no parked nodes
-    for (int i = 0; i < num_q_; ++i) (*dq)(i) = x(offsets[q_index_[i].block] + q_index_[i].local);
-  } else {
-    for (int i = 0; i < num_q_; ++i) {
-      const BlockIndex bi = q_index_[i];
-      (*dq)(i) = bi.block < 0 ? 0.0 : x(offsets[bi.block] + bi.local);  // parked: no change
-    }
-  }
-  for (int i = 0; i < num_lambda_; ++i)
-    (*dlambda)(i) = x(offsets[lambda_index_[i].block] + lambda_index_[i].local);
+  for (int i = 0; i < num_q_; ++i) (*dq)(i) = q_pos_[i] < 0 ? 0.0 : x(q_pos_[i]);  // parked: 0
+  for (int i = 0; i < num_lambda_; ++i) (*dlambda)(i) = x(lambda_pos_[i]);
 }
 
 double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
   double ke = 0.0;
   ElementLoadJacobians lj;
-  CableLoadContext am_only = loads_;
-  am_only.drag = false;
-  am_only.fluid_inertia_per_length = 0.0;
-  am_only.weight_per_length.setZero();
   std::optional<AncfElement> drum;
-  if (winch_) drum.emplace(DrumElement(drum_length_));
-  for (int e = 0; e < NumElements(); ++e) {
-    const int o = CableDof(e);
-    const AncfElement& element = winch_ && e == 0 ? *drum : element_;
-    const Vec12 ed = v.segment<12>(o);
-    Mat12 m = element.mass();
-    if (loads_.added_mass_per_length > 0.0 || loads_.tangential_added_mass_per_length > 0.0) {
-      ElementLoadResidual(element, am_only, sea_, 0.0, nullptr, q.segment<12>(o), ed,
-                          Vec12::Zero(), 1.0, &lj);
-      m += lj.added_mass;
+  if (has_winch()) drum.emplace(DrumElement(drum_length()));
+  for (int c = 0; c < num_cables(); ++c) {
+    const CablePart& p = cables_[c];
+    CableLoadContext am_only = p.loads;
+    am_only.drag = false;
+    am_only.fluid_inertia_per_length = 0.0;
+    am_only.weight_per_length.setZero();
+    for (int e = 0; e < NumElements(c); ++e) {
+      const int o = CableDof(e, c);
+      const AncfElement& element = ElementAt(c, e, drum);
+      const Vec12 ed = v.segment<12>(o);
+      Mat12 m = element.mass();
+      if (p.loads.added_mass_per_length > 0.0 || p.loads.tangential_added_mass_per_length > 0.0) {
+        ElementLoadResidual(element, am_only, sea_, 0.0, nullptr, q.segment<12>(o), ed,
+                            Vec12::Zero(), 1.0, &lj);
+        m += lj.added_mass;
+      }
+      ke += 0.5 * ed.dot(m * ed);
     }
-    ke += 0.5 * ed.dot(m * ed);
   }
   for (int b = 0; b < num_spheres(); ++b)
     ke += 0.5 * sphere_mass_eff_[b] * v.segment<3>(SphereDof(b)).squaredNorm();
@@ -465,11 +548,14 @@ double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
 double System::PotentialEnergy(const VectorXd& q) const {
   // V = - int w . r dx (uniform load) - sum (m - rho V) g z_b
   double pe = 0.0;
-  const Vec12 qw = UniformLoad(loads_.weight_per_length, element_.props().length);
-  for (int e = 0; e < NumElements(); ++e) {
-    const Vec12 qe =
-        winch_ && e == 0 ? UniformLoad(loads_.weight_per_length, drum_length_) : Vec12(qw);
-    pe -= qe.dot(q.segment<12>(CableDof(e)));
+  for (int c = 0; c < num_cables(); ++c) {
+    const CablePart& p = cables_[c];
+    const Vec12 qw = UniformLoad(p.loads.weight_per_length, p.element.props().length);
+    for (int e = 0; e < NumElements(c); ++e) {
+      const Vec12 qe = p.winch && e == 0 ? UniformLoad(p.loads.weight_per_length, p.drum_length)
+                                         : Vec12(qw);
+      pe -= qe.dot(q.segment<12>(CableDof(e, c)));
+    }
   }
   const Environment& env = model_.environment;
   for (int b = 0; b < num_spheres(); ++b) {
@@ -482,30 +568,27 @@ double System::PotentialEnergy(const VectorXd& q) const {
 double System::StrainEnergy(const VectorXd& q) const {
   double u = 0.0;
   std::optional<AncfElement> drum;
-  if (winch_) drum.emplace(DrumElement(drum_length_));
-  for (int e = 0; e < NumElements(); ++e) {
-    const AncfElement& element = winch_ && e == 0 ? *drum : element_;
-    u += element.StrainEnergy(q.segment<12>(CableDof(e)));
-  }
+  if (has_winch()) drum.emplace(DrumElement(drum_length()));
+  for (int c = 0; c < num_cables(); ++c)
+    for (int e = 0; e < NumElements(c); ++e)
+      u += ElementAt(c, e, drum).StrainEnergy(q.segment<12>(CableDof(e, c)));
   return u;
 }
 
-double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const {
+double System::NodeTension(const VectorXd& q, const VectorXd& v, int node, int c) const {
   // average of the adjacent elements' end values
   double sum = 0.0;
   int n = 0;
   std::optional<AncfElement> drum;
-  if (winch_) drum.emplace(DrumElement(drum_length_));
+  if (c == 0 && has_winch()) drum.emplace(DrumElement(drum_length()));
   if (node > 0) {
-    const int o = CableDof(node - 1);
-    const AncfElement& element = winch_ && node == 1 ? *drum : element_;
-    sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
+    const int o = CableDof(node - 1, c);
+    sum += ElementAt(c, node - 1, drum).AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);
     ++n;
   }
-  if (node < NumElements()) {
-    const int o = CableDof(node);
-    const AncfElement& element = winch_ && node == 0 ? *drum : element_;
-    sum += element.AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
+  if (node < NumElements(c)) {
+    const int o = CableDof(node, c);
+    sum += ElementAt(c, node, drum).AxialForce(q.segment<12>(o), v.segment<12>(o), 0.0);
     ++n;
   }
   return sum / n;
@@ -513,14 +596,19 @@ double System::NodeTension(const VectorXd& q, const VectorXd& v, int node) const
 
 std::string System::DescribeDof(int i, const VectorXd& q) const {
   std::ostringstream s;
-  if (i < cable_offset_) {
+  if (i < 3 * num_spheres()) {
     s << "body '" << model_.spheres[i / 3].name << "'";
     return s.str();
   }
-  const int node = (i - cable_offset_) / 6 - first_node_;
-  const Vec3 r = q.segment<3>(CableDof(node));
-  s << "cable node " << node << " (s = " << node * element_.props().length << " m, at [" << r.x()
-    << ", " << r.y() << ", " << r.z() << "])";
+  int c = num_cables() - 1;
+  while (c > 0 && i < cables_[c].q_offset) --c;
+  const CablePart& p = cables_[c];
+  const int node = (i - p.q_offset) / 6 - p.first_node;
+  const Vec3 r = q.segment<3>(CableDof(node, c));
+  if (num_cables() > 1) s << "cable '" << model_.cables[c].name << "' ";
+  s << (num_cables() > 1 ? "node " : "cable node ") << node
+    << " (s = " << node * p.element.props().length << " m, at [" << r.x() << ", " << r.y()
+    << ", " << r.z() << "])";
   return s.str();
 }
 

@@ -1,5 +1,10 @@
 #pragma once
-// Coupling of the 6-DOF vehicles with the cable within one fixed step (paper Fig. 7, Eq. 29-30).
+// Coupling of the 6-DOF vehicles with the cables within one fixed step (paper Fig. 7, Eq. 29-30).
+// A vehicle may hold any number of cable ends (attachments): each joint force acts at its
+// own point (its moment about the vehicle's origin in the vehicle's load), and each
+// attachment point answers its own joint force with its own compliance C_a (below); the
+// compliance between two attachments of one vehicle, (h^2 / 4) R J_a M^-1 J_b^T R^T, is
+// left to the passes, whose convergence test includes it.
 //
 // The vehicles advance with their own explicit RK4 (vehicle_model.h) under the cable's joint
 // force lambda, applied at the attachment point; the cable then advances implicitly with the
@@ -48,7 +53,7 @@ namespace towsim::core {
 
 class VehicleCoupling {
  public:
-  // the cable's system, its integrator and the step's inputs it shares with the integrator
+  // the cables' system, its integrator and the step's inputs it shares with the integrator
   // (step_inputs.h: the coupling fills the water at the vehicles); all outlive it
   VehicleCoupling(const System& system, Integrator* integrator, StepInputs* inputs);
 
@@ -57,40 +62,49 @@ class VehicleCoupling {
   void HoldSupports(State* state);
   // sizes the per-step work space like `state` (Step then does not allocate)
   void SizeWorkSpace(const State& state);
-  // one step of length h of cable and vehicles with the given vehicle commands
+  // one step of length h of cables and vehicles with the given vehicle commands
   StepStatus Step(State* state, const std::vector<VehicleCommand>& commands, double h);
   int last_iterations() const { return last_iterations_; }
-
-  // the force the cable exerts on vehicle v (world frame) in `state`, zero if not attached
-  Vec3 JointForce(const State& state, int v) const;
-  // attachment point of the cable end on vehicle v in the world frame
-  Vec3 AttachmentPoint(const VehicleState& vs, int end) const;
+  // the cable ends held by vehicles (State::coupling.f_previous has one entry each)
+  int num_attachments() const { return static_cast<int>(attachments_.size()); }
 
  private:
+  // a cable end held by a vehicle at a body-fixed point
+  struct Attachment {
+    int end = 0;      // the network's cable end 2 c + k (System::num_ends)
+    int vehicle = 0;  // index into Model::vehicles
+    Vec3 at_B = Vec3::Zero();
+    Eigen::Matrix<double, 3, 6> j;  // J = [I, -S(at_B)]: the point's velocity from nu
+    Mat3 g_B = Mat3::Zero();        // G = J M^-1 J^T, body frame [1/kg]
+    Eigen::Matrix<double, 6, 3> m_inv_jt;  // M^-1 J^T (body frame)
+  };
+  // attachment point of attachment a in the world frame: p_WB + R_WB at_B (Eq. 24)
+  Vec3 AttachmentPoint(const VehicleState& vs, int a) const;
   // a converged step: keeps lambda_n (of `start`), h and the water at the step's end in
   // state->coupling for the next step
   StepStatus Accept(const State& start, double h, State* state, StepStatus* status);
   // the linear response of vehicle state *vs (advanced over h) to a change r_W of the joint
-  // force at t_{n+1} at cable end `end` (see the header)
-  void CorrectVehicle(int end, const Vec3& r_W, double h, VehicleState* vs) const;
+  // force at t_{n+1} at attachment a (see the header)
+  void CorrectVehicle(int a, const Vec3& r_W, double h, VehicleState* vs) const;
 
   const System& system_;
   Integrator* integrator_;
   StepSampler sampler_;
   StepInputs* inputs_;
-  int vehicle_end_[2] = {-1, -1};      // vehicle index holding each cable end, or -1
-  double compliance_[2] = {0.0, 0.0};  // largest eigenvalue of G at each vehicle end [1/kg]
-  Mat3 g_B_[2] = {Mat3::Zero(), Mat3::Zero()};  // G at each vehicle end, body frame [1/kg]
-  Eigen::Matrix<double, 6, 3> m_inv_jt_[2];     // M^-1 J^T at each vehicle end (body frame)
+  // the attachments, ordered by vehicle: vehicle v holds attachments first_[v] .. first_[v+1]-1
+  std::vector<Attachment> attachments_;
+  std::vector<int> first_;
   int last_iterations_ = 0;
   // per-step work space, sized once: Step does not allocate
   State start_;
-  State previous_pass_;  // the cable's solution of the previous strong-coupling pass
+  State previous_pass_;  // the cables' solution of the previous strong-coupling pass
   NewtonPoint newton_;   // the kept Newton matrix carried from pass to pass
   int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
-  std::vector<Vec3> f0_, f1_, residual_;
-  std::vector<VehicleInertia> inertia_;  // each vehicle's, factored once (vehicle_model.h)
+  std::vector<Vec3> f0_, f1_, residual_;  // per attachment
+  std::vector<Mat3> point_compliance_;    // per attachment
+  std::vector<PointLoad> loads_;          // per attachment
+  std::vector<VehicleInertia> inertia_;   // each vehicle's, factored once (vehicle_model.h)
 };
 
 }  // namespace towsim::core

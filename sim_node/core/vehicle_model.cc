@@ -344,11 +344,23 @@ void AdvanceVehicle(const VehicleParams& p, const VehicleInertia& inertia, const
   auto rates = [&](const VehicleState& x, double c) {
     const Vec3 f_w = load.force_W0 + c * (load.force_W1 - load.force_W0);
     const Mat3 r_wb = x.q_WB.normalized().toRotationMatrix();
-    const Vec3 f_b = r_wb.transpose() * f_w;
-    if (steady_flow)
-      return Rates(p, env, x, r_wb, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu, sea);
-    return Rates(p, env, x, r_wb, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b), m_rb,
-                 mass_lu, sea);
+    Vec3 f_b = r_wb.transpose() * f_w;
+    if (load.more_count == 0) {
+      if (steady_flow)
+        return Rates(p, env, x, r_wb, flow0, cmd, f_b, load.point_B.cross(f_b), m_rb, mass_lu,
+                     sea);
+      return Rates(p, env, x, r_wb, flow0.Lerp(flow1, c), cmd, f_b, load.point_B.cross(f_b),
+                   m_rb, mass_lu, sea);
+    }
+    Vec3 m_b = load.point_B.cross(f_b);
+    for (int k = 0; k < load.more_count; ++k) {
+      const PointLoad& l = load.more[k];
+      const Vec3 f_k = r_wb.transpose() * (l.force_W0 + c * (l.force_W1 - l.force_W0));
+      f_b += f_k;
+      m_b += l.point_B.cross(f_k);
+    }
+    if (steady_flow) return Rates(p, env, x, r_wb, flow0, cmd, f_b, m_b, m_rb, mass_lu, sea);
+    return Rates(p, env, x, r_wb, flow0.Lerp(flow1, c), cmd, f_b, m_b, m_rb, mass_lu, sea);
   };
   // the packed state's derivative (vehicle_model.h, VehicleStateLayout), the quaternion's four
   // components integrated like the other states and renormalized at the end

@@ -163,6 +163,10 @@ struct PointLoad {
   Vec3 force_W0 = Vec3::Zero();  // world-frame force at the start of the step [N]
   Vec3 force_W1 = Vec3::Zero();  // at the end of the step (linear in between)
   Vec3 point_B = Vec3::Zero();   // application point in B [m]
+  // further loads of the same kind at other points (a vehicle holding several cable ends;
+  // their `more` unused): their forces and moments add to this one's
+  const PointLoad* more = nullptr;
+  int more_count = 0;
 };
 
 struct VehicleDerivative {

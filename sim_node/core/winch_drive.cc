@@ -10,10 +10,10 @@
 namespace towsim::core {
 
 WinchDrive::WinchDrive(System* system)
-    : system_(system), has_winch_(system->model().cable.winch.has_value()) {}
+    : system_(system), has_winch_(system->model().cables[0].winch.has_value()) {}
 
 void WinchDrive::Initialize(State* state) {
-  const CableParams& c = system_->model().cable;
+  const CableParams& c = system_->model().cables[0];
   state->winch.length = c.length;
   state->winch.speed = 0.0;
   state->winch.nodes = system_->num_nodes();
@@ -24,7 +24,7 @@ void WinchDrive::Initialize(State* state) {
 void WinchDrive::SetCommand(const WinchCommand& command) {
   if (!has_winch_ || !std::isfinite(command.value)) return;
   WinchCommand c = command;
-  ClampWinchCommand(*system_->model().cable.winch, &c);
+  ClampWinchCommand(*system_->model().cables[0].winch, &c);
   command_ = c;
 }
 
@@ -34,7 +34,7 @@ double WinchDrive::MaxSlip(double h) const {
 
 void WinchDrive::MoveDrum(double h, double slip, State* state) {
   WinchState& w = state->winch;
-  step_ = AdvanceWinch(*system_->model().cable.winch, command_, w.length, w.drive_speed, slip, h);
+  step_ = AdvanceWinch(*system_->model().cables[0].winch, command_, w.length, w.drive_speed, slip, h);
   // l_0(t) over the step: from l_0 at rate V_n, reaching l_0 + dL at t + h
   const double dl = step_.length - w.length;
   w.drum.t0 = state->t;
@@ -61,7 +61,7 @@ void WinchDrive::Prepare(double h, double slip, State* state) {
 void WinchDrive::SolveBrakeSlip(double h, double slip, State* state,
                                 const std::function<StepStatus(double)>& step_system,
                                 StepStatus* s) {
-  const CableParams& c = system_->model().cable;
+  const CableParams& c = system_->model().cables[0];
   const double stiffness_h = c.axial_stiffness * h / system_->drum_length();
   const double first = state->winch.slip_slope < 0.0 ? state->winch.slip_slope : -stiffness_h;
   BrakeSlipIteration brake(c.winch->brake_tension, MaxSlip(h), first);
@@ -85,7 +85,7 @@ void WinchDrive::SolveBrakeSlip(double h, double slip, State* state,
 StepStatus WinchDrive::Step(double h, State* state,
                             const std::function<StepStatus(double)>& step_system) {
   // a brake (winch.h): the first attempt slips as the last step did
-  const bool brake = has_winch_ && std::isfinite(system_->model().cable.winch->brake_tension) &&
+  const bool brake = has_winch_ && std::isfinite(system_->model().cables[0].winch->brake_tension) &&
                      system_->end_lambda_count(0) > 0;
   const double slip = brake ? std::clamp(state->winch.slip_speed, 0.0, MaxSlip(h)) : 0.0;
   if (has_winch_) Prepare(h, slip, state);

@@ -26,7 +26,7 @@ class System;  // system.h
 
 class WinchDrive {
  public:
-  // the winch of system->model().cable (none: Step only takes the caller's step); `system`
+  // the winch of system->model().cables[0] (none: Step only takes the caller's step); `system`
   // must outlive this
   explicit WinchDrive(System* system);
 

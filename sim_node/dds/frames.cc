@@ -84,7 +84,7 @@ std::unique_ptr<TransformsMessage> StaticTransforms(const core::Simulation& sim)
     edges.emplace_back(FrdFrame(sim.body_name(b)), sim.body_name(b));
     poses.emplace_back(core::Vec3::Zero(), FrdFromFlu());
   }
-  const core::CableParams& cable = sim.model().cable;
+  const core::CableParams& cable = sim.model().cables[0];
   std::string parent;
   core::Vec3 offset;
   if (EndFrame(sim, cable.start, &parent, &offset)) {

@@ -176,7 +176,7 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   }
 
   // force arrows at the held ends
-  const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
+  const core::CableEnd* ends[2] = {&model.cables[0].start, &model.cables[0].end};
   arrow_points_.resize(4);
   for (int e = 0; e < 2; ++e) {
     if (!Held(*ends[e])) continue;

@@ -105,7 +105,7 @@ void CableStateMessage::Resize(int nodes) {
 
 int MaxCableNodes(const core::Simulation& sim) {
   const int now = sim.num_nodes();
-  const std::optional<core::WinchParams>& winch = sim.model().cable.winch;
+  const std::optional<core::WinchParams>& winch = sim.model().cables[0].winch;
   const double length = sim.cable_length();
   if (!winch || !(length > 0.0)) return now;
   const double elements = static_cast<double>(now - 1) * winch->max_length / length;

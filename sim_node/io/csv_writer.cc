@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "core/model.h"
+#include "core/system.h"
 #include "io/output_error.h"
 
 namespace towsim::io {
@@ -123,7 +124,8 @@ void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned l
       .WriteTo(f);
 }
 
-CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles)
+CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles,
+                     const std::vector<std::string>& cables)
     : dir_(dir), winch_(winch) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
@@ -132,7 +134,10 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles
   }
   try {
     Open(bodies_, "bodies.csv", kCsvBodiesHeader);
-    Open(cable_, "cable.csv", kCsvCableHeader);
+    Open(cable_, (cables.at(0) + ".csv").c_str(), kCsvCableHeader);
+    more_cables_.resize(cables.size() - 1);
+    for (size_t c = 1; c < cables.size(); ++c)
+      Open(more_cables_[c - 1], (cables[c] + ".csv").c_str(), kCsvCableHeader);
     Open(forces_, "forces.csv", kCsvForcesHeader);
     Open(status_, "status.csv", kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
@@ -144,6 +149,10 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
     }
+    for (File& file : more_cables_) {
+      if (file.f != nullptr) std::fclose(file.f);
+      file.f = nullptr;
+    }
     throw;
   }
 }
@@ -153,6 +162,8 @@ CsvWriter::~CsvWriter() {
        {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
+  for (File& file : more_cables_)
+    if (file.f != nullptr) std::fclose(file.f);
 }
 
 void CsvWriter::Open(File& file, const char* name, const char* header) {
@@ -192,16 +203,19 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     row.WriteTo(bodies_.f);
   }
 
-  for (int i = 0; i < sim.num_nodes(); ++i) {
-    const core::Vec3 r = sim.node_position(i);
-    Row(&line)
-        .Number(t)
-        .Integer(i)
-        .Number(r.x())
-        .Number(r.y())
-        .Number(r.z())
-        .Number(sim.NodeTension(i))
-        .WriteTo(cable_.f);
+  for (int c = 0; c < sim.num_cables(); ++c) {
+    std::FILE* f = c == 0 ? cable_.f : more_cables_[c - 1].f;
+    for (int i = 0; i < sim.num_nodes(c); ++i) {
+      const core::Vec3 r = sim.node_position(i, c);
+      Row(&line)
+          .Number(t)
+          .Integer(i)
+          .Number(r.x())
+          .Number(r.y())
+          .Number(r.z())
+          .Number(sim.NodeTension(i, c))
+          .WriteTo(f);
+    }
   }
 
   // forces: the cable's force and moment on each body (body frame), then held supports (world)
@@ -213,20 +227,24 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     for (int k = 0; k < 3; ++k) row.Number(f(k));
     for (int k = 0; k < 3; ++k) row.Number(m(k));
     row.WriteTo(forces_.f);
+    WriteAttachments(sim, b, &line);
   }
-  const core::CableEnd* ends[2] = {&model.cable.start, &model.cable.end};
-  const char* end_names[2] = {"cable.start", "cable.end"};
-  for (int e = 0; e < 2; ++e) {
-    if (!IsHeldSupport(*ends[e])) continue;
-    const core::Vec3 f = sim.end_force(e);
-    Row(&line)
-        .Number(t)
-        .Text(end_names[e])
-        .Number(f.x())
-        .Number(f.y())
-        .Number(f.z())
-        .Text("0,0,0")
-        .WriteTo(forces_.f);
+  static const char* const kEndNames[2] = {"start", "end"};
+  for (int c = 0; c < sim.num_cables(); ++c) {
+    const core::CableParams& cable = model.cables[c];
+    const core::CableEnd* ends[2] = {&cable.start, &cable.end};
+    for (int e = 0; e < 2; ++e) {
+      if (!IsHeldSupport(*ends[e])) continue;
+      const core::Vec3 f = sim.end_force(e, c);
+      Row(&line)
+          .Number(t)
+          .Text(CsvField(cable.name + "." + kEndNames[e]))
+          .Number(f.x())
+          .Number(f.y())
+          .Number(f.z())
+          .Text("0,0,0")
+          .WriteTo(forces_.f);
+    }
   }
 
   Row row(&line);
@@ -239,6 +257,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   row.WriteTo(status_.f);
 
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
+  for (const File& file : more_cables_) Check(file);
   if (environment_.f != nullptr) WriteEnvironment(sim);
   if (winch_file_.f != nullptr) {
     Row(&line)
@@ -251,6 +270,30 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     Check(winch_file_);
   }
   if (actuators_.f != nullptr) WriteActuators(sim, failsafe);
+}
+
+void CsvWriter::WriteAttachments(const core::Simulation& sim, int b, std::string* line) {
+  // a body held by two or more cable ends: each end's own force and moment (body frame)
+  static const char* const kEndNames[2] = {"start", "end"};
+  int held = 0;
+  for (int c = 0; c < sim.num_cables(); ++c)
+    for (int e = 0; e < 2; ++e) held += sim.EndBody(e, c) == b;
+  if (held < 2) return;
+  const Eigen::Quaterniond q = sim.body_attitude(b);
+  for (int c = 0; c < sim.num_cables(); ++c)
+    for (int e = 0; e < 2; ++e) {
+      if (sim.EndBody(e, c) != b) continue;
+      const core::Vec3 f = q.conjugate() * sim.end_force(e, c);
+      const core::Vec3 m = sim.body_is_vehicle(b)
+                               ? core::Vec3(sim.system().End(e, c).at_B.cross(f))
+                               : core::Vec3::Zero();
+      Row row(line);
+      row.Number(sim.time()).Text(
+          CsvField(sim.body_name(b) + "." + sim.cable_name(c) + "." + kEndNames[e]));
+      for (int k = 0; k < 3; ++k) row.Number(f(k));
+      for (int k = 0; k < 3; ++k) row.Number(m(k));
+      row.WriteTo(forces_.f);
+    }
 }
 
 void CsvWriter::WriteActuators(const core::Simulation& sim, const std::vector<bool>& failsafe) {
@@ -275,8 +318,10 @@ void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
 
 void CsvWriter::Close() {
   std::string error;
-  for (File* file :
-       {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
+  std::vector<File*> files = {&bodies_,     &cable_,      &forces_,   &status_,
+                              &environment_, &winch_file_, &actuators_};
+  for (File& file : more_cables_) files.push_back(&file);
+  for (File* file : files) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

@@ -7,12 +7,17 @@
 //               p_WB of the body origin in world NED [m], Euler angles (ZYX) of q_WB [rad],
 //               velocity v_WB_B and angular rate w_WB_B in the body frame [m/s, rad/s]
 //   cable.csv   t,node,x,y,z,tension
-//               node position r in world NED [m], axial force at the node [N]
+//               node position r in world NED [m], axial force at the node [N]; a network
+//               (cables:) writes one such file per cable, <cable>.csv
 //   forces.csv  t,body,fx,fy,fz,mx,my,mz
 //               force and moment (about the body origin) the cable exerts on each body, body
 //               frame [N, N m] (Simulation::BodyCableWrench); plus
-//               rows "cable.start" / "cable.end" for a cable end held by a fixed or driven
-//               support (not a body): the force the cable exerts on the support, world frame
+//               rows "cable.start" / "cable.end" (<cable>.start / <cable>.end in a network)
+//               for a cable end held by a fixed or driven support (not a body): the force
+//               the cable exerts on the support, world frame; and a body held by two or more
+//               cable ends has, after its total, one row per attachment,
+//               "<body>.<cable>.<start|end>", the force and moment of that end alone (body
+//               frame, about the body origin)
 //   status.csv  t,step,newton_iterations,residual,wall_us,cable_length
 //               Newton iterations and final residual [N] of the step that led here, its
 //               wall time [us] as measured by the caller, and the paid-out unstretched cable
@@ -110,8 +115,10 @@ class CsvWriter {
   // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has cable.winch;
   // actuators.csv when `vehicles`, the scene has vehicles) and writes their headers; throws
   // std::runtime_error naming the path if a file cannot be opened
+  // `cables`: the cables' names (Model::cables order), one <name>.csv each
   explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false,
-                     bool vehicles = false);
+                     bool vehicles = false,
+                     const std::vector<std::string>& cables = {"cable"});
   ~CsvWriter();  // closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -138,6 +145,8 @@ class CsvWriter {
     std::FILE* f = nullptr;
   };
   void Open(File& file, const char* name, const char* header);
+  // forces.csv's per-attachment rows of body b (Write)
+  void WriteAttachments(const core::Simulation& sim, int b, std::string* line);
   void Check(const File& file) const;
   void WriteEnvironment(const core::Simulation& sim);
   void WriteActuators(const core::Simulation& sim, const std::vector<bool>& failsafe);
@@ -145,7 +154,8 @@ class CsvWriter {
   std::string dir_;
   bool winch_ = false;
   File bodies_;
-  File cable_;
+  File cable_;                     // the first cable's
+  std::vector<File> more_cables_;  // the others' (a network)
   File forces_;
   File status_;
   File environment_;  // f == nullptr: not written (a calm scene)

@@ -38,7 +38,8 @@ SphereInput ReadSphere(const std::string& name, const BodyKeys& keys) {
   SphereInput input;
   core::SphereBody& body = input.body;
   body.name = name;
-  body.mass = keys.Get("mass").Number(Range::Above(0.0));
+  // 0: a junction of cables (the scene loader checks that two or more cable ends hold it)
+  body.mass = keys.Get("mass").Number(Range::AtLeast(0.0));
   const auto optional_number = [&](const std::string& key, double fallback) {
     return keys.Has(key) ? keys.Get(key).Number(Range::AtLeast(0.0)) : fallback;
   };

@@ -9,6 +9,7 @@
 #include "scene/body_reader.h"
 #include "scene/cable_reader.h"
 #include "scene/environment_reader.h"
+#include "scene/network_reader.h"
 #include "scene/overrides.h"
 #include "scene/script_reader.h"
 #include "scene/vehicle_reader.h"
@@ -90,17 +91,52 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   for (const internal::SphereInput& sphere : bodies.spheres) model.spheres.push_back(sphere.body);
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
   internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
-  model.cable =
-      internal::ReadCable(scene.Require("cable"), scene.Get("line_types"), base_dir, model);
-  // bodies that give no velocity start with the cable (vehicles: in their body frame)
-  const core::Vec3& v_W = model.cable.initial_velocity;
+  // cable: the one-cable form (a cable named `cable`); cables: a network (network_reader.h)
+  if (scene.Has("cable") && scene.Has("cables")) {
+    scene.Get("cables").Fail(
+        "give either cable (one cable) or cables (a network of named cables), not both");
+  }
+  if (scene.Has("cables")) {
+    model.cables =
+        internal::ReadCables(scene.Get("cables"), scene.Get("line_types"), base_dir, model);
+  } else {
+    model.cables = {
+        internal::ReadCable(scene.Require("cable"), scene.Get("line_types"), base_dir, model)};
+  }
+  // a sphere without mass (nor added mass) is a junction: its position is set by the cable
+  // ends that meet there, two or more (one alone would leave it undetermined)
+  for (size_t i = 0; i < model.spheres.size(); ++i) {
+    const core::SphereBody& b = model.spheres[i];
+    if (b.mass > 0.0 || b.added_mass_coefficient * b.volume > 0.0) continue;
+    int ends = 0;
+    for (const core::CableParams& c : model.cables)
+      for (const core::CableEnd* e : {&c.start, &c.end})
+        ends += e->kind == core::EndKind::kSphere && e->body == static_cast<int>(i);
+    if (ends >= 2) continue;
+    const Field entry = MapReader(scene.Get("bodies"), MapKind::kBodies).Get(b.name);
+    const MapReader body(entry, MapKind::kBody);
+    (body.Has("mass") ? body.Get("mass") : entry)
+        .Fail("a sphere without mass is a junction of cables: hold it by two or more cable ends "
+              "(" + std::to_string(ends) + " hold" + (ends == 1 ? "s" : "") +
+              " it), or give it a mass");
+  }
+  // bodies that give no velocity start with the first cable that holds them, else the first
+  // cable (vehicles: in their body frame)
+  const auto start_velocity = [&](core::EndKind kind, int body) {
+    for (const core::CableParams& c : model.cables)
+      for (const core::CableEnd* e : {&c.start, &c.end})
+        if (e->kind == kind && e->body == body) return c.initial_velocity;
+    return model.cables.front().initial_velocity;
+  };
   for (size_t i = 0; i < bodies.spheres.size(); ++i) {
-    if (!bodies.spheres[i].velocity_given) model.spheres[i].velocity = v_W;
+    if (!bodies.spheres[i].velocity_given)
+      model.spheres[i].velocity = start_velocity(core::EndKind::kSphere, static_cast<int>(i));
   }
   for (size_t i = 0; i < bodies.vehicles.size(); ++i) {
     core::Vehicle& v = model.vehicles[i];
     if (!bodies.vehicles[i].velocity_given) {
-      v.nu.head<3>() = core::QuaternionFromEulerZYX(v.euler).conjugate() * v_W;
+      v.nu.head<3>() = core::QuaternionFromEulerZYX(v.euler).conjugate() *
+                       start_velocity(core::EndKind::kVehicle, static_cast<int>(i));
     }
   }
 
@@ -143,11 +179,30 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
   // the text is YAML, a map of keys
   YAML::Node root = internal::LoadYamlMap(
       yaml, name_for_messages,
-      "a scene must be a map of keys (name, time, environment, cable, bodies, integrator, "
-      "script)");
+      "a scene must be a map of keys (name, time, environment, cable or cables, bodies, "
+      "integrator, script)");
 
   internal::ApplyOverrides(overrides, root, source.get());
   return BuildModel(Field(root, root.Mark(), "", source), base_dir);
+}
+
+std::vector<std::string> SceneWarnings(const core::Model& model) {
+  std::vector<std::string> warnings;
+  const auto held = [&](core::EndKind kind, int body) {
+    for (const core::CableParams& c : model.cables)
+      for (const core::CableEnd* e : {&c.start, &c.end})
+        if (e->kind == kind && e->body == body) return true;
+    return false;
+  };
+  for (size_t i = 0; i < model.spheres.size(); ++i)
+    if (!held(core::EndKind::kSphere, static_cast<int>(i)))
+      warnings.push_back("bodies." + model.spheres[i].name +
+                         ": no cable end holds this body; it moves on its own");
+  for (size_t i = 0; i < model.vehicles.size(); ++i)
+    if (!held(core::EndKind::kVehicle, static_cast<int>(i)))
+      warnings.push_back("bodies." + model.vehicles[i].name +
+                         ": no cable end holds this body; it moves on its own");
+  return warnings;
 }
 
 core::VehicleParams LoadVehicleFile(const std::string& path) {

@@ -24,6 +24,10 @@ core::Model LoadSceneFromString(const std::string& yaml, const std::string& name
                                 const std::string& base_dir,
                                 const std::vector<std::string>& overrides = {});
 
+// What a valid scene deserves a word about without failing: a body no cable end holds (it
+// moves on its own). One line each, "bodies.<name>: ..."; the programs print them as warnings.
+std::vector<std::string> SceneWarnings(const core::Model& model);
+
 // Loads a vehicle model file (type: vehicle, config/vehicles/*.yaml) by itself, checked as the
 // scene loader checks it; key paths in messages start at the file's root (added_mass.x_udot).
 // Throws ConfigError.

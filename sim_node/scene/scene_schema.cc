@@ -63,8 +63,8 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
   };
   static const std::map<MapKind, std::vector<std::string>> kKeys = {
       {MapKind::kScene,
-       {"name", "time", "environment", "line_types", "cable", "bodies", "integrator", "script",
-        "publish", "security"}},
+       {"name", "time", "environment", "line_types", "cable", "cables", "bodies", "integrator",
+        "script", "publish", "security"}},
       {MapKind::kPublish, publish_keys()},
       {MapKind::kSecurity, {"open_outputs"}},
       {MapKind::kTime, {"step", "duration", "output_rate"}},
@@ -85,6 +85,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kLineDrag, {"normal", "tangential"}},
       {MapKind::kLineAddMass, {"normal", "tangential"}},
       // the cable: a line type's properties inline (overriding cable.line_type's)
+      {MapKind::kCables, {}},
       {MapKind::kCable, join({"length", "elements", "line_type"}, {&kLineTypeKeys, &kCableKeys})},
       {MapKind::kWinch,
        {"min_length", "max_length", "max_speed", "max_acceleration", "brake_tension"}},
@@ -126,6 +127,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "time") return MapKind::kTime;
       if (key == "environment") return MapKind::kEnvironment;
       if (key == "cable") return MapKind::kCable;
+      if (key == "cables") return MapKind::kCables;
       if (key == "line_types") return MapKind::kLineTypes;
       if (key == "bodies") return MapKind::kBodies;
       if (key == "integrator") return MapKind::kIntegrator;
@@ -156,6 +158,8 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       return std::nullopt;
     case MapKind::kLineTypes:
       return MapKind::kLineType;
+    case MapKind::kCables:
+      return MapKind::kCable;
     case MapKind::kEnd:
       if (key == "driven") return MapKind::kDriven;
       return std::nullopt;
@@ -178,6 +182,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
 const char* NamedEntries(MapKind kind) {
   if (kind == MapKind::kBodies) return "body names";
   if (kind == MapKind::kLineTypes) return "line type names";
+  if (kind == MapKind::kCables) return "cable names";
   return nullptr;
 }
 

@@ -24,7 +24,8 @@ enum class MapKind {
   kLineType,     // line_types.<name>, a file of config/line_types/ (and the same keys in cable)
   kLineDrag,     // <line type>.drag, when a map {normal, tangential}
   kLineAddMass,  // <line type>.added_mass {normal, tangential}
-  kCable,        // cable
+  kCables,       // cables: user-chosen names -> kCable (a network, docs/scene_format.md)
+  kCable,        // cable, cables.<name>
   kEnd,          // cable.start, cable.end
   kDriven,       // cable.<end>.driven
   kWinch,        // cable.winch
@@ -45,16 +46,16 @@ enum class MapKind {
   kScriptEntry,  // script[i]
 };
 
-// Keys a map of this kind may hold, in documentation order (empty for kBodies and kLineTypes:
-// any valid name).
+// Keys a map of this kind may hold, in documentation order (empty for kBodies, kLineTypes and
+// kCables: any valid name).
 const std::vector<std::string>& AllowedKeys(MapKind kind);
 
 // The kind of map found under `key` in a map of kind `parent`; nullopt if that key holds a
 // value (number, string, vector or list) rather than a map of named keys.
 std::optional<MapKind> ChildMap(MapKind parent, const std::string& key);
 
-// Maps whose keys are user-chosen names (kBodies, kLineTypes): "body names", "line type names";
-// nullptr for maps of schema keys.
+// Maps whose keys are user-chosen names (kBodies, kLineTypes, kCables): "body names", "line type
+// names", "cable names"; nullptr for maps of schema keys.
 const char* NamedEntries(MapKind kind);
 
 // Body names become topic and CSV names: [A-Za-z_][A-Za-z0-9_]*.

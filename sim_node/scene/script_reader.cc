@@ -115,8 +115,8 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field, const core::Model&
       }
       const bool speed = map.Has("winch_speed");
       const Field f = map.Get(speed ? "winch_speed" : "winch_length");
-      if (!model.cable.winch) f.Fail("the scene has no cable.winch");
-      const core::WinchParams& w = *model.cable.winch;
+      if (!model.cables[0].winch) f.Fail("the scene has no cable.winch");
+      const core::WinchParams& w = *model.cables[0].winch;
       entry.set_winch = true;
       if (speed) {
         entry.winch.mode = core::WinchCommand::Mode::kSpeed;

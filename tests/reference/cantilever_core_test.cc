@@ -25,7 +25,7 @@ constexpr double kLength = 2.0;  // [m]
 core::Model Cantilever(int elements, double alpha) {
   core::Model m;
   m.name = "cantilever";
-  core::CableParams& c = m.cable;
+  core::CableParams& c = m.cables[0];
   c.length = kLength;
   c.elements = elements;
   c.diameter = 0.02;

@@ -36,7 +36,7 @@ constexpr double kRelTol = 2e-3;
 core::Model HangingCable(int elements, bool bending) {
   core::Model m;
   m.name = "catenary";
-  core::CableParams& c = m.cable;
+  core::CableParams& c = m.cables[0];
   c.length = 200.0;
   c.elements = elements;
   c.diameter = 0.041;
@@ -55,7 +55,7 @@ core::Model HangingCable(int elements, bool bending) {
 }
 
 CatenaryProblem ReferenceProblem(const core::Model& m) {
-  const core::CableParams& c = m.cable;
+  const core::CableParams& c = m.cables[0];
   const core::Environment& env = m.environment;
   CatenaryProblem p;
   p.length = c.length;

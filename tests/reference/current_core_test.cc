@@ -36,7 +36,7 @@ constexpr double kGalileanRelTol = 1e-6;
 TEST(CurrentCore, HeldInACurrentIsTowedThroughStillWater) {
   const Vec3 u(6.0, 0.0, 0.0);
   const Model towed = scene::LoadScene(kSteadyTow);
-  ASSERT_TRUE(towed.cable.start.velocity.isApprox(u));
+  ASSERT_TRUE(towed.cables[0].start.velocity.isApprox(u));
   const Model held = scene::LoadScene(
       kSteadyTow, {"environment.current=[-6, 0, 0]", "cable.start={fixed: [0, 0, 3.5]}",
                    "cable.initial_velocity=[0, 0, 0]", "bodies.towfish.velocity=[0, 0, 0]"});
@@ -46,10 +46,10 @@ TEST(CurrentCore, HeldInACurrentIsTowedThroughStillWater) {
     ASSERT_TRUE(a.Step().ok());
     ASSERT_TRUE(b.Step().ok());
     if (step % 20) continue;
-    const Vec3 top_a = towed.cable.start.position + a.time() * u;
+    const Vec3 top_a = towed.cables[0].start.position + a.time() * u;
     for (int i = 0; i < a.num_nodes(); ++i) {
       const Vec3 ra = a.node_position(i) - top_a,
-                 rb = b.node_position(i) - held.cable.start.position;
+                 rb = b.node_position(i) - held.cables[0].start.position;
       worst_shape = std::max(worst_shape, (ra - rb).norm());
       worst_tension = std::max(worst_tension, std::abs(a.NodeTension(i) - b.NodeTension(i)));
       scale_tension = std::max(scale_tension, a.NodeTension(i));
@@ -57,7 +57,7 @@ TEST(CurrentCore, HeldInACurrentIsTowedThroughStillWater) {
   }
   std::printf("Galilean check over 60 s: shape %.2e m, tension %.2e N (of %.1f N)\n", worst_shape,
               worst_tension, scale_tension);
-  EXPECT_LT(worst_shape, kGalileanRelTol * towed.cable.length);
+  EXPECT_LT(worst_shape, kGalileanRelTol * towed.cables[0].length);
   EXPECT_LT(worst_tension, kGalileanRelTol * scale_tension);
 }
 
@@ -74,7 +74,7 @@ TEST(CurrentCore, SteadyTowInADepthVaryingCurrent) {
       reference::SolveTowedCableSteady(reference::SteadyTowProblem(model));
   Simulation sim(model);
   const reference::SteadyTowSample s0 = reference::MeasureSteadyTow(sim);
-  const Vec3 side = sim.body_position(0) - (model.cable.start.position);
+  const Vec3 side = sim.body_position(0) - (model.cables[0].start.position);
   // 20 elements against the converged reference: discretization error only (as for the
   // uniform current in steady_tow_core_test), and the profile's kinks inside elements, which
   // 5-point Gauss quadrature integrates to O(l^2) of the slope jump: 1e-3

@@ -45,7 +45,7 @@ void CheckConstantDragTow(double speed) {
                        {"cable.initial=static", "cable.drag={normal: 1.5, tangential: 0.01}",
                         "cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
                         "bodies.towfish.velocity=" + v});
-  ASSERT_EQ(model.cable.drag.kind, core::CableDragLaw::kConstant);
+  ASSERT_EQ(model.cables[0].drag.kind, core::CableDragLaw::kConstant);
   const TowedCableProblem p = SteadyTowProblem(model);
   ASSERT_TRUE(p.drag_coefficients.has_value());
   const TowedCableSolution ref = SolveTowedCableSteady(p);
@@ -78,7 +78,7 @@ TEST(LineTypesCore, ConstantDragIsNotTheDefaultLaw) {
   const std::vector<std::string> set = {"cable.initial=static"};
   const core::Model choo = scene::LoadScene(kScenesDir + "/steady_tow.yaml", set);
   core::Model constant = choo;
-  constant.cable.drag = {core::CableDragLaw::kConstant, 1.5, 0.01};
+  constant.cables[0].drag = {core::CableDragLaw::kConstant, 1.5, 0.01};
   const double a = MeasureSteadyTow(core::Simulation(choo)).depth;
   const double b = MeasureSteadyTow(core::Simulation(constant)).depth;
   std::printf("depth: Choo & Casarella %.3f m, constant C_n 1.5 %.3f m\n", a, b);
@@ -102,13 +102,13 @@ TEST(LineTypesCore, NoBendingStiffnessIsTheElasticCatenary) {
       "  initial: static\n"
       "  start: {fixed: [0, 0, 10]}\n"
       "  end: {fixed: [150, 0, 10]}\n");
-  ASSERT_EQ(m.cable.bending_stiffness, 0.0);
+  ASSERT_EQ(m.cables[0].bending_stiffness, 0.0);
   CatenaryProblem p;
   p.length = 200.0;
   p.span = 150.0;
   p.height = 0.0;
   const core::Environment& env = m.environment;
-  p.weight = (2.5 - env.water_density * m.cable.area()) * env.gravity;  // (m - rho_w A) g
+  p.weight = (2.5 - env.water_density * m.cables[0].area()) * env.gravity;  // (m - rho_w A) g
   p.ea = 2.0e5;
   const CatenarySolution ref = SolveElasticCatenary(p);
   const core::Simulation sim(m);
@@ -156,7 +156,7 @@ TEST(LineTypesCore, OwnBendingStiffnessCantileverUnderItsOwnWeight) {
                 kGravity, kMass, ei, kLength, kLength);
   const core::Model m = Load(yaml);
   // not the solid section's: E = EA / A = 3.2e11, E I = 2.5e7
-  ASSERT_LT(m.cable.bending_stiffness, 0.1 * (1.0e10 / m.cable.area()) * m.cable.second_moment());
+  ASSERT_LT(m.cables[0].bending_stiffness, 0.1 * (1.0e10 / m.cables[0].area()) * m.cables[0].second_moment());
   const core::Simulation sim(m);
   const double v = sim.node_position(sim.num_nodes() - 1).z();
   const double expected = kMass * kGravity * std::pow(kLength, 4) / (8.0 * ei);
@@ -191,7 +191,7 @@ core::Model Jumper(const std::vector<std::string>& overrides = {}) {
 
 TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
   const core::Model m = Jumper();
-  ASSERT_EQ(m.cable.bending_stiffness, 120.8e3);
+  ASSERT_EQ(m.cables[0].bending_stiffness, 120.8e3);
   const core::Simulation sim(m);
   const Vec3 anchor = sim.end_force(0), fairlead = sim.end_force(1);
   constexpr double kH = 11.40e3, kVFairlead = 45.71e3, kVAnchor = 24.04e3;  // [N]

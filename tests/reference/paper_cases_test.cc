@@ -75,7 +75,7 @@ CaseRun Simulate(const char* scene, double duration, const std::vector<std::stri
         const Vec3 x = sim.node_position(i) - a;
         d = std::max(d, (x - x.dot(chord) * chord).norm());
       }
-      s.straightness = d / model.cable.length;
+      s.straightness = d / model.cables[0].length;
       run.samples.push_back(s);
     }
     if (sim.time() >= duration - 1e-9) break;

@@ -27,7 +27,7 @@ namespace {
 const std::string kCatenary = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/catenary.yaml";
 
 double WeightInWater(const Model& m) {
-  const CableParams& c = m.cable;
+  const CableParams& c = m.cables[0];
   return (c.mass_per_length - m.environment.water_density * c.area()) * m.environment.gravity;
 }
 
@@ -41,11 +41,11 @@ TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
                   "environment.seabed={depth: 60, stiffness: 3.0e6, friction: 0}"});
   Simulation sim(m);
   reference::GroundedCatenaryProblem p;
-  p.length = m.cable.length;
+  p.length = m.cables[0].length;
   p.span = kSpan;
   p.height = kDepth - kFairleadDepth;
   p.weight = WeightInWater(m);
-  p.ea = m.cable.axial_stiffness;
+  p.ea = m.cables[0].axial_stiffness;
   const reference::GroundedCatenarySolution ref = reference::SolveGroundedCatenary(p);
   ASSERT_FALSE(ref.suspended);
   // touchdown: where the cable's height above the bed first exceeds the penalty's
@@ -55,12 +55,12 @@ TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
   double touchdown = -1.0;
   const int samples = 4000;
   for (int i = 0; i <= samples; ++i) {
-    const double s = m.cable.length * i / samples;
+    const double s = m.cables[0].length * i / samples;
     const int e =
-        std::min(static_cast<int>(s / (m.cable.length / m.cable.elements)), m.cable.elements - 1);
-    const double xi = s / (m.cable.length / m.cable.elements) - e;
+        std::min(static_cast<int>(s / (m.cables[0].length / m.cables[0].elements)), m.cables[0].elements - 1);
+    const double xi = s / (m.cables[0].length / m.cables[0].elements) - e;
     // cubic Hermite between nodes e and e + 1 (the element's own interpolation)
-    const double l = m.cable.length / m.cable.elements;
+    const double l = m.cables[0].length / m.cables[0].elements;
     const Vec3 r0 = sim.node_position(e), r1 = sim.node_position(e + 1);
     const auto& q = sim.state().q;
     const Vec3 d0 = q.segment<3>(sim.cable_dof(e) + 3), d1 = q.segment<3>(sim.cable_dof(e + 1) + 3);
@@ -99,7 +99,7 @@ TEST(SeabedCore, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight) {
   // instead, every node sliding at the tow speed
   Simulation sim(m);
   State laid = sim.state();
-  const double l = m.cable.length / m.cable.elements;
+  const double l = m.cables[0].length / m.cables[0].elements;
   for (int n = 0; n < sim.num_nodes(); ++n) {
     laid.q.segment<3>(sim.cable_dof(n)) = Vec3(-n * l, 0.0, 60.0);
     laid.q.segment<3>(sim.cable_dof(n) + 3) = Vec3(-1.0, 0.0, 0.0);
@@ -113,12 +113,12 @@ TEST(SeabedCore, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight) {
   // the grounded weight: what the bed carries, the whole weight in water less the part the
   // driven end holds up (the support holds its node at the bed's level, the rest rests a
   // penetration below it)
-  const double grounded = WeightInWater(m) * m.cable.length - sim.end_force(0).z();
+  const double grounded = WeightInWater(m) * m.cables[0].length - sim.end_force(0).z();
   const double expected = kMu * grounded;
   std::printf(
       "dragged cable: pull %.4f N, mu x grounded weight %.4f N (weight %.4f N, held by "
       "the support %.4f N)\n",
-      pull, expected, WeightInWater(m) * m.cable.length, sim.end_force(0).z());
+      pull, expected, WeightInWater(m) * m.cables[0].length, sim.end_force(0).z());
   // steady sliding: tanh(10) = 1 - 4e-9; the normal force is the grounded weight exactly
   constexpr double kFrictionRelTol = 1e-3;
   EXPECT_NEAR(pull, expected, kFrictionRelTol * expected);
@@ -137,7 +137,7 @@ TEST(SeabedCore, EnergyNeverExceedsTheWorkPutIn) {
   Simulation sim(m);
   auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
   const double e0 = energy();
-  const Vec3 v_support = m.cable.start.velocity;
+  const Vec3 v_support = m.cables[0].start.velocity;
   double work = 0.0;
   double power_prev = -sim.end_force(0).dot(v_support);
   double worst = -1e300, scale = 0.0;

@@ -38,7 +38,7 @@ constexpr double kTensionRelTol = 2e-2;
 void CheckSteadyTow(const std::vector<std::string>& overrides, double speed, double run_time) {
   const core::Model model = scene::LoadScene(kScene, overrides);
   // the scene is what this test was written for
-  const core::CableParams& c = model.cable;
+  const core::CableParams& c = model.cables[0];
   ASSERT_EQ(c.start.kind, core::EndKind::kDriven);
   ASSERT_EQ(c.end.kind, core::EndKind::kSphere);
   ASSERT_EQ(model.spheres.size(), 1u);

@@ -39,7 +39,7 @@ constexpr double kLength = 10.0;
 core::Model SwingingCable(core::Scheme scheme, double rho_inf, double step) {
   core::Model m;
   m.name = "swinging_cable";
-  core::CableParams& c = m.cable;
+  core::CableParams& c = m.cables[0];
   c.length = kLength;
   c.elements = 10;
   c.diameter = 0.01;
@@ -62,7 +62,7 @@ core::Model SwingingCable(core::Scheme scheme, double rho_inf, double step) {
 }
 
 double PotentialSwing(const core::Model& m) {
-  const core::CableParams& c = m.cable;
+  const core::CableParams& c = m.cables[0];
   return c.mass_per_length * m.environment.gravity * c.length * c.length / 2.0;
 }
 

@@ -35,7 +35,7 @@ constexpr double kRhoA = 0.1;  // [kg/m]
 core::Model String() {
   core::Model m;
   m.name = "taut_string";
-  core::CableParams& c = m.cable;
+  core::CableParams& c = m.cables[0];
   c.length = kLength;
   c.elements = 10;
   c.diameter = kDiameter;

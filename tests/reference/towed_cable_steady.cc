@@ -84,6 +84,8 @@ TowedCableSolution Integrate(const TowedCableProblem& p, double sphere_z, int st
   Y y;
   y.head<3>() = p.current_profile ? -SphereExternalForce(p, p.current_profile(sphere_z))
                                   : -SphereExternalForce(p);
+  // and whatever else pulls on the sphere (the cable below it in a chain)
+  y.head<3>() -= p.sphere_extra_force;
   y.tail<3>().setZero();
   if (!(y.head<3>().norm() > 0.0)) throw std::runtime_error("towed cable: slack at the sphere");
 

@@ -14,7 +14,8 @@
 //                                                                Choo & Casarella's laws or
 //                                                                constant coefficients)
 //   dr/ds = lambda(T) t_hat,  t_hat = F / |F|
-//   F(0) = -(sphere net weight + sphere drag)   (the sphere is in equilibrium; no shooting)
+//   F(0) = -(sphere net weight + sphere drag + sphere_extra_force)   (the sphere is in
+//          equilibrium; no shooting)
 //
 // with w = (rho_c - rho_w) A g and the stretch lambda(T) from the chosen constitutive law.
 // Integrated with classical RK4; world NED (z down).
@@ -61,6 +62,9 @@ struct TowedCableProblem {
   std::function<Eigen::Vector3d(double z)> current_profile;
   double tow_depth = 0.0;  // z of the tow point (NED) [m], with current_profile
   Eigen::Vector3d tow_velocity{6.0, 0.0, 0.0};  // U_tow [m/s]
+  // a further force on the sphere (world NED) [N]: in a chain of cables (a two-part tow) the
+  // force the cable below the sphere exerts on it, that cable's top_force
+  Eigen::Vector3d sphere_extra_force = Eigen::Vector3d::Zero();
   // switches (for self-checks)
   bool cable_drag = true;
   bool cable_weight = true;

@@ -16,7 +16,7 @@ namespace towsim::reference {
 // the reference problem of the model, under the core's stretch law
 inline TowedCableProblem SteadyTowProblem(const core::Model& m) {
   TowedCableProblem p;
-  const core::CableParams& c = m.cable;
+  const core::CableParams& c = m.cables[0];
   p.length = c.length;
   p.diameter = c.diameter;
   // the line as the solid section of its diameter with the same m and EA
@@ -53,7 +53,7 @@ struct SteadyTowSample {
 };
 
 inline SteadyTowSample MeasureSteadyTow(const core::Simulation& sim) {
-  const core::CableEnd& top = sim.model().cable.start;
+  const core::CableEnd& top = sim.model().cables[0].start;
   const core::Vec3 p_top = top.position + top.velocity * sim.time();
   const core::Vec3 p_sphere = sim.body_position(0);
   return {sim.time(), p_top.x() - p_sphere.x(), p_sphere.z() - p_top.z(), sim.end_force(0).norm()};

@@ -91,11 +91,11 @@ TEST(WaveResponseCore, NeutralSphereKeepsItsDepthOnTheLinearOrbitAndDriftsWithSt
                          env.gravity, env.water_density);
   env.waves.set_ramp(kRampPeriods * kPeriod);
   // a short cable hanging far away and deep (e^{-k z} = 1e-14 there): the sphere is free
-  m.cable.length = 2.0;
-  m.cable.elements = 1;
-  m.cable.start.kind = EndKind::kFixed;
-  m.cable.start.position = Vec3(500.0, 0.0, 500.0);
-  m.cable.end.kind = EndKind::kFree;
+  m.cables[0].length = 2.0;
+  m.cables[0].elements = 1;
+  m.cables[0].start.kind = EndKind::kFixed;
+  m.cables[0].start.position = Vec3(500.0, 0.0, 500.0);
+  m.cables[0].end.kind = EndKind::kFree;
   SphereBody s;
   s.name = "sphere";
   s.volume = 1e-3;  // r = 6.2 cm, 1/1600 of the wavelength

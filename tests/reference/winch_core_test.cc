@@ -44,12 +44,12 @@ const std::string kScene = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/winc
 core::Model HangingWeight() {
   core::Model m;
   m.time.step = 0.05;
-  m.cable.length = 100;
-  m.cable.elements = 10;
-  m.cable.initial = core::InitialShape::kStatic;
-  m.cable.start.kind = core::EndKind::kFixed;
-  m.cable.end.kind = core::EndKind::kSphere;
-  m.cable.end.body = 0;
+  m.cables[0].length = 100;
+  m.cables[0].elements = 10;
+  m.cables[0].initial = core::InitialShape::kStatic;
+  m.cables[0].start.kind = core::EndKind::kFixed;
+  m.cables[0].end.kind = core::EndKind::kSphere;
+  m.cables[0].end.body = 0;
   core::SphereBody b;
   b.name = "weight";
   b.mass = 416;
@@ -58,7 +58,7 @@ core::Model HangingWeight() {
   m.spheres.push_back(b);
   // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
   core::WinchParams w{50, 150, 0.1, 0.0025};
-  m.cable.winch = w;
+  m.cables[0].winch = w;
   return m;
 }
 
@@ -79,7 +79,7 @@ double CableMass(const core::Simulation& sim) {
 
 TEST(WinchCore, HangingWeightDrumTensionIsTheSubmergedWeight) {
   const core::Model m = HangingWeight();
-  const core::CableParams& c = m.cable;
+  const core::CableParams& c = m.cables[0];
   const double g = m.environment.gravity, rho = m.environment.water_density;
   // submerged weights: the cable per unstretched metre, the sphere
   const double w_cable = (c.mass_per_length - rho * c.area()) * g;
@@ -148,8 +148,8 @@ TEST(WinchCore, SteadyTowAfterPayoutMatchesTheSteadySolutionAtTheNewLength) {
   ASSERT_EQ(model.script[0].winch.value, 250.0);
   // the same tow started with 250 m (25 elements of the same 10 m) in its steady shape
   core::Model started = model;
-  started.cable.length = 250.0;
-  started.cable.elements = 25;
+  started.cables[0].length = 250.0;
+  started.cables[0].elements = 25;
   started.spheres[0].position.z() = 253.5;
   started.script.clear();
   // payout from 20 s to about 125 s, then settled: the payout leaves the sphere deeper
@@ -252,7 +252,7 @@ double DrumPower(const core::Simulation& sim) {
   const core::System& sys = sim.system();
   const core::State& st = sim.state();
   const core::Model& m = sim.model();
-  const double w = (m.cable.mass_per_length - m.environment.water_density * m.cable.area()) *
+  const double w = (m.cables[0].mass_per_length - m.environment.water_density * m.cables[0].area()) *
                    m.environment.gravity;
   const core::Vec12 e = sys.ElementCoordinates(st.q, 0), e_dot = sys.ElementCoordinates(st.v, 0);
   auto lagrangian = [&](double l) {
@@ -269,7 +269,7 @@ double DrumPower(const core::Simulation& sim) {
 // carries out (its potential is 0 at the drum, z = 0): dL/dt [-T (1 + eps) + E A eps^2 / 2 +
 // rho_c A (dL/dt (1 + eps))^2 / 2], eps = T / (E A)
 double DrumFluxPower(const core::Simulation& sim) {
-  const core::CableParams& c = sim.model().cable;
+  const core::CableParams& c = sim.model().cables[0];
   const double ea = c.axial_stiffness, rate = sim.winch_speed();
   const double t = sim.DrumTension(), eps = t / ea;
   const double v = rate * (1.0 + eps);
@@ -291,8 +291,8 @@ struct EnergyBalance {
 // water's, not a potential's; the sphere's is a constant mass), the sphere's drag on or off
 EnergyBalance RunEnergyBalance(core::Scheme scheme, bool sphere_drag) {
   core::Model m = HangingWeight();
-  m.cable.loads.drag = false;
-  m.cable.loads.added_mass = false;
+  m.cables[0].loads.drag = false;
+  m.cables[0].loads.added_mass = false;
   if (!sphere_drag) m.spheres[0].drag_coefficient = 0.0;
   m.integrator.scheme = scheme;
   // the sphere's drag power -k |v|^3 (Morison, still water), k = rho C_D pi r^2 / 2
@@ -372,7 +372,7 @@ TEST(WinchCore, EnergyChangesByTheDrumsWork) {
   // the shape, strain energy and mass; its kinetic energy changes by the material velocity of
   // the new node against the interpolated one)
   const core::Model m = HangingWeight();
-  const double element_work = 2426.0 * m.cable.length / m.cable.elements;  // T l_e [J]
+  const double element_work = 2426.0 * m.cables[0].length / m.cables[0].elements;  // T l_e [J]
   constexpr double kEventRelTol = 1e-5;
   EXPECT_LE(t.merge, kEventRelTol * element_work);
   EXPECT_LE(t.split, kEventRelTol * element_work);
@@ -389,7 +389,7 @@ TEST(WinchCore, EnergyChangesByTheDrumsWork) {
 TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
   // the hanging weight of 2426 N at 100 m; a brake of 2000 N cannot hold it
   core::Model m = HangingWeight();
-  m.cable.winch->brake_tension = 2000.0;
+  m.cables[0].winch->brake_tension = 2000.0;
   core::Simulation sim(m);
   // every step: the drum tension's largest deviation from the brake's while slipping, and the
   // most it exceeds the brake's while gripping
@@ -429,7 +429,7 @@ TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
   EXPECT_LE(worst_grip, kBandN);
   // a brake above the load holds: no payout
   core::Model held = HangingWeight();
-  held.cable.winch->brake_tension = 3000.0;
+  held.cables[0].winch->brake_tension = 3000.0;
   core::Simulation hold(held);
   long held_iterations = 0;
   for (int i = 0; i < 400; ++i) {

@@ -29,7 +29,7 @@ double InputPower(const core::Simulation& sim) {
     p += vs.actuator[core::kThrust] * vs.nu(0);
   }
   // driven support: it exerts -lambda on the cable and moves with v_support
-  const core::CableParams& c = sim.model().cable;
+  const core::CableParams& c = sim.model().cables[0];
   const core::CableEnd* ends[2] = {&c.start, &c.end};
   for (int e = 0; e < 2; ++e)
     if (ends[e]->kind == core::EndKind::kDriven) p -= sim.end_force(e).dot(ends[e]->velocity);

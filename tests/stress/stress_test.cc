@@ -115,7 +115,7 @@ double TrackDifference(const std::string& scene, double duration, double h, Stre
   for (size_t i = 0; i < std::min(coarse.size(), fine.size()); ++i)
     worst = std::max(worst, (coarse[i] - fine[i]).norm());
   EXPECT_EQ(coarse.size(), fine.size());
-  return worst / fine_sim.model().cable.length;
+  return worst / fine_sim.model().cables[0].length;
 }
 
 // 1 % of the cable length: the accuracy target for the towfish track

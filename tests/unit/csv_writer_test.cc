@@ -78,14 +78,14 @@ core::Model TinyModel() {
   model.name = "tiny";
   model.time.step = 0.01;
   model.time.duration = 0.1;
-  model.cable.length = 10.0;
-  model.cable.elements = 2;
-  model.cable.initial = core::InitialShape::kVertical;
-  model.cable.start.kind = core::EndKind::kFixed;
-  model.cable.start.position = core::Vec3(0.0, 0.0, 0.0);
-  model.cable.end.kind = core::EndKind::kSphere;
-  model.cable.end.body = 0;
-  model.cable.end.at_B = core::Vec3::Zero();
+  model.cables[0].length = 10.0;
+  model.cables[0].elements = 2;
+  model.cables[0].initial = core::InitialShape::kVertical;
+  model.cables[0].start.kind = core::EndKind::kFixed;
+  model.cables[0].start.position = core::Vec3(0.0, 0.0, 0.0);
+  model.cables[0].end.kind = core::EndKind::kSphere;
+  model.cables[0].end.body = 0;
+  model.cables[0].end.at_B = core::Vec3::Zero();
   core::SphereBody sphere;
   sphere.name = "ball";
   sphere.mass = 50.0;
@@ -114,7 +114,7 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
   csv.Close();
 
   const int writes = 2;
-  const int nodes = model.cable.elements + 1;
+  const int nodes = model.cables[0].elements + 1;
   std::string header;
 
   const Rows bodies = ReadCsv(dir / "bodies.csv", &header);
@@ -175,7 +175,7 @@ TEST(CsvWriterTest, HeadersColumnsAndRowsFollowDesign) {
   EXPECT_EQ(status_rows[1][2], std::to_string(status.iterations));
   EXPECT_EQ(status_rows[1][4], "1234");
   // no winch: the paid-out length is the scene's cable.length at every row (docs/winch.md)
-  for (const auto& row : status_rows) EXPECT_EQ(std::stod(row[5]), model.cable.length);
+  for (const auto& row : status_rows) EXPECT_EQ(std::stod(row[5]), model.cables[0].length);
 }
 
 // a 6-DOF vehicle (turned and pitched) holds the cable's start; the sphere hangs at its end
@@ -194,12 +194,12 @@ core::Model VehicleModel() {
   boat.euler = core::Vec3(0.0, 0.1, 0.5);  // pitch, yaw [rad]
   boat.nu << 1.0, 0.0, 0.0, 0.0, 0.0, 0.02;
   model.vehicles.push_back(boat);
-  model.cable.start.kind = core::EndKind::kVehicle;
-  model.cable.start.body = 0;
-  model.cable.start.at_B = core::Vec3(-1.0, 0.0, 0.2);  // astern: the cable makes a moment
+  model.cables[0].start.kind = core::EndKind::kVehicle;
+  model.cables[0].start.body = 0;
+  model.cables[0].start.at_B = core::Vec3(-1.0, 0.0, 0.2);  // astern: the cable makes a moment
   const core::Vec3 top =
-      boat.position + core::QuaternionFromEulerZYX(boat.euler) * model.cable.start.at_B;
-  model.spheres[0].position = top + core::Vec3(0.0, 0.0, model.cable.length);
+      boat.position + core::QuaternionFromEulerZYX(boat.euler) * model.cables[0].start.at_B;
+  model.spheres[0].position = top + core::Vec3(0.0, 0.0, model.cables[0].length);
   return model;
 }
 
@@ -291,7 +291,7 @@ TEST(CsvWriterTest, WinchSceneWritesTheCableLength) {
   core::Model model = TinyModel();
   // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
   core::WinchParams w{5.0, 20.0, 1.0, 10.0};
-  model.cable.winch = w;
+  model.cables[0].winch = w;
   core::Simulation sim(model);
   sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 1.0});
   CsvWriter csv(tmp.path().string(), false, true);
@@ -359,7 +359,7 @@ TEST(CsvWriterTest, VehicleRowsFollowTheSpheres) {
 TEST(CsvWriterTest, FreeEndHasNoSupportRow) {
   TempDir tmp;
   core::Model model = TinyModel();
-  model.cable.end = core::CableEnd{};  // free; the sphere is not attached
+  model.cables[0].end = core::CableEnd{};  // free; the sphere is not attached
   core::Simulation sim(model);
   CsvWriter csv(tmp.path().string());
   csv.Write(sim, core::StepStatus{}, 0);
@@ -541,7 +541,7 @@ TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
   w.max_length = 20.0;
   w.max_speed = 1.0;
   w.max_acceleration = 0.5;
-  model.cable.winch = w;
+  model.cables[0].winch = w;
   core::Simulation sim(model);
   ASSERT_TRUE(sim.has_winch());
   sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 0.5});

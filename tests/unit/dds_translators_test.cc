@@ -209,7 +209,7 @@ TEST(MaxCableNodesTest, BoundsTheNodesAtTheWinchsMaxLength) {
   w.max_length = 125.0;
   w.max_speed = 1.0;
   w.max_acceleration = 0.1;
-  model.cable.winch = w;
+  model.cables[0].winch = w;
   const core::Simulation sim(model);
   // 4 elements of 12.5 m: 125 m hold 10 of them, + 3 (docs/winch.md)
   EXPECT_EQ(MaxCableNodes(sim), 13);

@@ -338,7 +338,7 @@ TEST(ShippedScene, Case3WavesLoads) {
   EXPECT_EQ(m.environment.seabed.kind(), core::Seabed::Kind::kFlat);
   EXPECT_EQ(m.environment.seabed.Depth(0.0, 0.0), 60.0);
   ASSERT_EQ(m.vehicles.size(), 2u);
-  EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
+  EXPECT_EQ(m.cables[0].initial, core::InitialShape::kStatic);
 }
 
 }  // namespace

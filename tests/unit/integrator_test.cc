@@ -35,10 +35,10 @@ TEST(AlphaParameters, TrapezoidalAtRhoOneAndSecondOrderConditions) {
 // v = sqrt(2 (m - rho V) g / (rho C_D pi r^2)).
 TEST(Integrator, SphereReachesItsTerminalSpeed) {
   Model m;
-  m.cable.length = 10;
-  m.cable.elements = 2;
-  m.cable.start.kind = EndKind::kFixed;
-  m.cable.end.kind = EndKind::kFree;
+  m.cables[0].length = 10;
+  m.cables[0].elements = 2;
+  m.cables[0].start.kind = EndKind::kFixed;
+  m.cables[0].end.kind = EndKind::kFree;
   SphereBody b;
   b.name = "ball";
   b.mass = 100;
@@ -58,12 +58,12 @@ TEST(Integrator, SphereReachesItsTerminalSpeed) {
 
 TEST(Integrator, FailedNewtonEndsWithADiagnosis) {
   Model m;
-  m.cable.length = 100;
-  m.cable.elements = 10;
-  m.cable.start.kind = EndKind::kDriven;
-  m.cable.start.velocity = Vec3(5, 0, 0);
-  m.cable.end.kind = EndKind::kFree;
-  m.cable.initial_velocity = Vec3::Zero();  // the top jerks to 5 m/s: Newton must work
+  m.cables[0].length = 100;
+  m.cables[0].elements = 10;
+  m.cables[0].start.kind = EndKind::kDriven;
+  m.cables[0].start.velocity = Vec3(5, 0, 0);
+  m.cables[0].end.kind = EndKind::kFree;
+  m.cables[0].initial_velocity = Vec3::Zero();  // the top jerks to 5 m/s: Newton must work
   m.integrator.max_iterations = 1;
   m.integrator.max_substep_level = 2;
   m.integrator.tolerance = 1e-14;
@@ -78,11 +78,11 @@ TEST(Integrator, FailedNewtonEndsWithADiagnosis) {
 
 TEST(Integrator, SubsteppingRescuesAHardStep) {
   Model m;
-  m.cable.length = 100;
-  m.cable.elements = 10;
-  m.cable.start.kind = EndKind::kDriven;
-  m.cable.start.velocity = Vec3(5, 0, 0);
-  m.cable.end.kind = EndKind::kFree;
+  m.cables[0].length = 100;
+  m.cables[0].elements = 10;
+  m.cables[0].start.kind = EndKind::kDriven;
+  m.cables[0].start.velocity = Vec3(5, 0, 0);
+  m.cables[0].end.kind = EndKind::kFree;
   m.time.step = 1.0;  // a large step from a jerk start
   m.integrator.max_iterations = 4;
   m.integrator.max_substep_level = 8;

@@ -63,7 +63,7 @@ std::string Error(const std::string& yaml, const std::vector<std::string>& overr
 }
 
 TEST(LineTypeReader, TheScenesTypeGivesEveryProperty) {
-  const core::CableParams c = Load(Scene(kTether, "  line_type: tether\n")).cable;
+  const core::CableParams c = Load(Scene(kTether, "  line_type: tether\n")).cables[0];
   EXPECT_EQ(c.diameter, 0.02);
   EXPECT_EQ(c.mass_per_length, 0.5);
   EXPECT_EQ(c.axial_stiffness, 2.0e6);
@@ -78,7 +78,7 @@ TEST(LineTypeReader, TheScenesTypeGivesEveryProperty) {
 
 TEST(LineTypeReader, TodaysKeysGiveTheSolidSection) {
   const core::CableParams c =
-      Load(Scene("", "  diameter: 0.041\n  density: 1300\n  youngs_modulus: 7.0e8\n")).cable;
+      Load(Scene("", "  diameter: 0.041\n  density: 1300\n  youngs_modulus: 7.0e8\n")).cables[0];
   // m = rho_c A, EA = E A, EI = E I, bit for bit as before line types
   EXPECT_EQ(c.mass_per_length, 1300.0 * c.area());
   EXPECT_EQ(c.axial_stiffness, 7.0e8 * c.area());
@@ -90,13 +90,13 @@ TEST(LineTypeReader, TodaysKeysGiveTheSolidSection) {
   // I = 1.3873e-7 m^4, EI = EA d^2 / 16)
   const core::CableParams d =
       Load(Scene("", "  diameter: 0.041\n  mass_per_length: 1.7\n  axial_stiffness: 1.0e6\n"))
-          .cable;
+          .cables[0];
   EXPECT_NEAR(d.bending_stiffness, 1.0e6 * 0.041 * 0.041 / 16.0, 1e-12);
   // 0 switches bending off
   EXPECT_EQ(Load(Scene("",
                        "  diameter: 0.041\n  density: 1300\n  youngs_modulus: 7.0e8\n"
                        "  bending_stiffness: 0\n"))
-                .cable.bending_stiffness,
+                .cables[0].bending_stiffness,
             0.0);
 }
 
@@ -107,8 +107,8 @@ TEST(LineTypeReader, TheLibraryTypeIsTheShippedCable) {
                                       {"cable={line_type: park_kim_tow_cable, length: 200, "
                                        "elements: 20, start: {driven: {position: [0, 0, 3.5], "
                                        "velocity: [6, 0, 0]}}, end: {body: towfish}}"});
-  const core::CableParams& a = shipped.cable;
-  const core::CableParams& b = typed.cable;
+  const core::CableParams& a = shipped.cables[0];
+  const core::CableParams& b = typed.cables[0];
   EXPECT_EQ(a.diameter, b.diameter);
   EXPECT_EQ(a.mass_per_length, b.mass_per_length);
   EXPECT_EQ(a.axial_stiffness, b.axial_stiffness);
@@ -123,7 +123,7 @@ TEST(LineTypeReader, EveryLibraryFileLoads) {
   for (const auto& entry : fs::directory_iterator(kConfigDir + "/line_types")) {
     const std::string name = entry.path().stem().string();
     SCOPED_TRACE(name);
-    const core::CableParams c = Load(Scene("", "  line_type: " + name + "\n")).cable;
+    const core::CableParams c = Load(Scene("", "  line_type: " + name + "\n")).cables[0];
     EXPECT_GT(c.diameter, 0.0);
     EXPECT_GT(c.mass_per_length, 0.0);
     EXPECT_GT(c.axial_stiffness, 0.0);
@@ -131,13 +131,13 @@ TEST(LineTypeReader, EveryLibraryFileLoads) {
   }
   EXPECT_GE(count, 4);
   // the numbers of two of them (their sources in the files)
-  const core::CableParams oc3 = Load(Scene("", "  line_type: oc3_hywind_mooring\n")).cable;
+  const core::CableParams oc3 = Load(Scene("", "  line_type: oc3_hywind_mooring\n")).cables[0];
   EXPECT_EQ(oc3.mass_per_length, 77.7066);
   EXPECT_EQ(oc3.axial_stiffness, 384.243e6);
   EXPECT_EQ(oc3.bending_stiffness, 0.0);
   EXPECT_EQ(oc3.drag.normal, 1.6);
   EXPECT_EQ(oc3.drag.tangential, 0.1);
-  const core::CableParams jumper = Load(Scene("", "  line_type: lowe_langley_jumper\n")).cable;
+  const core::CableParams jumper = Load(Scene("", "  line_type: lowe_langley_jumper\n")).cables[0];
   EXPECT_EQ(jumper.bending_stiffness, 120.8e3);
   EXPECT_EQ(jumper.axial_stiffness, 500.0e6);
 }
@@ -146,14 +146,14 @@ TEST(LineTypeReader, TheScenesMapWinsOverTheLibrary) {
   const std::string own =
       "line_types:\n"
       "  oc3_hywind_mooring: {diameter: 0.05, mass_per_length: 3, axial_stiffness: 1e7}\n";
-  const core::CableParams c = Load(Scene(own, "  line_type: oc3_hywind_mooring\n")).cable;
+  const core::CableParams c = Load(Scene(own, "  line_type: oc3_hywind_mooring\n")).cables[0];
   EXPECT_EQ(c.diameter, 0.05);
   EXPECT_EQ(c.mass_per_length, 3.0);
 }
 
 TEST(LineTypeReader, APathIsRelativeToTheScenesFolder) {
   const core::CableParams c =
-      Load(Scene("", "  line_type: ../line_types/moordyn_nylon_rope.yaml\n")).cable;
+      Load(Scene("", "  line_type: ../line_types/moordyn_nylon_rope.yaml\n")).cables[0];
   EXPECT_EQ(c.mass_per_length, 13.76);
   EXPECT_EQ(c.axial_stiffness, 2515288.0);
   EXPECT_EQ(c.drag.normal, 1.6);
@@ -167,7 +167,7 @@ TEST(LineTypeReader, ALibraryBesideTheScene) {
   std::ofstream(dir / "line_types" / "mine.yaml")
       << "diameter: 0.03\nmass_per_length: 1.1\naxial_stiffness: 3e6\nbending_stiffness: 0\n";
   std::ofstream(dir / "scene.yaml") << Scene("", "  line_type: mine\n");
-  const core::CableParams c = LoadScene((dir / "scene.yaml").string()).cable;
+  const core::CableParams c = LoadScene((dir / "scene.yaml").string()).cables[0];
   EXPECT_EQ(c.diameter, 0.03);
   EXPECT_EQ(c.axial_stiffness, 3e6);
   fs::remove_all(dir);
@@ -177,41 +177,41 @@ TEST(LineTypeReader, TheCablesKeysOverrideTheTypes) {
   // a pair as a whole: youngs_modulus replaces the type's axial_stiffness; EI stays the type's
   const core::CableParams c =
       Load(Scene(kTether, "  line_type: tether\n  youngs_modulus: 1.0e10\n  diameter: 0.03\n"))
-          .cable;
+          .cables[0];
   EXPECT_EQ(c.diameter, 0.03);
   EXPECT_EQ(c.axial_stiffness, 1.0e10 * c.area());
   EXPECT_EQ(c.bending_stiffness, 0.5);
   EXPECT_EQ(c.mass_per_length, 0.5);
   // added_mass_coefficient: C_an only
   const core::CableParams d =
-      Load(Scene(kTether, "  line_type: tether\n  added_mass_coefficient: 0.7\n")).cable;
+      Load(Scene(kTether, "  line_type: tether\n  added_mass_coefficient: 0.7\n")).cables[0];
   EXPECT_EQ(d.added_mass.normal, 0.7);
   EXPECT_EQ(d.added_mass.tangential, 0.1);
   // added_mass per coefficient
   const core::CableParams e =
-      Load(Scene(kTether, "  line_type: tether\n  added_mass: {tangential: 0.3}\n")).cable;
+      Load(Scene(kTether, "  line_type: tether\n  added_mass: {tangential: 0.3}\n")).cables[0];
   EXPECT_EQ(e.added_mass.normal, 0.9);
   EXPECT_EQ(e.added_mass.tangential, 0.3);
   // drag as a whole
   const core::CableParams f =
-      Load(Scene(kTether, "  line_type: tether\n  drag: choo_casarella\n")).cable;
+      Load(Scene(kTether, "  line_type: tether\n  drag: choo_casarella\n")).cables[0];
   EXPECT_EQ(f.drag.kind, core::CableDragLaw::kChooCasarella);
 }
 
 TEST(LineTypeReader, SetTakesTheNewKeys) {
   const std::string yaml = Scene(kTether, "  line_type: tether\n");
   // a coefficient over the type's drag keeps the type's other one
-  const core::CableParams n = Load(yaml, {"cable.drag.normal=1.2"}).cable;
+  const core::CableParams n = Load(yaml, {"cable.drag.normal=1.2"}).cables[0];
   EXPECT_EQ(n.drag.normal, 1.2);
   EXPECT_EQ(n.drag.tangential, 0.01);
-  EXPECT_EQ(Load(yaml, {"line_types.tether.bending_stiffness=0"}).cable.bending_stiffness, 0.0);
-  EXPECT_EQ(Load(yaml, {"cable.line_type=oc3_hywind_mooring"}).cable.mass_per_length, 77.7066);
-  EXPECT_EQ(Load(yaml, {"cable.drag=choo_casarella"}).cable.drag.kind,
+  EXPECT_EQ(Load(yaml, {"line_types.tether.bending_stiffness=0"}).cables[0].bending_stiffness, 0.0);
+  EXPECT_EQ(Load(yaml, {"cable.line_type=oc3_hywind_mooring"}).cables[0].mass_per_length, 77.7066);
+  EXPECT_EQ(Load(yaml, {"cable.drag=choo_casarella"}).cables[0].drag.kind,
             core::CableDragLaw::kChooCasarella);
   const core::CableParams c =
       Load(yaml, {"cable.drag={normal: 1.1, tangential: 0.02}", "cable.mass_per_length=0.8",
                   "cable.added_mass.tangential=0.2"})
-          .cable;
+          .cables[0];
   EXPECT_EQ(c.drag.normal, 1.1);
   EXPECT_EQ(c.drag.tangential, 0.02);
   EXPECT_EQ(c.mass_per_length, 0.8);
@@ -285,7 +285,7 @@ TEST(LineTypeReader, AStiffnessTheWeightsWouldStretchBeyondHalfIsFlagged) {
             "stretch by 87.3025 % (at most 50 %: no cable material stretches that far)");
   // at 400 N (22 %) it runs: the run's strain watch reports what the dynamics do
   EXPECT_EQ(
-      Load(Scene(kTether, "  line_type: tether\n  axial_stiffness: 400\n")).cable.axial_stiffness,
+      Load(Scene(kTether, "  line_type: tether\n  axial_stiffness: 400\n")).cables[0].axial_stiffness,
       400.0);
 }
 
@@ -296,13 +296,13 @@ TEST(LineTypeReader, MinimumTensionOfTheSteadyTow) {
   // cable: (1300 - 1025) kg/m^3 x 1.32025e-3 m^2 x 9.81 x 200 m / 2 = 356.17 N;
   // sphere: (416 - 1025 x 0.2) kg x 9.81 = 2069.91 N
   constexpr double kTol = 0.01;  // [N], the hand values' rounding
-  EXPECT_NEAR(internal::MinimumTension(m.cable, m), 356.17 + 2069.91, kTol);
+  EXPECT_NEAR(internal::MinimumTension(m.cables[0], m), 356.17 + 2069.91, kTol);
   m.environment.seabed = core::Seabed::Flat(300.0);
-  EXPECT_NEAR(internal::MinimumTension(m.cable, m), 2069.91, kTol);
+  EXPECT_NEAR(internal::MinimumTension(m.cables[0], m), 2069.91, kTol);
   // a free end carries nothing: the cable's half only
   m.environment.seabed = core::Seabed();
-  m.cable.end.kind = core::EndKind::kFree;
-  EXPECT_NEAR(internal::MinimumTension(m.cable, m), 356.17, kTol);
+  m.cables[0].end.kind = core::EndKind::kFree;
+  EXPECT_NEAR(internal::MinimumTension(m.cables[0], m), 356.17, kTol);
 }
 
 }  // namespace

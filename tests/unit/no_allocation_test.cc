@@ -93,7 +93,7 @@ TEST(NoAllocation, WinchPayoutAndReelIn) {
 // reuse their storage
 TEST(NoAllocation, BrakeSlipping) {
   Model model = test::SteadyTowWithWinch();
-  model.cable.winch->brake_tension = 0.7 * Simulation(model).DrumTension();
+  model.cables[0].winch->brake_tension = 0.7 * Simulation(model).DrumTension();
   Simulation sim(model);
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(sim.Step().ok());  // warm-up: work space sized
   ASSERT_TRUE(sim.state().winch.slipping);

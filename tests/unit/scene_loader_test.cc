@@ -148,22 +148,22 @@ fs::path SceneLoaderTest::dir_;
 TEST_F(SceneLoaderTest, BaseSceneLoads) {
   const Model m = Load(kScene);
   EXPECT_EQ(m.name, "t");
-  EXPECT_EQ(m.cable.elements, 10);
+  EXPECT_EQ(m.cables[0].elements, 10);
   ASSERT_EQ(m.spheres.size(), 1u);
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kSphere);
-  EXPECT_EQ(m.cable.end.body, 0);
-  EXPECT_TRUE(m.cable.loads.drag);
-  EXPECT_FALSE(m.cable.loads.added_mass);
-  EXPECT_FALSE(m.cable.loads.bending);
+  EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kSphere);
+  EXPECT_EQ(m.cables[0].end.body, 0);
+  EXPECT_TRUE(m.cables[0].loads.drag);
+  EXPECT_FALSE(m.cables[0].loads.added_mass);
+  EXPECT_FALSE(m.cables[0].loads.bending);
   // no driven end, no initial_velocity: bodies start at rest
   EXPECT_EQ(m.spheres[0].velocity, core::Vec3::Zero());
   // defaults
   EXPECT_EQ(m.environment.water_density, 1025.0);
   EXPECT_EQ(m.integrator.max_iterations, 20);
-  EXPECT_EQ(m.cable.axial_damping, 0.0);
-  EXPECT_EQ(m.cable.added_mass.normal, 1.0);
-  EXPECT_EQ(m.cable.added_mass.tangential, 0.0);
-  EXPECT_EQ(m.cable.drag.kind, core::CableDragLaw::kChooCasarella);
+  EXPECT_EQ(m.cables[0].axial_damping, 0.0);
+  EXPECT_EQ(m.cables[0].added_mass.normal, 1.0);
+  EXPECT_EQ(m.cables[0].added_mass.tangential, 0.0);
+  EXPECT_EQ(m.cables[0].drag.kind, core::CableDragLaw::kChooCasarella);
 }
 
 TEST_F(SceneLoaderTest, MessageHasKeyValueFileLineAndRule) {
@@ -367,8 +367,8 @@ INSTANTIATE_TEST_SUITE_P(
         // bodies
         BrokenCase{"bad_body_name", Edit("  fish:", "  2fish:"), "bodies.2fish",
                    "body names must match [A-Za-z_][A-Za-z0-9_]*", ""},
-        BrokenCase{"negative_mass", Edit("mass: 10", "mass: -1"), "bodies.fish.mass", "must be > 0",
-                   ""},
+        BrokenCase{"negative_mass", Edit("mass: 10", "mass: -1"), "bodies.fish.mass",
+                   "must be >= 0", ""},
         BrokenCase{"body_without_position", Edit(", position: [0, 0, 100]", ""),
                    "bodies.fish.position", "is required", "t.yaml:14"},
         BrokenCase{"unknown_type", Edit("type: sphere", "type: box"), "bodies.fish.type",
@@ -700,12 +700,12 @@ TEST_F(SceneLoaderTest, VehicleSceneLoads) {
   EXPECT_EQ(fish.params.surfaces[0].deflection_sign, 1.0);  // default where no command drives it
 
   // the cable ends are on vehicles: kVehicle, index into Model::vehicles
-  EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
-  EXPECT_EQ(m.cable.start.body, 0);
-  EXPECT_EQ(m.cable.start.at_B, core::Vec3(0, 0, 0.05));
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kVehicle);
-  EXPECT_EQ(m.cable.end.body, 1);
-  EXPECT_EQ(m.cable.end.at_B, core::Vec3(0.5, 0, 0));
+  EXPECT_EQ(m.cables[0].start.kind, core::EndKind::kVehicle);
+  EXPECT_EQ(m.cables[0].start.body, 0);
+  EXPECT_EQ(m.cables[0].start.at_B, core::Vec3(0, 0, 0.05));
+  EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kVehicle);
+  EXPECT_EQ(m.cables[0].end.body, 1);
+  EXPECT_EQ(m.cables[0].end.at_B, core::Vec3(0.5, 0, 0));
 }
 
 TEST_F(SceneLoaderTest, VehicleAttitudeVelocityAndCommand) {
@@ -743,12 +743,12 @@ const std::string kWinchLine =
 TEST_F(SceneLoaderTest, WinchKeysAndScriptEntries) {
   const Model m = Load(Edit("  end: {body: fish}\n", kWinchLine) +
                        "script:\n  - {at: 10, winch_speed: -0.5}\n  - {at: 20, winch_length: 120}\n");
-  ASSERT_TRUE(m.cable.winch.has_value());
-  EXPECT_EQ(m.cable.winch->min_length, 50.0);
-  EXPECT_EQ(m.cable.winch->max_length, 150.0);
-  EXPECT_EQ(m.cable.winch->max_speed, 1.0);
-  EXPECT_EQ(m.cable.winch->max_acceleration, 0.2);
-  EXPECT_TRUE(std::isinf(m.cable.winch->brake_tension));  // optional: never slips
+  ASSERT_TRUE(m.cables[0].winch.has_value());
+  EXPECT_EQ(m.cables[0].winch->min_length, 50.0);
+  EXPECT_EQ(m.cables[0].winch->max_length, 150.0);
+  EXPECT_EQ(m.cables[0].winch->max_speed, 1.0);
+  EXPECT_EQ(m.cables[0].winch->max_acceleration, 0.2);
+  EXPECT_TRUE(std::isinf(m.cables[0].winch->brake_tension));  // optional: never slips
   ASSERT_EQ(m.script.size(), 2u);
   EXPECT_TRUE(m.script[0].set_winch);
   EXPECT_EQ(m.script[0].vehicle, -1);
@@ -756,7 +756,7 @@ TEST_F(SceneLoaderTest, WinchKeysAndScriptEntries) {
   EXPECT_EQ(m.script[0].winch.value, -0.5);
   EXPECT_EQ(m.script[1].winch.mode, core::WinchCommand::Mode::kLength);
   EXPECT_EQ(m.script[1].winch.value, 120.0);
-  EXPECT_FALSE(Load(kScene).cable.winch.has_value());
+  EXPECT_FALSE(Load(kScene).cables[0].winch.has_value());
 }
 
 TEST_F(SceneLoaderTest, WinchErrorsNameKeyValueAndRule) {
@@ -798,9 +798,9 @@ TEST_F(SceneLoaderTest, WinchErrorsNameKeyValueAndRule) {
 
 TEST_F(SceneLoaderTest, ShippedWinchPayoutScene) {
   const Model m = LoadScene(kConfigDir + "/scenes/winch_payout.yaml");
-  ASSERT_TRUE(m.cable.winch.has_value());
-  EXPECT_EQ(m.cable.length, 150.0);
-  EXPECT_EQ(m.cable.winch->max_speed, 1.0);
+  ASSERT_TRUE(m.cables[0].winch.has_value());
+  EXPECT_EQ(m.cables[0].length, 150.0);
+  EXPECT_EQ(m.cables[0].winch->max_speed, 1.0);
   ASSERT_EQ(m.script.size(), 2u);
   EXPECT_EQ(m.script[0].winch.value, 250.0);
   EXPECT_EQ(m.script[1].winch.value, 150.0);
@@ -934,9 +934,9 @@ TEST_F(SceneLoaderTest, SpheresAndVehiclesTogether) {
                        {"bodies.ball={type: sphere, mass: 5, position: [0, 0, 101.05]}"});
   ASSERT_EQ(m.spheres.size(), 1u);
   ASSERT_EQ(m.vehicles.size(), 2u);
-  EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kSphere);
-  EXPECT_EQ(m.cable.end.body, 0);
+  EXPECT_EQ(m.cables[0].start.kind, core::EndKind::kVehicle);
+  EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kSphere);
+  EXPECT_EQ(m.cables[0].end.body, 0);
 }
 
 TEST_F(SceneLoaderTest, PaperCaseScenes) {
@@ -946,15 +946,15 @@ TEST_F(SceneLoaderTest, PaperCaseScenes) {
     EXPECT_EQ(m.name, name);
     EXPECT_EQ(m.time.step, 0.05);
     EXPECT_EQ(m.time.output_rate, 10.0);
-    EXPECT_EQ(m.cable.length, 200.0);
-    EXPECT_EQ(m.cable.elements, 20);
-    EXPECT_EQ(m.cable.diameter, 0.041);
-    EXPECT_EQ(m.cable.mass_per_length, 1300.0 * m.cable.area());
-    EXPECT_EQ(m.cable.axial_stiffness, 7.0e8 * m.cable.area());
-    const core::CableLoads& loads = m.cable.loads;
+    EXPECT_EQ(m.cables[0].length, 200.0);
+    EXPECT_EQ(m.cables[0].elements, 20);
+    EXPECT_EQ(m.cables[0].diameter, 0.041);
+    EXPECT_EQ(m.cables[0].mass_per_length, 1300.0 * m.cables[0].area());
+    EXPECT_EQ(m.cables[0].axial_stiffness, 7.0e8 * m.cables[0].area());
+    const core::CableLoads& loads = m.cables[0].loads;
     EXPECT_TRUE(loads.gravity && loads.buoyancy && loads.drag && loads.added_mass && loads.bending);
-    EXPECT_EQ(m.cable.initial, core::InitialShape::kVertical);
-    EXPECT_EQ(m.cable.initial_velocity, core::Vec3::Zero());
+    EXPECT_EQ(m.cables[0].initial, core::InitialShape::kVertical);
+    EXPECT_EQ(m.cables[0].initial_velocity, core::Vec3::Zero());
     EXPECT_TRUE(m.spheres.empty());
     ASSERT_EQ(m.vehicles.size(), 2u);
     const core::Vehicle& tow = m.vehicles[0];
@@ -967,15 +967,15 @@ TEST_F(SceneLoaderTest, PaperCaseScenes) {
     EXPECT_TRUE(tow.params.has_propeller);
     EXPECT_FALSE(fish.params.has_propeller);
     // the cable from the tow vehicle's CG to the towfish's bow, hanging straight down
-    EXPECT_EQ(m.cable.start.kind, core::EndKind::kVehicle);
-    EXPECT_EQ(m.cable.start.body, 0);
-    EXPECT_EQ(m.cable.start.at_B, tow.params.r_g);
-    EXPECT_EQ(m.cable.end.kind, core::EndKind::kVehicle);
-    EXPECT_EQ(m.cable.end.body, 1);
-    EXPECT_EQ(m.cable.end.at_B, core::Vec3(0.5 * fish.params.length, 0, 0));
+    EXPECT_EQ(m.cables[0].start.kind, core::EndKind::kVehicle);
+    EXPECT_EQ(m.cables[0].start.body, 0);
+    EXPECT_EQ(m.cables[0].start.at_B, tow.params.r_g);
+    EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kVehicle);
+    EXPECT_EQ(m.cables[0].end.body, 1);
+    EXPECT_EQ(m.cables[0].end.at_B, core::Vec3(0.5 * fish.params.length, 0, 0));
     const core::Vec3 top = tow.position + tow.params.r_g;
-    const core::Vec3 bow = fish.position + m.cable.end.at_B;
-    EXPECT_EQ(bow, top + core::Vec3(0, 0, m.cable.length));
+    const core::Vec3 bow = fish.position + m.cables[0].end.at_B;
+    EXPECT_EQ(bow, top + core::Vec3(0, 0, m.cables[0].length));
     EXPECT_EQ(m.integrator.coupling, core::Coupling::kStrong);
     // thrust from t = 0, the same in both cases
     ASSERT_GE(m.script.size(), 1u);
@@ -1120,16 +1120,16 @@ TEST_F(SceneLoaderTest, ModelFileValuesAndInlineOverride) {
 TEST_F(SceneLoaderTest, LoadsAndSlopes) {
   // loads absent: all on; a clamped start gets a unit slope
   const Model m = Load(Edit("  loads: [gravity, buoyancy, drag]\n", ""));
-  EXPECT_TRUE(m.cable.loads.gravity && m.cable.loads.buoyancy && m.cable.loads.drag &&
-              m.cable.loads.added_mass && m.cable.loads.bending);
+  EXPECT_TRUE(m.cables[0].loads.gravity && m.cables[0].loads.buoyancy && m.cables[0].loads.drag &&
+              m.cables[0].loads.added_mass && m.cables[0].loads.bending);
   const Model none = Load(Edit("[gravity, buoyancy, drag]", "[]"));
-  EXPECT_FALSE(none.cable.loads.gravity || none.cable.loads.buoyancy || none.cable.loads.drag ||
-               none.cable.loads.added_mass || none.cable.loads.bending);
+  EXPECT_FALSE(none.cables[0].loads.gravity || none.cables[0].loads.buoyancy || none.cables[0].loads.drag ||
+               none.cables[0].loads.added_mass || none.cables[0].loads.bending);
   const Model clamped =
       Load(Edit("start: {fixed: [0, 0, 0]}", "start: {fixed: [0, 0, 0], slope: [0, 0, 2]}"));
-  EXPECT_TRUE(clamped.cable.start.clamped);
-  EXPECT_EQ(clamped.cable.start.slope, core::Vec3(0, 0, 1));
-  EXPECT_FALSE(clamped.cable.end.clamped);
+  EXPECT_TRUE(clamped.cables[0].start.clamped);
+  EXPECT_EQ(clamped.cables[0].start.slope, core::Vec3(0, 0, 1));
+  EXPECT_FALSE(clamped.cables[0].end.clamped);
 }
 
 TEST_F(SceneLoaderTest, PublishRatesAndCommandTimeout) {
@@ -1182,8 +1182,8 @@ TEST_F(SceneLoaderTest, StraightWithinOnePercentStretchLoads) {
   const Model m =
       Load(Edit("initial: vertical\n  start: {fixed: [0, 0, 0]}\n  end: {body: fish}",
                 "initial: straight\n  start: {fixed: [0, 0, 0]}\n  end: {fixed: [100.5, 0, 0]}"));
-  EXPECT_EQ(m.cable.initial, core::InitialShape::kStraight);
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kFixed);
+  EXPECT_EQ(m.cables[0].initial, core::InitialShape::kStraight);
+  EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kFixed);
 }
 
 TEST_F(SceneLoaderTest, CatenaryScene) {
@@ -1192,19 +1192,19 @@ TEST_F(SceneLoaderTest, CatenaryScene) {
   EXPECT_EQ(m.time.step, 0.05);
   EXPECT_EQ(m.time.duration, 30.0);
   EXPECT_EQ(m.time.output_rate, 10.0);
-  EXPECT_EQ(m.cable.length, 200.0);
-  EXPECT_EQ(m.cable.elements, 20);
-  EXPECT_EQ(m.cable.diameter, 0.041);
+  EXPECT_EQ(m.cables[0].length, 200.0);
+  EXPECT_EQ(m.cables[0].elements, 20);
+  EXPECT_EQ(m.cables[0].diameter, 0.041);
   // the solid section: m = rho_c A, EA = E A, EI = E I
-  EXPECT_EQ(m.cable.mass_per_length, 1300.0 * m.cable.area());
-  EXPECT_EQ(m.cable.axial_stiffness, 7.0e8 * m.cable.area());
-  EXPECT_EQ(m.cable.bending_stiffness, 7.0e8 * m.cable.second_moment());
-  EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
-  EXPECT_EQ(m.cable.start.kind, core::EndKind::kFixed);
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kFixed);
-  EXPECT_EQ(m.cable.start.position, core::Vec3(0, 0, 10));
-  EXPECT_EQ(m.cable.end.position, core::Vec3(150, 0, 10));
-  const core::CableLoads& loads = m.cable.loads;
+  EXPECT_EQ(m.cables[0].mass_per_length, 1300.0 * m.cables[0].area());
+  EXPECT_EQ(m.cables[0].axial_stiffness, 7.0e8 * m.cables[0].area());
+  EXPECT_EQ(m.cables[0].bending_stiffness, 7.0e8 * m.cables[0].second_moment());
+  EXPECT_EQ(m.cables[0].initial, core::InitialShape::kStatic);
+  EXPECT_EQ(m.cables[0].start.kind, core::EndKind::kFixed);
+  EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kFixed);
+  EXPECT_EQ(m.cables[0].start.position, core::Vec3(0, 0, 10));
+  EXPECT_EQ(m.cables[0].end.position, core::Vec3(150, 0, 10));
+  const core::CableLoads& loads = m.cables[0].loads;
   EXPECT_TRUE(loads.gravity && loads.buoyancy && loads.drag && loads.added_mass && loads.bending);
   EXPECT_EQ(m.integrator.scheme, core::Scheme::kGeneralizedAlpha);
   EXPECT_EQ(m.integrator.rho_inf, 0.8);
@@ -1218,15 +1218,15 @@ TEST_F(SceneLoaderTest, SteadyTowScene) {
   EXPECT_EQ(m.time.step, 0.05);
   EXPECT_EQ(m.time.duration, 300.0);
   EXPECT_EQ(m.time.output_rate, 10.0);
-  EXPECT_EQ(m.cable.length, 200.0);
-  EXPECT_EQ(m.cable.elements, 20);
-  EXPECT_EQ(m.cable.initial, core::InitialShape::kVertical);
-  EXPECT_EQ(m.cable.start.kind, core::EndKind::kDriven);
-  EXPECT_EQ(m.cable.start.position, core::Vec3(0, 0, 3.5));
-  EXPECT_EQ(m.cable.start.velocity, core::Vec3(6, 0, 0));
-  EXPECT_EQ(m.cable.end.kind, core::EndKind::kSphere);
-  EXPECT_EQ(m.cable.end.body, 0);
-  EXPECT_EQ(m.cable.end.at_B, core::Vec3::Zero());
+  EXPECT_EQ(m.cables[0].length, 200.0);
+  EXPECT_EQ(m.cables[0].elements, 20);
+  EXPECT_EQ(m.cables[0].initial, core::InitialShape::kVertical);
+  EXPECT_EQ(m.cables[0].start.kind, core::EndKind::kDriven);
+  EXPECT_EQ(m.cables[0].start.position, core::Vec3(0, 0, 3.5));
+  EXPECT_EQ(m.cables[0].start.velocity, core::Vec3(6, 0, 0));
+  EXPECT_EQ(m.cables[0].end.kind, core::EndKind::kSphere);
+  EXPECT_EQ(m.cables[0].end.body, 0);
+  EXPECT_EQ(m.cables[0].end.at_B, core::Vec3::Zero());
   ASSERT_EQ(m.spheres.size(), 1u);
   const core::SphereBody& fish = m.spheres[0];
   EXPECT_EQ(fish.name, "towfish");
@@ -1248,12 +1248,12 @@ TEST_F(SceneLoaderTest, Overrides) {
   const Model m =
       LoadScene(kSteadyTow, {"cable.elements=40", "cable.initial=static", "bodies.towfish.mass=500",
                              "environment.current=[0.5,0,0]"});
-  EXPECT_EQ(m.cable.elements, 40);
-  EXPECT_EQ(m.cable.initial, core::InitialShape::kStatic);
+  EXPECT_EQ(m.cables[0].elements, 40);
+  EXPECT_EQ(m.cables[0].initial, core::InitialShape::kStatic);
   EXPECT_EQ(m.spheres[0].mass, 500.0);
   EXPECT_EQ(m.spheres[0].volume, 0.2);  // still from the model file
   EXPECT_EQ(m.environment.current.Velocity(0.0, 0.0), core::Vec3(0.5, 0, 0));
-  EXPECT_EQ(m.cable.length, 200.0);  // untouched
+  EXPECT_EQ(m.cables[0].length, 200.0);  // untouched
 }
 
 TEST_F(SceneLoaderTest, OverridesCreateValidKeysAndApplyInOrder) {
@@ -1262,12 +1262,12 @@ TEST_F(SceneLoaderTest, OverridesCreateValidKeysAndApplyInOrder) {
       Load(kScene, {"cable.axial_damping=0.01", "environment.gravity=9.8", "cable.elements=12",
                     "cable.elements=14", "bodies.buoy={type: sphere, mass: 1, position: [5, 0, 0]}",
                     "cable.start={fixed: [0, 0, 0], slope: [0, 0, 1]}"});
-  EXPECT_EQ(m.cable.axial_damping, 0.01);
+  EXPECT_EQ(m.cables[0].axial_damping, 0.01);
   EXPECT_EQ(m.environment.gravity, 9.8);
-  EXPECT_EQ(m.cable.elements, 14);
+  EXPECT_EQ(m.cables[0].elements, 14);
   ASSERT_EQ(m.spheres.size(), 2u);
   EXPECT_EQ(m.spheres[1].name, "buoy");
-  EXPECT_TRUE(m.cable.start.clamped);
+  EXPECT_TRUE(m.cables[0].start.clamped);
 }
 
 struct BadOverride {

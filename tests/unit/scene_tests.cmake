@@ -15,3 +15,7 @@ target_include_directories(yaml_reader_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
 towsim_add_test(line_type_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/line_type_reader_test.cc
   LIBS towsim::scene)
+# networks (scene/network_reader.h): cables:, names, holding, junctions, winches, warnings
+towsim_add_test(network_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/network_reader_test.cc
+  LIBS towsim::scene)

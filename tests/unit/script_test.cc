@@ -48,11 +48,11 @@ Model TwoBoats() {
   Model m;
   m.name = "script";
   m.time.step = 0.05;
-  m.cable.length = 10.0;
-  m.cable.elements = 2;
-  m.cable.initial = InitialShape::kVertical;
-  m.cable.start.kind = EndKind::kVehicle;
-  m.cable.start.body = 0;
+  m.cables[0].length = 10.0;
+  m.cables[0].elements = 2;
+  m.cables[0].initial = InitialShape::kVertical;
+  m.cables[0].start.kind = EndKind::kVehicle;
+  m.cables[0].start.body = 0;
   for (const char* name : {"one", "two"}) {
     Vehicle v;
     v.name = name;

@@ -140,7 +140,7 @@ TEST(SimulationState, RoundTripWinchMovingAcrossASplit) {
 // it carries to the next step, continue bit for bit from a restored state
 TEST(SimulationState, RoundTripBrakeSlipping) {
   Model model = test::SteadyTowWithWinch();
-  model.cable.winch->brake_tension = 0.7 * Simulation(model).DrumTension();
+  model.cables[0].winch->brake_tension = 0.7 * Simulation(model).DrumTension();
   Simulation straight(model);
   StepN(&straight, 20);
   ASSERT_TRUE(straight.state().winch.slipping);
@@ -184,7 +184,7 @@ std::string SetStateError(const Model& model, const State& s) {
 TEST(SimulationState, WrongShapeIsRejected) {
   const Model model = SteadyTowWithVehicle(Coupling::kStrong);
   Model longer = model;
-  longer.cable.elements = 21;
+  longer.cables[0].elements = 21;
   const State other = Simulation(longer).GetState();
   EXPECT_EQ(SetStateError(model, other),
             "SetState: q has 135 entries, this model needs 129 (3 per sphere body and 6 per cable "

@@ -12,14 +12,14 @@ namespace towsim::test {
 inline core::Model SteadyTowModel() {
   core::Model m;
   m.time.step = 0.05;
-  m.cable.length = 200;
-  m.cable.elements = 20;
-  m.cable.start.kind = core::EndKind::kDriven;
-  m.cable.start.position = core::Vec3(0, 0, 3.5);
-  m.cable.start.velocity = core::Vec3(6, 0, 0);
-  m.cable.end.kind = core::EndKind::kSphere;
-  m.cable.end.body = 0;
-  m.cable.initial_velocity = core::Vec3(6, 0, 0);
+  m.cables[0].length = 200;
+  m.cables[0].elements = 20;
+  m.cables[0].start.kind = core::EndKind::kDriven;
+  m.cables[0].start.position = core::Vec3(0, 0, 3.5);
+  m.cables[0].start.velocity = core::Vec3(6, 0, 0);
+  m.cables[0].end.kind = core::EndKind::kSphere;
+  m.cables[0].end.body = 0;
+  m.cables[0].initial_velocity = core::Vec3(6, 0, 0);
   core::SphereBody b;
   b.name = "towfish";
   b.mass = 416;
@@ -35,9 +35,9 @@ inline core::Model SteadyTowModel() {
 inline core::Model SteadyTowWithVehicle(core::Coupling coupling) {
   core::Model m = SteadyTowModel();
   m.integrator.coupling = coupling;
-  m.cable.start.kind = core::EndKind::kVehicle;
-  m.cable.start.body = 0;
-  m.cable.start.at_B = core::Vec3(0, 0, 0.2);
+  m.cables[0].start.kind = core::EndKind::kVehicle;
+  m.cables[0].start.body = 0;
+  m.cables[0].start.at_B = core::Vec3(0, 0, 0.2);
   core::Vehicle v;
   v.name = "tow_vehicle";
   v.params.mass = 6950;
@@ -61,7 +61,7 @@ inline core::Model SteadyTowWithVehicle(core::Coupling coupling) {
 inline core::Model SteadyTowWithWinch(core::Model m = SteadyTowModel()) {
   // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
   core::WinchParams w{150, 260, 5, 5};
-  m.cable.winch = w;
+  m.cables[0].winch = w;
   return m;
 }
 

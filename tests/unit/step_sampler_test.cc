@@ -19,13 +19,13 @@ Model WavyModel() {
   Model m;
   m.environment.waves = WaveField::Regular(kHeight, kPeriod, 0.0, 0.0,
                                            std::numeric_limits<double>::infinity(), kG, kRho);
-  m.cable.length = 40.0;
-  m.cable.elements = 4;
-  m.cable.initial = InitialShape::kVertical;
+  m.cables[0].length = 40.0;
+  m.cables[0].elements = 4;
+  m.cables[0].initial = InitialShape::kVertical;
   // from the vehicle (the cable's start) down to the sphere (its end)
-  for (CableEnd* end : {&m.cable.start, &m.cable.end}) end->body = 0;
-  m.cable.start.kind = EndKind::kVehicle;
-  m.cable.end.kind = EndKind::kSphere;
+  for (CableEnd* end : {&m.cables[0].start, &m.cables[0].end}) end->body = 0;
+  m.cables[0].start.kind = EndKind::kVehicle;
+  m.cables[0].end.kind = EndKind::kSphere;
   Vehicle v;
   v.name = "tow";
   v.params.length = 5.0;  // the hull stations the water is sampled at: x_B in [-2.5, 2.5] m

@@ -13,17 +13,17 @@ namespace {
 // a sphere-ended cable with every load on, a current, a clamped start and axial damping
 Model FullModel() {
   Model m;
-  m.cable.length = 30.0;
-  m.cable.elements = 4;
-  m.cable.axial_damping = 0.01;
-  m.cable.initial = InitialShape::kStraight;
-  m.cable.start.kind = EndKind::kDriven;
-  m.cable.start.position = Vec3(0, 0, 2);
-  m.cable.start.velocity = Vec3(1.5, 0, 0);
-  m.cable.start.clamped = true;
-  m.cable.start.slope = Vec3(-1, 0, 2).normalized();
-  m.cable.end.kind = EndKind::kSphere;
-  m.cable.end.body = 0;
+  m.cables[0].length = 30.0;
+  m.cables[0].elements = 4;
+  m.cables[0].axial_damping = 0.01;
+  m.cables[0].initial = InitialShape::kStraight;
+  m.cables[0].start.kind = EndKind::kDriven;
+  m.cables[0].start.position = Vec3(0, 0, 2);
+  m.cables[0].start.velocity = Vec3(1.5, 0, 0);
+  m.cables[0].start.clamped = true;
+  m.cables[0].start.slope = Vec3(-1, 0, 2).normalized();
+  m.cables[0].end.kind = EndKind::kSphere;
+  m.cables[0].end.body = 0;
   m.environment.current = CurrentField::Uniform(Vec3(0.2, 0.4, 0.0));
   SphereBody b;
   b.name = "fish";
@@ -40,7 +40,7 @@ Model FullModel() {
 
 Eigen::MatrixXd Dense(BlockTridiagonal& m) {
   Eigen::MatrixXd d = Eigen::MatrixXd::Zero(m.size(), m.size());
-  for (int i = 0; i < m.num_blocks(); ++i) {
+  for (int i = m.first_block(); i < m.num_blocks(); ++i) {
     d.block(m.block_offset(i), m.block_offset(i), m.block_size(i), m.block_size(i)) = m.diag(i);
     if (i + 1 < m.num_blocks()) {
       d.block(m.block_offset(i), m.block_offset(i + 1), m.block_size(i), m.block_size(i + 1)) =
@@ -49,6 +49,25 @@ Eigen::MatrixXd Dense(BlockTridiagonal& m) {
           m.lower(i);
     }
   }
+  return d;
+}
+
+// the network's matrix (network_matrix.h) written out: the cables' blocks, the hubs' H and
+// the borders B_c, C_c
+Eigen::MatrixXd Dense(NetworkMatrix& m) {
+  Eigen::MatrixXd d = Eigen::MatrixXd::Zero(m.size(), m.size());
+  const int oh = m.hub_offset(), nh = m.hub_size();
+  for (int c = 0; c < m.num_cables(); ++c) {
+    const int o = m.cable_offset(c), n = m.cable(c).size();
+    d.block(o, o, n, n) = Dense(m.cable(c));
+    for (int j = 0; j < nh; ++j)
+      for (int i = 0; i < n; ++i) {
+        d(o + i, oh + j) = m.border_column(c, i, j);
+        d(oh + j, o + i) = m.border_row(c, j, i);
+      }
+  }
+  for (int i = 0; i < nh; ++i)
+    for (int j = 0; j < nh; ++j) d(oh + i, oh + j) = m.hub(i, j);
   return d;
 }
 
@@ -75,7 +94,7 @@ void CheckNewtonMatrix(const Model& model, bool waves) {
   if (waves) sampler.SampleWaves(s.q, 0.3, &in);
   const EvaluateOptions options{1.0, {1.0, 7.0, 300.0}};
   const JacobianCoefficients& cf = options.coeffs;
-  BlockTridiagonal jac = sys.MakeMatrix();
+  NetworkMatrix jac = sys.MakeMatrix();
   Eigen::VectorXd r, phi;
   sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, options, {&r, &phi, &jac});
   const Eigen::MatrixXd analytic = Dense(jac);
@@ -131,6 +150,87 @@ TEST(System, NewtonMatrixMatchesFiniteDifferencesInASea) {
   m.environment.seabed.set_contact(c);
   m.spheres[1].position = Vec3(5, 5, 8);  // the buoy below the waves
   CheckNewtonMatrix(m, true);
+}
+
+// A network: a sphere held by two cables (a hub, solved by the Schur complement) and a third
+// cable hanging from a fixed point to a sphere it alone holds; the same finite-difference check
+// covers the hub's own block and the borders
+Model NetworkModel() {
+  Model m = FullModel();
+  CableParams lower = m.cables[0];
+  lower.name = "lower";
+  lower.start = CableEnd();
+  lower.start.kind = EndKind::kSphere;
+  lower.start.body = 0;
+  lower.end = CableEnd();
+  lower.end.kind = EndKind::kFixed;
+  lower.end.position = Vec3(-30, 2, 40);
+  lower.length = 25.0;
+  lower.elements = 3;
+  CableParams third = m.cables[0];
+  third.name = "third";
+  third.start = CableEnd();
+  third.start.kind = EndKind::kFixed;
+  third.start.position = Vec3(10, 0, 0);
+  third.end = CableEnd();
+  third.end.kind = EndKind::kSphere;
+  third.end.body = 1;
+  third.length = 6.0;
+  third.elements = 2;
+  m.cables.push_back(lower);
+  m.cables.push_back(third);
+  return m;
+}
+
+TEST(System, NetworkNewtonMatrixMatchesFiniteDifferences) {
+  const System sys(NetworkModel());
+  EXPECT_EQ(sys.num_hubs(), 1);
+  CheckNewtonMatrix(NetworkModel(), false);
+}
+
+// The Schur-complement solve (network_matrix.h) against a dense LU of the same matrix
+TEST(System, NetworkSolveMatchesADenseSolve) {
+  const System sys(NetworkModel());
+  State s;
+  BuildInitialState(sys, &s);
+  StepInputs in;
+  const StepSampler sampler(sys);
+  sampler.Resize(&in);
+  sampler.TakeMotions(s, &in);
+  NetworkMatrix jac = sys.MakeMatrix();
+  Eigen::VectorXd r, phi, x;
+  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, {1.0, {1.0, 7.0, 300.0}}, {&r, &phi, &jac});
+  const Eigen::MatrixXd dense = Dense(jac);
+  sys.ToBlocks(r, phi, &x);
+  const Eigen::VectorXd expected = dense.partialPivLu().solve(x);
+  ASSERT_TRUE(jac.Solve(&x));
+  constexpr double kSolveRelTol = 1e-9;  // two direct solves of a well-conditioned system
+  EXPECT_LT((x - expected).norm(), kSolveRelTol * expected.norm());
+}
+
+// A massless junction (a hub with H = 0) is solvable: the cables' end compliances make S
+// positive definite
+TEST(System, MasslessJunctionSolves) {
+  Model m = NetworkModel();
+  m.spheres[0].mass = 0.0;
+  m.spheres[0].volume = 0.0;
+  m.cables[0].loads.drag = m.cables[1].loads.drag = false;
+  const System sys(m);
+  State s;
+  BuildInitialState(sys, &s);
+  StepInputs in;
+  const StepSampler sampler(sys);
+  sampler.Resize(&in);
+  sampler.TakeMotions(s, &in);
+  NetworkMatrix jac = sys.MakeMatrix();
+  Eigen::VectorXd r, phi, x;
+  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, {1.0, {1.0, 0.0, 0.0}}, {&r, &phi, &jac});
+  const Eigen::MatrixXd dense = Dense(jac);
+  sys.ToBlocks(r, phi, &x);
+  const Eigen::VectorXd expected = dense.fullPivLu().solve(x);
+  ASSERT_TRUE(jac.Solve(&x));
+  constexpr double kSolveRelTol = 1e-8;
+  EXPECT_LT((x - expected).norm(), kSolveRelTol * expected.norm());
 }
 
 TEST(System, ConstraintHoldsTheEndAtTheSupport) {

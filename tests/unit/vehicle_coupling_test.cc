@@ -22,15 +22,15 @@ Model FallingModel(Coupling coupling, double h) {
   m.time.step = h;
   m.integrator.coupling = coupling;
   m.integrator.rho_inf = 0.6;
-  m.cable.length = 50.0;
-  m.cable.elements = 10;
-  m.cable.loads = {true, true, false, false, true};  // no drag; vertical motion: no added mass
-  m.cable.initial = InitialShape::kVertical;
-  m.cable.start.kind = EndKind::kVehicle;
-  m.cable.start.body = 0;
-  m.cable.start.at_B = Vec3(0, 0, 0.5);
-  m.cable.end.kind = EndKind::kSphere;
-  m.cable.end.body = 0;
+  m.cables[0].length = 50.0;
+  m.cables[0].elements = 10;
+  m.cables[0].loads = {true, true, false, false, true};  // no drag; vertical motion: no added mass
+  m.cables[0].initial = InitialShape::kVertical;
+  m.cables[0].start.kind = EndKind::kVehicle;
+  m.cables[0].start.body = 0;
+  m.cables[0].start.at_B = Vec3(0, 0, 0.5);
+  m.cables[0].end.kind = EndKind::kSphere;
+  m.cables[0].end.body = 0;
   Vehicle v;
   v.name = "vehicle";
   v.params.length = 5.0;
@@ -57,9 +57,9 @@ double VerticalMomentum(const Simulation& sim) {
   const VehicleParams& vp = m.vehicles[0].params;
   double p = (vp.mass + vp.added_mass(2, 2)) * sim.vehicle_state(0).nu(2);
   // cable: int rho A r_dot dx = sum over elements of rho A l [1/2, l/12, 1/2, -l/12] . e_dot
-  const double l = m.cable.length / m.cable.elements;
-  const double mu = m.cable.mass_per_length;
-  for (int e = 0; e < m.cable.elements; ++e) {
+  const double l = m.cables[0].length / m.cables[0].elements;
+  const double mu = m.cables[0].mass_per_length;
+  for (int e = 0; e < m.cables[0].elements; ++e) {
     const State& st = sim.state();
     const int o = sim.cable_dof(e);
     p += mu * l *
@@ -74,7 +74,7 @@ TEST(VehicleCoupling, MomentumBalanceAcrossTheJoint) {
   for (const Coupling coupling : {Coupling::kStrong, Coupling::kStaggered}) {
     const Model m = FallingModel(coupling, 0.01);
     Simulation sim(m);
-    const double w_cable = (m.cable.mass_per_length - kRho * m.cable.area()) * kG * m.cable.length;
+    const double w_cable = (m.cables[0].mass_per_length - kRho * m.cables[0].area()) * kG * m.cables[0].length;
     const double w_sphere = (m.spheres[0].mass - kRho * m.spheres[0].volume) * kG;
     const double force = w_cable + w_sphere;
     for (int k = 0; k < 300; ++k) ASSERT_TRUE(sim.Step().ok());

@@ -24,7 +24,7 @@ TEST(WinchDrive, DrumMotionAroundTheCablesStep) {
   WinchDrive drive(&system);
   ASSERT_TRUE(drive.has_winch());
   drive.Initialize(&state);
-  const double l0 = model.cable.length;
+  const double l0 = model.cables[0].length;
   EXPECT_EQ(state.winch.length, l0);
   EXPECT_EQ(state.winch.speed, 0.0);
   EXPECT_EQ(state.winch.nodes, system.num_nodes());
@@ -78,7 +78,7 @@ TEST(WinchDrive, WithoutAWinchOnlyTheCablesStep) {
   };
   EXPECT_TRUE(drive.Step(0.1, &state, step_system).ok());
   EXPECT_EQ(calls, 1);
-  EXPECT_EQ(state.winch.length, model.cable.length);
+  EXPECT_EQ(state.winch.length, model.cables[0].length);
 }
 
 }  // namespace

@@ -259,7 +259,7 @@ void DdsNode::PublishInitial() {
     info.commanded_bodies.push_back(n_.arbiter->vehicle(i).name);
   }
   info.cable_nodes = n_.sim->num_nodes();
-  if (const std::optional<core::WinchParams>& w = model_.cable.winch) {
+  if (const std::optional<core::WinchParams>& w = model_.cables[0].winch) {
     info.has_winch = true;
     info.winch_min_length = w->min_length;
     info.winch_max_length = w->max_length;

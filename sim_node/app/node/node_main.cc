@@ -56,7 +56,9 @@ int Run(const Options& options, DdsModeRunner run_dds) {
     return kExitBadInput;
   }
   if (model.name.empty()) model.name = std::filesystem::path(scene).stem().string();
-  if (options.winch && !model.cable.winch) {
+  for (const std::string& w : scene::SceneWarnings(model))
+    std::fprintf(stderr, "sim_node: warning: %s\n", w.c_str());
+  if (options.winch && !model.cables[0].winch) {
     std::fprintf(stderr, "sim_node: error: --winch %s: the scene %s has no winch (cable.winch)\n",
                  options.winch->c_str(), scene.c_str());
     return kExitBadInput;
@@ -75,8 +77,11 @@ int Run(const Options& options, DdsModeRunner run_dds) {
   std::unique_ptr<io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {
     try {
+      std::vector<std::string> cables;
+      for (const core::CableParams& c : model.cables) cables.push_back(c.name);
       csv = std::make_unique<io::CsvWriter>(options.csv_dir, io::HasSea(model.environment),
-                                            model.cable.winch.has_value(), !model.vehicles.empty());
+                                            model.cables[0].winch.has_value(),
+                                            !model.vehicles.empty(), cables);
     } catch (const io::OutputError& e) {  // opened, not written: disk full
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitError;

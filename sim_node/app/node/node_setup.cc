@@ -68,8 +68,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
   }
   // the winch (docs/winch_dds.md): one more entry, after the vehicles, waited for in lockstep
   // like a commanded body; none with --winch script (the scene's script drives it)
-  n.winch_script = model.cable.winch.has_value() && opt.winch_script;
-  if (model.cable.winch) {
+  n.winch_script = model.cables[0].winch.has_value() && opt.winch_script;
+  if (model.cables[0].winch) {
     for (const auto& v : vehicles) {
       if (v.name == dds::kWinchName) {
         return bad(
@@ -78,12 +78,12 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
       }
     }
   }
-  if (model.cable.winch && !opt.winch_script) {
+  if (model.cables[0].winch && !opt.winch_script) {
     const bool waited = opt.lockstep_bodies.empty() ||
                         std::find(opt.lockstep_bodies.begin(), opt.lockstep_bodies.end(),
                                   dds::kWinchName) != opt.lockstep_bodies.end();
     n.winch_entry = static_cast<int>(vehicles.size());
-    vehicles.push_back(dds::CommandArbiter::Vehicle::Winch(*model.cable.winch, lockstep && waited));
+    vehicles.push_back(dds::CommandArbiter::Vehicle::Winch(*model.cables[0].winch, lockstep && waited));
     n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
   }
   for (const std::string& name : opt.lockstep_bodies) {
