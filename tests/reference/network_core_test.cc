@@ -338,5 +338,29 @@ TEST(NetworkCore, NetworkWithoutDragConservesEnergy) {
   EXPECT_LT(max_dev, kDriftRelTol * ke0);
 }
 
+// The shipped two-part tow (config/scenes/two_part_tow.yaml): the whole network's static start
+// in the sea's frame, then 10 s of the coupled run in its JONSWAP sea: every step converges,
+// the joints hold (the tether's top node on the depressor, the main cable's on the vehicle's
+// A-frame point) and the tension at each end of the depressor is of the size of its weight in
+// water plus the tether's pull
+TEST(NetworkCore, ShippedTwoPartTowRuns) {
+  const std::string dir = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes";
+  core::Simulation sim(scene::LoadScene(dir + "/two_part_tow.yaml"));
+  ASSERT_EQ(sim.num_cables(), 2);
+  ASSERT_EQ(sim.cable_name(0), "main");
+  ASSERT_EQ(sim.body_name(0), "depressor");  // spheres first, then the vehicles
+  while (sim.time() < 10.0 - 1e-9) {
+    const core::StepStatus st = sim.Step();
+    ASSERT_TRUE(st.ok()) << st.message;
+  }
+  constexpr double kJointTol = 1e-6;  // [m]
+  EXPECT_LT((sim.node_position(0, 1) - sim.body_position(0)).norm(), kJointTol);
+  EXPECT_LT((sim.node_position(sim.num_nodes(0) - 1, 0) - sim.body_position(0)).norm(),
+            kJointTol);
+  const core::SphereBody& d = sim.model().spheres[0];
+  const double wet_weight = (d.mass - 1025.0 * d.volume) * 9.81;
+  EXPECT_GT(sim.end_force(1, 0).norm(), wet_weight);
+}
+
 }  // namespace
 }  // namespace towsim::reference
