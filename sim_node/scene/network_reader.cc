@@ -79,8 +79,8 @@ std::vector<core::CableParams> ReadCables(const Field& field, const Field& line_
 
   // initial: static solves the whole network at once, in one frame moving with the tow
   int static_cable = -1;
-  for (int c = 0; c < nc; ++c)
-    if (cables[c].initial == core::InitialShape::kStatic) static_cable = c;
+  for (int c = nc - 1; c >= 0; --c)
+    if (cables[c].initial == core::InitialShape::kStatic) static_cable = c;  // the first
   if (static_cable >= 0) {
     for (int c = 0; c < nc; ++c) {
       const MapReader cable(fields[c], MapKind::kCable);

@@ -21,9 +21,13 @@ const std::string kBodies =
     "  depressor: {type: sphere, mass: 500, volume: 0.06, position: [-100, 0, 100]}\n"
     "  fish: {type: sphere, mass: 400, volume: 0.39, position: [-150, 0, 110]}\n";
 
+// a cable between start and end, `more` its further keys (its initial shape: straight unless
+// given)
 std::string Cable(const std::string& start, const std::string& end, const std::string& more = "") {
-  return "{length: 100, elements: 5, diameter: 0.03, density: 1300, youngs_modulus: 1.0e9, "
-         "start: " + start + ", end: " + end + more + "}";
+  const std::string initial =
+      more.find("initial:") == std::string::npos ? ", initial: straight" : "";
+  return "{length: 150, elements: 5, diameter: 0.03, density: 1300, youngs_modulus: 1.0e9, "
+         "start: " + start + ", end: " + end + initial + more + "}";
 }
 
 const std::string kTow = "{driven: {position: [0, 0, 0], velocity: [2, 0, 0]}}";
@@ -53,18 +57,18 @@ TEST(NetworkReader, ReadsTheCablesInOrder) {
   EXPECT_TRUE(SceneWarnings(m).empty());
   // the one-cable form is a cable named `cable`
   const core::Model one = LoadSceneFromString(
-      kHead + kBodies + "cable: " + Cable(kTow, "{body: fish}") + "\n", "one.yaml", ".");
+      kHead + kBodies + "cable: " + Cable(kTow, "{body: depressor}") + "\n", "one.yaml", ".");
   ASSERT_EQ(one.cables.size(), 1u);
   EXPECT_EQ(one.cables[0].name, "cable");
-  // the depressor is held by no cable in the one-cable scene: a warning, not an error
+  // the fish is held by no cable in the one-cable scene: a warning, not an error
   const std::vector<std::string> w = SceneWarnings(one);
   ASSERT_EQ(w.size(), 1u);
-  EXPECT_EQ(w[0], "bodies.depressor: no cable end holds this body; it moves on its own");
+  EXPECT_EQ(w[0], "bodies.fish: no cable end holds this body; it moves on its own");
 }
 
 TEST(NetworkReader, PutsTheWinchedCableFirst) {
   const core::Model m = LoadSceneFromString(
-      TwoPart("", ", winch: {min_length: 50, max_length: 150}") , "net.yaml", ".");
+      TwoPart("", ", winch: {min_length: 50, max_length: 150, max_speed: 1, max_acceleration: 0.5}") , "net.yaml", ".");
   ASSERT_EQ(m.cables.size(), 2u);
   EXPECT_EQ(m.cables[0].name, "tether");
   EXPECT_TRUE(m.cables[0].winch.has_value());
@@ -90,7 +94,7 @@ TEST(NetworkReader, RejectsBrokenNetworks) {
             std::string::npos);
   // nothing holds the tether and the fish (a heavy sphere): the part is named
   const std::string unheld = kHead + kBodies +
-                             "cables:\n  main: " + Cable(kTow, "{free: true}") +
+                             "cables:\n  main: " + Cable(kTow, "{free: true}", ", initial: vertical") +
                              "\n  tether: " + Cable("{body: depressor}", "{body: fish}") + "\n";
   EXPECT_NE(Error(unheld).find("nothing holds cables.tether, bodies.depressor and bodies.fish"),
             std::string::npos)
@@ -108,8 +112,8 @@ TEST(NetworkReader, RejectsBrokenNetworks) {
                                  "or more cable ends (1 holds it), or give it a mass"),
             std::string::npos);
   // two winches
-  EXPECT_NE(Error(TwoPart(", winch: {min_length: 50, max_length: 150}",
-                          ", winch: {min_length: 50, max_length: 150}"))
+  EXPECT_NE(Error(TwoPart(", winch: {min_length: 50, max_length: 150, max_speed: 1, max_acceleration: 0.5}",
+                          ", winch: {min_length: 50, max_length: 150, max_speed: 1, max_acceleration: 0.5}"))
                 .find("this version runs one winch per scene"),
             std::string::npos);
   // a static start on one cable only
@@ -122,7 +126,9 @@ TEST(NetworkReader, RejectsBrokenNetworks) {
   EXPECT_NE(Error(TwoPart(", initial: static, initial_velocity: [2, 0, 0]",
                           ", initial: static, initial_velocity: [1, 0, 0]"))
                 .find("initial_velocity must equal cables.main's"),
-            std::string::npos);
+            std::string::npos)
+      << Error(TwoPart(", initial: static, initial_velocity: [2, 0, 0]",
+                       ", initial: static, initial_velocity: [1, 0, 0]"));
   // an empty map
   EXPECT_NE(Error(kHead + kBodies + "cables: {}\n").find("must name at least one cable"),
             std::string::npos);
