@@ -23,6 +23,12 @@ towsim_add_test(foxglove_commands_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_commands_test.cc
   LIBS towsim::foxglove_commands)
 
+# the bound on what the Foxglove server holds for a client and the throttled notes
+# (app/foxglove/client_queue, note_throttle), no sockets
+towsim_add_test(foxglove_client_queue_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_client_queue_test.cc
+  LIBS towsim::foxglove)
+
 # the Foxglove WebSocket protocol messages (app/foxglove/foxglove_protocol), no sockets
 towsim_add_test(foxglove_protocol_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc

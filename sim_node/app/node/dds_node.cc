@@ -186,6 +186,11 @@ int DdsNode::Run() {
     Output(last_status_, std::lround(step_wall_ * 1e6));
   }
   Summary(Seconds(Clock::now() - start_wall_));
+  if (n_.foxglove) {  // its clients closed first: the counts are final
+    n_.foxglove->Stop();
+    std::fprintf(stderr, "sim_node: Foxglove: %s\n",
+                 FoxgloveServer::SummaryText(n_.foxglove->totals()).c_str());
+  }
   if (n_.recording) {
     try {
       n_.recording->Close();
