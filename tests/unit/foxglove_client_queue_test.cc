@@ -170,7 +170,7 @@ TEST(FoxgloveClientQueue, HandOverKeepsTheLibraryWithinAWindow) {
   EXPECT_EQ(lib2.sent.size(), 1u);
 }
 
-TEST(FoxgloveClientQueue, AClientOverTheBoundIsClosedAfterCloseAfterUnlessItReads) {
+TEST(FoxgloveClientQueue, AClientOverTheBoundIsClosedAfterCloseAfterUnlessItCatchesUp) {
   const QueueLimits l = Small();
   const std::size_t n = 1000;
   auto fill = [&](ClientQueue* q, Library* lib, double t) {
@@ -192,17 +192,27 @@ TEST(FoxgloveClientQueue, AClientOverTheBoundIsClosedAfterCloseAfterUnlessItRead
     EXPECT_EQ(q.Clear(), waiting);
     EXPECT_EQ(q.waiting_frames(), 0u);
   }
-  {  // reads slowly: each batch its writer takes ends the over state
+  {  // reads, but too little to get below half the bound: closed all the same
     ClientQueue q(l);
     Library lib;
-    for (double t = 1.0; t < 30.0; t += 1.0) {
+    fill(&q, &lib, 1.0);
+    for (double t = 1.0; t < 11.0; t += 1.0) {
+      lib.WriterTakes();  // a batch a second
       fill(&q, &lib, t);
       EXPECT_TRUE(q.over());
+    }
+    EXPECT_TRUE(q.ShouldClose(11.0));
+  }
+  {  // catches up: below half the bound, no longer over
+    ClientQueue q(l);
+    Library lib;
+    fill(&q, &lib, 1.0);
+    while (q.queued() >= l.bound / 2) {
       lib.WriterTakes();
       lib.Hand(&q);
-      EXPECT_FALSE(q.over());
-      EXPECT_FALSE(q.ShouldClose(t + 0.5));
     }
+    EXPECT_FALSE(q.over());
+    EXPECT_FALSE(q.ShouldClose(30.0));
   }
   {  // an advertisement that does not fit: closed at once
     ClientQueue q(l);

@@ -92,7 +92,6 @@ void ClientQueue::Taken(std::size_t buffered) {
   writing_ = handed_;
   handed_ = 0;
   handed_payload_ = 0;
-  over_since_.reset();
 }
 
 bool ClientQueue::ShouldClose(double now) const {

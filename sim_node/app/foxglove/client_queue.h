@@ -16,9 +16,11 @@
 //  - a status reply or a pong spends a token of the client's reply budget (replies_per_second,
 //    at most reply_burst saved up); without one, or without room, it is suppressed and counted;
 //  - serverInfo and an advertisement must fit; if one does not, the client is to be closed.
-// A client is over the bound from the first frame refused for room until its writer takes a
-// batch (it reads) or queued() falls below half the bound; one that stays over it for
-// close_after seconds is to be closed (ShouldClose, CloseReason).
+// A client is over the bound from the first frame refused for room until queued() falls below
+// half the bound; one that stays over it for close_after seconds is to be closed (ShouldClose,
+// CloseReason): it reads nothing, or too little to ever catch up (a reconnection starts it
+// afresh on the live data). That its writer took a batch is no sign of reading: the kernel's
+// send buffer of the socket grows (up to net.ipv4.tcp_wmem's maximum) while nothing is read.
 //
 // The library (websocketpp) writes in batches: its writer takes every frame handed to it so
 // far once the previous write has completed. HandOver gives frames to the library while what
@@ -98,8 +100,8 @@ class ClientQueue {
   // the client is being closed: nothing waiting is sent any more; returns the data frames
   // that were waiting
   uint64_t Clear();
-  // over the bound (since the first frame refused for room, until the writer takes a batch or
-  // queued() falls below half the bound)
+  // over the bound (since the first frame refused for room, until queued() falls below half
+  // the bound)
   bool over() const { return over_since_.has_value(); }
 
   std::size_t queued() const { return waiting_ + handed_ + writing_; }
@@ -142,7 +144,7 @@ void ClientQueue::HandOver(std::size_t buffered, Send&& send) {
     frames_.pop_front();
     ++popped_;
   }
-  if (over_since_ && queued() < limits_.bound / 2) over_since_.reset();
+  if (over_since_ && queued() < limits_.bound / 2) { over_since_.reset(); }
 }
 
 }  // namespace towsim::app::foxglove

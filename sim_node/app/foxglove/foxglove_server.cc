@@ -24,7 +24,13 @@ using Kind = ClientQueue::Kind;
 
 constexpr std::size_t kDataHeader = 13;          // Message Data: opcode, subscription, log time
 constexpr auto kTick = std::chrono::milliseconds(20);  // the server thread's pump and notes
-constexpr long kCloseHandshakeMs = 1000;  // a client's close answer; then the socket is closed
+// a client closed at the bound gets a close frame with the reason, which it reads if it
+// reads at all; after kResetAfter its socket is reset (closed with SO_LINGER 0: the kernel
+// drops what it still holds for the client at once, and the client sees the connection end
+// without reading), before websocketpp's close handshake times out (and would close it in an
+// orderly way: the socket would stay in FIN-WAIT-1 with its full send buffer)
+constexpr double kResetAfter = 1.0;        // [s]
+constexpr long kCloseHandshakeMs = 2000;  // a client's close answer; then the socket is closed
 constexpr double kStopWait = 0.5;         // [s] Stop() waits for the closing handshakes
 
 struct Client {
@@ -35,7 +41,8 @@ struct Client {
   std::map<uint32_t, foxglove::ClientChannel> advertised;  // client channel id -> channel
   ClientQueue queue;
   std::string endpoint;  // "127.0.0.1:40312"
-  bool closing = false;  // closed at the bound: nothing more is queued
+  bool closing = false;  // closed at the bound (or the server stops): nothing more is queued
+  std::optional<double> reset_at;  // closed at the bound: its socket is reset then [s]
 };
 
 websocketpp::frame::opcode::value OpcodeOf(Kind kind) {
@@ -155,10 +162,15 @@ void FoxgloveServer::Pump() {
   Impl& m = *impl_;
   const double now = m.Now();
   std::vector<std::pair<Handle, std::string>> to_close;
+  std::vector<Handle> to_reset;
   std::vector<std::string> lines;
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     for (auto& [h, client] : m.clients) {
+      if (client.reset_at && now >= *client.reset_at) {
+        client.reset_at.reset();
+        to_reset.push_back(h);
+      }
       if (client.closing) continue;
       websocketpp::lib::error_code ec;
       WsServer::connection_ptr con = m.ws.get_con_from_hdl(h, ec);
@@ -175,6 +187,7 @@ void FoxgloveServer::Pump() {
       if (client.queue.ShouldClose(now)) {
         to_close.emplace_back(h, client.queue.CloseReason(now));
         client.closing = true;
+        client.reset_at = now + kResetAfter;
         ++m.totals.clients_closed;
         m.Note(m.queue_notes,
                "Foxglove client " + client.endpoint + " closed: " + to_close.back().second, now);
@@ -188,13 +201,17 @@ void FoxgloveServer::Pump() {
   }
   for (const auto& [h, reason] : to_close) {
     websocketpp::lib::error_code ec;
+    m.ws.close(h, websocketpp::close::status::policy_violation, reason, ec);
+  }
+  for (const Handle& h : to_reset) {
+    websocketpp::lib::error_code ec;
     WsServer::connection_ptr con = m.ws.get_con_from_hdl(h, ec);
-    if (ec) continue;
-    // a reset, not an orderly end: the socket's unsent bytes go at once (the client reads
-    // nothing); the close frame goes if the socket takes it
-    asio::error_code linger_ec;
-    con->get_raw_socket().set_option(asio::socket_base::linger(true, 0), linger_ec);
-    con->close(websocketpp::close::status::policy_violation, reason, ec);
+    if (ec) continue;  // it closed in the meantime
+    // an explicit close keeps SO_LINGER 0 (asio clears it when a socket's destructor closes
+    // it); websocketpp's pending read and write then fail and it ends the connection
+    asio::error_code socket_ec;
+    con->get_raw_socket().set_option(asio::socket_base::linger(true, 0), socket_ec);
+    con->get_raw_socket().close(socket_ec);
   }
 }
 
