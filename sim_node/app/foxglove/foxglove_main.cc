@@ -208,8 +208,10 @@ void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
     auto s = std::make_unique<Served>();
     s->topic = t;
     const std::string type = towsim::io::Ros2TypeName(t.descriptor->m_typename);
-    s->channel =
-        server_.AddChannel(wire::RosTopicName(t.dds_name), type, towsim::io::Ros2MsgSchema(type));
+    // transient local (scene info, /tf_static): latched, so that a client subscribing while
+    // another one is (the reader exists, its sample was taken) gets the last one too
+    s->channel = server_.AddChannel(wire::RosTopicName(t.dds_name), type,
+                                    towsim::io::Ros2MsgSchema(type), t.transient_local);
     s->sequence_first = t.descriptor == &tf2_msgs_msg_dds__TFMessage__desc ||
                         t.descriptor == &visualization_msgs_msg_dds__MarkerArray__desc;
     s->is_clock = t.descriptor == &rosgraph_msgs_msg_dds__Clock__desc;
