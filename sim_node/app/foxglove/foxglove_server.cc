@@ -474,14 +474,28 @@ void FoxgloveServer::Stop() {
 }
 
 bool FoxgloveServer::HasSubscribers(uint32_t channel) const {
-  std::lock_guard<std::mutex> lock(impl_->mutex);
-  const auto it = impl_->subscribers.find(channel);
-  return it != impl_->subscribers.end() && it->second > 0;
+  Impl& m = *impl_;
+  std::lock_guard<std::mutex> lock(m.mutex);
+  const auto it = m.subscribers.find(channel);
+  if (it == m.subscribers.end() || it->second <= 0) return false;
+  // a latched channel is kept for later subscribers; otherwise only a client that may take it
+  // counts: one over its bound drops it anyway, so the caller need not make it at all
+  if (m.latched.count(channel)) return true;
+  for (const auto& [h, client] : m.clients) {
+    if (client.subscription_of.count(channel) && !client.closing && !client.queue.over()) {
+      return true;
+    }
+  }
+  return false;
 }
 
 void FoxgloveServer::Publish(uint32_t channel, uint64_t log_time_ns, const uint8_t* data,
                              std::size_t size) {
   Impl& m = *impl_;
+  // the server's thread hands frames over when one lands in an empty queue; frames behind
+  // others wait for the queue to move, which the thread sees on its own (kTick): a stalled
+  // client costs the caller no wake-up of that thread
+  bool wake = false;
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     if (const auto l = m.latched.find(channel); l != m.latched.end()) {
@@ -505,14 +519,16 @@ void FoxgloveServer::Publish(uint32_t channel, uint64_t log_time_ns, const uint8
       }
       std::string frame;
       foxglove::MessageDataFrame(s->second, log_time_ns, data, size, &frame);
+      wake = wake || client.queue.waiting_frames() == 0;
       client.queue.Offer(Kind::kData, std::move(frame), now);
     }
   }
-  RequestPump();
+  if (wake) RequestPump();
 }
 
 void FoxgloveServer::BroadcastTime(uint64_t time_ns) {
   Impl& m = *impl_;
+  bool wake = false;  // as in Publish
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     if (m.clients.empty()) return;
@@ -521,11 +537,12 @@ void FoxgloveServer::BroadcastTime(uint64_t time_ns) {
     for (auto& [h, client] : m.clients) {
       if (client.closing) continue;
       const uint64_t before = client.queue.counts().time_dropped;
+      wake = wake || client.queue.waiting_frames() == 0;
       client.queue.Offer(Kind::kTime, frame, now);
       m.totals.time_dropped += client.queue.counts().time_dropped - before;
     }
   }
-  RequestPump();
+  if (wake) RequestPump();
 }
 
 }  // namespace towsim::app
