@@ -76,7 +76,8 @@ struct FoxgloveServer::Impl {
   std::map<uint32_t, std::pair<uint64_t, std::string>> latched;  // channel -> (time, payload)
   std::map<Handle, Client, std::owner_less<Handle>> clients;
   std::string session_id;
-  bool listening = false, running = false;
+  bool listening = false;            // the controlling thread only
+  std::atomic<bool> running{false};  // read by RequestPump from any thread
   Totals totals;
   foxglove::NoteThrottle refusals, queue_notes;
   std::vector<std::string> lines;  // notes to print (outside the lock)
@@ -466,6 +467,12 @@ void FoxgloveServer::Stop() {
   std::vector<std::string> lines;
   {
     std::lock_guard<std::mutex> lock(m.mutex);
+    // the connections that did not finish their closing handshake (a client that reads
+    // nothing cannot): gone with the loop, websocketpp frees them with the endpoint
+    for (auto& [h, client] : m.clients) m.totals.dropped += client.queue.Clear();
+    m.clients.clear();
+    m.subscribers.clear();
+    clients_ = 0;
     lines = m.TakeLines(m.Now(), true);  // the counts not yet printed
   }
   if (!opt_.quiet) {
