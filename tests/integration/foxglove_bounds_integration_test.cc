@@ -8,9 +8,9 @@
 // start-up, and the in-node server's shutdown under clients that come and go.
 // DDS domains: leased from 200-205 (TOWSIM_TEST_DOMAINS, set by CMake).
 
+#include <netinet/in.h>
 #include <signal.h>
 #include <sys/socket.h>
-#include <netinet/in.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -76,8 +76,8 @@ int PortFrom(Process& p, const std::string& marker, double timeout = 20.0) {
 struct Summary {
   bool found = false;
   uint64_t sent = 0, dropped = 0, client_messages = 0, client_rejected = 0, client_malformed = 0,
-           requests = 0, requests_refused = 0, requests_malformed = 0, replies = 0,
-           suppressed = 0, time_dropped = 0, clients = 0, closed = 0;
+           requests = 0, requests_refused = 0, requests_malformed = 0, replies = 0, suppressed = 0,
+           time_dropped = 0, clients = 0, closed = 0;
 };
 
 Summary ParseSummary(const std::string& text) {
@@ -89,9 +89,18 @@ Summary ParseSummary(const std::string& text) {
   Summary s;
   std::smatch m;
   if (!std::regex_search(text, m, kLine)) return s;
-  uint64_t* f[] = {&s.sent,     &s.dropped,          &s.client_messages,    &s.client_rejected,
-                   &s.client_malformed, &s.requests, &s.requests_refused, &s.requests_malformed,
-                   &s.replies,  &s.suppressed,       &s.time_dropped,       &s.clients,
+  uint64_t* f[] = {&s.sent,
+                   &s.dropped,
+                   &s.client_messages,
+                   &s.client_rejected,
+                   &s.client_malformed,
+                   &s.requests,
+                   &s.requests_refused,
+                   &s.requests_malformed,
+                   &s.replies,
+                   &s.suppressed,
+                   &s.time_dropped,
+                   &s.clients,
                    &s.closed};
   for (std::size_t i = 0; i < 13; ++i) *f[i] = std::stoull(m[i + 1].str());
   s.found = true;
@@ -132,7 +141,7 @@ class Stallers {
   std::atomic<int> subscribes{0};                      // connections of the subscriber
   std::atomic<int> closed_seen{0};                     // ... that the server closed
   std::atomic<int> syncs{0};  // the flood's subscription after it: 1 when it was served
-  std::string error;                                   // a client that failed
+  std::string error;          // a client that failed
 
  private:
   // subscribes to every channel and reads nothing; reconnects once the server closed it
@@ -155,7 +164,9 @@ class Stallers {
     try {
       RawWebSocketClient c(port_);
       std::string burst;
-      const std::string binary = RawWebSocketClient::Frame(0x2, std::string("\x07" "abcdef", 7));
+      const std::string binary = RawWebSocketClient::Frame(0x2, std::string("\x07"
+                                                                            "abcdef",
+                                                                            7));
       const std::string text = RawWebSocketClient::Frame(0x1, "{\"op\":");
       for (int i = 0; i < kFloodBurst; ++i) burst += binary + text;
       while (!stop_ && !stop_flood_) {
@@ -186,7 +197,7 @@ class Stallers {
 };
 
 struct RssTrace {
-  std::size_t baseline = 0;        // before the clients came [bytes]
+  std::size_t baseline = 0;          // before the clients came [bytes]
   std::vector<std::size_t> samples;  // while they stayed
   std::size_t Max(std::size_t from, std::size_t to) const {
     std::size_t m = 0;
@@ -201,11 +212,12 @@ void CheckServer(const std::string& name, const RssTrace& rss, const Stallers& c
   ASSERT_FALSE(rss.samples.empty());
   const std::size_t peak = rss.Max(0, rss.samples.size());
   const double mb = 1.0 / (1 << 20);
-  std::printf("%s: RSS %.1f MB before the clients, peak %.1f MB (growth %.1f MB; bound %d x %.0f "
-              "MB + %.0f MB), first half's peak %.1f MB, second half's %.1f MB\n",
-              name.c_str(), rss.baseline * mb, peak * mb, (peak - rss.baseline) * mb, kClients,
-              kBound * mb, kAllowance * mb, rss.Max(0, rss.samples.size() / 2) * mb,
-              rss.Max(rss.samples.size() / 2, rss.samples.size()) * mb);
+  std::printf(
+      "%s: RSS %.1f MB before the clients, peak %.1f MB (growth %.1f MB; bound %d x %.0f "
+      "MB + %.0f MB), first half's peak %.1f MB, second half's %.1f MB\n",
+      name.c_str(), rss.baseline * mb, peak * mb, (peak - rss.baseline) * mb, kClients, kBound * mb,
+      kAllowance * mb, rss.Max(0, rss.samples.size() / 2) * mb,
+      rss.Max(rss.samples.size() / 2, rss.samples.size()) * mb);
   EXPECT_LE(peak, rss.baseline + kClients * kBound + kAllowance);
 
   const Summary s = ParseSummary(summary_text);
@@ -220,7 +232,8 @@ void CheckServer(const std::string& name, const RssTrace& rss, const Stallers& c
   EXPECT_GT(clients.binary_sent.load(), 100000u);  // a flood: ~20000 frames a second
   // replies: one per malformed frame offered, few sent (10 a second, 20 saved up)
   EXPECT_EQ(s.replies, s.client_malformed + s.requests_malformed) << summary_text;
-  EXPECT_GE(s.suppressed, s.replies - static_cast<uint64_t>(20 + 10 * (kSoak + 20))) << summary_text;
+  EXPECT_GE(s.suppressed, s.replies - static_cast<uint64_t>(20 + 10 * (kSoak + 20)))
+      << summary_text;
   // the subscriber filled its queue, was dropped data and closed at the bound (and came back)
   EXPECT_GT(s.dropped, 0u) << summary_text;
   EXPECT_GE(s.closed, 1u) << summary_text;
@@ -319,9 +332,10 @@ TEST(FoxgloveBounds, BridgeRefusesABadAddressOrABusyPortAtStartUp) {
   };
   const std::vector<Case> cases = {
       {{"--port", port},
-       "towsim_foxglove: error: --address 127.0.0.1 --port " + port + ": listening on 127.0.0.1:" +
-           port + ": Address already in use (the address must be one of this machine's, the "
-                  "port free)"},
+       "towsim_foxglove: error: --address 127.0.0.1 --port " + port +
+           ": listening on 127.0.0.1:" + port +
+           ": Address already in use (the address must be one of this machine's, the "
+           "port free)"},
       {{"--port", "0", "--address", "999.1.1.1"},
        "towsim_foxglove: error: --address 999.1.1.1 --port 0: address 999.1.1.1: not an IPv4 or "
        "IPv6 address"},

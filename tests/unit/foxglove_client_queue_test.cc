@@ -3,8 +3,6 @@
 // of a flood. The "library" here is a model of websocketpp's send queue: its buffered amount
 // is the payload handed and not yet taken by its writer; a stalled client's writer never takes.
 
-#include "app/foxglove/client_queue.h"
-
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
@@ -12,9 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "app/foxglove/note_throttle.h"
-
 #include <gtest/gtest.h>
+
+#include "app/foxglove/client_queue.h"
+#include "app/foxglove/note_throttle.h"
 
 namespace towsim::app::foxglove {
 namespace {
@@ -158,7 +157,7 @@ TEST(FoxgloveClientQueue, HandOverKeepsTheLibraryWithinAWindow) {
   lib.Hand(&q);
   EXPECT_EQ(lib.sent.size(), 2 * per_window);
   EXPECT_EQ(q.queued(), 40 * cost);  // waiting + handed + the batch being written
-  lib.WriterTakes();  // it took the second: the first was written
+  lib.WriterTakes();                 // it took the second: the first was written
   lib.Hand(&q);
   EXPECT_EQ(q.queued(), (40 - per_window) * cost);
   // a frame larger than the window goes on its own when nothing is handed

@@ -12,9 +12,9 @@
 #include <thread>
 #include <vector>
 
-#include "raw_websocket_client.h"
-
 #include <gtest/gtest.h>
+
+#include "raw_websocket_client.h"
 
 namespace towsim::app {
 namespace {
@@ -98,7 +98,8 @@ TEST(FoxgloveServer, StopsWhilePublishingAndClientsComeAndGo) {
             RawWebSocketClient c(port, 65536);
             c.SubscribeAll(c.ReadAdvertisedChannels(2.0));
             ++sessions;
-            if ((i + k) % 3 == 0) c.Send(RawWebSocketClient::Frame(0x8, std::string("\x03\xe8", 2)));
+            if ((i + k) % 3 == 0)
+              c.Send(RawWebSocketClient::Frame(0x8, std::string("\x03\xe8", 2)));
             if ((i + k) % 4 == 1) c.Send(RawWebSocketClient::Frame(0x9, "ping"));
             if ((i + k) % 5 == 2) c.Send(RawWebSocketClient::Frame(0x1, "{not json"));
           } catch (const std::exception&) {

@@ -46,7 +46,6 @@ struct QueueLimits {
   double reply_burst = 20.0;         // ... saved up at most
 };
 
-
 class ClientQueue {
  public:
   // [bytes] counted for each frame beyond its size: our entry (a std::string and its kind) and
@@ -119,10 +118,10 @@ class ClientQueue {
   void Taken(std::size_t buffered);
 
   Limits limits_;
-  std::deque<Frame> frames_;  // waiting
+  std::deque<Frame> frames_;                            // waiting
   std::size_t waiting_ = 0, handed_ = 0, writing_ = 0;  // [bytes] as Cost() counts them
-  std::size_t handed_payload_ = 0;  // payload bytes handed since the writer last took them
-  uint64_t popped_ = 0;             // frames handed over so far
+  std::size_t handed_payload_ = 0;   // payload bytes handed since the writer last took them
+  uint64_t popped_ = 0;              // frames handed over so far
   std::optional<uint64_t> time_at_;  // the waiting time frame, as popped_ + its position
   std::optional<double> over_since_;
   bool close_now_ = false;  // control did not fit
@@ -144,7 +143,9 @@ void ClientQueue::HandOver(std::size_t buffered, Send&& send) {
     frames_.pop_front();
     ++popped_;
   }
-  if (over_since_ && queued() < limits_.bound / 2) { over_since_.reset(); }
+  if (over_since_ && queued() < limits_.bound / 2) {
+    over_since_.reset();
+  }
 }
 
 }  // namespace towsim::app::foxglove

@@ -137,8 +137,8 @@ FoxgloveServer::Verdict FoxgloveCommands::Publish(const foxglove::ClientChannel&
   Inbound& in = it->second;
   auto reject = [&](const std::string& type, const std::string& why) {
     ++malformed_;
-    return Verdict{"rejected: malformed " + type + " on " + c.topic + " (" +
-                       std::to_string(size) + " bytes)" + (why.empty() ? "" : ": " + why),
+    return Verdict{"rejected: malformed " + type + " on " + c.topic + " (" + std::to_string(size) +
+                       " bytes)" + (why.empty() ? "" : ": " + why),
                    true};
   };
   if (in.teleop && c.schema_name.rfind("geometry_msgs/", 0) == 0) {

@@ -222,8 +222,7 @@ void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
     s->topic_entity = dds::Entity(e);
     served_.push_back(std::move(s));
   }
-  commands_ =
-      std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winch);
+  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winch);
   commands_->Attach(&server_);
 }
 

@@ -22,14 +22,14 @@ using Handle = websocketpp::connection_hdl;
 using foxglove::ClientQueue;
 using Kind = ClientQueue::Kind;
 
-constexpr std::size_t kDataHeader = 13;          // Message Data: opcode, subscription, log time
+constexpr std::size_t kDataHeader = 13;  // Message Data: opcode, subscription, log time
 constexpr auto kTick = std::chrono::milliseconds(20);  // the server thread's pump and notes
 // a client closed at the bound gets a close frame with the reason, which it reads if it
 // reads at all; after kResetAfter its socket is reset (closed with SO_LINGER 0: the kernel
 // drops what it still holds for the client at once, and the client sees the connection end
 // without reading), before websocketpp's close handshake times out (and would close it in an
 // orderly way: the socket would stay in FIN-WAIT-1 with its full send buffer)
-constexpr double kResetAfter = 1.0;        // [s]
+constexpr double kResetAfter = 1.0;       // [s]
 constexpr long kCloseHandshakeMs = 2000;  // a client's close answer; then the socket is closed
 constexpr double kStopWait = 0.5;         // [s] Stop() waits for the closing handshakes
 
@@ -249,8 +249,8 @@ void FoxgloveServer::Listen() {
     {
       std::lock_guard<std::mutex> lock(m.mutex);
       const double now = m.Now();
-      Client& c = m.clients.emplace(h, Client(opt_.limits, con->get_remote_endpoint()))
-                      .first->second;
+      Client& c =
+          m.clients.emplace(h, Client(opt_.limits, con->get_remote_endpoint())).first->second;
       c.queue.Offer(Kind::kControl, foxglove::ServerInfoJson(opt_.name, m.session_id), now);
       c.queue.Offer(Kind::kControl, foxglove::AdvertiseJson(m.channels), now);
       ++m.totals.clients;

@@ -40,11 +40,11 @@ namespace towsim::app {
 class FoxgloveServer {
  public:
   struct Options {
-    std::string address = "127.0.0.1";  // interface to bind (0.0.0.0: every one)
-    uint16_t port = 8765;               // 0: a free port (see port())
-    std::string name = "towsim";        // serverInfo name
-    std::string program = "towsim";     // names the notes on stderr ("sim_node: ...")
-    bool quiet = false;                 // no notes on stderr
+    std::string address = "127.0.0.1";          // interface to bind (0.0.0.0: every one)
+    uint16_t port = 8765;                       // 0: a free port (see port())
+    std::string name = "towsim";                // serverInfo name
+    std::string program = "towsim";             // names the notes on stderr ("sim_node: ...")
+    bool quiet = false;                         // no notes on stderr
     foxglove::ClientQueue::Limits limits;       // per client
     std::size_t max_client_message = 1u << 20;  // [bytes] one message from a client
   };

@@ -6,15 +6,18 @@
 namespace towsim::app::foxglove {
 
 NoteThrottle::NoteThrottle(std::string program, std::string what, int in_full, double interval)
-    : program_(std::move(program)), what_(std::move(what)), in_full_(in_full), interval_(interval) {}
+    : program_(std::move(program)),
+      what_(std::move(what)),
+      in_full_(in_full),
+      interval_(interval) {}
 
 std::optional<std::string> NoteThrottle::Event(double now, const std::string& note) {
   ++events_;
   if (events_ <= static_cast<uint64_t>(in_full_)) {
     std::string line = program_ + ": " + note;
     if (events_ == static_cast<uint64_t>(in_full_)) {
-      line += " (further ones: a count every " + std::to_string(static_cast<int>(interval_)) +
-              " s)";
+      line +=
+          " (further ones: a count every " + std::to_string(static_cast<int>(interval_)) + " s)";
     }
     return line;
   }
@@ -29,9 +32,10 @@ std::optional<std::string> NoteThrottle::Flush(double now, bool all) {
     return std::nullopt;
   }
   char head[160];
-  std::snprintf(head, sizeof head, "%s: %llu more %s in the last %.0f s (%llu in all; the last: ",
-                program_.c_str(), static_cast<unsigned long long>(unprinted_), what_.c_str(),
-                now - *interval_start_, static_cast<unsigned long long>(events_));
+  std::snprintf(head, sizeof head,
+                "%s: %llu more %s in the last %.0f s (%llu in all; the last: ", program_.c_str(),
+                static_cast<unsigned long long>(unprinted_), what_.c_str(), now - *interval_start_,
+                static_cast<unsigned long long>(events_));
   unprinted_ = 0;
   interval_start_ = now;
   return std::string(head) + last_ + ")";

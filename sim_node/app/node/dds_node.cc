@@ -418,8 +418,7 @@ bool DdsNode::WaitLockstep() {
       // secured: a controller whose identity may not command is refused in its own process;
       // nothing of it reaches the node (docs/security.md, "A refused command")
       std::fprintf(stderr, "sim_node: lockstep: waiting for the commands of step %llu: %s%s\n",
-                   static_cast<unsigned long long>(step_),
-                   Describe(arbiter.Missing(step_)).c_str(),
+                   static_cast<unsigned long long>(step_), Describe(arbiter.Missing(step_)).c_str(),
                    opt_.security.empty()
                        ? ""
                        : " (secured: a controller whose identity may not command one of them is "
