@@ -329,7 +329,7 @@ for (const text of [nanTwist, trailing]) {
 }
 const kMalformed = kBad + 2; // the truncated ones, the NaN Twist, the trailing bytes
 if (inNode) {
-  check((node.err.match(/sim_node: rejected a malformed/g) ?? []).length === kMalformed, `sim_node's notes of the malformed commands: ${node.err}`);
+  check((node.err.match(/sim_node: Foxglove client \S+: rejected: malformed/g) ?? []).length === kMalformed, `sim_node's notes of the malformed commands: ${node.err}`);
 } else {
   check(new RegExp(`malformed ${kMalformed}\\)`).test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
 }

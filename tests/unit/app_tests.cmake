@@ -23,6 +23,21 @@ towsim_add_test(foxglove_commands_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_commands_test.cc
   LIBS towsim::foxglove_commands)
 
+# the bound on what the Foxglove server holds for a client and the throttled notes
+# (app/foxglove/client_queue, note_throttle), no sockets
+towsim_add_test(foxglove_client_queue_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_client_queue_test.cc
+  LIBS towsim::foxglove)
+
+# the Foxglove server alone on loopback (no DDS): a never-reading client held to its bound and
+# reset; stops while publishing and clients come and go (also built with the sanitizers,
+# docs/faults.md)
+towsim_add_test(foxglove_server_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_server_test.cc
+    ${PROJECT_SOURCE_DIR}/tests/integration/raw_websocket_client.cc
+  LIBS towsim::foxglove)
+target_include_directories(foxglove_server_test PRIVATE ${PROJECT_SOURCE_DIR}/tests/integration)
+
 # the Foxglove WebSocket protocol messages (app/foxglove/foxglove_protocol), no sockets
 towsim_add_test(foxglove_protocol_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_protocol_test.cc

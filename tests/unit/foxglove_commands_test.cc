@@ -36,14 +36,5 @@ TEST(FoxgloveCommands, OnlyPaddingToAMultipleOfFourMayFollowTheSample) {
                                    "multiple of 4 may follow)");
 }
 
-TEST(FoxgloveCommands, NotesOfRejectionsAreThrottled) {
-  int notes = 0;
-  for (uint64_t count = 1; count <= 5000; ++count) notes += NoteRejection(count) ? 1 : 0;
-  EXPECT_EQ(notes, 10 + 5);  // 1-10, then 1000, 2000, ..., 5000
-  EXPECT_TRUE(NoteRejection(10));
-  EXPECT_FALSE(NoteRejection(11));
-  EXPECT_TRUE(NoteRejection(3000));
-}
-
 }  // namespace
 }  // namespace towsim::app

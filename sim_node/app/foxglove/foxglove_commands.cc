@@ -44,11 +44,6 @@ std::string TrailingBytes(std::size_t size, std::size_t sample_size) {
          "-byte sample (only padding to a multiple of 4 may follow)";
 }
 
-bool NoteRejection(uint64_t count) {
-  constexpr uint64_t kNotesInFull = 10, kNoteEvery = 1000;
-  return count <= kNotesInFull || count % kNoteEvery == 0;
-}
-
 namespace {
 
 // the size of `data` serialized again by Cyclone (the bytes are a valid sample of `type`)
@@ -67,11 +62,8 @@ std::size_t SampleSize(const dds::RawType& type, const uint8_t* data, std::size_
 
 FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
                                    const wire::TopicNames& names,
-                                   const std::vector<std::string>& bodies, bool winch,
-                                   std::string program, bool quiet)
+                                   const std::vector<std::string>& bodies, bool winch)
     : participant_(participant),
-      program_(std::move(program)),
-      quiet_(quiet),
       command_type_(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc),
       control_type_(participant, &towsim_msgs_msg_dds__SimControl__desc),
       twist_type_(participant, &geometry_msgs_msg_dds__Twist__desc),
@@ -134,21 +126,20 @@ std::string FoxgloveCommands::Advertise(const foxglove::ClientChannel& c) {
   return "";
 }
 
-std::string FoxgloveCommands::Publish(const foxglove::ClientChannel& c, const uint8_t* data,
-                                      std::size_t size) {
+FoxgloveServer::Verdict FoxgloveCommands::Publish(const foxglove::ClientChannel& c,
+                                                  const uint8_t* data, std::size_t size) {
+  using Verdict = FoxgloveServer::Verdict;
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = inbound_.find(c.topic);
-  if (it == inbound_.end() || !it->second.writer.valid()) return "not advertised: " + c.topic;
+  if (it == inbound_.end() || !it->second.writer.valid()) {
+    return Verdict{"not advertised: " + c.topic};
+  }
   Inbound& in = it->second;
   auto reject = [&](const std::string& type, const std::string& why) {
-    const uint64_t count = ++malformed_;
-    const std::string reason = "malformed " + type + " on " + c.topic + " (" +
-                               std::to_string(size) + " bytes)" + (why.empty() ? "" : ": " + why);
-    if (!quiet_ && NoteRejection(count)) {
-      std::fprintf(stderr, "%s: rejected a %s (%llu rejected so far)\n", program_.c_str(),
-                   reason.c_str(), static_cast<unsigned long long>(count));
-    }
-    return "rejected: " + reason;
+    ++malformed_;
+    return Verdict{"rejected: malformed " + type + " on " + c.topic + " (" + std::to_string(size) +
+                       " bytes)" + (why.empty() ? "" : ": " + why),
+                   true};
   };
   if (in.teleop && c.schema_name.rfind("geometry_msgs/", 0) == 0) {
     const char* kTwist = "geometry_msgs/msg/Twist";
@@ -161,8 +152,8 @@ std::string FoxgloveCommands::Publish(const foxglove::ClientChannel& c, const ui
     dds::ActuatorCommandMsg cmd = TwistToCommand(t, status_step_.load(), &in.teleop_thrust);
     cmd.header.frame_id = const_cast<char*>("");
     const dds_return_t rc = dds_write(in.writer.get(), &cmd);
-    if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
-    return "";
+    if (rc < 0) return Verdict{"writing to " + c.topic + ": " + dds_strretcode(rc)};
+    return Verdict{};
   }
   dds::CdrSample sample;
   try {
@@ -173,8 +164,8 @@ std::string FoxgloveCommands::Publish(const foxglove::ClientChannel& c, const ui
   const std::string trailing = TrailingBytes(size, SampleSize(*in.type, data, size));
   if (!trailing.empty()) return reject(in.schema_name, trailing);
   const dds_return_t rc = sample.Write(in.writer.get(), dds_time());
-  if (rc < 0) return "writing to " + c.topic + ": " + dds_strretcode(rc);
-  return "";
+  if (rc < 0) return Verdict{"writing to " + c.topic + ": " + dds_strretcode(rc)};
+  return Verdict{};
 }
 
 }  // namespace towsim::app

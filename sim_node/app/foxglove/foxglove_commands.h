@@ -7,8 +7,9 @@
 // is checked to be a valid CDR sample of its type (Cyclone's deserializer) and written on DDS
 // as it is, from a writer in the given participant, so that the node validates it exactly like
 // any DDS command (the node's own readers take the samples of a writer in the node's
-// participant too). A malformed message is rejected here (the server sends the reason to the
-// client) and counted.
+// participant too). A malformed message is rejected here: the verdict says so (the server
+// sends the reason to the client, counts it and notes it on stderr, throttled) and it is
+// counted here too.
 //
 // Thread safety: Advertise, Publish and SetStatusStep may come from different threads.
 
@@ -46,16 +47,11 @@ std::string NonFiniteTwistField(const geometry_msgs_msg_dds__Twist_& twist);
 // "8 bytes after the 36-byte sample (only padding to a multiple of 4 may follow)"
 std::string TrailingBytes(std::size_t size, std::size_t sample_size);
 
-// the notes on stderr of rejected messages: the first kNotesInFull, then every kNoteEvery-th
-bool NoteRejection(uint64_t count);
-
 class FoxgloveCommands {
  public:
-  // `program` names the notes on stderr ("towsim_foxglove: rejected a malformed ...");
   // `winch`: the scene has a winch (SceneInfo.has_winch), so clients may command it
   FoxgloveCommands(const dds::Participant& participant, const wire::TopicNames& names,
-                   const std::vector<std::string>& bodies, bool winch, std::string program,
-                   bool quiet);
+                   const std::vector<std::string>& bodies, bool winch);
   FoxgloveCommands(const FoxgloveCommands&) = delete;
   FoxgloveCommands& operator=(const FoxgloveCommands&) = delete;
 
@@ -63,9 +59,9 @@ class FoxgloveCommands {
   void Attach(FoxgloveServer* server);
   // "" if clients may publish on the channel (its writer then exists), else why not
   std::string Advertise(const foxglove::ClientChannel& channel);
-  // "" if written on DDS, else why not
-  std::string Publish(const foxglove::ClientChannel& channel, const uint8_t* data,
-                      std::size_t size);
+  // error "" if written on DDS, else why not (malformed: not a valid sample of its type)
+  FoxgloveServer::Verdict Publish(const foxglove::ClientChannel& channel, const uint8_t* data,
+                                  std::size_t size);
   // the step of the newest status: what a Teleop Twist answers
   void SetStatusStep(uint64_t step) { status_step_ = step; }
   uint64_t malformed() const { return malformed_.load(); }
@@ -82,8 +78,6 @@ class FoxgloveCommands {
   };
 
   const dds::Participant& participant_;
-  std::string program_;
-  bool quiet_;
   dds::RawType command_type_, control_type_, twist_type_, winch_type_;
   std::mutex mutex_;                        // inbound_
   std::map<std::string, Inbound> inbound_;  // ROS topic -> writer

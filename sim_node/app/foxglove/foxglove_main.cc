@@ -31,11 +31,17 @@
 // With --security DIR/NAME its participant runs DDS Security with that identity (wire/security.h,
 // docs/security.md); clientPublish then needs an identity allowed to command
 // (scripts/security.sh NAME:BODY,...,sim_control).
-// Binds 127.0.0.1 unless --address says otherwise. Prints on stdout, once listening:
+// Binds 127.0.0.1 unless --address says otherwise, at start-up (a bad address or a busy port
+// exits 2 at once); accepts connections once the node's scene info has come. Prints on
+// stdout, once listening:
 //   towsim_foxglove: serving ws://127.0.0.1:8765 (domain 0, namespace /towsim)
-// Ends on SIGINT / SIGTERM with a summary line:
-//   towsim_foxglove: 1234 messages sent (dropped 0), client messages 10 (rejected 1)
-// Exit codes: 0 done, 1 unexpected error, 2 bad input, DDS setup failure or the port in use.
+// Ends on SIGINT / SIGTERM with a summary line (FoxgloveServer::SummaryText):
+//   towsim_foxglove: 1234 messages sent (dropped 0), client messages 10 (rejected 1,
+//   malformed 1), requests 4 (refused 1, malformed 0), error replies 2 (suppressed 0), time
+//   messages dropped 0, clients 1 (closed at the bound 0)
+// Each client's send queue is bounded (app/foxglove/client_queue.h, docs/foxglove.md "Bounds").
+// Exit codes: 0 done, 1 unexpected error, 2 bad input, DDS setup failure, a bad address or the
+// port in use.
 
 #include <atomic>
 #include <cmath>
@@ -148,6 +154,16 @@ uint64_t StampNs(bool sequence_first, const uint8_t* p, size_t size, uint64_t fa
   return static_cast<uint64_t>(sec) * 1000000000ull + nanosec;
 }
 
+FoxgloveServer::Options ServerOptions(const Options& o) {
+  FoxgloveServer::Options s;
+  s.address = o.address;
+  s.port = static_cast<uint16_t>(o.port);
+  s.name = "towsim_foxglove " + o.ns;
+  s.program = "towsim_foxglove";
+  s.quiet = o.quiet;
+  return s;
+}
+
 // one towsim topic served as a channel; its reader exists while a client subscribes
 struct Served {
   towsim::app::NodeTopic topic;
@@ -165,7 +181,7 @@ class Bridge {
         names_(o.ns),
         participant_(o.domain, config, o.security),
         waitset_(participant_),
-        server_({o.address, static_cast<uint16_t>(o.port), "towsim_foxglove " + o.ns}) {}
+        server_(ServerOptions(o)) {}
 
   int Run();
 
@@ -192,8 +208,10 @@ void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
     auto s = std::make_unique<Served>();
     s->topic = t;
     const std::string type = towsim::io::Ros2TypeName(t.descriptor->m_typename);
-    s->channel =
-        server_.AddChannel(wire::RosTopicName(t.dds_name), type, towsim::io::Ros2MsgSchema(type));
+    // transient local (scene info, /tf_static): latched, so that a client subscribing while
+    // another one is (the reader exists, its sample was taken) gets the last one too
+    s->channel = server_.AddChannel(wire::RosTopicName(t.dds_name), type,
+                                    towsim::io::Ros2MsgSchema(type), t.transient_local);
     s->sequence_first = t.descriptor == &tf2_msgs_msg_dds__TFMessage__desc ||
                         t.descriptor == &visualization_msgs_msg_dds__MarkerArray__desc;
     s->is_clock = t.descriptor == &rosgraph_msgs_msg_dds__Clock__desc;
@@ -204,8 +222,7 @@ void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
     s->topic_entity = dds::Entity(e);
     served_.push_back(std::move(s));
   }
-  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winch,
-                                                              "towsim_foxglove", opt_.quiet);
+  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winch);
   commands_->Attach(&server_);
 }
 
@@ -258,7 +275,21 @@ void Bridge::TakeAll() {
 }
 
 int Bridge::Run() {
-  // the bodies first (scene_info is transient local: also when the node started first)
+  // the address and port at once (bad or busy: exit 2 before any wait); connections are
+  // accepted once the node's channels are known
+  try {
+    server_.Listen();
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "towsim_foxglove: error: --address %s --port %d: %s\n",
+                 opt_.address.c_str(), opt_.port, e.what());
+    return kExitBadInput;
+  }
+  std::printf("towsim_foxglove: serving ws://%s:%u (domain %u, namespace %s)\n",
+              opt_.address.c_str(), static_cast<unsigned>(server_.port()), opt_.domain,
+              opt_.ns.c_str());
+  std::fflush(stdout);
+
+  // the bodies (scene_info is transient local: also when the node started first)
   dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc,
                          names_.Name(wire::Topic::kSceneInfo));
   dds::Reader<dds::SceneInfoMsg> scene(participant_, scene_topic, dds::SceneInfoQos());
@@ -279,18 +310,12 @@ int Bridge::Run() {
                    wire::RosTopicName(names_.Name(wire::Topic::kSceneInfo)).c_str(), opt_.domain);
     }
   }
-  if (!have_scene) return kExitOk;  // stopped while waiting
-  Serve(bodies, winch);
-  try {
-    server_.Start();
-  } catch (const std::runtime_error& e) {
-    std::fprintf(stderr, "towsim_foxglove: error: %s\n", e.what());
-    return kExitBadInput;
+  if (!have_scene) {  // stopped while waiting
+    server_.Stop();
+    return kExitOk;
   }
-  std::printf("towsim_foxglove: serving ws://%s:%u (domain %u, namespace %s)\n",
-              opt_.address.c_str(), static_cast<unsigned>(server_.port()), opt_.domain,
-              opt_.ns.c_str());
-  std::fflush(stdout);
+  Serve(bodies, winch);
+  server_.Start();
 
   // the waitset wakes on data; it holds this guard condition so that a wait without readers
   // (no client subscribed) still blocks for its slice instead of returning at once
@@ -304,14 +329,7 @@ int Bridge::Run() {
     TakeAll();
   }
   server_.Stop();
-  std::printf(
-      "towsim_foxglove: %llu messages sent (dropped %llu), client messages %llu (rejected "
-      "%llu, malformed %llu)\n",
-      static_cast<unsigned long long>(server_.messages_sent()),
-      static_cast<unsigned long long>(server_.messages_dropped()),
-      static_cast<unsigned long long>(server_.client_messages()),
-      static_cast<unsigned long long>(server_.client_rejected()),
-      static_cast<unsigned long long>(commands_->malformed()));
+  std::printf("towsim_foxglove: %s\n", FoxgloveServer::SummaryText(server_.totals()).c_str());
   std::fflush(stdout);
   return kExitOk;
 }

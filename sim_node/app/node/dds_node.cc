@@ -186,6 +186,11 @@ int DdsNode::Run() {
     Output(last_status_, std::lround(step_wall_ * 1e6));
   }
   Summary(Seconds(Clock::now() - start_wall_));
+  if (n_.foxglove) {  // its clients closed first: the counts are final
+    n_.foxglove->Stop();
+    std::fprintf(stderr, "sim_node: Foxglove: %s\n",
+                 FoxgloveServer::SummaryText(n_.foxglove->totals()).c_str());
+  }
   if (n_.recording) {
     try {
       n_.recording->Close();
@@ -410,9 +415,15 @@ bool DdsNode::WaitLockstep() {
     }
     if (!hinted && waited >= kLockstepHintAfter) {
       hinted = true;
-      std::fprintf(stderr, "sim_node: lockstep: waiting for the commands of step %llu: %s\n",
-                   static_cast<unsigned long long>(step_),
-                   Describe(arbiter.Missing(step_)).c_str());
+      // secured: a controller whose identity may not command is refused in its own process;
+      // nothing of it reaches the node (docs/security.md, "A refused command")
+      std::fprintf(stderr, "sim_node: lockstep: waiting for the commands of step %llu: %s%s\n",
+                   static_cast<unsigned long long>(step_), Describe(arbiter.Missing(step_)).c_str(),
+                   opt_.security.empty()
+                       ? ""
+                       : " (secured: a controller whose identity may not command one of them is "
+                         "refused in its own process, which the node cannot see; check the "
+                         "controller's output)");
     }
     if (Seconds(now - last_status_wall_) >= kIdleStatusPeriod) {
       // again, for late joiners (volatile topics): the state, then the status

@@ -155,7 +155,7 @@ void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveS
   }
   // clients publish through writers of the node's participant: its own readers take them
   fox_commands_ = std::make_unique<FoxgloveCommands>(participant, names_, body_names_,
-                                                     winch_topic_ != nullptr, "sim_node", false);
+                                                     winch_topic_ != nullptr);
   fox_commands_->Attach(server);
 }
 

@@ -170,8 +170,11 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
   // after the recording: its channels are the recording's too
   if (opt.foxglove_port >= 0) {
     try {
-      n.foxglove = std::make_unique<FoxgloveServer>(FoxgloveServer::Options{
-          "127.0.0.1", static_cast<uint16_t>(opt.foxglove_port), "sim_node " + opt.ns});
+      FoxgloveServer::Options fox;
+      fox.port = static_cast<uint16_t>(opt.foxglove_port);
+      fox.name = "sim_node " + opt.ns;
+      fox.program = "sim_node";
+      n.foxglove = std::make_unique<FoxgloveServer>(fox);
       n.endpoints->StartFoxglove(*n.participant, n.foxglove.get());
       n.foxglove->Start();
     } catch (const std::exception& e) {
