@@ -16,7 +16,7 @@ count() {  # instructions of Simulation::Step* over 20 s of scene $1
   valgrind --tool=callgrind --callgrind-out-file="$tmp/cg.out" \
     --toggle-collect='towsim::core::Simulation::Step*' "$driver" "$here/network_cost/$1.yaml" 20 \
     >/dev/null 2>"$tmp/err" || { cat "$tmp/err" >&2; exit 1; }
-  callgrind_annotate "$tmp/cg.out" 2>/dev/null | awk '/PROGRAM TOTALS/ {gsub(",", "", $1); print $1; exit}'
+  awk '/^(summary|totals):/ {print $2; exit}' "$tmp/cg.out"
 }
 steps=400
 two=$(count two_part); main=$(count main_alone); tether=$(count tether_alone); apart=$(count two_apart)
