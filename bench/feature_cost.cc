@@ -53,7 +53,7 @@ void WavesPerIteration(towsim::core::Model* m) { m->integrator.waves_per_iterati
 void Winch(towsim::core::Model* m) {
   // min_length, max_length [m], max_speed [m/s], max_acceleration [m/s^2]
   towsim::core::WinchParams w{150.0, 300.0, 1.0, 0.2};
-  m->cable.winch = w;
+  m->cables[0].winch = w;
 }
 // and paying out at 1 m/s from t = 0 (20 s: two element splits)
 void WinchPayout(towsim::core::Model* m) {

@@ -6,6 +6,7 @@
 // with its own nodes; the cable ends held by a body are where that body's odometry of the same
 // step puts them; the one-cable topic rt/<ns>/cable/state does not exist. DDS domain 215.
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include <gtest/gtest.h>
 
+#include "testing/in_process_controller.h"
 #include "testing/sim_node.h"
 
 namespace towsim::testing {
@@ -92,6 +94,53 @@ TEST(NetworkOnTheWire, EveryCableHasItsStateTopicAndSceneInfoListsThem) {
   // the tow point, driven at 2.5 m/s from the origin
   EXPECT_NEAR(main->x[0], 2.5 * 3.0, kJointTol);
   EXPECT_NEAR(main->z[0], 0.0, kJointTol);
+}
+
+// the client on the towing vehicle of tests/integration/scenes/network_tow_vehicle.yaml reads
+// the tether by name: at every step whose tether state it got, the tether's 6 nodes and its
+// first node at the depressor's odometry of that step (ClientOptions::observe)
+TEST(NetworkOnTheWire, TheClientReadsACableByName) {
+  SimNodeOptions o;
+  o.scene = std::string(TOWSIM_SOURCE_DIR) + "/tests/integration/scenes/network_tow_vehicle.yaml";
+  o.domain = 217;
+  o.duration = 2.0;
+  o.set = {"publish.cable_state=0"};
+  SimNode node(o);
+  EXPECT_EQ(node.scene_info().cables, (std::vector<std::string>{"main", "tether"}));
+
+  controllers::ClientOptions wrong;
+  wrong.body = "tow_vehicle";
+  wrong.cable = true;  // the default name, "cable": not in this scene
+  InProcessController refused(node, wrong, [](const controllers::BodyState&) {
+    return controllers::Actuation();
+  });
+  EXPECT_EQ(refused.Join(), 2);
+  EXPECT_NE(refused.error().find("has no cable cable (cables: main, tether)"), std::string::npos)
+      << refused.error();
+
+  controllers::ClientOptions opt;
+  opt.body = "tow_vehicle";
+  opt.cable = true;
+  opt.cable_name = "tether";
+  opt.observe = "depressor";
+  int compared = 0, sized = 0;
+  double worst = 0.0;  // |tether node 0 - depressor| [m]
+  InProcessController controller(node, opt, [&](const controllers::BodyState& b) {
+    if (b.observed.valid && std::abs(b.cable.t - b.t) < 1e-9) {
+      sized += b.cable.node_count == 6 && b.cable.x.size() == 6;
+      worst = std::max({worst, std::abs(b.cable.x[0] - b.observed.x),
+                        std::abs(b.cable.y[0] - b.observed.y),
+                        std::abs(b.cable.z[0] - b.observed.z)});
+      ++compared;
+    }
+    return controllers::Actuation(2000.0, 0.0, 0.0);
+  });
+  EXPECT_EQ(controller.Join(), 0) << controller.error();
+  EXPECT_EQ(node.Wait(60.0).exit_code, 0) << node.log();
+  // 40 steps answered; most with the state of their own step (the node publishes it first)
+  EXPECT_GE(compared, 20);
+  EXPECT_EQ(sized, compared);
+  EXPECT_LE(worst, kJointTol);
 }
 
 }  // namespace
