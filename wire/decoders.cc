@@ -73,7 +73,19 @@ SceneInfo DecodeSceneInfo(const towsim_msgs_msg_dds__SceneInfo_& m) {
   s.winch_max_length = m.winch_max_length;
   s.winch_max_speed = m.winch_max_speed;
   s.winch_max_acceleration = m.winch_max_acceleration;
+  s.cables = Strings(m.cables);
+  s.cable_node_counts.assign(m.cable_node_counts._buffer,
+                             m.cable_node_counts._buffer + m.cable_node_counts._length);
+  s.winches = Strings(m.winches);
+  s.winch_cables = Strings(m.winch_cables);
   return s;
+}
+
+uint32_t SceneInfo::NodesOf(const std::string& name) const {
+  for (size_t c = 0; c < cables.size() && c < cable_node_counts.size(); ++c) {
+    if (cables[c] == name) return cable_node_counts[c];
+  }
+  return 0;
 }
 
 Odometry DecodeOdometry(const nav_msgs_msg_dds__Odometry_& m) {

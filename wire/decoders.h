@@ -51,6 +51,13 @@ struct SceneInfo {
   double winch_min_length = 0.0, winch_max_length = 0.0;  // [m]
   double winch_max_speed = 0.0;                           // [m/s]
   double winch_max_acceleration = 0.0;                    // [m/s^2]
+  // every cable (scene order; the one-cable form: {"cable"}) with its node count at the start,
+  // and the winches with the cable whose start each drives
+  std::vector<std::string> cables;
+  std::vector<uint32_t> cable_node_counts;
+  std::vector<std::string> winches, winch_cables;
+  // the node count of cable `name` at the start; 0 for a cable the scene does not have
+  uint32_t NodesOf(const std::string& name) const;
 };
 SceneInfo DecodeSceneInfo(const towsim_msgs_msg_dds__SceneInfo_& m);
 
@@ -72,7 +79,7 @@ struct Wrench {
 };
 Wrench DecodeWrench(const geometry_msgs_msg_dds__WrenchStamped_& m);
 
-// towsim_msgs/CableState: the cable's nodes and its winch
+// towsim_msgs/CableState: a cable's nodes and its winch
 struct CableState {
   uint64_t step = 0;
   double t = -1.0;               // stamp [s]; < 0: none (a default value)

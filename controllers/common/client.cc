@@ -2,6 +2,7 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -260,7 +261,9 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
       m.altitude.reader = endpoint(false, wire::Topic::kAltitude, options.body, state_qos);
     }
     if (options.winch) m.winch_writer = endpoint(true, wire::Topic::kWinchCommand, "");
-    if (options.cable) m.cable_reader = endpoint(false, wire::Topic::kCableState, "", cable_qos);
+    if (options.cable) {
+      m.cable_reader = endpoint(false, wire::Topic::kCableState, options.cable_name, cable_qos);
+    }
     if (!options.observe.empty()) {
       m.observed.reader = endpoint(false, wire::Topic::kOdom, options.observe, state_qos);
     }
@@ -296,6 +299,16 @@ LockstepClient::LockstepClient(const ClientOptions& options) : impl_(new Impl) {
         if (!known) {
           throw std::runtime_error("body " + options.body + " takes no commands in scene " +
                                    s->scene + " (commanded bodies: " + bodies + ")");
+        }
+        // the cable read must exist (a node that does not list its cables has the one cable)
+        const std::vector<std::string> cables =
+            s->cables.empty() ? std::vector<std::string>{wire::kOneCable} : s->cables;
+        if (options.cable &&
+            std::find(cables.begin(), cables.end(), options.cable_name) == cables.end()) {
+          std::string list;
+          for (const std::string& c : cables) list += (list.empty() ? "" : ", ") + c;
+          throw std::runtime_error("scene " + s->scene + " has no cable " + options.cable_name +
+                                   " (cables: " + list + ")");
         }
         if (options.winch && !m.winch.present) {
           throw std::runtime_error(

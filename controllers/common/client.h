@@ -6,8 +6,9 @@
 //   - publishes towsim_msgs ActuatorCommand on rt/<ns>/<body>/command, stamped with the step
 //     (and sim time) of the state it answers, and with `winch` a towsim_msgs WinchCommand on
 //     rt/<ns>/winch/command stamped alike (docs/winch_dds.md),
-//   - optionally reads rt/<ns>/cable/state (`cable`: paid-out length, winch speed, drum
-//     tension) and the odometry of one more body (`observe`), for what the law reports,
+//   - optionally reads rt/<ns>/<cable>/state (`cable`, of the cable named `cable_name`:
+//     paid-out length, winch speed, drum tension, nodes) and the odometry of one more body
+//     (`observe`), for what the law reports,
 //   - runs the lockstep loop: wait for a status of a new step, take the body's odometry of that
 //     step, call the control law, publish; it ends when the node reports the end of its run
 //     (finished, failed, stopped), on SIGINT/SIGTERM, or after `timeout` s without a new step;
@@ -54,9 +55,12 @@ struct ClientOptions {
   // also publish the winch's command (Actuation::winch) with each answer; the node's scene
   // must have a winch (SceneInfo.has_winch), else the constructor throws
   bool winch = false;
-  // also subscribe to rt/<ns>/cable/state and pass the newest sample stamped at most the
-  // step's time in BodyState::cable
+  // also subscribe to rt/<ns>/<cable_name>/state and pass the newest sample stamped at most
+  // the step's time in BodyState::cable
   bool cable = false;
+  // the cable `cable` reads (SceneInfo.cables; the one cable of a scene is "cable"); a name the
+  // node's scene does not have makes the constructor throw, naming the scene's cables
+  std::string cable_name = "cable";
   // another body whose odometry of the step answered is passed in BodyState::observed ("":
   // none)
   std::string observe;

@@ -79,14 +79,15 @@ struct SimNode::Impl {
   // what the listener fills, under `mutex`
   mutable std::mutex mutex;
   std::map<dds_entity_t, std::string> odom_readers, force_readers;  // reader -> body
-  dds_entity_t status_reader = 0, cable_reader = 0;
+  dds_entity_t status_reader = 0;
+  std::map<dds_entity_t, std::string> cable_readers;  // reader -> cable
   std::map<std::string, std::vector<OdometrySample>> odom;
   std::map<std::string, std::vector<WrenchSample>> forces;
   std::map<std::string, RunCounter> odom_runs, force_runs;
   std::vector<StatusSample> statuses;
-  std::optional<CableSample> cable;
-  std::vector<TensionSample> tensions;
-  RunCounter cable_runs;
+  std::map<std::string, CableSample> cables;                  // the latest, by cable
+  std::map<std::string, std::vector<TensionSample>> tensions;  // by cable
+  std::map<std::string, RunCounter> cable_runs;
 
   static void OnData(dds_entity_t reader, void* arg) { static_cast<Impl*>(arg)->Take(reader); }
 
@@ -109,17 +110,17 @@ struct SimNode::Impl {
     if (reader == status_reader) {
       statuses.push_back(
           wire::DecodeStatus(*static_cast<const towsim_msgs_msg_dds__SimStatus_*>(sample)));
-    } else if (reader == cable_reader) {
+    } else if (const auto ct = cable_readers.find(reader); ct != cable_readers.end()) {
       CableSample c;
       static_cast<wire::CableState&>(c) =
           wire::DecodeCableState(*static_cast<const towsim_msgs_msg_dds__CableState_*>(sample));
-      c.run = cable_runs.Next(c.t);
+      c.run = cable_runs[ct->second].Next(c.t);
       TensionSample top{c.run, c.t, -HUGE_VAL, 0};
       for (size_t k = 0; k < c.tension.size(); ++k) {
         if (c.tension[k] > top.max) top = {c.run, c.t, c.tension[k], int(k)};
       }
-      tensions.push_back(top);
-      cable = std::move(c);
+      tensions[ct->second].push_back(top);
+      cables[ct->second] = std::move(c);
     } else if (const auto it = odom_readers.find(reader); it != odom_readers.end()) {
       OdometrySample o;
       static_cast<wire::Odometry&>(o) =
@@ -228,7 +229,9 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
   {
     std::lock_guard<std::mutex> lock(m.mutex);
     m.status_reader = m.Reader(wire::Topic::kStatus, "", 1000, true);
-    m.cable_reader = m.Reader(wire::Topic::kCableState, "", 1000, true);
+    // the one cable's state from the start; a network's other cables after scene_info
+    m.cable_readers[m.Reader(wire::Topic::kCableState, wire::kOneCable, 1000, true)] =
+        wire::kOneCable;
   }
   {
     const wire::TopicSpec& control = wire::SpecOf(wire::Topic::kSimControl);
@@ -298,6 +301,10 @@ SimNode::SimNode(SimNodeOptions options) : impl_(std::make_unique<Impl>()) {
       m.odom_readers[m.Reader(wire::Topic::kOdom, b, 1000, true)] = b;
       m.force_readers[m.Reader(wire::Topic::kCableForce, b, 1000, true)] = b;
     }
+    for (const std::string& c : m.scene.cables) {
+      if (c == wire::kOneCable) continue;
+      m.cable_readers[m.Reader(wire::Topic::kCableState, c, 1000, true)] = c;
+    }
   }
   // the step-0 state of every body (repeated by the paused node) and a status
   for (;;) {
@@ -338,9 +345,11 @@ std::optional<OdometrySample> SimNode::odometry(const std::string& body) const {
   if (it == impl_->odom.end() || it->second.empty()) return std::nullopt;
   return it->second.back();
 }
-std::optional<CableSample> SimNode::cable_state() const {
+std::optional<CableSample> SimNode::cable_state(const std::string& cable) const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
-  return impl_->cable;
+  const auto it = impl_->cables.find(cable);
+  if (it == impl_->cables.end()) return std::nullopt;
+  return it->second;
 }
 std::optional<WrenchSample> SimNode::cable_force(const std::string& body) const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
@@ -367,9 +376,10 @@ std::vector<StatusSample> SimNode::status_history() const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
   return impl_->statuses;
 }
-std::vector<SimNode::TensionSample> SimNode::max_tension_history() const {
+std::vector<SimNode::TensionSample> SimNode::max_tension_history(const std::string& cable) const {
   std::lock_guard<std::mutex> lock(impl_->mutex);
-  return impl_->tensions;
+  const auto it = impl_->tensions.find(cable);
+  return it == impl_->tensions.end() ? std::vector<TensionSample>{} : it->second;
 }
 
 std::optional<StatusSample> SimNode::WaitForStatus(

@@ -3,7 +3,8 @@
 // installed sim_node (lockstep by default) on a DDS domain id of its own, with the project's
 // loopback configuration (cyclonedds.xml of the installation, CYCLONEDDS_URI set for the
 // child), a scene and --set overrides; it is itself a DDS participant that keeps what the node
-// publishes (odometry, cable state, cable forces, status) and sends SimControl requests.
+// publishes (odometry, the state of every cable (SceneInfo.cables), cable forces, status) and
+// sends SimControl requests.
 //
 // Start-up: the node starts paused (--paused); once scene_info has come and the step-0 state
 // of every body has been received (the node repeats it while paused), the node is resumed
@@ -112,7 +113,9 @@ class SimNode {
 
   // the latest sample, if any
   std::optional<OdometrySample> odometry(const std::string& body) const;
-  std::optional<CableSample> cable_state() const;
+  // cable: a name of SceneInfo.cables; the one cable of a scene is "cable"; nullopt for a
+  // cable the scene does not have
+  std::optional<CableSample> cable_state(const std::string& cable = "cable") const;
   std::optional<WrenchSample> cable_force(const std::string& body) const;
   std::optional<StatusSample> status() const;
   // every sample so far, oldest first (cable states: the max tension of each only)
@@ -125,7 +128,7 @@ class SimNode {
     double max = 0.0;  // [N] over the nodes
     int node = 0;      // where
   };
-  std::vector<TensionSample> max_tension_history() const;
+  std::vector<TensionSample> max_tension_history(const std::string& cable = "cable") const;
 
   // waits up to `timeout` [s] for a status (among those received, oldest first) for which
   // `pred` holds; returns it

@@ -38,6 +38,10 @@ bool EndFrame(const core::Simulation& sim, const core::CableEnd& end, std::strin
 
 std::string FrdFrame(const std::string& body) { return body + "_frd"; }
 
+std::string CableEndFrame(const std::string& cable, int end) {
+  return cable + (end == 0 ? "_start" : "_end");
+}
+
 Eigen::Quaterniond EnuFromNed() {
   const double s = std::sqrt(0.5);
   return Eigen::Quaterniond(/*w=*/0.0, /*x=*/s, /*y=*/s, /*z=*/0.0);
@@ -84,16 +88,15 @@ std::unique_ptr<TransformsMessage> StaticTransforms(const core::Simulation& sim)
     edges.emplace_back(FrdFrame(sim.body_name(b)), sim.body_name(b));
     poses.emplace_back(core::Vec3::Zero(), FrdFromFlu());
   }
-  const core::CableParams& cable = sim.model().cables[0];
-  std::string parent;
-  core::Vec3 offset;
-  if (EndFrame(sim, cable.start, &parent, &offset)) {
-    edges.emplace_back(parent, kCableStartFrame);
-    poses.emplace_back(offset, Eigen::Quaterniond::Identity());
-  }
-  if (EndFrame(sim, cable.end, &parent, &offset)) {
-    edges.emplace_back(parent, kCableEndFrame);
-    poses.emplace_back(offset, Eigen::Quaterniond::Identity());
+  for (const core::CableParams& cable : sim.model().cables) {
+    const core::CableEnd* ends[2] = {&cable.start, &cable.end};
+    for (int e = 0; e < 2; ++e) {
+      std::string parent;
+      core::Vec3 offset;
+      if (!EndFrame(sim, *ends[e], &parent, &offset)) continue;
+      edges.emplace_back(parent, CableEndFrame(cable.name, e));
+      poses.emplace_back(offset, Eigen::Quaterniond::Identity());
+    }
   }
   auto out = std::make_unique<TransformsMessage>(edges);
   const TimeMsg stamp = ToTimeMsg(sim.time());

@@ -6,11 +6,12 @@
 //   world_ned        NED (x north, y east, z down): the physics' world frame W
 //   <b>_frd          body b, forward-starboard-down: the physics' body frame B
 //   <b>              body b, forward-left-up (REP-103's body axes)
-//   cable_start,     the cable's attachment points: children of <b>_frd (an end on a body,
-//   cable_end        offset at_B, axes of B) or of world_ned (a fixed end); a driven or free
-//                    end has no frame
+//   <c>_start,       the attachment points of cable c: children of <b>_frd (an end on a body,
+//   <c>_end          offset at_B, axes of B) or of world_ned (a fixed end); a driven or free
+//                    end has no frame. The one cable is named "cable": cable_start, cable_end
 //
-//   /tf_static  world -> world_ned, <b>_frd -> <b>, <b>_frd -> cable_start | cable_end
+//   /tf_static  world -> world_ned, <b>_frd -> <b>, <b>_frd -> <c>_start | <c>_end (cables in
+//               the scene's order, the start before the end)
 //   /tf         world_ned -> <b>_frd: (p_WB, q_WB), the pose of the odometry of the same state
 //
 // A transform "parent -> child" holds the pose of the child frame in the parent frame
@@ -34,6 +35,9 @@ inline constexpr const char* kCableEndFrame = "cable_end";
 
 // "<b>_frd", the frame of odometry twists and cable forces
 std::string FrdFrame(const std::string& body);
+// "<c>_start" (end 0) or "<c>_end" (end 1): the frame of an end of the cable named `cable`
+// ("cable": kCableStartFrame, kCableEndFrame)
+std::string CableEndFrame(const std::string& cable, int end);
 
 // q_world_worldned: NED in ENU, a half turn about (1, 1, 0)/sqrt(2) (x_N = y_E, y_N = x_E,
 // z_N = -z_E)

@@ -42,7 +42,8 @@ core::Vec3 FrdToFlu(const core::Vec3& v) { return core::Vec3(v.x(), -v.y(), -v.z
 
 // the number of markers of sim's scene (so that the vector never reallocates)
 size_t CountMarkers(const core::Simulation& sim) {
-  size_t n = 1 + static_cast<size_t>(sim.num_bodies()) + 2 + 2;
+  // cables, bodies, two arrows per cable, the sea and the seabed
+  size_t n = 3 * static_cast<size_t>(sim.num_cables()) + static_cast<size_t>(sim.num_bodies()) + 2;
   for (const core::Vehicle& v : sim.model().vehicles) n += v.params.surfaces.size();
   return n;
 }
@@ -115,17 +116,22 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   strings_.reserve(2 * count);
   const core::Model& model = sim.model();
 
-  // the cable
+  // the cables
   // storage for the most nodes of the run (a winch changes the count: Update sets it)
-  cable_points_.resize(static_cast<size_t>(MaxCableNodes(sim)));
-  cable_colors_.resize(cable_points_.size());
-  {
+  const int cables = sim.num_cables();
+  cable_points_.resize(static_cast<size_t>(cables));
+  cable_colors_.resize(static_cast<size_t>(cables));
+  for (int c = 0; c < cables; ++c) {
+    std::vector<geometry_msgs_msg_dds__Point_>& points = cable_points_[static_cast<size_t>(c)];
+    std::vector<ColorMsg>& colors = cable_colors_[static_cast<size_t>(c)];
+    points.resize(static_cast<size_t>(MaxCableNodes(sim, c)));
+    colors.resize(points.size());
     MarkerMsg& m =
-        Add("cable", 0, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP, kEnuWorldFrame);
+        Add("cable", c, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP, kEnuWorldFrame);
     m.scale.x = kCableLineWidth;
-    const uint32_t n = static_cast<uint32_t>(cable_points_.size());
-    m.points = {n, n, cable_points_.data(), false};
-    m.colors = {n, n, cable_colors_.data(), false};
+    const uint32_t n = static_cast<uint32_t>(points.size());
+    m.points = {n, n, points.data(), false};
+    m.colors = {n, n, colors.data(), false};
   }
 
   // hulls and fins
@@ -176,18 +182,21 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   }
 
   // force arrows at the held ends
-  const core::CableEnd* ends[2] = {&model.cables[0].start, &model.cables[0].end};
-  arrow_points_.resize(4);
-  for (int e = 0; e < 2; ++e) {
-    if (!Held(*ends[e])) continue;
-    MarkerMsg& m =
-        Add("cable_force", e, visualization_msgs_msg_dds__Marker_Constants_ARROW, kEnuWorldFrame);
-    m.scale.x = 0.15;  // shaft diameter [m]
-    m.scale.y = 0.4;   // head diameter [m]
-    m.scale.z = 0.6;   // head length [m]
-    m.color = Rgba(0.9f, 0.1f, 0.9f, 1.0f);
-    m.points = {2, 2, &arrow_points_[static_cast<size_t>(2 * e)], false};
-    arrows_.push_back({markers_.size() - 1, e});
+  arrow_points_.resize(4 * static_cast<size_t>(cables));
+  for (int c = 0; c < cables; ++c) {
+    const core::CableEnd* ends[2] = {&model.cables[c].start, &model.cables[c].end};
+    for (int e = 0; e < 2; ++e) {
+      if (!Held(*ends[e])) continue;
+      const int k = 2 * c + e;
+      MarkerMsg& m =
+          Add("cable_force", k, visualization_msgs_msg_dds__Marker_Constants_ARROW, kEnuWorldFrame);
+      m.scale.x = 0.15;  // shaft diameter [m]
+      m.scale.y = 0.4;   // head diameter [m]
+      m.scale.z = 0.6;   // head length [m]
+      m.color = Rgba(0.9f, 0.1f, 0.9f, 1.0f);
+      m.points = {2, 2, &arrow_points_[static_cast<size_t>(2 * k)], false};
+      arrows_.push_back({markers_.size() - 1, c, e});
+    }
   }
 
   // the sea patches
@@ -266,25 +275,29 @@ void SceneMarkers::UpdatePatches(const core::Simulation& sim) {
 void SceneMarkers::Update(const core::Simulation& sim) {
   const TimeMsg stamp = ToTimeMsg(sim.time());
   for (MarkerMsg& m : markers_) m.header.stamp = stamp;
-  const size_t n = static_cast<size_t>(sim.num_nodes());
-  if (n > cable_points_.size()) {  // past the bound of the start: grown once
-    cable_points_.resize(n);
-    cable_colors_.resize(n);
-  }
-  MarkerMsg& cable = markers_[static_cast<size_t>(cable_marker())];
-  const uint32_t capacity = static_cast<uint32_t>(cable_points_.size());
-  cable.points = {capacity, static_cast<uint32_t>(n), cable_points_.data(), false};
-  cable.colors = {capacity, static_cast<uint32_t>(n), cable_colors_.data(), false};
-  for (size_t i = 0; i < n; ++i) {
-    SetPoint(NedToEnu(sim.node_position(static_cast<int>(i))), &cable_points_[i]);
-    cable_colors_[i] = TensionColor(sim.NodeTension(static_cast<int>(i)));
+  for (int c = 0; c < static_cast<int>(cable_points_.size()); ++c) {
+    std::vector<geometry_msgs_msg_dds__Point_>& points = cable_points_[static_cast<size_t>(c)];
+    std::vector<ColorMsg>& colors = cable_colors_[static_cast<size_t>(c)];
+    const size_t n = static_cast<size_t>(sim.num_nodes(c));
+    if (n > points.size()) {  // past the bound of the start: grown once
+      points.resize(n);
+      colors.resize(n);
+    }
+    MarkerMsg& cable = markers_[static_cast<size_t>(cable_marker(c))];
+    const uint32_t capacity = static_cast<uint32_t>(points.size());
+    cable.points = {capacity, static_cast<uint32_t>(n), points.data(), false};
+    cable.colors = {capacity, static_cast<uint32_t>(n), colors.data(), false};
+    for (size_t i = 0; i < n; ++i) {
+      SetPoint(NedToEnu(sim.node_position(static_cast<int>(i), c)), &points[i]);
+      colors[i] = TensionColor(sim.NodeTension(static_cast<int>(i), c));
+    }
   }
   for (const Arrow& a : arrows_) {
-    const core::Vec3 p = sim.node_position(a.end == 0 ? 0 : sim.num_nodes() - 1);
-    const core::Vec3 f = sim.end_force(a.end);
-    SetPoint(NedToEnu(p), &arrow_points_[static_cast<size_t>(2 * a.end)]);
-    SetPoint(NedToEnu(p + kForceArrowScale * f),
-             &arrow_points_[static_cast<size_t>(2 * a.end + 1)]);
+    const core::Vec3 p = sim.node_position(a.end == 0 ? 0 : sim.num_nodes(a.cable) - 1, a.cable);
+    const core::Vec3 f = sim.end_force(a.end, a.cable);
+    const size_t k = static_cast<size_t>(2 * a.cable + a.end);
+    SetPoint(NedToEnu(p), &arrow_points_[2 * k]);
+    SetPoint(NedToEnu(p + kForceArrowScale * f), &arrow_points_[2 * k + 1]);
   }
   UpdatePatches(sim);
 }

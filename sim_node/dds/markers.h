@@ -1,8 +1,9 @@
 #pragma once
 // The 3D scene as a visualization_msgs/MarkerArray (ROS 2 Jazzy layout; docs/frames.md):
 //
-//   ns "cable"        id 0   LINE_STRIP in `world` (ENU): the cable nodes, each point coloured
-//                            by its tension on the legend TensionColor (0 N blue ...
+//   ns "cable"        id c   per cable c (the scene's order; the one cable: id 0), LINE_STRIP
+//                            in `world` (ENU): the cable's nodes, each point coloured by its
+//                            tension on the legend TensionColor (0 N blue ...
 //                            kTensionLegendMax red); line width kCableLineWidth
 //   ns "hull"         id b   per body, in frame <b> (FLU): a vehicle as a cylinder of its
 //                            length and diameter along x about the body origin; a sphere body
@@ -10,9 +11,9 @@
 //   ns "fins"         id k   per lifting surface of every vehicle (numbered on), in <b>: a
 //                            plate of span sqrt(S AR), chord S / span, thickness kFinThickness
 //                            at its centre of pressure, its normal along the plate's thin axis
-//   ns "cable_force"  id e   per held cable end (0 start, 1 end), in `world`: an arrow from
-//                            the end node along the force the cable exerts on its support,
-//                            kForceArrowScale metres per newton
+//   ns "cable_force"  id 2c+e  per held end e (0 start, 1 end) of cable c, in `world`: an
+//                            arrow from the end node along the force the cable exerts on its
+//                            support, kForceArrowScale metres per newton
 //   ns "sea_surface"  id 0   scene with waves: TRIANGLE_LIST in `world_ned` (NED, as tf has it
 //                            under `world`), a square patch of kSeaPatchCells x kSeaPatchCells
 //                            cells of kSeaPatchCellSize metres around the tow vehicle (its centre
@@ -25,7 +26,10 @@
 //                            grid); one colour
 //
 // The tow vehicle: the first vehicle with a propeller, else the first vehicle, else the patch
-// follows the cable's start node.
+// follows the first cable's start node.
+
+//
+// Markers in order: the cables, hulls, fins, force arrows, sea surface, seabed.
 //
 // Markers in body frames are frame_locked (they follow the body's tf). Every marker is stamped
 // with the simulation time. Pure translator: no DDS entities, no clocks; no allocation after
@@ -67,7 +71,7 @@ class SceneMarkers {
   void Update(const core::Simulation& sim);
 
   MarkerArrayMsg msg;
-  int cable_marker() const { return 0; }  // index of the cable in msg.markers
+  int cable_marker(int c = 0) const { return c; }  // index of cable c in msg.markers
 
   // the body the sea patches follow (the tow vehicle); -1: the cable's start node
   int patch_body() const { return patch_body_; }
@@ -77,12 +81,14 @@ class SceneMarkers {
 
   std::vector<std::string> strings_;  // namespaces and frames the markers point to
   std::vector<MarkerMsg> markers_;
-  std::vector<geometry_msgs_msg_dds__Point_> cable_points_;
-  std::vector<ColorMsg> cable_colors_;
-  // force arrows: marker index, cable end (0 start: node 0, 1 end: the last node in use); two
-  // points each
+  // per cable: its points and their colours
+  std::vector<std::vector<geometry_msgs_msg_dds__Point_>> cable_points_;
+  std::vector<std::vector<ColorMsg>> cable_colors_;
+  // force arrows: marker index, cable, cable end (0 start: node 0, 1 end: the last node in
+  // use); two points each, at arrow_points_[2 (2 cable + end)]
   struct Arrow {
     size_t marker;
+    int cable;
     int end;
   };
   std::vector<Arrow> arrows_;

@@ -9,6 +9,7 @@
 #include "core/actuator.h"
 #include "dds/command_arbiter.h"
 #include "towsim_msgs.h"
+#include "wire/topic_table.h"
 
 namespace towsim::dds {
 namespace {
@@ -46,6 +47,11 @@ bool Clamp(double lo, double hi, double* x) {
   const bool clamped = c != *x;
   *x = c;
   return clamped;
+}
+
+// the paid-out length of cable c: the winch's (on the first cable) or the scene's length
+double CableLength(const core::Simulation& sim, int c) {
+  return c == 0 ? sim.cable_length() : sim.model().cables[c].length;
 }
 
 }  // namespace
@@ -103,10 +109,10 @@ void CableStateMessage::Resize(int nodes) {
   msg.node_count = length;
 }
 
-int MaxCableNodes(const core::Simulation& sim) {
-  const int now = sim.num_nodes();
-  const std::optional<core::WinchParams>& winch = sim.model().cables[0].winch;
-  const double length = sim.cable_length();
+int MaxCableNodes(const core::Simulation& sim, int c) {
+  const int now = sim.num_nodes(c);
+  const std::optional<core::WinchParams>& winch = sim.model().cables[c].winch;
+  const double length = CableLength(sim, c);
   if (!winch || !(length > 0.0)) return now;
   const double elements = static_cast<double>(now - 1) * winch->max_length / length;
   return std::max(now, static_cast<int>(std::ceil(elements)) + 3);
@@ -137,20 +143,21 @@ void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg) 
 
 void ToClock(double t, ClockMsg* msg) { msg->clock = ToTimeMsg(t); }
 
-void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* out) {
+void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* out, int c) {
   CableStateMsg& m = out->msg;
   m.header.stamp = ToTimeMsg(sim.time());
   m.step = step;
-  out->Resize(sim.num_nodes());
+  out->Resize(sim.num_nodes(c));
   const uint32_t n = m.node_count;
   for (uint32_t i = 0; i < n; ++i) {
-    Set(sim.node_position(static_cast<int>(i)), &m.positions._buffer[i]);
-    Set(sim.node_velocity(static_cast<int>(i)), &m.velocities._buffer[i]);
-    m.tensions._buffer[i] = sim.NodeTension(static_cast<int>(i));
+    Set(sim.node_position(static_cast<int>(i), c), &m.positions._buffer[i]);
+    Set(sim.node_velocity(static_cast<int>(i), c), &m.velocities._buffer[i]);
+    m.tensions._buffer[i] = sim.NodeTension(static_cast<int>(i), c);
   }
-  m.paid_out_length = sim.cable_length();
-  m.winch_speed = sim.winch_speed();
-  m.drum_tension = sim.DrumTension();
+  // the winch drives the first cable's start (docs/winch.md); another cable keeps its length
+  m.paid_out_length = CableLength(sim, c);
+  m.winch_speed = c == 0 ? sim.winch_speed() : 0.0;
+  m.drum_tension = c == 0 ? sim.DrumTension() : sim.NodeTension(0, c);
 }
 
 SimStatusMessage::SimStatusMessage() : msg{} { ToSimStatus(StatusSample{}, this); }
@@ -208,6 +215,38 @@ void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out) {
   m.winch_max_length = s.winch_max_length;
   m.winch_max_speed = s.winch_max_speed;
   m.winch_max_acceleration = s.winch_max_acceleration;
+  PointAt(s.cables, &out->cables_, &m.cables);
+  m.cable_node_counts._buffer = s.cable_node_counts.empty() ? nullptr : s.cable_node_counts.data();
+  m.cable_node_counts._length = static_cast<uint32_t>(s.cable_node_counts.size());
+  m.cable_node_counts._maximum = m.cable_node_counts._length;
+  m.cable_node_counts._release = false;
+  PointAt(s.winches, &out->winches_, &m.winches);
+  PointAt(s.winch_cables, &out->winch_cables_, &m.winch_cables);
+}
+
+void SceneOf(const core::Simulation& sim, SceneInfoSample* out) {
+  out->bodies.clear();
+  for (int b = 0; b < sim.num_bodies(); ++b) out->bodies.push_back(sim.body_name(b));
+  out->cable_nodes = sim.num_nodes(0);
+  out->cables.clear();
+  out->cable_node_counts.clear();
+  out->winches.clear();
+  out->winch_cables.clear();
+  for (int c = 0; c < sim.num_cables(); ++c) {
+    out->cables.push_back(sim.cable_name(c));
+    out->cable_node_counts.push_back(static_cast<uint32_t>(sim.num_nodes(c)));
+  }
+  // one winch per scene, on the first cable's start, named "winch" (wire/topic_table.h)
+  const std::optional<core::WinchParams>& winch = sim.model().cables[0].winch;
+  out->has_winch = winch.has_value();
+  if (winch) {
+    out->winch_min_length = winch->min_length;
+    out->winch_max_length = winch->max_length;
+    out->winch_max_speed = winch->max_speed;
+    out->winch_max_acceleration = winch->max_acceleration;
+    out->winches.push_back(wire::kOneWinch);
+    out->winch_cables.push_back(sim.cable_name(0));
+  }
 }
 
 CommandLimits LimitsOf(const core::VehicleParams& params) {

@@ -82,14 +82,15 @@ void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg);
 // the cable's force and moment on body b, in B; zero when the cable is not attached to it
 void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg);
 void ToClock(double t, ClockMsg* msg);
-// every node in use (sim.num_nodes(), which a winch changes), and the winch's paid-out
-// length, speed, drum tension and the node count
-void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* msg);
-// the storage a CableStateMessage of `sim` needs for the whole run: num_nodes() now, or with a
-// winch the bound of docs/winch.md on the nodes at its max_length, max_length / (length /
+// cable c of sim (Model::cables order; the one cable: 0): every node in use (sim.num_nodes(c),
+// which a winch changes), and the winch's paid-out length, speed, drum tension and the node
+// count; a cable without a winch: its length, 0, the tension at its start, the node count
+void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage* msg, int c = 0);
+// the storage a CableStateMessage of cable c needs for the whole run: num_nodes(c) now, or with
+// a winch the bound of docs/winch.md on the nodes at its max_length, max_length / (length /
 // elements) + 3 at the element length of the start (should a run go past it, Resize grows the
 // storage once)
-int MaxCableNodes(const core::Simulation& sim);
+int MaxCableNodes(const core::Simulation& sim, int c = 0);
 
 // what the node reports in SimStatus (field meanings: msgs/towsim_msgs/msg/SimStatus.msg)
 struct StatusSample {
@@ -162,11 +163,20 @@ struct SceneInfoSample {
   double command_timeout = 0.0;  // [s]
   std::vector<std::string> bodies;
   std::vector<std::string> commanded_bodies;
-  int cable_nodes = 0;
+  int cable_nodes = 0;     // of the first cable
   bool has_winch = false;  // the winch's limits, zero without one
   double winch_min_length = 0.0, winch_max_length = 0.0;         // [m]
   double winch_max_speed = 0.0, winch_max_acceleration = 0.0;    // [m/s, m/s^2]
+  // every cable (Model::cables order) and its nodes at the start; the winches and the cable
+  // each drives (SceneInfo.msg)
+  std::vector<std::string> cables;
+  std::vector<uint32_t> cable_node_counts;
+  std::vector<std::string> winches, winch_cables;
 };
+
+// the scene part of a SceneInfoSample of `sim` (cables, node counts, winch and its limits,
+// bodies); the run's fields (run_id, mode, time, step, duration, commands) are the caller's
+void SceneOf(const core::Simulation& sim, SceneInfoSample* out);
 
 class SceneInfoMessage {
  public:
@@ -178,7 +188,7 @@ class SceneInfoMessage {
  private:
   friend void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out);
   SceneInfoSample storage_;
-  std::vector<char*> bodies_, commanded_bodies_;
+  std::vector<char*> bodies_, commanded_bodies_, cables_, winches_, winch_cables_;
 };
 
 void ToSceneInfo(const SceneInfoSample& sample, SceneInfoMessage* out);

@@ -193,6 +193,15 @@ SceneInfo DecodeSceneInfo(const std::uint8_t* data, std::size_t size) {
   m.winch_max_length = r.F64("winch_max_length");
   m.winch_max_speed = r.F64("winch_max_speed");
   m.winch_max_acceleration = r.F64("winch_max_acceleration");
+  // the network fields, appended later: a message of an earlier towsim ends here (at most
+  // its padding follows) and means one cable
+  if (r.remaining() <= 3) return m;
+  m.cables = ReadStrings(r, "cables");
+  const std::uint32_t n = r.SequenceLength("cable_node_counts", 4);
+  m.cable_node_counts.reserve(n);
+  for (std::uint32_t i = 0; i < n; ++i) m.cable_node_counts.push_back(r.U32("cable_node_counts"));
+  m.winches = ReadStrings(r, "winches");
+  m.winch_cables = ReadStrings(r, "winch_cables");
   r.Finish();
   return m;
 }

@@ -134,6 +134,11 @@ struct SceneInfo {  // towsim_msgs/SceneInfo
   bool has_winch = false;
   double winch_min_length = 0.0, winch_max_length = 0.0;
   double winch_max_speed = 0.0, winch_max_acceleration = 0.0;
+  // the network fields (msgs/towsim_msgs/msg/SceneInfo.msg); empty in a recording of a towsim
+  // that did not send them yet (the message ends after winch_max_acceleration): one cable
+  std::vector<std::string> cables;
+  std::vector<std::uint32_t> cable_node_counts;
+  std::vector<std::string> winches, winch_cables;
 };
 
 // payload = the serialized sample with its 4-byte encapsulation header

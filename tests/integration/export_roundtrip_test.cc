@@ -5,7 +5,8 @@
 // of cable ends held by fixed / driven points ("cable.start", "cable.end" in forces.csv): they
 // are not published. --info lists the topics; a damaged recording exits 2 naming the offset.
 // A sea scene's environment topic comes back as the node's environment.csv; the commands
-// towsim_record captured come back as commands.csv. DDS domains 91, 92, 134, 188 and 198.
+// towsim_record captured come back as commands.csv; a network's cables as their <cable>.csv.
+// DDS domains 91, 92, 134, 188, 198 and 216.
 #include <unistd.h>
 
 #include <cstdlib>
@@ -282,6 +283,58 @@ TEST_F(ExportRoundTrip, SeaSceneEnvironmentTopicExportedEqualsTheNodesEnvironmen
   EXPECT_NEAR(v[7], 0.0, kOrbitalTol);
 }
 
+// a cable network (tests/integration/scenes/network_two_part_tow.yaml: main cable and tether,
+// docs/scene_format.md "Networks"): each cable's rt/<ns>/<cable>/state comes back as the node's
+// own <cable>.csv, byte for byte; bodies.csv and status.csv too; forces.csv has the bodies'
+// totals (their cable_force topics), not the rows that are not on the wire: the driven tow
+// point's "main.start" and the depressor's per-attachment rows "depressor.main.end",
+// "depressor.tether.start". DDS domain 216.
+TEST_F(ExportRoundTrip, NetworkRecordedAndExportedGivesTheNodesCsvOfEveryCable) {
+  RecordRun("tests/integration/scenes/network_two_part_tow.yaml", 216, 3.0);
+  Process exp = Export(
+      {(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string(), "--info"}, "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  EXPECT_FALSE(fs::exists(dir_ / "node/cable.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "exported/cable.csv"));
+  // 3 s at 10 Hz: 31 row sets (t = 0 included) of 21 and 11 nodes, and the header
+  const std::map<std::string, std::size_t> rows = {
+      {"main.csv", 1 + 31 * 21}, {"tether.csv", 1 + 31 * 11}, {"bodies.csv", 1 + 31 * 2},
+      {"status.csv", 1 + 31}};
+  for (const auto& [file, count] : rows) {
+    SCOPED_TRACE(file);
+    const auto a = Lines((dir_ / "node" / file).string());
+    const auto b = Lines((dir_ / "exported" / file).string());
+    EXPECT_EQ(a.size(), count);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a[i], b[i]) << "first difference at line " << i + 1;
+    }
+  }
+  // forces.csv: the node's rows of the bodies, in order, are the exported file
+  std::vector<std::string> node_forces, dotted;
+  for (const std::string& line : Lines((dir_ / "node/forces.csv").string())) {
+    const std::string body = line.substr(line.find(',') + 1, line.find(',', line.find(',') + 1) -
+                                                                 line.find(',') - 1);
+    if (body.find('.') == std::string::npos) {
+      node_forces.push_back(line);
+    } else if (dotted.size() < 3) {
+      dotted.push_back(body);
+    }
+  }
+  EXPECT_EQ(dotted, (std::vector<std::string>{"depressor.main.end", "depressor.tether.start",
+                                              "main.start"}));
+  EXPECT_EQ(node_forces.size(), 1 + 31 * 2u);
+  EXPECT_EQ(node_forces, Lines((dir_ / "exported/forces.csv").string()));
+  const std::string info = exp.out();
+  for (const char* topic : {"/towsim/main/state", "/towsim/tether/state"}) {
+    EXPECT_NE(info.find(std::string("Topic: ") + topic +
+                        " | Type: towsim_msgs/msg/CableState | Count: 31 | "),
+              std::string::npos)
+        << info;
+  }
+  EXPECT_EQ(info.find("/towsim/cable/state"), std::string::npos) << info;
+}
 
 // domain 134 (not 91: ctest -j2 runs it beside the steady tow test, and a second node in a
 // domain and namespace is refused)

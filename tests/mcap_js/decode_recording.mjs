@@ -153,6 +153,13 @@ const cableRows = readCsv("cable.csv");
 const cable = byTopic.get("/towsim/cable/state") ?? [];
 const nodes = cable.length > 0 ? cable[0].positions.length : 0;
 check(nodes > 0 && cableRows.length === cable.length * nodes, `cable: ${cableRows.length} rows, ${cable.length} x ${nodes}`);
+// the scene info's cable list (its fields appended for networks, decoded by the recording's
+// schema): the one cable, named "cable", with the node count of its state
+if (sceneInfo) {
+  check(isDeepStrictEqual(sceneInfo.cables, ["cable"]), `scene_info cables ${JSON.stringify(sceneInfo.cables)}`);
+  check(sceneInfo.cable_node_counts?.length === 1 && sceneInfo.cable_node_counts[0] === nodes &&
+        sceneInfo.cable_nodes === nodes, `scene_info cable_node_counts ${sceneInfo.cable_node_counts}, cable_nodes ${sceneInfo.cable_nodes}, ${nodes} nodes`);
+}
 cable.forEach((c, k) => {
   check(c.positions.length === nodes && c.tensions.length === nodes, `cable message ${k} sizes`);
   for (let i = 0; i < nodes && k * nodes + i < cableRows.length; i++) {

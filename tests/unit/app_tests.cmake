@@ -57,6 +57,9 @@ towsim_add_test(dds_tool_options_test LABEL unit
 foreach(t tool_flags_test tool_command_line_test dds_tool_options_test)
   target_include_directories(${t} PRIVATE ${CMAKE_CURRENT_LIST_DIR})  # tool_argv.h
 endforeach()
+# the topics of a node the recorder and the Foxglove bridge subscribe to (app/common/topic_types)
+towsim_add_test(topic_types_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/topic_types_test.cc LIBS towsim::recording)
 # the installed-file lookup of every program (sim_node --scene, the controllers' --config)
 towsim_add_test(installed_data_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/installed_data_test.cc LIBS towsim::installed)

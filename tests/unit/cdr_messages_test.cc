@@ -353,7 +353,38 @@ TEST_F(CdrMessagesTest, CommandControlAndSceneInfoFromCycloneBytes) {
   EXPECT_EQ(ds.winch_max_length, 300.0);
   EXPECT_EQ(ds.winch_max_speed, 1.5);
   EXPECT_EQ(ds.winch_max_acceleration, 0.25);
-  ExpectTruncationsFail(bs, DecodeSceneInfo, "towsim_msgs/msg/SceneInfo");
+  EXPECT_TRUE(ds.cables.empty());
+
+  // the network fields
+  std::string c0 = "main", c1 = "tether", w0 = "winch";
+  char* cables[2] = {c0.data(), c1.data()};
+  char* winches[1] = {w0.data()};
+  uint32_t counts[2] = {21, 11};
+  s.cables = {2, 2, cables, false};
+  s.cable_node_counts = {2, 2, counts, false};
+  s.winches = {1, 1, winches, false};
+  s.winch_cables = {1, 1, cables, false};
+  const auto bn = Serialize(&towsim_msgs_msg_dds__SceneInfo__desc, &s);
+  const SceneInfo dn = DecodeSceneInfo(bn.data(), bn.size());
+  EXPECT_EQ(dn.cables, (std::vector<std::string>{"main", "tether"}));
+  EXPECT_EQ(dn.cable_node_counts, (std::vector<std::uint32_t>{21, 11}));
+  EXPECT_EQ(dn.winches, std::vector<std::string>{"winch"});
+  EXPECT_EQ(dn.winch_cables, std::vector<std::string>{"main"});
+  EXPECT_EQ(dn.winch_max_acceleration, 0.25);
+
+  // a message of an earlier towsim ends after winch_max_acceleration: the four empty
+  // sequences of `bs` (a u32 count each) cut off, it decodes with no cables listed; every
+  // other cut fails
+  constexpr std::size_t kNetworkFieldsEmpty = 4 * 4;  // [bytes]
+  const std::size_t legacy = bs.size() - kNetworkFieldsEmpty;
+  const SceneInfo dl = DecodeSceneInfo(bs.data(), legacy);
+  EXPECT_EQ(dl.winch_max_acceleration, 0.25);
+  EXPECT_TRUE(dl.cables.empty());
+  const std::size_t padding = bn[3] & 0x3;  // the encapsulation options: end padding
+  for (std::size_t n = 0; n < bn.size() - padding; ++n) {
+    if (n >= legacy && n <= legacy + 3) continue;  // the earlier layout and its padding
+    EXPECT_THROW(DecodeSceneInfo(bn.data(), n), CdrError) << "cut to " << n;
+  }
 }
 
 }  // namespace

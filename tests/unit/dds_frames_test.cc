@@ -12,6 +12,7 @@
 #include "core/script.h"
 #include "core/simulation.h"
 #include "dds/frames.h"
+#include "network_scene.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::dds {
@@ -175,6 +176,41 @@ bodies: {}
   EXPECT_STREQ(statics->transform(1).header.frame_id, "world_ned");
   EXPECT_STREQ(statics->transform(1).child_frame_id, "cable_start");
   EXPECT_EQ(Translation(statics->transform(1)), core::Vec3(1, 2, 3));
+}
+
+// a network (tests/unit/network_scene.h): one frame per held end of each cable, named
+// <cable>_start / <cable>_end, in the scene's order, on its support or body, at the node it holds
+TEST(FramesTest, ANetworkHasTheEndFramesOfEveryCable) {
+  const core::Model model = test::LoadNetwork();
+  core::Simulation sim(model);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+  EXPECT_EQ(CableEndFrame("cable", 0), kCableStartFrame);
+  EXPECT_EQ(CableEndFrame("cable", 1), kCableEndFrame);
+  const auto statics = StaticTransforms(sim);
+  // world -> world_ned, two bodies' <b>_frd -> <b>, then four cable ends
+  ASSERT_EQ(statics->size(), 1 + 2 + 4);
+  const struct {
+    const char* parent;
+    const char* child;
+    core::Vec3 offset;
+    int cable, node;
+  } expected[4] = {{"world_ned", "main_start", core::Vec3(0, 0, 0), 0, 0},
+                   {"depressor_frd", "main_end", core::Vec3(0, 0, 0), 0, 4},
+                   {"depressor_frd", "tether_start", core::Vec3(0, 0, 0.5), 1, 0},
+                   {"towfish_frd", "tether_end", core::Vec3(0, 0, 0), 1, 3}};
+  for (int k = 0; k < 4; ++k) {
+    const TransformStampedMsg& t = statics->transform(3 + k);
+    SCOPED_TRACE(expected[k].child);
+    EXPECT_STREQ(t.header.frame_id, expected[k].parent);
+    EXPECT_STREQ(t.child_frame_id, expected[k].child);
+    EXPECT_EQ(Translation(t), expected[k].offset);
+    // a sphere's frame stays aligned with world_ned: the frame's origin in NED is the parent's
+    // position plus the offset, where the end node is held (Eq. 24)
+    const int parent_body = k == 0 ? -1 : (k == 3 ? 1 : 0);
+    const core::Vec3 origin =
+        (parent_body < 0 ? core::Vec3::Zero() : sim.body_position(parent_body)) + Translation(t);
+    EXPECT_LE((origin - sim.node_position(expected[k].node, expected[k].cable)).norm(), kJointTol);
+  }
 }
 
 }  // namespace

@@ -15,6 +15,7 @@
 #include "core/simulation.h"
 #include "dds/markers.h"
 #include "dds/translators.h"
+#include "network_scene.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::dds {
@@ -169,6 +170,59 @@ TEST(SceneMarkersTest, DrawsTheStateItWasUpdatedFrom) {
     EXPECT_NEAR(p1.z - p0.z, -kForceArrowScale * f.z(), kScaledTol);
     EXPECT_GT(f.norm(), 100.0);
   }
+}
+
+// a network (tests/unit/network_scene.h): one line strip per cable (ns "cable", id c) with that
+// cable's CableState points in ENU and colours by its tensions, one arrow per held end
+// (ns "cable_force", id 2c + e) along that end's force
+TEST(SceneMarkersTest, DrawsEveryCableOfANetwork) {
+  const core::Model model = test::LoadNetwork();
+  core::Simulation sim(model);
+  SceneMarkers markers(sim);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+  markers.Update(sim);
+  const MarkerArrayMsg& a = markers.msg;
+  // two cables, two spheres, four arrows; no sea
+  EXPECT_EQ(a.markers._length, 2u + 2u + 4u);
+  for (int c = 0; c < 2; ++c) {
+    SCOPED_TRACE(sim.cable_name(c));
+    CableStateMessage state(kWorldFrame, MaxCableNodes(sim, c));
+    ToCableState(sim, 5, &state, c);
+    const MarkerMsg* cable = Find(a, "cable", c);
+    ASSERT_NE(cable, nullptr);
+    EXPECT_EQ(cable, &a.markers._buffer[markers.cable_marker(c)]);
+    EXPECT_EQ(cable->type, visualization_msgs_msg_dds__Marker_Constants_LINE_STRIP);
+    EXPECT_STREQ(cable->header.frame_id, "world");
+    ASSERT_EQ(cable->points._length, state.msg.node_count);
+    ASSERT_EQ(cable->colors._length, state.msg.node_count);
+    for (uint32_t i = 0; i < cable->points._length; ++i) {
+      const auto& p = cable->points._buffer[i];
+      const auto& n = state.msg.positions._buffer[i];
+      EXPECT_NEAR(p.x, n.y, kExact);
+      EXPECT_NEAR(p.y, n.x, kExact);
+      EXPECT_NEAR(p.z, -n.z, kExact);
+      const ColorMsg col = TensionColor(state.msg.tensions._buffer[i]);
+      EXPECT_EQ(cable->colors._buffer[i].r, col.r);
+      EXPECT_EQ(cable->colors._buffer[i].g, col.g);
+      EXPECT_EQ(cable->colors._buffer[i].b, col.b);
+    }
+    for (int e = 0; e < 2; ++e) {
+      const MarkerMsg* arrow = Find(a, "cable_force", 2 * c + e);
+      ASSERT_NE(arrow, nullptr) << e;
+      ASSERT_EQ(arrow->points._length, 2u);
+      const core::Vec3 node = sim.node_position(e == 0 ? 0 : sim.num_nodes(c) - 1, c);
+      const core::Vec3 f = sim.end_force(e, c);
+      const auto& p0 = arrow->points._buffer[0];
+      const auto& p1 = arrow->points._buffer[1];
+      EXPECT_EQ(p0.x, node.y());
+      EXPECT_EQ(p0.y, node.x());
+      EXPECT_EQ(p0.z, -node.z());
+      EXPECT_NEAR(p1.z - p0.z, -kForceArrowScale * f.z(), kScaledTol);
+      EXPECT_GT(f.norm(), 100.0);  // the hanging weight below
+    }
+  }
+  EXPECT_EQ(Find(a, "cable", 2), nullptr);
+  EXPECT_EQ(Find(a, "cable_force", 4), nullptr);
 }
 
 // the scene of kScene in a sea: a regular wave and a sloping seabed (deeper toward north-east)

@@ -12,6 +12,7 @@
 #include "core/simulation.h"
 #include "dds/command_arbiter.h"
 #include "dds/translators.h"
+#include "network_scene.h"
 #include "scene/scene_loader.h"
 
 namespace towsim::dds {
@@ -213,6 +214,99 @@ TEST(MaxCableNodesTest, BoundsTheNodesAtTheWinchsMaxLength) {
   const core::Simulation sim(model);
   // 4 elements of 12.5 m: 125 m hold 10 of them, + 3 (docs/winch.md)
   EXPECT_EQ(MaxCableNodes(sim), 13);
+}
+
+// a network (tests/unit/network_scene.h): each cable's state is that cable's nodes, and a cable
+// without the winch carries its own length, speed 0 and the tension at its start
+TEST(NetworkCableStateTest, EachCableCarriesItsOwnNodes) {
+  const core::Model model = test::LoadNetwork();
+  core::Simulation sim(model);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(sim.Step().ok());
+  ASSERT_EQ(sim.num_cables(), 2);
+  const int sizes[2] = {5, 4};  // elements + 1
+  const double lengths[2] = {30.0, 10.0};
+  for (int c = 0; c < 2; ++c) {
+    SCOPED_TRACE(sim.cable_name(c));
+    EXPECT_EQ(MaxCableNodes(sim, c), sizes[c]);
+    CableStateMessage m(kWorldFrame, MaxCableNodes(sim, c));
+    ToCableState(sim, 5, &m, c);
+    ASSERT_EQ(m.msg.node_count, static_cast<uint32_t>(sizes[c]));
+    ASSERT_EQ(m.msg.positions._length, m.msg.node_count);
+    EXPECT_EQ(m.msg.step, 5u);
+    for (int i = 0; i < sizes[c]; ++i) {
+      EXPECT_EQ(m.msg.positions._buffer[i].z, sim.node_position(i, c).z()) << i;
+      EXPECT_EQ(m.msg.velocities._buffer[i].x, sim.node_velocity(i, c).x()) << i;
+      EXPECT_EQ(m.msg.tensions._buffer[i], sim.NodeTension(i, c)) << i;
+    }
+    EXPECT_EQ(m.msg.paid_out_length, lengths[c]);
+    EXPECT_EQ(m.msg.winch_speed, 0.0);
+    EXPECT_EQ(m.msg.drum_tension, sim.NodeTension(0, c));
+  }
+  // the tether's start is held 0.5 m below the depressor's centre (Eq. 24 to the Newton
+  // tolerance), the main cable's end at it
+  constexpr double kJointTol = 1e-6;  // [m]
+  CableStateMessage tether(kWorldFrame, 4);
+  ToCableState(sim, 5, &tether, 1);
+  const core::Vec3 p_depressor = sim.body_position(0);
+  EXPECT_NEAR(tether.msg.positions._buffer[0].z, p_depressor.z() + 0.5, kJointTol);
+  EXPECT_NEAR(tether.msg.positions._buffer[0].x, p_depressor.x(), kJointTol);
+  EXPECT_GT(tether.msg.tensions._buffer[0], 0.0);
+}
+
+// SceneOf: the cables with their node counts in the scene's order; the one-cable fields are
+// the first cable's; no winch: none listed
+TEST(SceneInfoTest, ListsTheCablesOfANetwork) {
+  const core::Model model = test::LoadNetwork();
+  const core::Simulation sim(model);
+  SceneInfoSample s;
+  SceneOf(sim, &s);
+  EXPECT_EQ(s.bodies, (std::vector<std::string>{"depressor", "towfish"}));
+  EXPECT_EQ(s.cables, (std::vector<std::string>{"main", "tether"}));
+  EXPECT_EQ(s.cable_node_counts, (std::vector<uint32_t>{5, 4}));
+  EXPECT_EQ(s.cable_nodes, 5);
+  EXPECT_FALSE(s.has_winch);
+  EXPECT_TRUE(s.winches.empty());
+  EXPECT_TRUE(s.winch_cables.empty());
+  SceneInfoMessage m;
+  ToSceneInfo(s, &m);
+  ASSERT_EQ(m.msg.cables._length, 2u);
+  EXPECT_STREQ(m.msg.cables._buffer[0], "main");
+  EXPECT_STREQ(m.msg.cables._buffer[1], "tether");
+  ASSERT_EQ(m.msg.cable_node_counts._length, 2u);
+  EXPECT_EQ(m.msg.cable_node_counts._buffer[0], 5u);
+  EXPECT_EQ(m.msg.cable_node_counts._buffer[1], 4u);
+  EXPECT_EQ(m.msg.winches._length, 0u);
+  EXPECT_EQ(m.msg.winch_cables._length, 0u);
+}
+
+// the one-cable form: one cable named "cable", and a winch named "winch" on it
+TEST(SceneInfoTest, TheOneCableIsNamedCableAndItsWinchWinch) {
+  core::Model model = scene::LoadSceneFromString(
+      kScene, "winch.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  core::WinchParams w;
+  w.min_length = 20.0;
+  w.max_length = 125.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 0.1;
+  model.cables[0].winch = w;
+  const core::Simulation sim(model);
+  SceneInfoSample s;
+  SceneOf(sim, &s);
+  EXPECT_EQ(s.cables, (std::vector<std::string>{"cable"}));
+  EXPECT_EQ(s.cable_node_counts, (std::vector<uint32_t>{5}));
+  EXPECT_EQ(s.cable_nodes, 5);
+  EXPECT_TRUE(s.has_winch);
+  EXPECT_EQ(s.winch_min_length, 20.0);
+  EXPECT_EQ(s.winch_max_length, 125.0);
+  EXPECT_EQ(s.winch_max_speed, 1.0);
+  EXPECT_EQ(s.winch_max_acceleration, 0.1);
+  EXPECT_EQ(s.winches, (std::vector<std::string>{"winch"}));
+  EXPECT_EQ(s.winch_cables, (std::vector<std::string>{"cable"}));
+  SceneInfoMessage m;
+  ToSceneInfo(s, &m);
+  ASSERT_EQ(m.msg.winches._length, 1u);
+  EXPECT_STREQ(m.msg.winches._buffer[0], "winch");
+  EXPECT_STREQ(m.msg.winch_cables._buffer[0], "cable");
 }
 
 TEST(ClockTest, CarriesTheSimulationTime) {

@@ -104,6 +104,34 @@ TEST(WireDecodersTest, SceneInfo) {
   EXPECT_EQ(s.winch_max_length, 300.0);
   EXPECT_EQ(s.winch_max_speed, 1.5);
   EXPECT_EQ(s.winch_max_acceleration, 0.25);
+  // no network fields: none listed (a node that does not list them has the one cable)
+  EXPECT_TRUE(s.cables.empty());
+  EXPECT_TRUE(s.winches.empty());
+  EXPECT_EQ(s.NodesOf("cable"), 0u);
+}
+
+TEST(WireDecodersTest, SceneInfoListsTheCablesAndWinches) {
+  char* cables[] = {Text("main"), Text("tether")};
+  uint32_t counts[] = {21, 11};
+  char* winches[] = {Text("winch")};
+  char* winch_cables[] = {Text("main")};
+  towsim_msgs_msg_dds__SceneInfo_ m{};
+  m.run_id = Text("r1");
+  m.scene = Text("two_part_tow");
+  m.mode = Text("fast");
+  m.cable_nodes = 21;
+  m.cables = {2, 2, cables, false};
+  m.cable_node_counts = {2, 2, counts, false};
+  m.winches = {1, 1, winches, false};
+  m.winch_cables = {1, 1, winch_cables, false};
+  const SceneInfo s = DecodeSceneInfo(m);
+  EXPECT_EQ(s.cables, (std::vector<std::string>{"main", "tether"}));
+  EXPECT_EQ(s.cable_node_counts, (std::vector<uint32_t>{21, 11}));
+  EXPECT_EQ(s.winches, std::vector<std::string>{"winch"});
+  EXPECT_EQ(s.winch_cables, std::vector<std::string>{"main"});
+  EXPECT_EQ(s.NodesOf("main"), 21u);
+  EXPECT_EQ(s.NodesOf("tether"), 11u);
+  EXPECT_EQ(s.NodesOf("cable"), 0u);
 }
 
 TEST(WireDecodersTest, Odometry) {

@@ -57,8 +57,8 @@ void Environment(const core::Simulation& sim, int b, uint64_t step,
                  dds::BodyEnvironmentMessage* m) {
   dds::ToBodyEnvironment(sim, b, step, &m->msg);
 }
-void CableState(const core::Simulation& sim, int, uint64_t step, dds::CableStateMessage* m) {
-  dds::ToCableState(sim, step, m);
+void CableState(const core::Simulation& sim, int c, uint64_t step, dds::CableStateMessage* m) {
+  dds::ToCableState(sim, step, m, c);
 }
 void Clock(const core::Simulation& sim, int, uint64_t, ClockHolder* m) {
   dds::ToClock(sim.time(), &m->msg);
@@ -87,11 +87,11 @@ std::vector<TopicRow> BuildTable() {
          return Make<ClockHolder, Clock>(p, row, name, std::make_unique<ClockHolder>(), -1);
        }},
       {T::kCableState, PublishRate::kCableState,
-       [](P p, const TopicRow& row, N name, S sim, int) {
+       [](P p, const TopicRow& row, N name, S sim, int c) {
          return Make<dds::CableStateMessage, CableState>(
              p, row, name,
-             std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim)),
-             -1);
+             std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim, c)),
+             c);
        }},
       // /tf: the same state as the odometry, at its rate
       {T::kTf, PublishRate::kOdom,

@@ -48,16 +48,19 @@ class StateTopic {
 struct TopicRow {
   wire::Topic topic;  // its name, type and QoS: wire/topic_table.h
   core::PublishRate rate;
-  // its writer with its translator (body: the body index for per-body rows, else -1); nullptr
-  // where the scene has no such topic (the environment of a calm scene)
+  // its writer with its translator (owner: the body index of a per-body row, the cable index
+  // (Model::cables order) of a per-cable row, else -1); nullptr where the scene has no such
+  // topic (the environment of a calm scene)
   std::unique_ptr<StateTopic> (*make)(const dds::Participant& participant, const TopicRow& row,
                                       const std::string& name, const core::Simulation& sim,
-                                      int body);
+                                      int owner);
   const wire::TopicSpec& spec() const { return wire::SpecOf(topic); }
   bool per_body() const { return spec().scope == wire::Scope::kBody; }
+  bool per_cable() const { return spec().scope == wire::Scope::kCable; }
 };
 
-// every per-step state topic of a node: those of the node, then those of each body
+// every per-step state topic of a node: those of the node (per-cable rows once per cable),
+// then those of each body
 const std::vector<TopicRow>& NodeTopicTable();
 
 }  // namespace towsim::app

@@ -31,14 +31,20 @@ const dds_topic_descriptor_t* DescriptorOfRos2Type(const std::string& ros2_type)
 }
 
 std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
-                                  const std::vector<std::string>& bodies, bool with_scene_info) {
+                                  const std::vector<std::string>& bodies, bool with_scene_info,
+                                  const std::vector<std::string>& cables) {
   std::vector<NodeTopic> all;
   auto add = [&](const wire::TopicSpec& row, const std::string& owner) {
     all.push_back({names.Name(row.topic, owner), row.type, row.qos == wire::QosProfile::kLatched});
   };
+  const std::vector<std::string> one_cable = {wire::kOneCable};
   for (const wire::TopicSpec& row : wire::TopicTable()) {
     if (row.scope == wire::Scope::kBody) continue;
     if (!with_scene_info && row.topic == wire::Topic::kSceneInfo) continue;
+    if (row.scope == wire::Scope::kCable) {
+      for (const std::string& c : cables.empty() ? one_cable : cables) add(row, c);
+      continue;
+    }
     add(row, "");
   }
   for (const std::string& b : bodies) {

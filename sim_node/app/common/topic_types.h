@@ -25,12 +25,14 @@ struct NodeTopic {
   bool transient_local = false;  // scene_info and /tf_static
 };
 
-// every topic of a towsim node of namespace `names` with these bodies (the table of
-// wire/topic_table.h: /clock, status, cable/state, sim_control, /tf, /tf_static, markers, and per
-// body odom, cable_force, altitude, pressure and command); scene_info first when
-// `with_scene_info`
+// every topic of a towsim node of namespace `names` with these bodies and cables (the table of
+// wire/topic_table.h: /clock, status, <cable>/state of each cable, sim_control, /tf,
+// /tf_static, markers, and per body odom, cable_force, altitude, pressure and command);
+// scene_info first when `with_scene_info`. `cables`: SceneInfo.cables; empty: the one cable
+// ("cable", the scene info of a towsim that did not list its cables)
 std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
                                   const std::vector<std::string>& bodies,
-                                  bool with_scene_info = false);
+                                  bool with_scene_info = false,
+                                  const std::vector<std::string>& cables = {});
 
 }  // namespace towsim::app

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -38,7 +39,7 @@ struct Frame {
   std::map<std::string, Odometry> odom;         // by body
   std::map<std::string, WrenchStamped> forces;  // by body
   std::map<std::string, BodyEnvironment> environment;  // by body
-  std::optional<CableState> cable;
+  std::map<std::string, CableState> cables;            // by cable
 };
 
 class CsvFile {
@@ -82,11 +83,12 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   enum class Kind { kOdom, kForce, kEnvironment, kCable, kStatus, kSceneInfo, kCommand };
   struct Route {
     Kind kind;
-    std::string body;  // kOdom, kForce, kEnvironment, kCommand
+    std::string body;  // kOdom, kForce, kEnvironment, kCommand; the cable's name for kCable
   };
   bool sea = false;  // environment topics: environment.csv is written
   std::map<std::uint16_t, Route> routes;
   std::vector<std::string> channel_bodies;  // bodies in channel order (fallback order)
+  std::vector<std::string> channel_cables;  // cables in channel order (fallback order)
   std::string all_topics;
   const std::string prefix = ns == "/" ? "/" : ns + "/";
   for (const auto& [id, channel] : reader.channels()) {
@@ -103,9 +105,13 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
       }
     };
     const auto slash = rest.find('/');
-    if (rest == "cable/state") {
+    if (rest == "cable/state" ||
+        (slash != std::string::npos && rest.substr(slash) == "/state" &&
+         type == "towsim_msgs/msg/CableState")) {
+      // rt/<ns>/<cable>/state: the one cable's ("cable") or a network's cables
       expect("towsim_msgs/msg/CableState");
-      routes[id] = {Kind::kCable, ""};
+      routes[id] = {Kind::kCable, rest.substr(0, slash)};
+      channel_cables.push_back(rest.substr(0, slash));
     } else if (rest == "status") {
       expect("towsim_msgs/msg/SimStatus");
       routes[id] = {Kind::kStatus, ""};
@@ -140,6 +146,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   std::map<std::int64_t, double> sim_time_of_stamp;  // from the status messages
   std::vector<io::cdr::SimStatus> statuses;
   std::optional<std::vector<std::string>> scene_bodies;
+  std::vector<std::string> scene_cables;  // SceneInfo.cables (empty from an earlier towsim)
   bool has_winch = false;  // the scene info says so: winch.csv, as the node writes it
   std::vector<std::pair<std::string, ActuatorCommand>> commands;  // (body, command), recorded order
   std::uint64_t index = 0;
@@ -169,7 +176,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
         case Kind::kCable: {
           CableState c = io::cdr::DecodeCableState(p, n);
           const std::int64_t stamp = StampNs(c.header.stamp);
-          frames[stamp].cable = std::move(c);
+          frames[stamp].cables[route->second.body] = std::move(c);
           break;
         }
         case Kind::kStatus: {
@@ -190,6 +197,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           if (!scene_bodies) {
             io::cdr::SceneInfo info = io::cdr::DecodeSceneInfo(p, n);
             scene_bodies = std::move(info.bodies);
+            scene_cables = std::move(info.cables);
             has_winch = info.has_winch;
           }
           break;
@@ -208,12 +216,25 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     if (std::find(bodies.begin(), bodies.end(), b) == bodies.end()) bodies.push_back(b);
   }
 
+  // the cables: the node's order (scene info), then any other recorded cable; the first one
+  // has the winch and gives status.csv its cable_length (as io/csv_writer.h)
+  std::vector<std::string> cables = scene_cables;
+  for (const std::string& c : channel_cables) {
+    if (std::find(cables.begin(), cables.end(), c) == cables.end()) cables.push_back(c);
+  }
+  if (cables.empty()) cables.push_back("cable");
+  const std::string& first_cable = cables.front();
+
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw std::runtime_error("cannot create CSV directory '" + dir + "': " + ec.message());
   const std::filesystem::path d(dir);
   CsvFile bodies_csv(d / "bodies.csv", io::kCsvBodiesHeader);
-  CsvFile cable_csv(d / "cable.csv", io::kCsvCableHeader);
+  // <cable>.csv per cable (cable.csv for the one cable)
+  std::map<std::string, std::unique_ptr<CsvFile>> cable_csv;
+  for (const std::string& c : cables) {
+    cable_csv[c] = std::make_unique<CsvFile>(d / (c + ".csv"), io::kCsvCableHeader);
+  }
   CsvFile forces_csv(d / "forces.csv", io::kCsvForcesHeader);
   std::optional<CsvFile> environment_csv;  // as the node: only for a scene with a sea
   if (sea) environment_csv.emplace(d / "environment.csv", io::kCsvEnvironmentHeader);
@@ -247,15 +268,15 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           rpy.z(), m.linear.x, m.linear.y, m.linear.z, m.angular.x, m.angular.y, m.angular.z);
       ++counts.bodies_rows;
     }
-    if (frame.cable) {
-      const CableState& c = *frame.cable;
+    for (const auto& [name, c] : frame.cables) {
+      std::FILE* f = cable_csv.at(name)->get();
       for (std::size_t i = 0; i < c.positions.size(); ++i) {
         const double tension = i < c.tensions.size() ? c.tensions[i] : 0.0;
-        std::fprintf(cable_csv.get(), "%.9g,%zu,%.9g,%.9g,%.9g,%.9g\n", t, i, c.positions[i].x,
+        std::fprintf(f, "%.9g,%zu,%.9g,%.9g,%.9g,%.9g\n", t, i, c.positions[i].x,
                      c.positions[i].y, c.positions[i].z, tension);
         ++counts.cable_rows;
       }
-      if (winch_csv) {
+      if (winch_csv && name == first_cable) {
         std::fprintf(winch_csv->get(), "%.9g,%.9g,%.9g,%.9g,%u\n", t, c.paid_out_length,
                      c.winch_speed, c.drum_tension, static_cast<unsigned>(c.node_count));
         ++counts.winch_rows;
@@ -289,8 +310,9 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     double length = std::numeric_limits<double>::quiet_NaN();
     for (auto f = frames.upper_bound(StampNs(s.header.stamp)); f != frames.begin();) {
       --f;
-      if (f->second.cable) {
-        length = f->second.cable->paid_out_length;
+      const auto c = f->second.cables.find(first_cable);
+      if (c != f->second.cables.end()) {
+        length = c->second.paid_out_length;
         break;
       }
     }
@@ -298,7 +320,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     ++counts.status_rows;
   }
   bodies_csv.Close();
-  cable_csv.Close();
+  for (auto& [name, file] : cable_csv) file->Close();
   forces_csv.Close();
   status_csv.Close();
   if (environment_csv) environment_csv->Close();

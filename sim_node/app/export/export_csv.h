@@ -7,9 +7,11 @@
 //   NS/<b>/odom        nav_msgs/Odometry      -> bodies.csv  (Euler ZYX from the quaternion,
 //                                                 by the core's own EulerZYX)
 //   NS/<b>/cable_force geometry_msgs/WrenchStamped -> forces.csv
-//   NS/cable/state     towsim_msgs/CableState -> cable.csv, and winch.csv (paid_out_length,
-//                                                 winch_speed, drum_tension, node_count) when
-//                                                 the scene info says the scene has a winch
+//   NS/<c>/state       towsim_msgs/CableState -> <c>.csv per cable (NS/cable/state ->
+//                                                 cable.csv for the one cable), and winch.csv
+//                                                 (paid_out_length, winch_speed, drum_tension,
+//                                                 node_count) from the first cable's when the
+//                                                 scene info says the scene has a winch
 //   NS/status          towsim_msgs/SimStatus  -> status.csv (wall_us = step_wall_time in us;
 //                                                 the end-of-run repeat of a step is dropped)
 //   NS/<b>/environment towsim_msgs/BodyEnvironment -> environment.csv (written, as by the node,
@@ -19,6 +21,9 @@
 //                                                 cable_length from the newest cable state
 //                                                 at or before the status)
 //   NS/scene_info      towsim_msgs/SceneInfo  -> the body order of the rows (else channel order)
+//                                                 and the cables (else those recorded; the
+//                                                 first one's paid-out length is status.csv's
+//                                                 cable_length)
 //   NS/<b>/command     towsim_msgs/ActuatorCommand -> commands.csv (t,body,step,thrust,rudder,
 //                                                 elevator; t = the command's stamp; one row per
 //                                                 message in recorded order; written only when
@@ -27,7 +32,9 @@
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).
 // Not on the wire, hence not exported: the forces.csv rows of cable ends held by fixed or
-// driven supports ("cable.start", "cable.end"). One run per recording: after a RESET the
+// driven supports ("<cable>.start", "<cable>.end") and, in a network, the rows of each
+// attachment of a body held by several cable ends ("<body>.<cable>.<start|end>"; its total is
+// on the wire as <body>/cable_force and exported). One run per recording: after a RESET the
 // stamps repeat and the rows of equal stamps are merged.
 
 #include <cstdint>

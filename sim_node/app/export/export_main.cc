@@ -31,7 +31,8 @@ using towsim::app::kExitOk;
 constexpr char kUsage[] =
     "usage: towsim_export FILE.mcap [--csv DIR] [--info] [--namespace NS] [--recover]\n"
     "  --csv DIR         write bodies.csv, cable.csv, forces.csv, status.csv into DIR\n"
-    "                    (and winch.csv, environment.csv, commands.csv when recorded)\n"
+    "                    (a network: <cable>.csv per cable; and winch.csv,\n"
+    "                    environment.csv, commands.csv when recorded)\n"
     "  --info            print topics, types, counts and the time range (like ros2 bag info)\n"
     "  --namespace NS    the node's namespace in the recording (default /towsim)\n"
     "  --recover         read what a killed recorder or damage left: every intact chunk;\n"

@@ -4,9 +4,10 @@
 //                   [--security DIR/NAME]
 //
 // A bridge process: it subscribes over DDS like towsim_record does (so it shows a node and
-// towsim_replay alike), learning the bodies from rt/<ns>/scene_info, and serves every towsim
-// topic of the namespace (app/common/topic_types.h NodeTopics: odometry, cable force and command
-// per body, cable state, status, scene info, sim_control, markers, /clock, /tf, /tf_static) as a
+// towsim_replay alike), learning the bodies and cables from rt/<ns>/scene_info, and serves every
+// towsim topic of the namespace (app/common/topic_types.h NodeTopics: odometry, cable force and
+// command per body, the state of each cable, status, scene info, sim_control, markers, /clock,
+// /tf, /tf_static) as a
 // Foxglove channel (encoding cdr, schema encoding ros2msg, the schemas of the MCAP recordings),
 // the payloads as received. A DDS reader exists only while a client subscribes to its
 // channel, so a bridge without clients costs the node nothing (the node serializes a topic
@@ -187,7 +188,9 @@ class Bridge {
 
  private:
   // winch: the scene has one (SceneInfo.has_winch), so clients may command it
-  void Serve(const std::vector<std::string>& bodies, bool winch);
+  // cables: SceneInfo.cables (empty from an earlier towsim: the one cable)
+  void Serve(const std::vector<std::string>& bodies, const std::vector<std::string>& cables,
+             bool winch);
   // readers for the channels with subscribers (and /clock while a client is connected)
   void UpdateReaders();
   void TakeAll();
@@ -203,8 +206,9 @@ class Bridge {
   std::unique_ptr<towsim::app::FoxgloveCommands> commands_;  // clientPublish, after Serve()
 };
 
-void Bridge::Serve(const std::vector<std::string>& bodies, bool winch) {
-  for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies, true)) {
+void Bridge::Serve(const std::vector<std::string>& bodies, const std::vector<std::string>& cables,
+                   bool winch) {
+  for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies, true, cables)) {
     auto s = std::make_unique<Served>();
     s->topic = t;
     const std::string type = towsim::io::Ros2TypeName(t.descriptor->m_typename);
@@ -293,13 +297,14 @@ int Bridge::Run() {
   dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc,
                          names_.Name(wire::Topic::kSceneInfo));
   dds::Reader<dds::SceneInfoMsg> scene(participant_, scene_topic, dds::SceneInfoQos());
-  std::vector<std::string> bodies;
+  std::vector<std::string> bodies, cables;
   bool have_scene = false, hinted = false, winch = false;
   const double start = static_cast<double>(dds_time()) * 1e-9;
   while (!have_scene && !towsim::app::StopRequested()) {
     scene.TakeEach([&](const dds::SceneInfoMsg& m, const dds_sample_info_t&) {
       if (have_scene) return;
       for (uint32_t i = 0; i < m.bodies._length; ++i) bodies.push_back(m.bodies._buffer[i]);
+      for (uint32_t i = 0; i < m.cables._length; ++i) cables.push_back(m.cables._buffer[i]);
       winch = m.has_winch;
       have_scene = true;
     });
@@ -314,7 +319,7 @@ int Bridge::Run() {
     server_.Stop();
     return kExitOk;
   }
-  Serve(bodies, winch);
+  Serve(bodies, cables, winch);
   server_.Start();
 
   // the waitset wakes on data; it holds this guard condition so that a wait without readers

@@ -259,17 +259,9 @@ void DdsNode::PublishInitial() {
   info.duration =
       control_.steps_to_run() < 0 ? -1.0 : static_cast<double>(control_.steps_to_run()) * h_;
   info.command_timeout = opt_.command_timeout;
-  for (int b = 0; b < n_.sim->num_bodies(); ++b) info.bodies.push_back(n_.sim->body_name(b));
+  dds::SceneOf(*n_.sim, &info);  // bodies, cables, winch
   for (int i = 0; i < num_command_vehicles(); ++i) {
     info.commanded_bodies.push_back(n_.arbiter->vehicle(i).name);
-  }
-  info.cable_nodes = n_.sim->num_nodes();
-  if (const std::optional<core::WinchParams>& w = model_.cables[0].winch) {
-    info.has_winch = true;
-    info.winch_min_length = w->min_length;
-    info.winch_max_length = w->max_length;
-    info.winch_max_speed = w->max_speed;
-    info.winch_max_acceleration = w->max_acceleration;
   }
   n_.endpoints->PublishSceneInfo(info);
 

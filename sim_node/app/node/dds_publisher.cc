@@ -48,9 +48,15 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::To
     for (const TopicRow& row : table) {
       if (row.per_body()) continue;
       if ((row.rate == core::PublishRate::kClock) != clock) continue;
-      std::unique_ptr<StateTopic> topic =
-          row.make(participant, row, names.Name(row.topic), sim, -1);
-      if (topic != nullptr) state_.push_back({std::move(topic), {}});
+      // a per-cable row once per cable (Model::cables order), named by the cable
+      const int owners = row.per_cable() ? sim.num_cables() : 1;
+      for (int c = 0; c < owners; ++c) {
+        const std::string name = row.per_cable() ? names.Name(row.topic, sim.cable_name(c))
+                                                 : names.Name(row.topic);
+        std::unique_ptr<StateTopic> topic =
+            row.make(participant, row, name, sim, row.per_cable() ? c : -1);
+        if (topic != nullptr) state_.push_back({std::move(topic), {}});
+      }
     }
   }
   const int num_spheres = sim.num_spheres();

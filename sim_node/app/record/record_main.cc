@@ -8,9 +8,10 @@
 // and it is locked while written, so a second writer (towsim_record or sim_node --record) on
 // the same file is refused too.
 //
-// It learns the bodies from rt/<ns>/scene_info (transient local: also when the node started
-// first), then subscribes to every towsim topic of the namespace (docs/contract.md §3: per body odom,
-// cable_force and command; cable/state, status, scene_info, sim_control, markers), /clock, /tf
+// It learns the bodies and cables from rt/<ns>/scene_info (transient local: also when the node
+// started first), then subscribes to every towsim topic of the namespace (docs/contract.md §3:
+// per body odom, cable_force and command; <cable>/state per cable, status, scene_info,
+// sim_control, markers), /clock, /tf
 // and /tf_static, or to the
 // --topics given (ROS names, "/towsim/towfish/odom"). The payloads are stored as received
 // (dds_takecdr: the CDR bytes, never deserialized and serialized again), log time = the wall
@@ -176,6 +177,7 @@ class Recorder {
   std::unique_ptr<dds::RawType> scene_type_, status_type_, clock_type_;
   uint64_t sim_now_ = 0;  // the last /clock taken [ns] (--use-sim-time)
   std::vector<std::string> bodies_;
+  std::vector<std::string> cables_;  // SceneInfo.cables (empty from an earlier towsim: one)
   bool have_scene_ = false;
   double start_ = 0.0, last_progress_ = -1.0;
   bool progress_drawn_ = false;
@@ -228,6 +230,9 @@ bool Recorder::TakeAll() {
             if (scene_type_->Deserialize(p, size, &msg)) {
               for (uint32_t i = 0; i < msg.bodies._length; ++i) {
                 bodies_.push_back(msg.bodies._buffer[i]);
+              }
+              for (uint32_t i = 0; i < msg.cables._length; ++i) {
+                cables_.push_back(msg.cables._buffer[i]);
               }
               have_scene_ = true;
             }
@@ -300,20 +305,27 @@ int Recorder::Run() {
       subscribed = true;
       std::set<std::string> wanted(opt_.topics.begin(), opt_.topics.end());
       std::vector<std::string> bodies = bodies_;
+      std::vector<std::string> cables = cables_;
       if (explicit_topics) {
-        // the bodies the explicit topics name
+        // the bodies and cables the explicit topics name (<ns>/<owner>/<topic>: the owner as
+        // a body and as a cable; the topic table keeps only the names that exist)
         const std::string prefix = opt_.ns == "/" ? "/" : opt_.ns + "/";
+        if (cables.empty()) cables.push_back(wire::kOneCable);
         for (const std::string& t : opt_.topics) {
           if (t.rfind(prefix, 0) != 0) continue;
           const std::string rest = t.substr(prefix.size());
           const size_t slash = rest.find('/');
-          if (slash != std::string::npos && rest.substr(0, slash) != "cable") {
-            bodies.push_back(rest.substr(0, slash));
+          if (slash == std::string::npos) continue;
+          const std::string owner = rest.substr(0, slash);
+          if (std::find(cables.begin(), cables.end(), owner) == cables.end()) {
+            cables.push_back(owner);
           }
+          if (owner != wire::kOneCable) bodies.push_back(owner);
         }
       }
       std::set<std::string> known;
-      for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies)) {
+      for (const towsim::app::NodeTopic& t :
+           towsim::app::NodeTopics(names_, bodies, false, cables)) {
         const std::string ros = wire::RosTopicName(t.dds_name);
         if (known.count(ros)) continue;
         known.insert(ros);
