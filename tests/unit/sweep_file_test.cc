@@ -265,7 +265,7 @@ TEST(SweepFile, BrokenControllersAndSettled) {
   // a plain parameter no argument names is a scene key path, and says how to name it
   EXPECT_EQ(Error(head + one + "parameters:\n  gain: [1, 2]\n"),
             "parameters.gain = [1, 2] (sweep.yaml:6): the scene: unknown key (allowed: name, time, "
-            "environment, line_types, cable, bodies, integrator, script, publish, security) (a "
+            "environment, line_types, cable, cables, bodies, integrator, script, publish, security) (a "
             "parameter of the controllers only is named in their args as ${gain})");
   EXPECT_EQ(Error(head + "controllers:\n  - {program: a, args: [\"${domain}\"]}\n" +
                   "parameters:\n  domain: [1, 2]\n"),
