@@ -188,9 +188,12 @@ TEST(System, NetworkNewtonMatrixMatchesFiniteDifferences) {
   CheckNewtonMatrix(NetworkModel(), false);
 }
 
-// The Schur-complement solve (network_matrix.h) against a dense LU of the same matrix
-TEST(System, NetworkSolveMatchesADenseSolve) {
-  const System sys(NetworkModel());
+// The network's Newton matrix of `model` with `cf` at its initial state, solved for its own
+// residual both by the Schur complement (network_matrix.h) and by a dense LU of the same
+// matrix (full pivoting when `full_pivot`): *network and *dense
+void SolveBothWays(const Model& model, const JacobianCoefficients& cf, bool full_pivot,
+                   Eigen::VectorXd* network, Eigen::VectorXd* dense) {
+  const System sys(model);
   State s;
   BuildInitialState(sys, &s);
   StepInputs in;
@@ -198,12 +201,19 @@ TEST(System, NetworkSolveMatchesADenseSolve) {
   sampler.Resize(&in);
   sampler.TakeMotions(s, &in);
   NetworkMatrix jac = sys.MakeMatrix();
-  Eigen::VectorXd r, phi, x;
-  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, {1.0, {1.0, 7.0, 300.0}}, {&r, &phi, &jac});
-  const Eigen::MatrixXd dense = Dense(jac);
-  sys.ToBlocks(r, phi, &x);
-  const Eigen::VectorXd expected = dense.partialPivLu().solve(x);
-  ASSERT_TRUE(jac.Solve(&x));
+  Eigen::VectorXd r, phi;
+  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, {1.0, cf}, {&r, &phi, &jac});
+  const Eigen::MatrixXd matrix = Dense(jac);
+  sys.ToBlocks(r, phi, network);
+  *dense = full_pivot ? Eigen::VectorXd(matrix.fullPivLu().solve(*network))
+                      : Eigen::VectorXd(matrix.partialPivLu().solve(*network));
+  ASSERT_TRUE(jac.Solve(network));
+}
+
+// The Schur-complement solve (network_matrix.h) against a dense LU of the same matrix
+TEST(System, NetworkSolveMatchesADenseSolve) {
+  Eigen::VectorXd x, expected;
+  SolveBothWays(NetworkModel(), {1.0, 7.0, 300.0}, false, &x, &expected);
   constexpr double kSolveRelTol = 1e-9;  // two direct solves of a well-conditioned system
   EXPECT_LT((x - expected).norm(), kSolveRelTol * expected.norm());
 }
@@ -215,20 +225,8 @@ TEST(System, MasslessJunctionSolves) {
   m.spheres[0].mass = 0.0;
   m.spheres[0].volume = 0.0;
   m.cables[0].loads.drag = m.cables[1].loads.drag = false;
-  const System sys(m);
-  State s;
-  BuildInitialState(sys, &s);
-  StepInputs in;
-  const StepSampler sampler(sys);
-  sampler.Resize(&in);
-  sampler.TakeMotions(s, &in);
-  NetworkMatrix jac = sys.MakeMatrix();
-  Eigen::VectorXd r, phi, x;
-  sys.Evaluate({s.q, s.v, s.a, s.lambda, 0.3}, in, {1.0, {1.0, 0.0, 0.0}}, {&r, &phi, &jac});
-  const Eigen::MatrixXd dense = Dense(jac);
-  sys.ToBlocks(r, phi, &x);
-  const Eigen::VectorXd expected = dense.fullPivLu().solve(x);
-  ASSERT_TRUE(jac.Solve(&x));
+  Eigen::VectorXd x, expected;
+  SolveBothWays(m, {1.0, 0.0, 0.0}, true, &x, &expected);
   constexpr double kSolveRelTol = 1e-8;
   EXPECT_LT((x - expected).norm(), kSolveRelTol * expected.norm());
 }
