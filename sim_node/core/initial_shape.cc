@@ -2,11 +2,13 @@
 
 #include <cmath>
 
+#include "core/vessel_motion.h"
+
 namespace towsim::core {
 namespace {
 
 // start (end = 0) or end support position at t = 0, using the spheres' and vehicles' initial
-// positions
+// positions and the vessels' poses at t = 0
 Vec3 SupportAtStart(const Model& m, const CableParams& c, int end) {
   const CableEnd& e = end == 0 ? c.start : c.end;
   if (e.kind == EndKind::kSphere) return m.spheres[e.body].position + e.at_B;
@@ -14,6 +16,8 @@ Vec3 SupportAtStart(const Model& m, const CableParams& c, int end) {
     const Vehicle& v = m.vehicles[e.body];
     return v.position + QuaternionFromEulerZYX(v.euler) * e.at_B;
   }
+  if (e.kind == EndKind::kVessel)
+    return VesselMotion(m.vessels[e.body], m.environment.waves).At(0.0).PointAt(e.at_B);
   return e.position;
 }
 

@@ -14,6 +14,7 @@
 #include "core/publish_rates.h"
 #include "core/seabed.h"
 #include "core/vehicle_model.h"
+#include "core/vessel.h"
 #include "core/wave_field.h"
 #include "core/winch.h"
 
@@ -56,6 +57,7 @@ enum class EndKind {
   kDriven,   // r = position + velocity * t
   kSphere,   // r = p_WB + at_B on a sphere (Eq. 24)
   kVehicle,  // r = p_WB + R_WB * at_B on a 6-DOF vehicle (Eq. 24)
+  kVessel,   // r = p_WB(t) + R_WB(t) * at_B on a vessel, its pose prescribed (vessel.h)
 };
 
 struct CableEnd {
@@ -65,7 +67,8 @@ struct CableEnd {
   // clamped ends also hold the cable direction: r' x slope = 0 (cantilever roots).
   bool clamped = false;
   Vec3 slope = Vec3::UnitX();  // unit direction, used when clamped
-  int body = -1;               // index into Model::spheres (kSphere) or Model::vehicles (kVehicle)
+  // index into Model::spheres (kSphere), Model::vehicles (kVehicle) or Model::vessels (kVessel)
+  int body = -1;
   Vec3 at_B = Vec3::Zero();    // attachment point in the body frame [m]
 };
 
@@ -213,6 +216,7 @@ struct Model {
   std::vector<CableParams> cables = std::vector<CableParams>(1);
   std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cables' Newton solve
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme
+  std::vector<Vessel> vessels;     // kinematic 6-DOF bodies of prescribed motion (vessel.h)
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;
   Publishing publishing;

@@ -30,7 +30,21 @@ struct Simulation::Impl {
   WinchDrive winch;
   State state;
   std::vector<VehicleCommand> commands;
+  // the vessels' motions, their poses at state.t and the cable ends they hold
+  std::vector<VesselMotion> vessels;
+  std::vector<VesselPose> vessel_now;
+  struct VesselEnd {
+    int end = 0;     // 2 c + k
+    int vessel = 0;  // index into Model::vessels
+    Vec3 at_B = Vec3::Zero();
+  };
+  std::vector<VesselEnd> vessel_ends;
+  std::vector<VesselPose> vessel_next;  // work space: the poses at the step's end
   int coupling_iterations = 0;
+  // the vessels' poses at state.t and their ends held there (a state that starts a run)
+  void HoldVessels();
+  // the vessels' attachment points as supports moving over [t, t + h] (SupportMotion)
+  void MoveVessels(double h);
   // the cable (and the vehicles) over h from the current state
   StepStatus StepSystem(double h);
 };
@@ -42,7 +56,15 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   BuildInitialState(sys, &s);
   impl_->winch.Initialize(&s);
   for (const Vehicle& v : model.vehicles) impl_->commands.push_back(v.command);
+  const Model& m = sys.model();  // the System's copy: the motions keep pointers into it
+  for (const Vessel& v : m.vessels) impl_->vessels.emplace_back(v, m.environment.waves);
+  for (int end = 0; end < sys.num_ends(); ++end) {
+    const CableEnd& e = sys.End(end % 2, end / 2);
+    if (e.kind == EndKind::kVessel) impl_->vessel_ends.push_back({end, e.body, e.at_B});
+  }
+  impl_->vessel_next.resize(m.vessels.size());
   impl_->coupling.HoldSupports(&s);
+  impl_->HoldVessels();
   // a static start solves the whole network, in the frame moving with the cables' common
   // initial velocity (the scene requires it common, docs/scene_format.md)
   const CableParams* static_cable = nullptr;
@@ -68,7 +90,32 @@ Simulation& Simulation::operator=(Simulation&&) noexcept = default;
 
 StepStatus Simulation::Step() { return StepBy(impl_->system.model().time.step); }
 
+void Simulation::Impl::HoldVessels() {
+  vessel_now.resize(vessels.size());
+  for (size_t v = 0; v < vessels.size(); ++v) vessel_now[v] = vessels[v].At(state.t);
+  for (const VesselEnd& e : vessel_ends) {
+    const Vec3 p = vessel_now[e.vessel].PointAt(e.at_B);
+    state.supports[e.end] = {p, p, state.t, state.t};
+  }
+}
+
+void Simulation::Impl::MoveVessels(double h) {
+  if (vessel_ends.empty()) return;
+  const double t0 = state.t, t1 = t0 + h;
+  for (size_t v = 0; v < vessels.size(); ++v) vessel_next[v] = vessels[v].At(t1);
+  for (const VesselEnd& e : vessel_ends) {
+    SupportMotion& s = state.supports[e.end];
+    s.p0 = vessel_now[e.vessel].PointAt(e.at_B);  // the pose at t0 as it was reported
+    s.p1 = vessel_next[e.vessel].PointAt(e.at_B);
+    s.t0 = t0;
+    s.t1 = t1;
+    s.compliance.setZero();
+    s.lambda1.setZero();
+  }
+}
+
 StepStatus Simulation::Impl::StepSystem(double h) {
+  MoveVessels(h);
   if (system.model().vehicles.empty()) {
     coupling_iterations = 0;
     return integrator.Step(&state, h);
@@ -83,6 +130,8 @@ StepStatus Simulation::StepBy(double h) {
   const StepStatus s =
       impl_->winch.Step(h, &impl_->state, [this](double dt) { return impl_->StepSystem(dt); });
   if (s.ok()) ++impl_->state.step;
+  for (size_t v = 0; v < impl_->vessels.size(); ++v)
+    impl_->vessel_now[v] = impl_->vessels[v].At(impl_->state.t);
   return s;
 }
 
@@ -155,6 +204,8 @@ void Simulation::SetState(const State& state) {
   impl_->coupling.SizeWorkSpace(impl_->state);
   if (!impl_->integrator.RestoreNewtonMatrix(impl_->state))
     throw SolverError("SetState: the kept Newton matrix of the state cannot be factored");
+  for (size_t v = 0; v < impl_->vessels.size(); ++v)
+    impl_->vessel_now[v] = impl_->vessels[v].At(impl_->state.t);
 }
 
 void Simulation::StartFrom(const State& state) {
@@ -170,6 +221,7 @@ void Simulation::StartFrom(const State& state) {
   impl_->state = s;
   impl_->system.SetLayout(s.winch.nodes, s.winch.length);
   impl_->coupling.HoldSupports(&impl_->state);
+  impl_->HoldVessels();
   if (!impl_->integrator.InitializeAcceleration(&impl_->state))
     throw SolverError("StartFrom: accelerations could not be computed for the given state");
 }
@@ -181,11 +233,24 @@ int Simulation::num_cables() const { return impl_->system.num_cables(); }
 const std::string& Simulation::cable_name(int c) const { return model().cables[c].name; }
 int Simulation::num_spheres() const { return impl_->system.num_spheres(); }
 int Simulation::num_vehicles() const { return static_cast<int>(model().vehicles.size()); }
-int Simulation::num_bodies() const { return num_spheres() + num_vehicles(); }
-bool Simulation::body_is_vehicle(int b) const { return b >= num_spheres(); }
+int Simulation::num_vessels() const { return static_cast<int>(model().vessels.size()); }
+int Simulation::num_bodies() const { return num_spheres() + num_vehicles() + num_vessels(); }
+bool Simulation::body_is_sphere(int b) const { return b < num_spheres(); }
+bool Simulation::body_is_vehicle(int b) const {
+  return b >= num_spheres() && b < num_spheres() + num_vehicles();
+}
+bool Simulation::body_is_vessel(int b) const { return b >= num_spheres() + num_vehicles(); }
 
 const std::string& Simulation::body_name(int b) const {
+  if (body_is_vessel(b)) return model().vessels[b - num_spheres() - num_vehicles()].name;
   return body_is_vehicle(b) ? model().vehicles[b - num_spheres()].name : model().spheres[b].name;
+}
+
+const VesselPose& Simulation::vessel_pose(int v) const { return impl_->vessel_now[v]; }
+
+void Simulation::SetVesselPose(int v, double t, const VesselPose& pose) {
+  if (!impl_->vessels[v].external()) return;
+  impl_->vessels[v].SetExternal(t, pose);
 }
 
 Vec3 Simulation::node_position(int i, int c) const {
@@ -203,11 +268,13 @@ double Simulation::NodeTension(int i, int c) const {
 }
 
 Vec3 Simulation::body_position(int b) const {
+  if (body_is_vessel(b)) return vessel_pose(b - num_spheres() - num_vehicles()).position;
   if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).p_W;
   return impl_->state.q.segment<3>(sphere_dof(b));
 }
 
 Vec3 Simulation::body_velocity(int b) const {
+  if (body_is_vessel(b)) return vessel_pose(b - num_spheres() - num_vehicles()).velocity;
   if (body_is_vehicle(b)) {
     const VehicleState& vs = vehicle_state(b - num_spheres());
     return vs.q_WB * Vec3(vs.nu.head<3>());
@@ -216,11 +283,13 @@ Vec3 Simulation::body_velocity(int b) const {
 }
 
 Eigen::Quaterniond Simulation::body_attitude(int b) const {
+  if (body_is_vessel(b)) return vessel_pose(b - num_spheres() - num_vehicles()).attitude();
   if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).q_WB;
   return Eigen::Quaterniond::Identity();
 }
 
 Vec6 Simulation::body_twist(int b) const {
+  if (body_is_vessel(b)) return vessel_pose(b - num_spheres() - num_vehicles()).twist();
   if (body_is_vehicle(b)) return vehicle_state(b - num_spheres()).nu;
   Vec6 t = Vec6::Zero();
   t.head<3>() = body_velocity(b);  // a sphere's frame stays aligned with the world
@@ -231,6 +300,7 @@ int Simulation::EndBody(int end, int c) const {
   const CableEnd& e = impl_->system.End(end, c);
   if (e.kind == EndKind::kSphere) return e.body;
   if (e.kind == EndKind::kVehicle) return num_spheres() + e.body;
+  if (e.kind == EndKind::kVessel) return num_spheres() + num_vehicles() + e.body;
   return -1;
 }
 
@@ -244,7 +314,7 @@ Vec3 Simulation::BodyCableForce(int b) const {
 
 void Simulation::BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const {
   // F_B = R_WB^T lambda, M_B = r_attach x F_B (Eq. 29-30), summed over the attachments
-  const bool vehicle = body_is_vehicle(b);
+  const bool rigid = !body_is_sphere(b);  // a vehicle or a vessel: the moments too
   const Eigen::Quaterniond q = body_attitude(b);
   force_B->setZero();
   moment_B->setZero();
@@ -253,7 +323,7 @@ void Simulation::BodyCableWrench(int b, Vec3* force_B, Vec3* moment_B) const {
       if (EndBody(end, c) != b) continue;
       const Vec3 f = q.conjugate() * end_force(end, c);
       *force_B += f;
-      if (vehicle) *moment_B += impl_->system.End(end, c).at_B.cross(f);
+      if (rigid) *moment_B += impl_->system.End(end, c).at_B.cross(f);
     }
 }
 

@@ -15,6 +15,7 @@
 
 #include "core/model.h"
 #include "core/vehicle_model.h"
+#include "core/vessel_motion.h"
 #include "core/winch.h"
 
 namespace towsim::core {
@@ -90,12 +91,16 @@ class Simulation {
   Vec3 node_velocity(int i, int c = 0) const;  // dr/dt at node i [m/s]
   // axial force at node i [N]: the elements' average; |joint force| at a held end
   double NodeTension(int i, int c = 0) const;
-  // bodies: the spheres (Model::spheres) first, then the vehicles (Model::vehicles)
+  // bodies: the spheres (Model::spheres) first, then the vehicles (Model::vehicles), then the
+  // vessels (Model::vessels)
   int num_bodies() const;
   int num_spheres() const;
   int num_vehicles() const;
+  int num_vessels() const;
   const std::string& body_name(int b) const;
+  bool body_is_sphere(int b) const;
   bool body_is_vehicle(int b) const;
+  bool body_is_vessel(int b) const;
   Vec3 body_position(int b) const;                // p_WB (vehicles: the body origin) [m]
   Vec3 body_velocity(int b) const;                // v_WB expressed in W [m/s]
   Eigen::Quaterniond body_attitude(int b) const;  // q_WB (identity for spheres)
@@ -114,6 +119,15 @@ class Simulation {
   // the command held from now on (thrust, rudder and elevator go through the actuator
   // dynamics and limits of the vehicle model)
   void SetVehicleCommand(int v, const VehicleCommand& command);
+
+  // --- vessels (index v into Model::vessels; vessel.h, docs/vessels.md) ---
+  // the pose now (the prescribed motion at time(), or an external vessel's last pose carried
+  // forward)
+  const VesselPose& vessel_pose(int v) const;
+  // an external vessel (Vessel::external): its pose at time t, held and carried forward by
+  // its rates until the next (the node gives the pose for the end of the next step before it;
+  // the step starts from the pose reported now, vessel_pose; ignored for a prescribed vessel)
+  void SetVesselPose(int v, double t, const VesselPose& pose);
 
   // --- the winch at the cable's start (winch.h, docs/winch.md) ---
   bool has_winch() const;  // the scene has cable.winch

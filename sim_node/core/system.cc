@@ -289,7 +289,8 @@ Vec3 System::SupportPosition(int end, const VectorXd& q, double t,
       return e.position + t * e.velocity;
     case EndKind::kSphere:
       return q.segment<3>(SphereDof(e.body)) + e.at_B;  // sphere frames stay world-aligned
-    case EndKind::kVehicle: {
+    case EndKind::kVehicle:
+    case EndKind::kVessel: {
       if (!supports) break;
       const SupportMotion& s = (*supports)[2 * c + end];
       if (s.t1 <= s.t0) return s.p1;

@@ -44,8 +44,8 @@ struct HarmonicMotion {
 // Displacement RAOs on a grid of wave periods and directions (docs/vessels.md "RAOs"): for a
 // wave component of amplitude a, period T and direction beta relative to the heading (the
 // direction it travels toward, from the bow toward starboard: 0 following seas, 180 deg head
-// seas) whose crest phase at the vessel's reference point is theta(t) (eta = a cos theta),
-// degree of freedom j answers
+// seas) whose crest phase at the vessel's reference point is theta(t) (increasing in time,
+// eta = a cos theta), degree of freedom j answers
 //   xi_j(t) = a |H_j(T, beta)| cos(theta(t) - phi_j(T, beta))
 // (phi_j the lag of the response's maximum behind the crest). Tables are bilinear in period
 // and direction, with the complex value H = |H| e^{-i phi} interpolated (so that phases wrap).

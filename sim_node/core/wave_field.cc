@@ -178,6 +178,12 @@ double WaveField::RampRate(double t) const {
   return 0.5 * kPi / ramp_ * std::sin(kPi * t / ramp_);
 }
 
+double WaveField::RampAcceleration(double t) const {
+  // d2r/dt2 = pi^2 / (2 T_r^2) cos(pi t / T_r) on (0, T_r)
+  if (ramp_ <= 0.0 || t <= 0.0 || t >= ramp_) return 0.0;
+  return 0.5 * kPi * kPi / (ramp_ * ramp_) * std::cos(kPi * t / ramp_);
+}
+
 double WaveField::Elevation(double x, double y, double t) const {
   // eta = r(t) sum a cos th
   if (terms_.empty()) return 0.0;

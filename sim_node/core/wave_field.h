@@ -157,6 +157,10 @@ class WaveField {
   double gravity() const { return gravity_; }
   double density() const { return density_; }
   double ramp() const { return ramp_; }
+  // the start-up ramp r(t) of the amplitudes and its first two derivatives
+  double Ramp(double t) const;
+  double RampRate(double t) const;
+  double RampAcceleration(double t) const;
 
  private:
   // precomputed per component
@@ -174,10 +178,6 @@ class WaveField {
     double inv_1pq;   // 1 / (1 + q)
     double cos_b, sin_b;
   };
-  // r(t) and dr/dt
-  double Ramp(double t) const;
-  double RampRate(double t) const;
-
   double depth_ = std::numeric_limits<double>::infinity();
   double gravity_ = 9.81;
   double density_ = 1025.0;

@@ -27,6 +27,10 @@ bool EndFrame(const core::Simulation& sim, const core::CableEnd& end, std::strin
       *parent = FrdFrame(sim.body_name(sim.num_spheres() + end.body));
       *offset = end.at_B;
       return true;
+    case core::EndKind::kVessel:
+      *parent = FrdFrame(sim.body_name(sim.num_spheres() + sim.num_vehicles() + end.body));
+      *offset = end.at_B;
+      return true;
     case core::EndKind::kFree:
     case core::EndKind::kDriven:
       return false;

@@ -48,13 +48,14 @@ size_t CountMarkers(const core::Simulation& sim) {
   return n;
 }
 
-// the body the sea patches follow: the first vehicle with a propeller, else the first
-// vehicle; -1: none (the cable's start node)
+// the body the sea patches follow: the first vehicle with a propeller, else the first vessel,
+// else the first vehicle; -1: none (the cable's start node)
 int TowVehicle(const core::Simulation& sim) {
   const std::vector<core::Vehicle>& vehicles = sim.model().vehicles;
   for (size_t v = 0; v < vehicles.size(); ++v) {
     if (vehicles[v].params.has_propeller) return sim.num_spheres() + static_cast<int>(v);
   }
+  if (sim.num_vessels() > 0) return sim.num_spheres() + sim.num_vehicles();
   return vehicles.empty() ? -1 : sim.num_spheres();
 }
 
@@ -139,6 +140,18 @@ SceneMarkers::SceneMarkers(const core::Simulation& sim) : msg{} {
   int fin_id = 0;
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const std::string& name = sim.body_name(b);
+    if (sim.body_is_vessel(b)) {
+      // the scene gives a vessel no geometry: a box of kVesselMarkerSize, its keel at the origin
+      MarkerMsg& m = Add("hull", b, visualization_msgs_msg_dds__Marker_Constants_CUBE, name);
+      SetPose(core::Vec3(0.0, 0.0, 0.5 * kVesselMarkerSize.z() - kVesselMarkerDraught),
+              Eigen::Quaterniond::Identity(), &m.pose);
+      m.scale.x = kVesselMarkerSize.x();
+      m.scale.y = kVesselMarkerSize.y();
+      m.scale.z = kVesselMarkerSize.z();
+      m.color = Rgba(0.6f, 0.6f, 0.65f, 1.0f);
+      m.frame_locked = true;
+      continue;
+    }
     if (!sim.body_is_vehicle(b)) {
       const core::SphereBody& s = model.spheres[static_cast<size_t>(b)];
       const double d = 2.0 * std::cbrt(3.0 * s.volume / (4.0 * kPi));

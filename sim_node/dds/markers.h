@@ -7,7 +7,9 @@
 //                            kTensionLegendMax red); line width kCableLineWidth
 //   ns "hull"         id b   per body, in frame <b> (FLU): a vehicle as a cylinder of its
 //                            length and diameter along x about the body origin; a sphere body
-//                            as the sphere of its volume
+//                            as the sphere of its volume; a vessel as a box of
+//                            kVesselMarkerSize whose keel is kVesselMarkerDraught below the
+//                            origin (the scene gives a vessel no geometry)
 //   ns "fins"         id k   per lifting surface of every vehicle (numbered on), in <b>: a
 //                            plate of span sqrt(S AR), chord S / span, thickness kFinThickness
 //                            at its centre of pressure, its normal along the plate's thin axis
@@ -25,8 +27,8 @@
 //                            (x, y, d(x, y)), d the seabed depth (core/seabed.h: flat, plane or
 //                            grid); one colour
 //
-// The tow vehicle: the first vehicle with a propeller, else the first vehicle, else the patch
-// follows the first cable's start node.
+// The tow vehicle: the first vehicle with a propeller, else the first vessel, else the first
+// vehicle, else the patch follows the first cable's start node.
 
 //
 // Markers in order: the cables, hulls, fins, force arrows, sea surface, seabed.
@@ -46,6 +48,9 @@ namespace towsim::dds {
 inline constexpr double kTensionLegendMax = 5000.0;  // red at and above [N]
 inline constexpr double kCableLineWidth = 0.25;      // drawn width of the cable [m]
 inline constexpr double kFinThickness = 0.03;        // drawn thickness of a fin [m]
+// a vessel's drawn box (length, beam, height) [m] and its draught below the origin [m]
+inline const Eigen::Vector3d kVesselMarkerSize(40.0, 10.0, 8.0);
+inline constexpr double kVesselMarkerDraught = 4.0;
 inline constexpr double kForceArrowScale = 1.0e-3;   // arrow length per force [m/N]
 inline constexpr int kSeaPatchCells = 16;            // cells per side of the sea patches
 inline constexpr double kSeaPatchCellSize = 12.5;    // [m]: a 200 m square

@@ -284,7 +284,7 @@ void CsvWriter::WriteAttachments(const core::Simulation& sim, int b, std::string
     for (int e = 0; e < 2; ++e) {
       if (sim.EndBody(e, c) != b) continue;
       const core::Vec3 f = q.conjugate() * sim.end_force(e, c);
-      const core::Vec3 m = sim.body_is_vehicle(b)
+      const core::Vec3 m = !sim.body_is_sphere(b)
                                ? core::Vec3(sim.system().End(e, c).at_B.cross(f))
                                : core::Vec3::Zero();
       Row row(line);

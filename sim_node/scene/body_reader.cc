@@ -8,6 +8,7 @@
 
 #include "scene/config_error.h"
 #include "scene/vehicle_reader.h"
+#include "scene/vessel_reader.h"
 
 namespace towsim::scene::internal {
 namespace {
@@ -17,20 +18,32 @@ bool Allowed(MapKind kind, const std::string& key) {
   return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
-// a key of the scene's body entry that belongs to the other type of body
-void CheckKeysOfType(const MapReader& scene_keys, bool vehicle) {
+// the body types (the values of `type`), their model files' kinds and the scene keys of their
+// initial state
+const std::vector<std::string> kTypes = {"sphere", "vehicle", "vessel"};
+constexpr MapKind kFileKind[] = {MapKind::kModelFile, MapKind::kVehicleFile, MapKind::kVesselFile};
+const std::vector<std::string> kStateKeys[] = {
+    {"position", "velocity"}, {"position", "euler_deg", "velocity", "command"},
+    {"position", "euler_deg"}};
+
+// the key of the scene's body entry belongs to body type `type`
+bool OfType(const std::string& key, size_t type) {
+  if (key == "type" || key == "model") return true;
+  const std::vector<std::string>& state = kStateKeys[type];
+  return Allowed(kFileKind[type], key) ||
+         std::find(state.begin(), state.end(), key) != state.end();
+}
+
+// a key of the scene's body entry that belongs to another type of body
+void CheckKeysOfType(const MapReader& scene_keys, size_t type) {
   for (const auto& [key, value] : scene_keys.entries()) {
-    const bool sphere_only =
-        Allowed(MapKind::kModelFile, key) && !Allowed(MapKind::kVehicleFile, key);
-    const bool vehicle_only =
-        (Allowed(MapKind::kVehicleFile, key) && !Allowed(MapKind::kModelFile, key)) ||
-        key == "euler_deg" || key == "command";
-    if (vehicle && sphere_only) value.Fail("applies only to type: sphere (this body is a vehicle)");
-    if (!vehicle && vehicle_only) {
-      value.Fail(
-          "applies only to type: vehicle (this body is a sphere, whose frame stays "
-          "aligned with the world)");
-    }
+    if (OfType(key, type)) continue;
+    std::string types;
+    for (size_t t = 0; t < kTypes.size(); ++t)
+      if (OfType(key, t)) types += (types.empty() ? "type: " : " or type: ") + kTypes[t];
+    std::string why = "this body is a " + kTypes[type];
+    if (type == 0) why += ", whose frame stays aligned with the world";
+    value.Fail("applies only to " + types + " (" + why + ")");
   }
 }
 
@@ -82,25 +95,31 @@ void ReadBody(const std::string& name, const Field& field, const std::string& ba
               BodiesInput* out) {
   const MapReader scene_keys(field, MapKind::kBody);
   std::optional<Field> file_root;
+  std::string model_dir;  // the model file's folder: files it names are relative to it
   if (scene_keys.Has("model")) {
     file_root.emplace(LoadModelFile(scene_keys.Get("model"), field.path(), base_dir));
+    std::filesystem::path path(scene_keys.Get("model").String());
+    if (path.is_relative()) path = std::filesystem::path(base_dir) / path;
+    model_dir = path.lexically_normal().parent_path().string();
+    if (model_dir.empty()) model_dir = ".";
   }
   // the type: the scene's, else the model file's
   const Field type =
       scene_keys.Has("type") || !file_root ? scene_keys.Get("type") : FileType(*file_root);
   if (!type.present()) {
-    type.Fail("is required (type: sphere or type: vehicle, here or in the model file)");
+    type.Fail(
+        "is required (type: sphere, type: vehicle or type: vessel, here or in the model file)");
   }
-  const bool vehicle = type.Choice({"sphere", "vehicle"}) == 1;
+  const size_t kind = type.Choice(kTypes);
 
   // the keys of that type, in the model file and in the scene
   std::optional<MapReader> file_keys;
-  if (file_root) {
-    file_keys.emplace(*file_root, vehicle ? MapKind::kVehicleFile : MapKind::kModelFile);
-  }
-  CheckKeysOfType(scene_keys, vehicle);
+  if (file_root) file_keys.emplace(*file_root, kFileKind[kind]);
+  CheckKeysOfType(scene_keys, kind);
   const BodyKeys keys(scene_keys, file_keys);
-  if (vehicle) {
+  if (kind == 2) {
+    out->vessels.push_back(ReadVessel(name, keys, base_dir, model_dir));
+  } else if (kind == 1) {
     out->vehicles.push_back(ReadVehicle(name, keys));
   } else {
     out->spheres.push_back(ReadSphere(name, keys));
@@ -196,6 +215,9 @@ BodyRef FindBody(const core::Model& model, const std::string& name) {
   for (size_t i = 0; i < model.vehicles.size(); ++i) {
     if (model.vehicles[i].name == name) return {BodyRef::kVehicle, static_cast<int>(i)};
   }
+  for (size_t i = 0; i < model.vessels.size(); ++i) {
+    if (model.vessels[i].name == name) return {BodyRef::kVessel, static_cast<int>(i)};
+  }
   return {};
 }
 
@@ -204,6 +226,7 @@ std::string BodyNames(const core::Model& model) {
   for (const core::SphereBody& body : model.spheres)
     names += (names.empty() ? "" : ", ") + body.name;
   for (const core::Vehicle& v : model.vehicles) names += (names.empty() ? "" : ", ") + v.name;
+  for (const core::Vessel& v : model.vessels) names += (names.empty() ? "" : ", ") + v.name;
   return names.empty() ? "none" : names;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // bodies: name -> a sphere {type: sphere, mass, volume, drag_coefficient,
-// added_mass_coefficient, position, velocity} or a 6-DOF vehicle {type: vehicle, <VehicleParams
-// keys>, position, euler_deg, velocity, command}; with `model: <file>` the body's keys come from
+// added_mass_coefficient, position, velocity}, a 6-DOF vehicle {type: vehicle, <VehicleParams
+// keys>, position, euler_deg, velocity, command} or a vessel {type: vessel, ...} (vessel_reader.h);
+// with `model: <file>` the body's keys come from
 // that file, and keys given in the scene override the file's (maps such as damping key by key).
 
 #include <optional>
@@ -77,22 +78,23 @@ struct VehicleInput {
 struct BodiesInput {
   std::vector<SphereInput> spheres;    // -> Model::spheres, in document order
   std::vector<VehicleInput> vehicles;  // -> Model::vehicles, in document order
+  std::vector<core::Vessel> vessels;   // -> Model::vessels, in document order
 };
 
 // Reads the bodies map (absent: no bodies). Model paths are relative to `base_dir`; errors
 // inside a model file name that file and line.
 BodiesInput ReadBodies(const Field& bodies, const std::string& base_dir);
 
-// A body of the scene by name: a sphere (index into Model::spheres) or a vehicle (index into
-// Model::vehicles).
+// A body of the scene by name: a sphere (index into Model::spheres), a vehicle (index into
+// Model::vehicles) or a vessel (index into Model::vessels).
 struct BodyRef {
-  enum Kind { kNone, kSphere, kVehicle };
+  enum Kind { kNone, kSphere, kVehicle, kVessel };
   Kind kind = kNone;
   int index = -1;
 };
 BodyRef FindBody(const core::Model& model, const std::string& name);
 
-// "towfish, tow_vehicle" for messages: spheres, then vehicles ("none" when empty)
+// "towfish, tow_vehicle" for messages: spheres, vehicles, then vessels ("none" when empty)
 std::string BodyNames(const core::Model& model);
 
 }  // namespace towsim::scene::internal

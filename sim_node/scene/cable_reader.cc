@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <string>
 
+#include "core/vessel_motion.h"
 #include "core/winch.h"
 #include "scene/body_reader.h"
 #include "scene/line_type_reader.h"
@@ -87,11 +88,13 @@ EndInput ReadEnd(const Field& field, const core::Model& model) {
     if (!free.Boolean()) free.Fail("must be true (to hold the end use fixed, driven or body)");
     end.kind = core::EndKind::kFree;
   } else {
-    // the body must exist: a sphere (kSphere) or a vehicle (kVehicle)
+    // the body must exist: a sphere (kSphere), a vehicle (kVehicle) or a vessel (kVessel)
     const Field body = map.Get("body");
     const BodyRef ref = FindBody(model, body.String());
     if (ref.kind == BodyRef::kNone) body.Fail("no such body (bodies: " + BodyNames(model) + ")");
-    end.kind = ref.kind == BodyRef::kVehicle ? core::EndKind::kVehicle : core::EndKind::kSphere;
+    end.kind = ref.kind == BodyRef::kVehicle  ? core::EndKind::kVehicle
+               : ref.kind == BodyRef::kVessel ? core::EndKind::kVessel
+                                              : core::EndKind::kSphere;
     end.body = ref.index;
     end.at_B = map.Vector("at", core::Vec3::Zero());
   }
@@ -108,17 +111,24 @@ core::Vec3 EndPosition(const core::CableEnd& end, const core::Model& model) {
     const core::Vehicle& v = model.vehicles[end.body];
     return v.position + core::QuaternionFromEulerZYX(v.euler) * end.at_B;
   }
+  if (end.kind == core::EndKind::kVessel) {
+    return core::VesselMotion(model.vessels[end.body], model.environment.waves)
+        .At(0.0)
+        .PointAt(end.at_B);
+  }
   return end.position;
 }
 
 // the name of the body an end is attached to
 const std::string& EndBodyName(const core::CableEnd& end, const core::Model& model) {
+  if (end.kind == core::EndKind::kVessel) return model.vessels[end.body].name;
   return end.kind == core::EndKind::kVehicle ? model.vehicles[end.body].name
                                              : model.spheres[end.body].name;
 }
 
 bool OnBody(const core::CableEnd& end) {
-  return end.kind == core::EndKind::kSphere || end.kind == core::EndKind::kVehicle;
+  return end.kind == core::EndKind::kSphere || end.kind == core::EndKind::kVehicle ||
+         end.kind == core::EndKind::kVessel;
 }
 
 void CheckEnds(const EndInput& start, const EndInput& end, const core::Model& model) {
@@ -275,10 +285,16 @@ core::CableParams ReadCable(const Field& field, const Field& line_types,
   if (cable.Has("winch")) c.winch = ReadWinch(cable, c, start, model);
   CheckStaticStrain(c, model, line_type);
 
-  // initial velocity: given, else that of a driven end, else zero
+  // initial velocity: given, else that of a driven end or a vessel, else zero
   core::Vec3 velocity = core::Vec3::Zero();
-  if (c.start.kind == core::EndKind::kDriven) velocity = c.start.velocity;
-  if (c.end.kind == core::EndKind::kDriven) velocity = c.end.velocity;
+  for (const core::CableEnd* e : {&c.start, &c.end}) {
+    if (e->kind == core::EndKind::kDriven) velocity = e->velocity;
+    if (e->kind == core::EndKind::kVessel) {
+      velocity = core::VesselMotion(model.vessels[e->body], model.environment.waves)
+                     .At(0.0)
+                     .velocity;
+    }
+  }
   c.initial_velocity = cable.Vector("initial_velocity", velocity);
   return c;
 }

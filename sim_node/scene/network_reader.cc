@@ -108,7 +108,9 @@ std::vector<core::CableParams> ReadCables(const Field& field, const Field& line_
     held[s] = model.environment.water_density * model.spheres[s].volume > model.spheres[s].mass;
   for (int c = 0; c < nc; ++c) {
     for (const core::CableEnd* e : {&cables[c].start, &cables[c].end}) {
-      if (e->kind == core::EndKind::kFixed || e->kind == core::EndKind::kDriven)
+      // a fixed or driven point or a vessel: its motion is given
+      if (e->kind == core::EndKind::kFixed || e->kind == core::EndKind::kDriven ||
+          e->kind == core::EndKind::kVessel)
         held[ns + nv + c] = true;
       if (e->kind == core::EndKind::kSphere) parts.Join(ns + nv + c, e->body);
       if (e->kind == core::EndKind::kVehicle) parts.Join(ns + nv + c, ns + e->body);

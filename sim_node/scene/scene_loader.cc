@@ -11,6 +11,8 @@
 #include "scene/environment_reader.h"
 #include "scene/network_reader.h"
 #include "scene/overrides.h"
+#include "scene/rao_file.h"
+#include "scene/time_history_file.h"
 #include "scene/script_reader.h"
 #include "scene/vehicle_reader.h"
 #include "scene/yaml_reader.h"
@@ -76,6 +78,33 @@ core::Publishing ReadPublish(const Field& field) {
   return p;
 }
 
+// a vessel's RAOs cover the scene's sea and its time history the run (docs/vessels.md): else
+// the error names the key, what is not covered and the rule
+void CheckVesselCoverage(const Field& bodies_field, const core::Model& model) {
+  const MapReader bodies(bodies_field, MapKind::kBodies);
+  for (const core::Vessel& v : model.vessels) {
+    const MapReader body(bodies.Get(v.name), MapKind::kBody);
+    const auto at = [&](const std::string& key) {
+      return body.Has(key) ? body.Get(key) : body.field();
+    };
+    if (v.raos && !v.raos->extrapolate) {
+      bool turns = false;
+      for (const core::CourseChange& c : v.course) turns |= c.set_heading || c.set_turn_rate;
+      const std::string problem = RaoCoverageProblem(
+          *v.raos, model.environment.waves.components(), turns, v.euler.z());
+      if (!problem.empty()) {
+        at("raos").Fail(problem +
+                        "; give RAOs that cover the sea, or rao_extrapolation: hold to hold "
+                        "the nearest entry");
+      }
+    }
+    if (v.time_history) {
+      const std::string problem = TimeHistoryCoverageProblem(*v.time_history, model.time.duration);
+      if (!problem.empty()) at("time_history").Fail(problem);
+    }
+  }
+}
+
 core::Model BuildModel(const Field& root, const std::string& base_dir) {
   const MapReader scene(root, MapKind::kScene);
   core::Model model;
@@ -90,6 +119,7 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   const internal::BodiesInput bodies = internal::ReadBodies(scene.Get("bodies"), base_dir);
   for (const internal::SphereInput& sphere : bodies.spheres) model.spheres.push_back(sphere.body);
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
+  model.vessels = bodies.vessels;
   internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
   // cable: the one-cable form (a cable named `cable`); cables: a network (network_reader.h)
   if (scene.Has("cable") && scene.Has("cables")) {
@@ -147,7 +177,8 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   if (security.Has("open_outputs")) {
     model.publishing.open_outputs = security.Get("open_outputs").Boolean();
   }
-  model.script = internal::ReadScript(scene.Get("script"), model);
+  model.script = internal::ReadScript(scene.Get("script"), &model);
+  CheckVesselCoverage(scene.Get("bodies"), model);
   return model;
 }
 
@@ -201,6 +232,10 @@ std::vector<std::string> SceneWarnings(const core::Model& model) {
   for (size_t i = 0; i < model.vehicles.size(); ++i)
     if (!held(core::EndKind::kVehicle, static_cast<int>(i)))
       warnings.push_back("bodies." + model.vehicles[i].name +
+                         ": no cable end holds this body; it moves on its own");
+  for (size_t i = 0; i < model.vessels.size(); ++i)
+    if (!held(core::EndKind::kVessel, static_cast<int>(i)))
+      warnings.push_back("bodies." + model.vessels[i].name +
                          ": no cable end holds this body; it moves on its own");
   return warnings;
 }

@@ -36,6 +36,10 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       "source", "length",   "diameter",   "mass",        "inertia", "r_g",
       "r_b",    "volume",   "added_mass", "munk_moment", "damping", "surfaces",
       "rudder", "elevator", "propeller",  "waterplane"};
+  // a vessel's motion (core::Vessel, docs/vessels.md); its initial pose is the scene's
+  static const std::vector<std::string> kVesselKeys = {
+      "source",  "speed", "max_acceleration",  "max_yaw_acceleration_deg", "harmonic",
+      "raos",    "rao_extrapolation", "time_history", "external"};
   // a line type's properties (core::CableParams)
   static const std::vector<std::string> kLineTypeKeys = {
       "diameter",          "mass_per_length", "density", "axial_stiffness", "youngs_modulus",
@@ -94,9 +98,11 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kBodies, {}},
       // a body in the scene: its initial state and any key of its model (the scene's wins)
       {MapKind::kBody, join({"type", "model", "position", "euler_deg", "velocity", "command"},
-                            {&kSphereKeys, &kVehicleKeys})},
+                            {&kSphereKeys, &kVehicleKeys, &kVesselKeys})},
       {MapKind::kModelFile, join({"type"}, {&kSphereKeys})},
       {MapKind::kVehicleFile, join({"type"}, {&kVehicleKeys})},
+      {MapKind::kVesselFile, join({"type"}, {&kVesselKeys})},
+      {MapKind::kHarmonic, {"dof", "amplitude", "period", "phase_deg"}},
       {MapKind::kAddedMass,
        {"x_udot", "y_vdot", "z_wdot", "k_pdot", "m_qdot", "n_rdot", "y_rdot", "n_vdot", "z_qdot",
         "m_wdot"}},
@@ -116,7 +122,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
         "max_coupling_iterations"}},
       {MapKind::kScriptEntry,
        {"at", "when", "body", "thrust", "rudder", "rudder_deg", "elevator", "elevator_deg",
-        "winch_speed", "winch_length"}},
+        "winch_speed", "winch_length", "speed", "heading_deg", "turn_rate_deg"}},
   };
   return kKeys.at(kind);
 }

@@ -33,6 +33,8 @@ enum class MapKind {
   kBody,         // bodies.<name>: a sphere's or a vehicle's keys, plus its initial state
   kModelFile,    // the file named by bodies.<name>.model, type: sphere
   kVehicleFile,  // the file named by bodies.<name>.model, type: vehicle
+  kVesselFile,   // the file named by bodies.<name>.model, type: vessel
+  kHarmonic,     // <vessel>.harmonic[i]
   kAddedMass,    // <vehicle>.added_mass
   kDamping,      // <vehicle>.damping
   kSurface,      // <vehicle>.surfaces[i]

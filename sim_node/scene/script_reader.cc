@@ -70,9 +70,9 @@ core::ScriptCondition ReadCondition(const Field& field, const core::Model& model
   if (ref.kind == BodyRef::kNone) {
     field.Fail("no vehicle named " + vehicle + " (vehicles: " + VehicleNames(model) + ")");
   }
-  if (ref.kind == BodyRef::kSphere) {
-    field.Fail(vehicle +
-               " is a sphere; conditions are on vehicles (vehicles: " + VehicleNames(model) + ")");
+  if (ref.kind == BodyRef::kSphere || ref.kind == BodyRef::kVessel) {
+    field.Fail(vehicle + (ref.kind == BodyRef::kSphere ? " is a sphere" : " is a vessel") +
+               "; conditions are on vehicles (vehicles: " + VehicleNames(model) + ")");
   }
   c.vehicle = ref.index;
   const std::vector<std::string>& names = QuantityNames();
@@ -97,10 +97,71 @@ core::ScriptCondition ReadCondition(const Field& field, const core::Model& model
   return c;
 }
 
-std::vector<core::ScriptEntry> ReadScript(const Field& field, const core::Model& model) {
+namespace {
+
+// a vessel's course entry {at, body, speed} / {at, body, heading_deg, turn_rate_deg} /
+// {at, body, turn_rate_deg} (docs/vessels.md "Course")
+core::CourseChange ReadCourseChange(const MapReader& map, const core::Vessel& vessel) {
+  const Field& item = map.field();
+  for (const auto& [key, value] : map.entries()) {
+    if (key == "at" || key == "body" || key == "speed" || key == "heading_deg" ||
+        key == "turn_rate_deg")
+      continue;
+    value.Fail("does not apply to a vessel (" + vessel.name +
+               "): its entries are {at, body, speed}, {at, body, heading_deg, turn_rate_deg} "
+               "or {at, body, turn_rate_deg}");
+  }
+  if (vessel.time_history || vessel.external) {
+    item.Fail(vessel.name + " takes its motion from " +
+              (vessel.time_history ? "its time_history" : "another program (external: true)") +
+              ", so the script cannot change its course");
+  }
+  core::CourseChange c;
+  c.at = map.Number("at", Range::AtLeast(0.0), 0.0);
+  if (map.Has("speed")) {
+    c.set_speed = true;
+    c.speed = map.Get("speed").Number();
+  }
+  if (map.Has("turn_rate_deg")) {
+    c.set_turn_rate = true;
+    c.turn_rate = kDegToRad * map.Get("turn_rate_deg").Number();
+  }
+  if (map.Has("heading_deg")) {
+    if (!map.Has("turn_rate_deg")) {
+      map.Get("heading_deg")
+          .Fail("needs turn_rate_deg, the rate of the turn to it [deg/s] (> 0)");
+    }
+    c.set_heading = true;
+    c.heading = kDegToRad * map.Get("heading_deg").Number();
+    if (!(c.turn_rate > 0.0))
+      map.Get("turn_rate_deg").Fail("must be > 0 with heading_deg (the turn takes the shorter way)");
+  }
+  if (!c.set_speed && !c.set_turn_rate) {
+    item.Fail("gives no course change; give speed, heading_deg with turn_rate_deg, or "
+              "turn_rate_deg");
+  }
+  return c;
+}
+
+}  // namespace
+
+std::vector<core::ScriptEntry> ReadScript(const Field& field, core::Model* vessels_model) {
+  const core::Model& model = *vessels_model;
   std::vector<core::ScriptEntry> script;
   for (const Field& item : field.Items()) {
     const MapReader map(item, MapKind::kScriptEntry);
+    // a vessel's entries change its course (core::Vessel::course), not a command
+    if (map.Has("body")) {
+      const BodyRef ref = FindBody(model, map.Get("body").String());
+      if (ref.kind == BodyRef::kVessel) {
+        if (map.Has("when")) map.Get("when").Fail("a vessel's course entries fire at `at`; no when");
+        core::Vessel& vessel = vessels_model->vessels[ref.index];
+        vessel.course.push_back(ReadCourseChange(map, vessel));
+        continue;
+      }
+    }
+    for (const char* key : {"speed", "heading_deg", "turn_rate_deg"})
+      if (map.Has(key)) map.Get(key).Fail("applies only to a vessel's entry (body: <vessel>)");
     core::ScriptEntry entry;
     entry.at = map.Number("at", Range::AtLeast(0.0), 0.0);
     if (map.Has("when")) {

@@ -22,3 +22,5 @@ towsim_add_test(seabed_contact_test LABEL unit SOURCES seabed_contact_test.cc LI
 towsim_add_test(winch_test LABEL unit SOURCES winch_test.cc LIBS towsim::core)
 towsim_add_test(drum_element_test LABEL unit SOURCES drum_element_test.cc LIBS towsim::core)
 towsim_add_test(packet_math_test LABEL unit SOURCES packet_math_test.cc LIBS towsim::core)
+towsim_add_test(vessel_course_test LABEL unit SOURCES vessel_course_test.cc LIBS towsim::core)
+towsim_add_test(vessel_motion_test LABEL unit SOURCES vessel_motion_test.cc LIBS towsim::core)
