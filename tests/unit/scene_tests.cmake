@@ -30,3 +30,6 @@ towsim_add_test(time_history_file_test LABEL unit
 towsim_add_test(rao_coverage_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/rao_coverage_test.cc
   LIBS towsim::scene)
+towsim_add_test(survey_ship_raos_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/survey_ship_raos_test.cc
+  LIBS towsim::scene)
