@@ -1,8 +1,8 @@
 # cmake --install build --prefix P (docs/testing_controllers.md, "The installed package"):
 #   P/bin/                     sim_node, the tools and the controllers (TOWSIM_INSTALLED_PROGRAMS)
 #   P/libexec/towsim/          sim_node_dds (the DDS modes sim_node execs)
-#   P/share/towsim/            scenes/, vehicles/, line_types/, maneuvers/, autopilot/, sweeps/,
-#                              foxglove/,
+#   P/share/towsim/            scenes/, vehicles/, vessels/, line_types/, maneuvers/, autopilot/,
+#                              sweeps/, foxglove/,
 #                              cyclonedds.xml (the loopback configuration for CYCLONEDDS_URI),
 #                              cyclonedds_two_hosts.xml, idl/*.idl,
 #                              ros2/towsim_msgs/ (the ROS 2 package's files), examples/,
@@ -61,7 +61,7 @@ install(DIRECTORY controllers/testing/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/t
 # the configuration, the wire contract and the example
 set(TOWSIM_DATA_DESTINATION ${CMAKE_INSTALL_DATADIR}/towsim)
 install(DIRECTORY config/scenes config/vehicles config/line_types config/maneuvers config/autopilot
-                  config/sweeps
+                  config/sweeps config/vessels
                   config/foxglove
         DESTINATION ${TOWSIM_DATA_DESTINATION})
 install(FILES config/cyclonedds.xml config/cyclonedds_two_hosts.xml

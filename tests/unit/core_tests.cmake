@@ -24,3 +24,7 @@ towsim_add_test(drum_element_test LABEL unit SOURCES drum_element_test.cc LIBS t
 towsim_add_test(packet_math_test LABEL unit SOURCES packet_math_test.cc LIBS towsim::core)
 towsim_add_test(vessel_course_test LABEL unit SOURCES vessel_course_test.cc LIBS towsim::core)
 towsim_add_test(vessel_motion_test LABEL unit SOURCES vessel_motion_test.cc LIBS towsim::core)
+# vessels: RAO lookup, the time history's splines
+towsim_add_test(rao_table_test LABEL unit SOURCES rao_table_test.cc LIBS towsim::core)
+towsim_add_test(cubic_spline_test LABEL unit SOURCES cubic_spline_test.cc LIBS towsim::core)
+towsim_add_test(pose_spline_test LABEL unit SOURCES pose_spline_test.cc LIBS towsim::core)

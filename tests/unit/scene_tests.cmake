@@ -19,3 +19,17 @@ towsim_add_test(line_type_reader_test LABEL unit
 towsim_add_test(network_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/network_reader_test.cc
   LIBS towsim::scene)
+# vessels (scene/rao_file.h, scene/time_history_file.h, scene/rao_coverage.h) and the shipped
+# example RAO table of config/vessels/
+towsim_add_test(rao_file_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/rao_file_test.cc
+  LIBS towsim::scene)
+towsim_add_test(time_history_file_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/time_history_file_test.cc
+  LIBS towsim::scene)
+towsim_add_test(rao_coverage_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/rao_coverage_test.cc
+  LIBS towsim::scene)
+towsim_add_test(survey_ship_raos_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/survey_ship_raos_test.cc
+  LIBS towsim::scene)
