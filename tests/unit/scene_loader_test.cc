@@ -374,7 +374,7 @@ INSTANTIATE_TEST_SUITE_P(
         BrokenCase{"unknown_type", Edit("type: sphere", "type: box"), "bodies.fish.type",
                    "must be one of sphere, vehicle", "t.yaml:14"},
         BrokenCase{"missing_type", Edit("type: sphere, ", ""), "bodies.fish.type",
-                   "is required (type: sphere or type: vehicle", ""},
+                   "is required (type: sphere, type: vehicle or type: vessel", ""},
         BrokenCase{"vehicle_key_on_sphere",
                    Edit("volume: 0.001,", "volume: 0.001, euler_deg: [0, 0, 90],"),
                    "bodies.fish.euler_deg", "applies only to type: vehicle", "t.yaml:14"},

@@ -33,3 +33,7 @@ towsim_add_test(rao_coverage_test LABEL unit
 towsim_add_test(survey_ship_raos_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/survey_ship_raos_test.cc
   LIBS towsim::scene)
+# vessels in scenes (scene/vessel_reader.h): keys, course entries, the rules
+towsim_add_test(vessel_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/vessel_reader_test.cc
+  LIBS towsim::scene)
