@@ -35,9 +35,7 @@ AxisWeights Bracket(const std::vector<double>& v, double x) {
 }
 
 // periods: clamped to the table's range (constant extrapolation)
-AxisWeights PeriodWeights(const RaoTable& t, double period) {
-  return Bracket(t.periods, period);
-}
+AxisWeights PeriodWeights(const RaoTable& t, double period) { return Bracket(t.periods, period); }
 
 // directions: beta' = d0 + (beta - d0 mod 2 pi) in [d0, d0 + 2 pi), then inside the span,
 // across the wrap-around (periodic) or held at the nearer end of the gap (see the header)
@@ -82,8 +80,7 @@ std::complex<double> Interpolate(const RaoTable& t, int dof, const AxisWeights& 
 
 }  // namespace
 
-std::complex<double> RaoAt(const RaoTable& table, VesselDof dof, double period,
-                           double direction) {
+std::complex<double> RaoAt(const RaoTable& table, VesselDof dof, double period, double direction) {
   return Interpolate(table, static_cast<int>(dof), PeriodWeights(table, period),
                      DirectionWeights(table, direction));
 }

@@ -38,8 +38,7 @@ namespace towsim::core {
 // travelling toward `direction` [rad] relative to the heading (0 following seas, pi/2 toward
 // starboard); [m/m] or [rad/m]. A degree of freedom the table does not hold (empty amplitude)
 // answers 0.
-std::complex<double> RaoAt(const RaoTable& table, VesselDof dof, double period,
-                           double direction);
+std::complex<double> RaoAt(const RaoTable& table, VesselDof dof, double period, double direction);
 
 // All six degrees of freedom at once (one search for the six): element j is
 // RaoAt(table, VesselDof(j), period, direction).

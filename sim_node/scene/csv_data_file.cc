@@ -64,8 +64,7 @@ CsvDataFile ReadCsvDataFile(const std::string& path, const std::string& key,
     std::vector<std::string> fields = SplitFields(line);
     if (file.header_line == 0) {
       if (fields != header) {
-        throw ConfigError(key, line, FileLocation(file, number),
-                          "the header must be " + expected);
+        throw ConfigError(key, line, FileLocation(file, number), "the header must be " + expected);
       }
       file.header_line = number;
       continue;
@@ -80,7 +79,8 @@ CsvDataFile ReadCsvDataFile(const std::string& path, const std::string& key,
   if (file.header_line == 0) {
     throw ConfigError(key, path, file.name,
                       "holds no header line: the first line that is not blank or a comment "
-                      "must be " + expected);
+                      "must be " +
+                          expected);
   }
   return file;
 }

@@ -20,8 +20,8 @@ std::string TableRange(const core::RaoTable& t) {
   std::string s = "periods " + FormatNumber(t.periods.front()) + " to " +
                   FormatNumber(t.periods.back()) + " s, directions ";
   if (t.periodic_directions) return s + "the full circle";
-  if (t.directions.size() == 1) return s + FormatNumber(t.directions.front() * kRadToDeg) +
-                                       " deg only";
+  if (t.directions.size() == 1)
+    return s + FormatNumber(t.directions.front() * kRadToDeg) + " deg only";
   return s + FormatNumber(t.directions.front() * kRadToDeg) + " to " +
          FormatNumber(t.directions.back() * kRadToDeg) + " deg";
 }
@@ -45,12 +45,13 @@ bool DirectionCovered(const core::RaoTable& t, double relative) {
 }  // namespace
 
 std::string RaoCoverageProblem(const core::RaoTable& table,
-                               const std::vector<core::WaveComponent>& sea,
-                               bool heading_changes, double initial_heading) {
+                               const std::vector<core::WaveComponent>& sea, bool heading_changes,
+                               double initial_heading) {
   if (sea.empty() || table.periods.empty() || table.directions.empty()) return {};
   if (heading_changes && !table.periodic_directions) {
     return "the vessel's heading changes during the run, so the waves may meet it from any "
-           "direction, but the RAO table (" + TableRange(table) +
+           "direction, but the RAO table (" +
+           TableRange(table) +
            ") does not cover the full circle (its directions must span 0 to 360 deg, or -180 "
            "to 180)";
   }

@@ -29,7 +29,7 @@ namespace towsim::scene {
 // `initial_heading` [rad] is the heading the relative directions are taken from when
 // `heading_changes` is false.
 std::string RaoCoverageProblem(const core::RaoTable& table,
-                               const std::vector<core::WaveComponent>& sea,
-                               bool heading_changes, double initial_heading);
+                               const std::vector<core::WaveComponent>& sea, bool heading_changes,
+                               double initial_heading);
 
 }  // namespace towsim::scene

@@ -65,8 +65,7 @@ Row ParseRow(const CsvDataFile& file, const CsvDataRow& r, const std::string& ke
   const auto dof = std::find(kDofNames.begin(), kDofNames.end(), r.fields[kDof]);
   if (dof == kDofNames.end()) fail(kDof, "dof must be one of surge, sway, heave, roll, pitch, yaw");
   row.dof = static_cast<int>(dof - kDofNames.begin());
-  if (!internal::ParseFiniteNumber(r.fields[kAmplitude], &row.amplitude) ||
-      row.amplitude < 0.0) {
+  if (!internal::ParseFiniteNumber(r.fields[kAmplitude], &row.amplitude) || row.amplitude < 0.0) {
     fail(kAmplitude,
          "amplitude must be a finite number >= 0 (m/m for surge, sway and heave, deg/m for "
          "roll, pitch and yaw)");
@@ -125,9 +124,9 @@ core::RaoTable ReadRaoFile(const std::string& path, const std::string& key) {
     }
     const size_t k = IndexOf(periods, r.period) * nd + IndexOf(directions, r.direction);
     if (g[k] != 0) {
-      throw ConfigError(key, file.rows[&r - rows.data()].fields[kPeriod] + "," +
-                                 file.rows[&r - rows.data()].fields[kDirection] + "," +
-                                 kDofNames[r.dof],
+      throw ConfigError(key,
+                        file.rows[&r - rows.data()].fields[kPeriod] + "," +
+                            file.rows[&r - rows.data()].fields[kDirection] + "," + kDofNames[r.dof],
                         FileLocation(file, r.line),
                         "duplicate of line " + std::to_string(g[k]) +
                             " (the same period, direction_deg and dof)");
@@ -141,11 +140,11 @@ core::RaoTable ReadRaoFile(const std::string& path, const std::string& key) {
       for (size_t d = 0; d < nd; ++d) {
         if (given[j][i * nd + d] != 0) continue;
         fail_file(kDofNames[j],
-                  std::string(kDofNames[j]) + " has no row for period " +
-                      FormatNumber(periods[i]) + " s, direction_deg " +
-                      FormatNumber(directions[d]) + " (each dof given must give every period and "
-                      "direction of the table: " + std::to_string(np) + " periods x " +
-                      std::to_string(nd) + " directions)");
+                  std::string(kDofNames[j]) + " has no row for period " + FormatNumber(periods[i]) +
+                      " s, direction_deg " + FormatNumber(directions[d]) +
+                      " (each dof given must give every period and "
+                      "direction of the table: " +
+                      std::to_string(np) + " periods x " + std::to_string(nd) + " directions)");
       }
     }
   }
@@ -156,8 +155,7 @@ core::RaoTable ReadRaoFile(const std::string& path, const std::string& key) {
       for (size_t i = 0; i < np; ++i) {
         const Row& first = *at[j][i * nd];
         const Row& last = *at[j][i * nd + nd - 1];
-        const bool both_zero =
-            first.amplitude <= kCircleTol && last.amplitude <= kCircleTol;
+        const bool both_zero = first.amplitude <= kCircleTol && last.amplitude <= kCircleTol;
         if (std::abs(first.amplitude - last.amplitude) <= kCircleTol &&
             (both_zero || std::abs(PhaseDifferenceDeg(first.phase, last.phase)) <= kCircleTol)) {
           continue;
@@ -166,12 +164,13 @@ core::RaoTable ReadRaoFile(const std::string& path, const std::string& key) {
         throw ConfigError(
             key, raw.fields[kAmplitude] + "," + raw.fields[kPhase], FileLocation(file, last.line),
             "the directions span the full circle (" + FormatNumber(directions.front()) + " to " +
-                FormatNumber(directions.back()) + " deg), so the rows of both ends are the same "
-                "direction and must agree: " + std::string(kDofNames[j]) + " at period " +
-                FormatNumber(periods[i]) + " s has amplitude,phase_deg " +
-                FormatNumber(last.amplitude) + "," + FormatNumber(last.phase) + " here and " +
-                FormatNumber(first.amplitude) + "," + FormatNumber(first.phase) + " at line " +
-                std::to_string(first.line));
+                FormatNumber(directions.back()) +
+                " deg), so the rows of both ends are the same "
+                "direction and must agree: " +
+                std::string(kDofNames[j]) + " at period " + FormatNumber(periods[i]) +
+                " s has amplitude,phase_deg " + FormatNumber(last.amplitude) + "," +
+                FormatNumber(last.phase) + " here and " + FormatNumber(first.amplitude) + "," +
+                FormatNumber(first.phase) + " at line " + std::to_string(first.line));
       }
     }
   }

@@ -84,8 +84,8 @@ TEST(CubicSpline, FollowsASineAndItsDerivativesAwayFromTheEnds) {
     const CubicSpline::Value v = s.Evaluate(x);
     worst_y = std::max(worst_y, std::abs(v.y - c.Y(x)) / c.amplitude);
     worst_dy = std::max(worst_dy, std::abs(v.dy - c.Dy(x)) / (c.amplitude * c.omega()));
-    worst_d2y = std::max(worst_d2y,
-                         std::abs(v.d2y - c.D2y(x)) / (c.amplitude * c.omega() * c.omega()));
+    worst_d2y =
+        std::max(worst_d2y, std::abs(v.d2y - c.D2y(x)) / (c.amplitude * c.omega() * c.omega()));
   }
   EXPECT_LT(worst_y, kPositionRelTol);
   EXPECT_LT(worst_dy, kRateRelTol);

@@ -36,12 +36,12 @@ TEST(SurveyShipRaos, ReadsAsAFullCircleOfHeaveRollAndPitch) {
   EXPECT_EQ(t.directions.size(), 24u);  // 0 .. 345 every 15 (360 dropped)
   EXPECT_EQ(t.periods.front(), 1.0);
   EXPECT_EQ(t.periods.back(), 30.0);
-  for (core::VesselDof d : {core::VesselDof::kHeave, core::VesselDof::kRoll,
-                            core::VesselDof::kPitch}) {
+  for (core::VesselDof d :
+       {core::VesselDof::kHeave, core::VesselDof::kRoll, core::VesselDof::kPitch}) {
     EXPECT_EQ(t.amplitude[static_cast<int>(d)].size(), t.periods.size() * 24);
   }
-  for (core::VesselDof d : {core::VesselDof::kSurge, core::VesselDof::kSway,
-                            core::VesselDof::kYaw}) {
+  for (core::VesselDof d :
+       {core::VesselDof::kSurge, core::VesselDof::kSway, core::VesselDof::kYaw}) {
     EXPECT_TRUE(t.amplitude[static_cast<int>(d)].empty());
   }
 }
@@ -106,8 +106,8 @@ TEST(SurveyShipRaos, CoversAJonswapSeaOfPeakPeriod8sFromAnyHeading) {
       s.direction = 0.7 * seed;
       s.components = 200;
       s.seed = seed;
-      const core::WaveField sea = core::WaveField::Irregular(
-          s, std::numeric_limits<double>::infinity(), kG, 1025.0);
+      const core::WaveField sea =
+          core::WaveField::Irregular(s, std::numeric_limits<double>::infinity(), kG, 1025.0);
       EXPECT_EQ(RaoCoverageProblem(t, sea.components(), /*heading_changes=*/true, 0.0), "")
           << "gamma " << gamma << " seed " << seed;
       for (const core::WaveComponent& c : sea.components()) {

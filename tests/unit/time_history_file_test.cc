@@ -75,8 +75,7 @@ TEST_F(TimeHistoryFile, UnwrapsYawAcrossTheWrapOfTheLogger) {
   std::string text = kHeader;
   for (int i = 0; i <= 40; ++i) {
     const double yaw = 0.5 * i;  // 20 rad: more than three turns
-    text += std::to_string(i) + ",0,0,0,0,0," + std::to_string(std::remainder(yaw, 2 * kPi)) +
-            "\n";
+    text += std::to_string(i) + ",0,0,0,0,0," + std::to_string(std::remainder(yaw, 2 * kPi)) + "\n";
   }
   const core::TimeHistory turns = ReadTimeHistoryFile(Write(text), kKey);
   EXPECT_NEAR(turns.pose.back()(5), 20.0, 1e-5);  // the file's 6 decimals
