@@ -3,6 +3,8 @@
 // added_mass_coefficient, position, velocity} or a 6-DOF vehicle {type: vehicle, <VehicleParams
 // keys>, position, euler_deg, velocity, command}; with `model: <file>` the body's keys come from
 // that file, and keys given in the scene override the file's (maps such as damping key by key).
+// A vehicle with `scale: lambda` is its model file's vehicle lambda times the size
+// (core/vehicle_scaling.h), its model keys all from the file.
 
 #include <optional>
 #include <string>
