@@ -84,8 +84,9 @@ void ApplyScale(const MapReader& scene, bool has_model_file, core::VehicleParams
   const bool positive = params->length > 0.0 && params->mass > 0.0 &&
                         params->inertia.minCoeff() > 0.0 && params->thrust_time_constant > 0.0;
   if (!finite || !positive) {
-    scale.Fail("is out of range: the scaled mass (lambda^3) and inertia (lambda^5) must be finite "
-               "and > 0");
+    scale.Fail(
+        "is out of range: the scaled mass (lambda^3) and inertia (lambda^5) must be finite "
+        "and > 0");
   }
 }
 

@@ -31,7 +31,7 @@ namespace {
 constexpr double kDeg = kPi / 180.0;
 constexpr double kH = 0.02;  // RK4 step [s], the same for every size (as a scene would have)
 // the model's design depth (waterplane.design_depth of tow_vehicle.yaml): where it floats level
-constexpr double kDepth = 3.5;  // [m]
+constexpr double kDepth = 3.5;           // [m]
 constexpr double kModelThrust = 1500.0;  // the model's thrust [N] (about 6 m/s)
 
 // tow_vehicle.yaml read through the scene loader, with `scale: lambda` unless lambda is 1
@@ -44,8 +44,9 @@ VehicleParams TowVehicle(double lambda) {
       "cable: {length: 10, elements: 1, diameter: 0.01, density: 1300, youngs_modulus: 1e9,\n"
       "        initial: vertical, start: {body: v}, end: {free: true}}\n"
       "bodies:\n"
-      "  v: {model: '" + std::string(TOWSIM_SOURCE_DIR) + "/config/vehicles/tow_vehicle.yaml'" +
-      scale + ", position: [0, 0, 0]}\n";
+      "  v: {model: '" +
+      std::string(TOWSIM_SOURCE_DIR) + "/config/vehicles/tow_vehicle.yaml'" + scale +
+      ", position: [0, 0, 0]}\n";
   return scene::LoadSceneFromString(scene, "froude.yaml", "/", {}).vehicles.at(0).params;
 }
 
@@ -127,9 +128,10 @@ TEST(FroudeScaling, SteadySpeedAndTurningRadiusOfTheScaledTowVehicle) {
   const VehicleParams model = TowVehicle(1.0);
   const double u1 = SteadySpeed(model, 1.0);
   const Turn t1 = SteadyTurn(model, 1.0, u1);
-  std::printf("model (8.2 m): thrust %.0f N, steady u = %.6f m/s; 20 deg rudder: R = %.4f m "
-              "(track %.4f m), U = %.5f m/s, r = %.4f deg/s\n",
-              kModelThrust, u1, t1.radius_kinematic, t1.radius_track, t1.speed, t1.yaw_rate / kDeg);
+  std::printf(
+      "model (8.2 m): thrust %.0f N, steady u = %.6f m/s; 20 deg rudder: R = %.4f m "
+      "(track %.4f m), U = %.5f m/s, r = %.4f deg/s\n",
+      kModelThrust, u1, t1.radius_kinematic, t1.radius_track, t1.speed, t1.yaw_rate / kDeg);
   // a sanity anchor on the model itself (docs/vehicles.md §6: 6 m/s needs 1509.9 N, R = 24.0 m
   // at that thrust)
   EXPECT_NEAR(u1, 6.0, 0.05);
@@ -141,13 +143,14 @@ TEST(FroudeScaling, SteadySpeedAndTurningRadiusOfTheScaledTowVehicle) {
     const double u = SteadySpeed(scaled, lambda);
     const Turn t = SteadyTurn(scaled, lambda, u);
     const double speed_ratio = u / u1, radius_ratio = t.radius_kinematic / t1.radius_kinematic;
-    std::printf("scale %.1f (%.1f m): thrust %.0f N, steady u = %.6f m/s, u / u_1 = %.9f "
-                "(sqrt lambda x (1 %+.1e)); R = %.4f m, R / R_1 = %.9f (lambda x (1 %+.1e)), "
-                "track R / R_1 = lambda x (1 %+.1e); r / r_1 = 1 / sqrt lambda x (1 %+.1e)\n",
-                lambda, scaled.length, kModelThrust * lambda * lambda * lambda, u, speed_ratio,
-                speed_ratio / std::sqrt(lambda) - 1.0, t.radius_kinematic, radius_ratio,
-                radius_ratio / lambda - 1.0, t.radius_track / t1.radius_track / lambda - 1.0,
-                t.yaw_rate / t1.yaw_rate * std::sqrt(lambda) - 1.0);
+    std::printf(
+        "scale %.1f (%.1f m): thrust %.0f N, steady u = %.6f m/s, u / u_1 = %.9f "
+        "(sqrt lambda x (1 %+.1e)); R = %.4f m, R / R_1 = %.9f (lambda x (1 %+.1e)), "
+        "track R / R_1 = lambda x (1 %+.1e); r / r_1 = 1 / sqrt lambda x (1 %+.1e)\n",
+        lambda, scaled.length, kModelThrust * lambda * lambda * lambda, u, speed_ratio,
+        speed_ratio / std::sqrt(lambda) - 1.0, t.radius_kinematic, radius_ratio,
+        radius_ratio / lambda - 1.0, t.radius_track / t1.radius_track / lambda - 1.0,
+        t.yaw_rate / t1.yaw_rate * std::sqrt(lambda) - 1.0);
     EXPECT_NEAR(speed_ratio, std::sqrt(lambda), kRatioRelTol * std::sqrt(lambda));
     EXPECT_NEAR(radius_ratio, lambda, kRatioRelTol * lambda);
     EXPECT_NEAR(t.radius_track / t1.radius_track, lambda, kRatioRelTol * lambda);

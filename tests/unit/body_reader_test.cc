@@ -90,15 +90,15 @@ TEST(BodyScale, ScaledVehicleIsScaleVehicleOfItsFile) {
     }
   }
   // --set reaches the key like any other
-  const core::Model m = Load("{" + Model("towfish.yaml") + ", position: [0, 0, 7]}",
-                             {"bodies.v.scale=2"});
+  const core::Model m =
+      Load("{" + Model("towfish.yaml") + ", position: [0, 0, 7]}", {"bodies.v.scale=2"});
   EXPECT_EQ(m.vehicles.at(0).params.mass, 416.0 * 8.0);
 }
 
 TEST(BodyScale, CommandsAreCheckedAgainstTheScaledVehicle) {
   // max_thrust 12000 N x 2^3: 50 kN is beyond the file's vehicle, within the scaled one
-  const std::string body = "{" + Model("tow_vehicle.yaml") + ", position: [0, 0, 7], " +
-                           "command: {thrust: 50000}";
+  const std::string body =
+      "{" + Model("tow_vehicle.yaml") + ", position: [0, 0, 7], " + "command: {thrust: 50000}";
   EXPECT_EQ(Error(body + ", scale: 2}"), "");
   EXPECT_EQ(Error(body + "}"),
             "bodies.v.command.thrust = 50000 (s.yaml:6): must be in [-max_thrust/4, max_thrust] "

@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/vehicle_model.h"
@@ -24,85 +25,103 @@ struct VehicleField {
 // the rows for `p` (its surfaces' count decides the surface rows)
 inline std::vector<VehicleField> VehicleFields(const core::VehicleParams& p) {
   using P = core::VehicleParams;
+  using S = core::LiftingSurface;
+  using Get = std::function<double&(P&)>;
+  using Get3 = std::function<core::Vec3&(P&)>;
   std::vector<VehicleField> f;
-  const auto add = [&f](std::string name, std::function<double&(P&)> get, int kg, int m, int s) {
-    f.push_back({std::move(name), std::move(get), kg, m, s});
+  const auto add = [&f](const std::string& name, int kg, int m, int s, Get get) {
+    f.push_back({name, std::move(get), kg, m, s});
   };
-  const auto add3 = [&](const std::string& name, std::function<core::Vec3&(P&)> get, int kg,
-                        int m, int s) {
+  const auto add3 = [&add](const std::string& name, int kg, int m, int s, Get3 get) {
     for (int i = 0; i < 3; ++i) {
-      add(name + "[" + std::to_string(i) + "]", [get, i](P& q) -> double& { return get(q)(i); },
-          kg, m, s);
+      add(name + "[" + std::to_string(i) + "]", kg, m, s,
+          [get, i](P& q) -> double& { return get(q)(i); });
     }
   };
-  add("length", [](P& q) -> double& { return q.length; }, 0, 1, 0);
-  add("diameter", [](P& q) -> double& { return q.diameter; }, 0, 1, 0);
-  add("mass", [](P& q) -> double& { return q.mass; }, 1, 0, 0);
-  add3("inertia", [](P& q) -> core::Vec3& { return q.inertia; }, 1, 2, 0);
-  add3("r_g", [](P& q) -> core::Vec3& { return q.r_g; }, 0, 1, 0);
-  add3("r_b", [](P& q) -> core::Vec3& { return q.r_b; }, 0, 1, 0);
-  add("volume", [](P& q) -> double& { return q.volume; }, 0, 3, 0);
-  add("waterplane_area", [](P& q) -> double& { return q.waterplane_area; }, 0, 2, 0);
-  add3("waterplane_point_B", [](P& q) -> core::Vec3& { return q.waterplane_point_B; }, 0, 1, 0);
-  add("design_depth", [](P& q) -> double& { return q.design_depth; }, 0, 1, 0);
-  add("waterplane_inertia_long", [](P& q) -> double& { return q.waterplane_inertia_long; }, 0,
-      4, 0);
-  add("waterplane_inertia_trans", [](P& q) -> double& { return q.waterplane_inertia_trans; }, 0,
-      4, 0);
+  struct Scalar {
+    const char* name;
+    int kg, m, s;
+    double P::*member;
+  };
+  struct Vector {
+    const char* name;
+    int kg, m, s;
+    core::Vec3 P::*member;
+  };
+  // the rigid body, the waterplane and the propeller
+  const Scalar kScalars[] = {
+      {"length", 0, 1, 0, &P::length},
+      {"diameter", 0, 1, 0, &P::diameter},
+      {"mass", 1, 0, 0, &P::mass},
+      {"volume", 0, 3, 0, &P::volume},
+      {"waterplane_area", 0, 2, 0, &P::waterplane_area},
+      {"design_depth", 0, 1, 0, &P::design_depth},
+      {"waterplane_inertia_long", 0, 4, 0, &P::waterplane_inertia_long},
+      {"waterplane_inertia_trans", 0, 4, 0, &P::waterplane_inertia_trans},
+      {"max_thrust", 1, 1, -2, &P::max_thrust},
+      {"thrust_time_constant", 0, 0, 1, &P::thrust_time_constant},
+  };
+  // damping, in the units vehicle_model.h states
+  const Scalar kDamping[] = {
+      {"x_uu", 1, -1, 0, &P::x_uu}, {"y_vv", 1, -1, 0, &P::y_vv}, {"z_ww", 1, -1, 0, &P::z_ww},
+      {"y_rr", 1, 1, 0, &P::y_rr},  {"z_qq", 1, 1, 0, &P::z_qq},  {"m_ww", 1, 0, 0, &P::m_ww},
+      {"n_vv", 1, 0, 0, &P::n_vv},  {"m_qq", 1, 2, 0, &P::m_qq},  {"n_rr", 1, 2, 0, &P::n_rr},
+      {"k_pp", 1, 2, 0, &P::k_pp},  {"y_uv", 1, -1, 0, &P::y_uv}, {"z_uw", 1, -1, 0, &P::z_uw},
+      {"m_uw", 1, 0, 0, &P::m_uw},  {"n_uv", 1, 0, 0, &P::n_uv},  {"y_ur", 1, 0, 0, &P::y_ur},
+      {"z_uq", 1, 0, 0, &P::z_uq},  {"m_uq", 1, 1, 0, &P::m_uq},  {"n_ur", 1, 1, 0, &P::n_ur},
+      {"k_p", 1, 2, -1, &P::k_p},  // N m s
+  };
+  const auto add_scalars = [&add](const auto& table) {
+    for (const Scalar& d : table) {
+      add(d.name, d.kg, d.m, d.s, [m = d.member](P& q) -> double& { return q.*m; });
+    }
+  };
+  add_scalars(kScalars);
+  add_scalars(kDamping);
+  const Vector kVectors[] = {
+      {"inertia", 1, 2, 0, &P::inertia},
+      {"r_g", 0, 1, 0, &P::r_g},
+      {"r_b", 0, 1, 0, &P::r_b},
+      {"waterplane_point_B", 0, 1, 0, &P::waterplane_point_B},
+  };
+  for (const Vector& d : kVectors) {
+    add3(d.name, d.kg, d.m, d.s, [m = d.member](P& q) -> core::Vec3& { return q.*m; });
+  }
   // M_A: force per linear acceleration [kg], force per angular acceleration and moment per
   // linear acceleration [kg m], moment per angular acceleration [kg m^2]
   for (int i = 0; i < 6; ++i) {
     for (int j = 0; j < 6; ++j) {
-      add("added_mass(" + std::to_string(i) + "," + std::to_string(j) + ")",
-          [i, j](P& q) -> double& { return q.added_mass(i, j); }, 1, (i >= 3) + (j >= 3), 0);
+      add("added_mass(" + std::to_string(i) + "," + std::to_string(j) + ")", 1, (i >= 3) + (j >= 3),
+          0, [i, j](P& q) -> double& { return q.added_mass(i, j); });
     }
   }
-  // damping, the units of vehicle_model.h
-  const struct {
-    const char* name;
-    double P::*member;
-    int kg, m, s;
-  } kDamping[] = {
-      {"x_uu", &P::x_uu, 1, -1, 0}, {"y_vv", &P::y_vv, 1, -1, 0}, {"z_ww", &P::z_ww, 1, -1, 0},
-      {"y_rr", &P::y_rr, 1, 1, 0},  {"z_qq", &P::z_qq, 1, 1, 0},  {"m_ww", &P::m_ww, 1, 0, 0},
-      {"n_vv", &P::n_vv, 1, 0, 0},  {"m_qq", &P::m_qq, 1, 2, 0},  {"n_rr", &P::n_rr, 1, 2, 0},
-      {"k_pp", &P::k_pp, 1, 2, 0},  {"y_uv", &P::y_uv, 1, -1, 0}, {"z_uw", &P::z_uw, 1, -1, 0},
-      {"m_uw", &P::m_uw, 1, 0, 0},  {"n_uv", &P::n_uv, 1, 0, 0},  {"y_ur", &P::y_ur, 1, 0, 0},
-      {"z_uq", &P::z_uq, 1, 0, 0},  {"m_uq", &P::m_uq, 1, 1, 0},  {"n_ur", &P::n_ur, 1, 1, 0},
-      {"k_p", &P::k_p, 1, 2, -1},  // N m s
-  };
-  for (const auto& d : kDamping) {
-    const auto member = d.member;
-    add(d.name, [member](P& q) -> double& { return q.*member; }, d.kg, d.m, d.s);
-  }
+  // each lifting surface: a position, an area, the rest dimensionless
   for (size_t k = 0; k < p.surfaces.size(); ++k) {
     const std::string n = "surfaces[" + std::to_string(k) + "].";
-    using S = core::LiftingSurface;
-    const auto surface = [k](P& q) -> S& { return q.surfaces[k]; };
-    add3(n + "position_B", [surface](P& q) -> core::Vec3& { return surface(q).position_B; }, 0,
-         1, 0);
-    add3(n + "normal_B", [surface](P& q) -> core::Vec3& { return surface(q).normal_B; }, 0, 0,
-         0);
-    add(n + "area", [surface](P& q) -> double& { return surface(q).area; }, 0, 2, 0);
-    const struct {
-      const char* name;
-      double S::*member;
-    } kDimensionless[] = {{"aspect_ratio", &S::aspect_ratio}, {"lift_slope", &S::lift_slope},
-                          {"oswald", &S::oswald},             {"cd0", &S::cd0},
-                          {"stall_angle", &S::stall_angle},   {"incidence", &S::incidence},
-                          {"deflection_sign", &S::deflection_sign}};
-    for (const auto& d : kDimensionless) {
-      const auto member = d.member;
-      add(n + d.name, [surface, member](P& q) -> double& { return surface(q).*member; }, 0, 0, 0);
+    add3(n + "position_B", 0, 1, 0, [k](P& q) -> core::Vec3& { return q.surfaces[k].position_B; });
+    add3(n + "normal_B", 0, 0, 0, [k](P& q) -> core::Vec3& { return q.surfaces[k].normal_B; });
+    add(n + "area", 0, 2, 0, [k](P& q) -> double& { return q.surfaces[k].area; });
+    const std::pair<const char*, double S::*> kDimensionless[] = {
+        {"aspect_ratio", &S::aspect_ratio},
+        {"lift_slope", &S::lift_slope},
+        {"oswald", &S::oswald},
+        {"cd0", &S::cd0},
+        {"stall_angle", &S::stall_angle},
+        {"incidence", &S::incidence},
+        {"deflection_sign", &S::deflection_sign}};
+    for (const auto& [name, member] : kDimensionless) {
+      add(n + name, 0, 0, 0, [k, m = member](P& q) -> double& { return q.surfaces[k].*m; });
     }
   }
-  add("rudder.max_deflection", [](P& q) -> double& { return q.rudder.max_deflection; }, 0, 0, 0);
-  add("rudder.max_rate", [](P& q) -> double& { return q.rudder.max_rate; }, 0, 0, -1);
-  add("elevator.max_deflection", [](P& q) -> double& { return q.elevator.max_deflection; }, 0, 0,
-      0);
-  add("elevator.max_rate", [](P& q) -> double& { return q.elevator.max_rate; }, 0, 0, -1);
-  add("max_thrust", [](P& q) -> double& { return q.max_thrust; }, 1, 1, -2);
-  add("thrust_time_constant", [](P& q) -> double& { return q.thrust_time_constant; }, 0, 0, 1);
+  // the fin channels' limits: an angle, an angular rate
+  const std::pair<const char*, core::ActuatorLimits P::*> kChannels[] = {
+      {"rudder", &P::rudder}, {"elevator", &P::elevator}};
+  for (const auto& [name, member] : kChannels) {
+    add(std::string(name) + ".max_deflection", 0, 0, 0,
+        [m = member](P& q) -> double& { return (q.*m).max_deflection; });
+    add(std::string(name) + ".max_rate", 0, 0, -1,
+        [m = member](P& q) -> double& { return (q.*m).max_rate; });
+  }
   return f;
 }
 

@@ -59,8 +59,7 @@ TEST(ScaleVehicle, ScaleOneChangesNothing) {
     const std::vector<VehicleField> fields = VehicleFields(model);
     ASSERT_GT(fields.size(), 100u);
     for (const VehicleField& f : fields) {
-      EXPECT_EQ(Bits(f.get(a)), Bits(f.get(b))) << f.name << ": " << f.get(a) << " -> "
-                                                << f.get(b);
+      EXPECT_EQ(Bits(f.get(a)), Bits(f.get(b))) << f.name << ": " << f.get(a) << " -> " << f.get(b);
     }
   }
 }
@@ -105,8 +104,7 @@ TEST(ScaleVehicle, ScalingComposes) {
     VehicleParams direct = ScaleVehicle(model, 6.0);
     for (const VehicleField& f : VehicleFields(model)) {
       EXPECT_NEAR(f.get(back), f.get(model), kRoundTripRelTol * std::abs(f.get(model))) << f.name;
-      EXPECT_NEAR(f.get(six), f.get(direct), kRoundTripRelTol * std::abs(f.get(direct)))
-          << f.name;
+      EXPECT_NEAR(f.get(six), f.get(direct), kRoundTripRelTol * std::abs(f.get(direct))) << f.name;
     }
   }
 }
@@ -212,8 +210,8 @@ TEST(ScaleVehicle, VehicleModelIsFroudeSimilar) {
         const double force_scale = model.mass * env.gravity + std::abs(model.max_thrust);
         const double moment_scale = force_scale * model.length;
         const double e_force = (f_b.head<3>() / l3 - f_a.head<3>()).norm() / force_scale;
-        const double e_moment = (f_b.tail<3>() / (l3 * lambda) - f_a.tail<3>()).norm() /
-                                moment_scale;
+        const double e_moment =
+            (f_b.tail<3>() / (l3 * lambda) - f_a.tail<3>()).norm() / moment_scale;
         EXPECT_LT(e_force, kSimilarityTol);
         EXPECT_LT(e_moment, kSimilarityTol);
         worst = std::max({worst, e_force, e_moment});
@@ -236,8 +234,7 @@ TEST(ScaleVehicle, VehicleModelIsFroudeSimilar) {
       }
     }
   }
-  std::printf("Froude similarity of the vehicle model: largest relative difference %.2e\n",
-              worst);
+  std::printf("Froude similarity of the vehicle model: largest relative difference %.2e\n", worst);
 }
 
 }  // namespace
