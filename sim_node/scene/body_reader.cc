@@ -1,11 +1,13 @@
 #include "scene/body_reader.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <new>
 #include <optional>
 
+#include "core/vehicle_scaling.h"
 #include "scene/config_error.h"
 #include "scene/vehicle_reader.h"
 #include "scene/vessel_reader.h"
@@ -23,7 +25,7 @@ bool Allowed(MapKind kind, const std::string& key) {
 const std::vector<std::string> kTypes = {"sphere", "vehicle", "vessel"};
 constexpr MapKind kFileKind[] = {MapKind::kModelFile, MapKind::kVehicleFile, MapKind::kVesselFile};
 const std::vector<std::string> kStateKeys[] = {
-    {"position", "velocity"}, {"position", "euler_deg", "velocity", "command"},
+    {"position", "velocity"}, {"position", "euler_deg", "velocity", "command", "scale"},
     {"position", "euler_deg"}};
 
 // the key of the scene's body entry belongs to body type `type`
@@ -67,11 +69,46 @@ SphereInput ReadSphere(const std::string& name, const BodyKeys& keys) {
   return input;
 }
 
-VehicleInput ReadVehicle(const std::string& name, const BodyKeys& keys) {
+// `scale: lambda` on a vehicle of the scene: its model file's vehicle lambda times the size,
+// every coefficient by Froude similarity (core/vehicle_scaling.h; docs/vehicles.md §9). The
+// model is the file's alone: a model key given in the scene beside scale is refused (it would
+// be ambiguous whether it is at the file's size or at the scaled one).
+void ApplyScale(const MapReader& scene, bool has_model_file, core::VehicleParams* params) {
+  if (!scene.Has("scale")) return;
+  const Field scale = scene.Get("scale");
+  const double lambda = scale.Number();  // a finite number
+  if (!(lambda > 0.0)) {
+    scale.Fail("must be > 0 (the ratio lambda of the body's size to its model file's)");
+  }
+  if (!has_model_file) {
+    scale.Fail("needs a model file (model: FILE): scale sizes the vehicle of that file");
+  }
+  for (const auto& [key, value] : scene.entries()) {
+    if (key != "type" && Allowed(MapKind::kVehicleFile, key)) {
+      value.Fail(
+          "cannot be given beside scale: a scaled vehicle takes every coefficient from its model "
+          "file (write a model file at the size you want to change one)");
+    }
+  }
+  *params = core::ScaleVehicle(*params, lambda);
+  // lambda^5 must neither overflow nor underflow: the scaled body stays a body
+  const bool finite = std::isfinite(params->length) && std::isfinite(params->inertia.sum()) &&
+                      params->added_mass.allFinite() && std::isfinite(params->max_thrust);
+  const bool positive = params->length > 0.0 && params->mass > 0.0 &&
+                        params->inertia.minCoeff() > 0.0 && params->thrust_time_constant > 0.0;
+  if (!finite || !positive) {
+    scale.Fail(
+        "is out of range: the scaled mass (lambda^3) and inertia (lambda^5) must be finite "
+        "and > 0");
+  }
+}
+
+VehicleInput ReadVehicle(const std::string& name, const BodyKeys& keys, bool has_model_file) {
   VehicleInput input;
   core::Vehicle& vehicle = input.vehicle;
   vehicle.name = name;
   vehicle.params = ReadVehicleParams(keys);
+  ApplyScale(keys.scene(), has_model_file, &vehicle.params);
 
   // the initial state belongs to the scene: origin position, attitude, body-frame velocity
   const MapReader& scene = keys.scene();
@@ -115,12 +152,20 @@ void ReadBody(const std::string& name, const Field& field, const std::string& ba
   // the keys of that type, in the model file and in the scene
   std::optional<MapReader> file_keys;
   if (file_root) file_keys.emplace(*file_root, kFileKind[kind]);
+  if (kind != 1 && scene_keys.Has("scale")) {
+    scene_keys.Get("scale").Fail(
+        kind == 0 ? "applies only to type: vehicle (a sphere is given by its own mass, volume and "
+                    "coefficients: write them at the size you want)"
+                  : "applies only to type: vehicle (a vessel's motion is given, not computed "
+                    "from its size)");
+  }
   CheckKeysOfType(scene_keys, kind);
+  const bool has_model_file = file_keys.has_value();
   const BodyKeys keys(scene_keys, file_keys);
   if (kind == 2) {
     out->vessels.push_back(ReadVessel(name, keys, base_dir, model_dir));
   } else if (kind == 1) {
-    out->vehicles.push_back(ReadVehicle(name, keys));
+    out->vehicles.push_back(ReadVehicle(name, keys, has_model_file));
   } else {
     out->spheres.push_back(ReadSphere(name, keys));
   }

@@ -4,6 +4,8 @@
 // keys>, position, euler_deg, velocity, command} or a vessel {type: vessel, ...} (vessel_reader.h);
 // with `model: <file>` the body's keys come from
 // that file, and keys given in the scene override the file's (maps such as damping key by key).
+// A vehicle with `scale: lambda` is its model file's vehicle lambda times the size
+// (core/vehicle_scaling.h), its model keys all from the file.
 
 #include <optional>
 #include <string>

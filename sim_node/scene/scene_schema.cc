@@ -97,8 +97,9 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kDriven, {"position", "velocity"}},
       {MapKind::kBodies, {}},
       // a body in the scene: its initial state and any key of its model (the scene's wins)
-      {MapKind::kBody, join({"type", "model", "position", "euler_deg", "velocity", "command"},
-                            {&kSphereKeys, &kVehicleKeys, &kVesselKeys})},
+      {MapKind::kBody,
+       join({"type", "model", "scale", "position", "euler_deg", "velocity", "command"},
+            {&kSphereKeys, &kVehicleKeys, &kVesselKeys})},
       {MapKind::kModelFile, join({"type"}, {&kSphereKeys})},
       {MapKind::kVehicleFile, join({"type"}, {&kVehicleKeys})},
       {MapKind::kVesselFile, join({"type"}, {&kVesselKeys})},

@@ -215,8 +215,8 @@ TEST(PaperCases, Case2UTurn) {
     // the turning radii differ markedly (paper Fig. 14): a 200 m cable behind a turn of ~25 m
     // radius cannot lay the towfish on the same circle; at least 25 % apart
     EXPECT_GT(std::abs(r_fish - r_veh), 0.25 * r_veh) << c.name;
-    // the towfish dives during the turn (the cable slows and sinks: metres, reference notes
-    // §5.2) and rises after it, back to the straight-running depth
+    // the towfish dives during the turn (the cable slows and sinks: metres, docs/paper_cases.md,
+    // the Fig. 20 row) and rises after it, back to the straight-running depth
     EXPECT_GT(dive, 3.0) << c.name;
     EXPECT_GT(t_dive, 55.0) << c.name;
     EXPECT_LT(std::abs(settled_diff), 0.5) << c.name;

@@ -37,3 +37,8 @@ towsim_add_test(survey_ship_raos_test LABEL unit
 towsim_add_test(vessel_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/vessel_reader_test.cc
   LIBS towsim::scene)
+# the bodies map (scene/body_reader.h): bodies.NAME.scale, a vehicle scaled from its model file
+towsim_add_test(body_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/body_reader_test.cc
+  LIBS towsim::scene)
+target_include_directories(body_reader_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
