@@ -13,6 +13,7 @@
 #include "core/hydrodynamics.h"
 #include "core/publish_rates.h"
 #include "core/seabed.h"
+#include "core/sensor_model.h"
 #include "core/vehicle_model.h"
 #include "core/vessel.h"
 #include "core/wave_field.h"
@@ -220,6 +221,9 @@ struct Model {
   IntegratorSettings integrator;
   std::vector<ScriptEntry> script;
   Publishing publishing;
+  // sensor errors by body (docs/sensors.md "Sensor models"): only the bodies whose scene entry
+  // has `sensors`; none: every sensor perfect
+  std::vector<BodySensors> sensors;
 };
 
 }  // namespace towsim::core

@@ -30,7 +30,7 @@ const std::vector<std::string> kStateKeys[] = {
 
 // the key of the scene's body entry belongs to body type `type`
 bool OfType(const std::string& key, size_t type) {
-  if (key == "type" || key == "model") return true;
+  if (key == "type" || key == "model" || key == "sensors") return true;
   const std::vector<std::string>& state = kStateKeys[type];
   return Allowed(kFileKind[type], key) ||
          std::find(state.begin(), state.end(), key) != state.end();

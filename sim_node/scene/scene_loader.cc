@@ -15,6 +15,7 @@
 #include "scene/rao_file.h"
 #include "scene/time_history_file.h"
 #include "scene/script_reader.h"
+#include "scene/sensor_reader.h"
 #include "scene/vehicle_reader.h"
 #include "scene/yaml_reader.h"
 
@@ -122,6 +123,7 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   for (const internal::VehicleInput& v : bodies.vehicles) model.vehicles.push_back(v.vehicle);
   model.vessels = bodies.vessels;
   internal::CheckBodiesAboveSeabed(scene.Get("bodies"), model);
+  model.sensors = internal::ReadSensors(scene.Get("bodies"), model.time.step);
   // cable: the one-cable form (a cable named `cable`); cables: a network (network_reader.h)
   if (scene.Has("cable") && scene.Has("cables")) {
     scene.Get("cables").Fail(

@@ -98,7 +98,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kBodies, {}},
       // a body in the scene: its initial state and any key of its model (the scene's wins)
       {MapKind::kBody,
-       join({"type", "model", "scale", "position", "euler_deg", "velocity", "command"},
+       join({"type", "model", "scale", "position", "euler_deg", "velocity", "command", "sensors"},
             {&kSphereKeys, &kVehicleKeys, &kVesselKeys})},
       {MapKind::kModelFile, join({"type"}, {&kSphereKeys})},
       {MapKind::kVehicleFile, join({"type"}, {&kVehicleKeys})},
@@ -118,6 +118,12 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kWaterplane,
        {"area", "position", "design_depth", "inertia_longitudinal", "inertia_transverse"}},
       {MapKind::kCommand, {"thrust", "rudder", "rudder_deg", "elevator", "elevator_deg"}},
+      // a sensor's errors (core/sensor_model.h, docs/sensors.md "Sensor models")
+      {MapKind::kSensors, {"altimeter", "pressure", "odometry"}},
+      {MapKind::kSensor, {"noise", "bias", "rate", "latency_steps", "dropout", "seed"}},
+      {MapKind::kOdometrySensor,
+       {"noise", "bias", "velocity_noise", "velocity_bias", "rate", "latency_steps", "dropout",
+        "seed"}},
       {MapKind::kIntegrator,
        {"scheme", "rho_inf", "coupling", "tolerance", "max_iterations", "max_substep_level",
         "max_coupling_iterations"}},
@@ -172,6 +178,10 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       return std::nullopt;
     case MapKind::kBodies:
       return MapKind::kBody;
+    case MapKind::kSensors:
+      if (key == "odometry") return MapKind::kOdometrySensor;
+      if (key == "altimeter" || key == "pressure") return MapKind::kSensor;
+      return std::nullopt;
     case MapKind::kBody:
     case MapKind::kVehicleFile:
       if (key == "added_mass") return MapKind::kAddedMass;
@@ -180,6 +190,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
       if (key == "propeller") return MapKind::kPropeller;
       if (key == "waterplane") return MapKind::kWaterplane;
       if (key == "command" && parent == MapKind::kBody) return MapKind::kCommand;
+      if (key == "sensors" && parent == MapKind::kBody) return MapKind::kSensors;
       return std::nullopt;  // values; surfaces is a list
     default:
       return std::nullopt;

@@ -42,6 +42,9 @@ enum class MapKind {
   kPropeller,    // <vehicle>.propeller
   kWaterplane,   // <vehicle>.waterplane
   kCommand,      // bodies.<name>.command
+  kSensors,      // bodies.<name>.sensors {altimeter, pressure, odometry}
+  kSensor,       // bodies.<name>.sensors.altimeter, .pressure
+  kOdometrySensor,  // bodies.<name>.sensors.odometry
   kIntegrator,   // integrator
   kPublish,      // publish
   kSecurity,     // security

@@ -28,3 +28,5 @@ towsim_add_test(vessel_motion_test LABEL unit SOURCES vessel_motion_test.cc LIBS
 towsim_add_test(rao_table_test LABEL unit SOURCES rao_table_test.cc LIBS towsim::core)
 towsim_add_test(cubic_spline_test LABEL unit SOURCES cubic_spline_test.cc LIBS towsim::core)
 towsim_add_test(pose_spline_test LABEL unit SOURCES pose_spline_test.cc LIBS towsim::core)
+# a sensor's errors (core/sensor_model.h): bias, noise, latency, rate, dropout
+towsim_add_test(sensor_model_test LABEL unit SOURCES sensor_model_test.cc LIBS towsim::core)

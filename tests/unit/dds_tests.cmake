@@ -12,6 +12,11 @@ towsim_add_test(sensor_translators_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensor_translators_test.cc
   LIBS towsim::dds towsim::scene)
 
+# the sensor models on the messages (dds/sensor_errors.h)
+towsim_add_test(sensor_errors_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensor_errors_test.cc
+  LIBS towsim::dds towsim::scene)
+
 towsim_add_test(environment_translator_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/environment_translator_test.cc
   LIBS towsim::dds towsim::scene)

@@ -42,3 +42,7 @@ towsim_add_test(body_reader_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/body_reader_test.cc
   LIBS towsim::scene)
 target_include_directories(body_reader_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+# bodies.NAME.sensors (scene/sensor_reader.h): the sensor error keys and their rules
+towsim_add_test(sensor_reader_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/sensor_reader_test.cc
+  LIBS towsim::scene)

@@ -6,6 +6,7 @@
 #include "dds/frames.h"
 #include "dds/markers.h"
 #include "dds/messages.h"
+#include "dds/sensor_errors.h"
 #include "dds/sensor_translators.h"
 #include "dds/translators.h"
 #include "io/csv_writer.h"
@@ -33,6 +34,39 @@ class Translated final : public StateTopic {
  private:
   std::unique_ptr<Holder> holder_;
   int body_;
+};
+
+// a sensor topic with errors (dds/sensor_errors.h): Translate builds the true message of each
+// step, the sensor model turns it into what the sensor publishes
+template <class Holder, void (*Translate)(const core::Simulation&, int, uint64_t, Holder*)>
+class Modelled final : public StateTopic {
+ public:
+  Modelled(const dds::Participant& participant, const TopicRow& row, const std::string& name,
+           std::unique_ptr<Holder> holder, int body, core::SensorModel model)
+      : StateTopic(participant, row.spec().type, name, dds::QosOf(row.spec().qos), row.rate),
+        holder_(std::move(holder)),
+        body_(body),
+        model_(std::move(model)) {}
+  const void* Fill(const core::Simulation& sim, uint64_t step) override {
+    return Sample(sim, step, true);
+  }
+  bool sampled() const override { return true; }
+  const void* Sample(const core::Simulation& sim, uint64_t step, bool due) override {
+    if (started_ && step == last_) return published_ ? &holder_->msg : nullptr;  // republished
+    if (started_ && step < last_) model_.Restart();  // a reset: the run starts over
+    started_ = true;
+    last_ = step;
+    Translate(sim, body_, step, holder_.get());
+    published_ = dds::ApplySensorErrors(&model_, step, due, &holder_->msg);
+    return published_ ? &holder_->msg : nullptr;
+  }
+
+ private:
+  std::unique_ptr<Holder> holder_;
+  int body_;
+  core::SensorModel model_;
+  bool started_ = false, published_ = false;
+  uint64_t last_ = 0;
 };
 
 // /clock has no strings to own
@@ -76,6 +110,20 @@ std::unique_ptr<StateTopic> Make(const dds::Participant& participant, const Topi
                                                          body);
 }
 
+// a body's sensor topic: Modelled when the scene gives the sensor errors, else Translated (the
+// true value, as without sensor keys)
+template <class Holder, void (*Translate)(const core::Simulation&, int, uint64_t, Holder*)>
+std::unique_ptr<StateTopic> MakeSensor(const dds::Participant& participant, const TopicRow& row,
+                                       const std::string& name, std::unique_ptr<Holder> holder,
+                                       const core::Simulation& sim, int body, dds::Sensor sensor) {
+  const core::SensorErrors* errors =
+      dds::FindSensorErrors(sim.model(), sim.body_name(body), sensor);
+  if (errors == nullptr) return Make<Holder, Translate>(participant, row, name, std::move(holder), body);
+  return std::make_unique<Modelled<Holder, Translate>>(
+      participant, row, name, std::move(holder), body,
+      dds::MakeSensorModel(*errors, sensor, sim.model().time.step));
+}
+
 std::vector<TopicRow> BuildTable() {
   using P = const dds::Participant&;
   using S = const core::Simulation&;
@@ -106,11 +154,11 @@ std::vector<TopicRow> BuildTable() {
        }},
       {T::kOdom, PublishRate::kOdom,
        [](P p, const TopicRow& row, N name, S sim, int b) {
-         return Make<dds::OdometryMessage, Odometry>(
+         return MakeSensor<dds::OdometryMessage, Odometry>(
              p, row, name,
              std::make_unique<dds::OdometryMessage>(dds::kWorldFrame,
                                                     dds::FrdFrame(sim.body_name(b))),
-             b);
+             sim, b, dds::Sensor::kOdometry);
        }},
       {T::kCableForce, PublishRate::kCableForce,
        [](P p, const TopicRow& row, N name, S sim, int b) {
@@ -120,13 +168,15 @@ std::vector<TopicRow> BuildTable() {
        }},
       {T::kAltitude, PublishRate::kSensors,
        [](P p, const TopicRow& row, N name, S sim, int b) {
-         return Make<dds::RangeMessage, Altitude>(
-             p, row, name, std::make_unique<dds::RangeMessage>(sim.body_name(b)), b);
+         return MakeSensor<dds::RangeMessage, Altitude>(
+             p, row, name, std::make_unique<dds::RangeMessage>(sim.body_name(b)), sim, b,
+             dds::Sensor::kAltimeter);
        }},
       {T::kPressure, PublishRate::kSensors,
        [](P p, const TopicRow& row, N name, S sim, int b) {
-         return Make<dds::FluidPressureMessage, Pressure>(
-             p, row, name, std::make_unique<dds::FluidPressureMessage>(sim.body_name(b)), b);
+         return MakeSensor<dds::FluidPressureMessage, Pressure>(
+             p, row, name, std::make_unique<dds::FluidPressureMessage>(sim.body_name(b)), sim, b,
+             dds::Sensor::kPressure);
        }},
       // the sea at each body, as environment.csv: only in a scene with waves, a current or a
       // seabed (io::HasSea; a calm scene's node has no such topic)

@@ -32,6 +32,13 @@ class StateTopic {
 
   // fills the message from `sim` after `step` steps; returns it (the C struct of type())
   virtual const void* Fill(const core::Simulation& sim, uint64_t step) = 0;
+  // a sensor with errors (docs/sensors.md "Sensor models") is stepped at every step, whether
+  // anyone listens or not, so that its errors do not depend on the subscribers: Sample is
+  // called once per step instead of Fill (again for the same step: the same answer), `due`
+  // whether the topic's publish stride divides the step; returns the message to publish, or
+  // nullptr when the sensor publishes nothing at this step
+  virtual bool sampled() const { return false; }
+  virtual const void* Sample(const core::Simulation&, uint64_t, bool) { return nullptr; }
 
   core::PublishRate rate() const { return rate_; }
   const dds_topic_descriptor_t* type() const { return type_; }

@@ -198,6 +198,12 @@ void NodeEndpoints::PublishState(const core::Simulation& sim, uint64_t step,
   sim_ns_ = SimNs(sim.time());
   for (Published& p : state_) {
     StateTopic& t = *p.topic;
+    if (t.sampled()) {
+      // a sensor with errors: stepped every step, listened to or not (node_topics.h)
+      const void* msg = t.Sample(sim, step, strides.Due(t.rate(), step, false));
+      if (msg != nullptr && Wanted(t.writer(), p.recorded)) Emit(t.writer(), p.recorded, msg);
+      continue;
+    }
     if (!strides.Due(t.rate(), step, all) || !Wanted(t.writer(), p.recorded)) continue;
     Emit(t.writer(), p.recorded, t.Fill(sim, step));
   }
