@@ -80,12 +80,14 @@ bool SensorModel::Step(std::uint64_t n, bool publish_due, const double* truth, d
   }
   ++stored_;
   if (!SampleInstant(n, publish_due)) return false;
-  // one dropout draw per sample instant (drawn even while the latency buffer fills, so the
-  // draws belong to the instants, not to what the buffer holds)
-  const bool lost = dropout_ > 0.0 && UniformUnit(dropout_rng_()) < dropout_;
-  if (stored_ <= static_cast<std::uint64_t>(latency_) || lost) return false;
-  // delayed d_n = m_{n-L}: the slot written L steps ago
-  const double* old = &ring_[((stored_ - 1 - static_cast<std::uint64_t>(latency_)) % slots) * c];
+  // one dropout draw per sample instant
+  if (dropout_ > 0.0 && UniformUnit(dropout_rng_()) < dropout_) return false;
+  // delayed d_n = m_{max(0, n-L)}: the slot written L steps ago; before step L the first
+  // measurement (the sensor was on before t = 0, the body in its initial state; slot 0 holds
+  // m_0 until step L + 1 overwrites it)
+  const std::uint64_t latency = static_cast<std::uint64_t>(latency_);
+  const std::uint64_t from = stored_ - 1 > latency ? stored_ - 1 - latency : 0;
+  const double* old = &ring_[(from % slots) * c];
   for (size_t i = 0; i < c; ++i) out[i] = old[i];
   return true;
 }

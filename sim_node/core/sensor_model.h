@@ -7,7 +7,9 @@
 // position and linear velocity) is turned, in this order, into
 //   measured   m_n = x_n + b + sigma z_n     b the bias, z_n ~ N(0, 1) per channel, drawn every
 //                                            step from the noise stream (Box-Muller)
-//   delayed    d_n = m_{n-L}                 L = latency_steps; nothing before n = L
+//   delayed    d_n = m_{max(0, n-L)}         L = latency_steps; before step L the first
+//                                            measurement m_0 (the sensor was on before t = 0,
+//                                            the body in its initial state)
 //   sampled    published at the sensor's sample instants only: with a rate f > 0 at step n
 //              when floor(n h f) > floor((n - 1) h f) (step 0 always), i.e. the first step at
 //              or after each t = k / f, so f T (+-1) samples in T seconds; without a rate at
