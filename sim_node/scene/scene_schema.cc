@@ -121,7 +121,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       // a sensor's errors (core/sensor_model.h, docs/sensors.md "Sensor models")
       {MapKind::kSensors, {"altimeter", "pressure", "odometry"}},
       {MapKind::kSensor, {"noise", "bias", "rate", "latency_steps", "dropout", "seed"}},
-      {MapKind::kOdometrySensor,
+      {MapKind::kOdometry,
        {"noise", "bias", "velocity_noise", "velocity_bias", "rate", "latency_steps", "dropout",
         "seed"}},
       {MapKind::kIntegrator,
@@ -179,7 +179,7 @@ std::optional<MapKind> ChildMap(MapKind parent, const std::string& key) {
     case MapKind::kBodies:
       return MapKind::kBody;
     case MapKind::kSensors:
-      if (key == "odometry") return MapKind::kOdometrySensor;
+      if (key == "odometry") return MapKind::kOdometry;
       if (key == "altimeter" || key == "pressure") return MapKind::kSensor;
       return std::nullopt;
     case MapKind::kBody:

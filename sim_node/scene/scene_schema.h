@@ -44,7 +44,7 @@ enum class MapKind {
   kCommand,      // bodies.<name>.command
   kSensors,      // bodies.<name>.sensors {altimeter, pressure, odometry}
   kSensor,       // bodies.<name>.sensors.altimeter, .pressure
-  kOdometrySensor,  // bodies.<name>.sensors.odometry
+  kOdometry,     // bodies.<name>.sensors.odometry
   kIntegrator,   // integrator
   kPublish,      // publish
   kSecurity,     // security

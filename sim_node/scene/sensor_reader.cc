@@ -12,7 +12,7 @@ core::SensorErrors ReadSensor(const std::string& body, const std::string& sensor
   core::SensorErrors e;
   e.noise = map.Number("noise", Range::AtLeast(0.0), 0.0);
   e.bias = map.Number("bias", Range::Any(), 0.0);
-  if (kind == MapKind::kOdometrySensor) {
+  if (kind == MapKind::kOdometry) {
     e.velocity_noise = map.Number("velocity_noise", Range::AtLeast(0.0), 0.0);
     e.velocity_bias = map.Number("velocity_bias", Range::Any(), 0.0);
   }
@@ -45,7 +45,7 @@ std::vector<core::BodySensors> ReadSensors(const Field& bodies, double h) {
     core::BodySensors s;
     s.body = name;
     for (const auto& [sensor, value] : sensors.entries()) {
-      const MapKind kind = sensor == "odometry" ? MapKind::kOdometrySensor : MapKind::kSensor;
+      const MapKind kind = sensor == "odometry" ? MapKind::kOdometry : MapKind::kSensor;
       const core::SensorErrors e = ReadSensor(name, sensor, value, kind, h);
       if (sensor == "altimeter") s.altimeter = e;
       if (sensor == "pressure") s.pressure = e;

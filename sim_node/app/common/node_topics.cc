@@ -118,7 +118,9 @@ std::unique_ptr<StateTopic> MakeSensor(const dds::Participant& participant, cons
                                        const core::Simulation& sim, int body, dds::Sensor sensor) {
   const core::SensorErrors* errors =
       dds::FindSensorErrors(sim.model(), sim.body_name(body), sensor);
-  if (errors == nullptr) return Make<Holder, Translate>(participant, row, name, std::move(holder), body);
+  if (errors == nullptr) {
+    return Make<Holder, Translate>(participant, row, name, std::move(holder), body);
+  }
   return std::make_unique<Modelled<Holder, Translate>>(
       participant, row, name, std::move(holder), body,
       dds::MakeSensorModel(*errors, sensor, sim.model().time.step));
