@@ -11,6 +11,7 @@
 #include "scene/environment_reader.h"
 #include "scene/network_reader.h"
 #include "scene/overrides.h"
+#include "scene/rao_coverage.h"
 #include "scene/rao_file.h"
 #include "scene/time_history_file.h"
 #include "scene/script_reader.h"

@@ -11,6 +11,7 @@
 #include "app/common/stop_signal.h"
 #include "app/node/dds_program.h"
 #include "app/node/offline_run.h"
+#include "scene/time_history_file.h"
 #include "io/output_error.h"
 #include "scene/scene_loader.h"
 
@@ -72,6 +73,27 @@ int Run(const Options& options, DdsModeRunner run_dds) {
                  FormatSeconds(duration).c_str(), model.time.step,
                  core::kMaxSteps * model.time.step);
     return kExitBadInput;
+  }
+
+  // vessels (docs/vessels.md): an external one needs a DDS mode (its pose comes from another
+  // program), a time history must cover the run's duration as given on the command line too
+  for (const core::Vessel& v : model.vessels) {
+    if (v.external && options.mode == Mode::kOffline) {
+      std::fprintf(stderr,
+                   "sim_node: error: bodies.%s.external = true: an external vessel takes its pose "
+                   "from another program over DDS (rt/<ns>/%s/pose_command); --mode offline has "
+                   "no DDS: use --mode lockstep, or give the vessel a time_history\n",
+                   v.name.c_str(), v.name.c_str());
+      return kExitBadInput;
+    }
+    if (v.time_history && options.duration) {
+      const std::string problem = scene::TimeHistoryCoverageProblem(*v.time_history, duration);
+      if (!problem.empty()) {
+        std::fprintf(stderr, "sim_node: error: --duration %s: bodies.%s.time_history: %s\n",
+                     FormatSeconds(duration).c_str(), v.name.c_str(), problem.c_str());
+        return kExitBadInput;
+      }
+    }
   }
 
   std::unique_ptr<io::CsvWriter> csv;
