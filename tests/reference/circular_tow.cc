@@ -180,9 +180,9 @@ CircularTowSolution SolveCircularTow(const CircularTowProblem& p, int steps, int
     if (!accepted) break;
   }
   if (!(g.norm() <= tolerance)) {
-    throw std::runtime_error("circular tow: the shooting did not converge (|g| = " +
-                             std::to_string(g.norm()) + " m after " + std::to_string(it) +
-                             " Newton iterations)");
+    throw std::runtime_error(
+        "circular tow: the shooting did not converge (|g| = " + std::to_string(g.norm()) +
+        " m after " + std::to_string(it) + " Newton iterations)");
   }
 
   const Integration fin = Integrate(p, x, steps, samples);

@@ -54,14 +54,14 @@ struct CircularTowProblem {
   // (tow_velocity, current, current_profile, tow_depth, sphere_extra_force) are not used and
   // must be left at rest: a current makes the turning problem unsteady
   TowedCableProblem line;
-  double added_mass_normal = 1.0;      // C_an of the cable on rho_w A (the core's default)
-  double added_mass_tangential = 0.0;  // C_at of the cable on rho_w A
+  double added_mass_normal = 1.0;              // C_an of the cable on rho_w A (the core's default)
+  double added_mass_tangential = 0.0;          // C_at of the cable on rho_w A
   double sphere_added_mass_coefficient = 0.5;  // C_a of the sphere on rho_w V
   bool inertia = true;  // the d'Alembert forces (off: the circle's kinematics only in the drag)
   // the motion
-  double radius = 300.0;     // R of the tow point's circle [m], > 0
-  double turn_rate = 0.02;   // Omega [rad/s], != 0 (+ to starboard)
-  double tow_depth = 0.0;    // z_top of the tow point (NED) [m]
+  double radius = 300.0;    // R of the tow point's circle [m], > 0
+  double turn_rate = 0.02;  // Omega [rad/s], != 0 (+ to starboard)
+  double tow_depth = 0.0;   // z_top of the tow point (NED) [m]
 };
 
 struct CircularTowPoint {
@@ -78,14 +78,14 @@ struct CircularTowSolution {
   // (r_top - r_s) . (the tow point's direction of motion): the straight tow's layback when
   // R -> infinity [m]
   double layback = 0.0;
-  double depth = 0.0;        // z_s - z_top [m] (> 0: the sphere below the tow point)
-  double top_tension = 0.0;  // |F(L)| [N]
+  double depth = 0.0;           // z_s - z_top [m] (> 0: the sphere below the tow point)
+  double top_tension = 0.0;     // |F(L)| [N]
   double bottom_tension = 0.0;  // |F(0)| [N]
   Eigen::Vector3d top_force = Eigen::Vector3d::Zero();  // force of the cable on the tow point
   // the sphere's loads other than the cable's: W_s e_z + D_s - (M + C_a rho_w V) a_s [N]
   Eigen::Vector3d sphere_load = Eigen::Vector3d::Zero();
   std::vector<CircularTowPoint> shape;  // samples, s from 0 to L
-  double residual = 0.0;      // |r(L) - (R, 0, z_top)| [m]
+  double residual = 0.0;                // |r(L) - (R, 0, z_top)| [m]
   int newton_iterations = 0;
 };
 

@@ -60,8 +60,8 @@ Eigen::Vector3d CableLoad(const CircularTowProblem& p, const CircularTowPoint& q
   const Eigen::Vector3d t = q.force / q.tension;
   const Eigen::Vector3d a_n = a - a.dot(t) * t;
   return Eigen::Vector3d(0.0, 0.0, (p.line.density - rho) * area * p.line.gravity) +
-         CableStretch(p.line, q.tension) * CableDragPerStretchedLength(p.line.fluid, p.line.diameter,
-                                                                      t, v) -
+         CableStretch(p.line, q.tension) *
+             CableDragPerStretchedLength(p.line.fluid, p.line.diameter, t, v) -
          p.line.density * area * a - p.added_mass_normal * rho * area * a_n;
 }
 

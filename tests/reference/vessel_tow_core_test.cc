@@ -41,9 +41,9 @@ constexpr double kTensionRelTol = 2e-2;
 // the shipped scene at `speed` along +x (as steady_tow_core_test's overrides)
 core::Model DrivenModel(double speed) {
   const std::string v = "[" + std::to_string(speed) + ", 0, 0]";
-  const core::Model m = scene::LoadScene(
-      kScene, {"cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
-               "bodies.towfish.velocity=" + v});
+  const core::Model m =
+      scene::LoadScene(kScene, {"cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
+                                "bodies.towfish.velocity=" + v});
   return m;
 }
 
@@ -100,8 +100,8 @@ void CheckStraight(double speed, double run_time) {
     if (i % per_second == 0) {
       const Vec3 top = vessel.vessel_pose(0).PointAt(Vec3::Zero());
       const Vec3 sphere = vessel.body_position(0);
-      history.push_back({vessel.time(), top.x() - sphere.x(), sphere.z() - top.z(),
-                         vessel.end_force(0).norm()});
+      history.push_back(
+          {vessel.time(), top.x() - sphere.x(), sphere.z() - top.z(), vessel.end_force(0).norm()});
     }
   }
   const SteadyTowSample& last = history.back();
@@ -134,11 +134,11 @@ TEST(VesselTowCore, ConstantSpeedIsTheSteadyTowAtThreeMetresPerSecond) {
 // the sphere in the turning frame: relative to the circle's centre c
 struct TurnSample {
   double t;
-  double inside;         // R - |sphere - c|_horizontal [m]
-  double lag;            // angle of the tow point minus the sphere's about c [rad]
-  double depth;          // z_sphere - z_top [m]
-  double tension;        // |force on the tow point| [N]
-  double angular_rate;   // of the sphere about c [rad/s]
+  double inside;        // R - |sphere - c|_horizontal [m]
+  double lag;           // angle of the tow point minus the sphere's about c [rad]
+  double depth;         // z_sphere - z_top [m]
+  double tension;       // |force on the tow point| [N]
+  double angular_rate;  // of the sphere about c [rad/s]
 };
 
 TurnSample MeasureTurn(const core::Simulation& sim, const Vec3& centre, double radius) {
@@ -148,12 +148,9 @@ TurnSample MeasureTurn(const core::Simulation& sim, const Vec3& centre, double r
   const Eigen::Vector2d d(p.x() - centre.x(), p.y() - centre.y());
   const Eigen::Vector2d d_top(top.x() - centre.x(), top.y() - centre.y());
   const double lag = std::atan2(d.x() * d_top.y() - d.y() * d_top.x(), d.dot(d_top));
-  return {sim.time(),
-          radius - d.norm(),
-          lag,
-          p.z() - top.z(),
-          sim.end_force(0).norm(),
-          (d.x() * v.y() - d.y() * v.x()) / d.squaredNorm()};
+  return {
+      sim.time(),      radius - d.norm(),       lag,
+      p.z() - top.z(), sim.end_force(0).norm(), (d.x() * v.y() - d.y() * v.x()) / d.squaredNorm()};
 }
 
 // (b) the steady turn: a straight tow settled for `settle` s, then a turn to starboard at
@@ -213,12 +210,12 @@ void CheckTurn(double speed, double radius, double settle, double turn_time) {
       settled = x.t;
     }
   }
-  std::printf("turn %.0f m/s, R = %.0f m: settled to 0.1%% %.0f s after the turn began\n",
-              speed, radius, settled - settle);
+  std::printf("turn %.0f m/s, R = %.0f m: settled to 0.1%% %.0f s after the turn began\n", speed,
+              radius, settled - settle);
   // the last period of the turn: steady in the turning frame
   const double period = 2.0 * kPi / omega;
-  const std::vector<TurnSample> last_turn(
-      history.end() - static_cast<int>(std::lround(period)), history.end());
+  const std::vector<TurnSample> last_turn(history.end() - static_cast<int>(std::lround(period)),
+                                          history.end());
   TurnSample lo = last_turn.front(), hi = last_turn.front();
   for (const TurnSample& x : last_turn) {
     lo.inside = std::min(lo.inside, x.inside);
@@ -243,10 +240,10 @@ void CheckTurn(double speed, double radius, double settle, double turn_time) {
       "tension %.2f N, turn rate %.6f rad/s\n"
       "  error: inside %+.2e, lag %+.2e, depth %+.2e, tension %+.2e, angular rate %+.2e "
       "(relative)\n",
-      speed, radius, last.t, (last.t - settle) / period, last.inside, last.lag,
-      last.lag * radius, last.depth, last.tension, last.angular_rate, lo.inside, hi.inside,
-      lo.depth, hi.depth, lo.tension, hi.tension, lo.angular_rate, hi.angular_rate, ref_inside,
-      ref.sphere_radius, ref.lag_angle, ref.lag_angle * radius, ref.depth, ref.top_tension, omega,
+      speed, radius, last.t, (last.t - settle) / period, last.inside, last.lag, last.lag * radius,
+      last.depth, last.tension, last.angular_rate, lo.inside, hi.inside, lo.depth, hi.depth,
+      lo.tension, hi.tension, lo.angular_rate, hi.angular_rate, ref_inside, ref.sphere_radius,
+      ref.lag_angle, ref.lag_angle * radius, ref.depth, ref.top_tension, omega,
       last.inside / ref_inside - 1.0, last.lag / ref.lag_angle - 1.0, last.depth / ref.depth - 1.0,
       last.tension / ref.top_tension - 1.0, last.angular_rate / omega - 1.0);
 
