@@ -16,7 +16,8 @@
 //   - a new run (scene_info with a new run id): the pose at the run's start time (its stamp,
 //     t_0 = 0), which lockstep waits for before it publishes the initial state;
 //   - each new status (step n at sim_time t_n, exact in the message): the pose of t_n + h (h the
-//     scene's step), stamped t_n + h, which lockstep waits for before step n.
+//     scene's step), stamped t_n + h, which lockstep waits for before step n (none past the
+//     run's duration).
 // In realtime and fast modes the node does not wait: a pose that comes after its step is
 // counted missing there (the node's summary line). The program ends when the node's run ends
 // (a final status: finished, failed or stopped; exit 0), or on SIGINT / SIGTERM (exit 0).
@@ -149,6 +150,7 @@ class Feeder {
 
   std::string run_id_;  // the node's run being fed
   double h_ = 0.0;      // its step [s]
+  double end_ = -1.0;   // its duration [s]; < 0: no end
   bool have_step_ = false;
   uint64_t last_step_ = 0;  // the last status step answered
   long published_ = 0;
@@ -202,6 +204,7 @@ int Feeder::Run() {
       // a new run: its initial pose (lockstep waits for it before the initial state)
       run_id_ = info.run_id;
       h_ = info.step_size;
+      end_ = info.duration;
       have_step_ = false;
       if (!WaitForMatch()) return;
       Publish(wire::StampSeconds(m.header.stamp));
@@ -214,7 +217,9 @@ int Feeder::Run() {
       if (have_step_ && s.step <= last_step_) return;  // answered (or older)
       have_step_ = true;
       last_step_ = s.step;
-      // the pose of the node's next state, at t_n + h as the node's step computes it
+      // the pose of the node's next state, at t_n + h as the node's step computes it (none
+      // past the run's end: the last state's status asks for no step)
+      if (end_ >= 0.0 && s.t + h_ > end_ + 0.5 * h_) return;
       Publish(s.t + h_);
     });
   }
