@@ -53,8 +53,8 @@ CheckedPose FromPoseCommand(const OdometryMsg& msg, const std::string& vessel) {
   if (std::abs(q_WB.norm() - 1.0) > kQuaternionNormTolerance) {
     char text[128];
     std::snprintf(text, sizeof text,
-                  "pose.pose.orientation: |q| = %.9g, must be 1 within %g (a rotation)", q_WB.norm(),
-                  kQuaternionNormTolerance);
+                  "pose.pose.orientation: |q| = %.9g, must be 1 within %g (a rotation)",
+                  q_WB.norm(), kQuaternionNormTolerance);
     return Reject(text);
   }
   CheckedPose c;

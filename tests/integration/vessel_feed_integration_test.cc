@@ -41,7 +41,9 @@ std::string Scene(const std::string& ship) {
          "        initial: straight, initial_velocity: [0, 0, 0],\n"
          "        start: {body: ship, at: [-25, 0, -2]}, end: {body: fish}}\n"
          "bodies:\n"
-         "  ship: {type: vessel, " + ship + "}\n"
+         "  ship: {type: vessel, " +
+         ship +
+         "}\n"
          "  fish: {type: sphere, mass: 300, volume: 0.15, drag_coefficient: 0.6,\n"
          "         added_mass_coefficient: 0.5, position: [-75, 0, 30]}\n";
 }
@@ -79,9 +81,9 @@ std::string WithoutWallTime(const std::string& csv) {
     size_t at = 0;
     for (int comma = 0; comma < 4 && at != std::string::npos; ++comma) at = line.find(',', at + 1);
     const size_t next = at == std::string::npos ? at : line.find(',', at + 1);
-    out += (at == std::string::npos ? line
-                                    : line.substr(0, at) +
-                                          (next == std::string::npos ? "" : line.substr(next))) +
+    out += (at == std::string::npos
+                ? line
+                : line.substr(0, at) + (next == std::string::npos ? "" : line.substr(next))) +
            "\n";
   }
   return out;
@@ -102,16 +104,16 @@ TEST(VesselFeed, ALockstepFeedGivesTheRunOfTheTimeHistory) {
 
   // the oracle: offline, the ship from its time history
   const std::string offline_csv = dir + "/offline_csv";
-  Process offline({TOWSIM_SIM_NODE, "--scene", dir + "/logged.yaml", "--mode", "offline",
-                   "--csv", offline_csv},
-                  LogPrefix("offline"));
+  Process offline(
+      {TOWSIM_SIM_NODE, "--scene", dir + "/logged.yaml", "--mode", "offline", "--csv", offline_csv},
+      LogPrefix("offline"));
   ASSERT_TRUE(offline.Wait(kProcessTimeout));
   ASSERT_EQ(offline.exit_code(), 0) << offline.err();
 
   // the feeder first: lockstep waits for the ship's initial pose before its first state
-  Process feeder({TOWSIM_VESSEL_FEED, "--vessel", "ship", "--history", dir + "/track.csv",
-                  "--domain", "224"},
-                 LogPrefix("feeder"));
+  Process feeder(
+      {TOWSIM_VESSEL_FEED, "--vessel", "ship", "--history", dir + "/track.csv", "--domain", "224"},
+      LogPrefix("feeder"));
   SimNodeOptions o;
   o.scene = dir + "/fed.yaml";
   o.mode = "lockstep";

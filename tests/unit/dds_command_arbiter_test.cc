@@ -254,9 +254,9 @@ struct PoseMessage {
 };
 
 CommandArbiter VehicleAndShip(bool ship_waited = true) {
-  return CommandArbiter({{"tow_vehicle", Limits(), true},
-                         CommandArbiter::Vehicle::Vessel("ship", ship_waited)},
-                        kTimeout);
+  return CommandArbiter(
+      {{"tow_vehicle", Limits(), true}, CommandArbiter::Vehicle::Vessel("ship", ship_waited)},
+      kTimeout);
 }
 
 TEST(CommandArbiterTest, AVesselsPoseBelongsToTheStateNearestItsStamp) {
@@ -306,7 +306,7 @@ TEST(CommandArbiterTest, AVesselsRejectedPoseIsCountedAndNotHeld) {
 }
 
 TEST(CommandArbiterTest, StepsWithoutTheirPoseAreCountedOncePerRun) {
-  CommandArbiter a = VehicleAndShip(false);  // realtime: not waited for
+  CommandArbiter a = VehicleAndShip(false);      // realtime: not waited for
   EXPECT_EQ(a.Missing(0), std::vector<int>{0});  // the vehicle only
   // no pose yet: step 0 goes without one; its run of missing poses starts
   EXPECT_EQ(a.CountMissingPoses(0), 1);

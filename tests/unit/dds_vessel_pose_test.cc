@@ -72,7 +72,9 @@ std::string Scene(const std::string& ship) {
          "        initial: straight, initial_velocity: [0, 0, 0],\n"
          "        start: {body: ship, at: [-20, 0, 1]}, end: {body: fish}}\n"
          "bodies:\n"
-         "  ship: {type: vessel, " + ship + "}\n"
+         "  ship: {type: vessel, " +
+         ship +
+         "}\n"
          "  fish: {type: sphere, mass: 400, volume: 0.2, position: [-60, 0, 30]}\n";
 }
 
@@ -86,8 +88,8 @@ TEST(VesselPoseTranslator, TheNodesOdometryFedBackGivesThePose) {
                                              "5,10,0,0,0,0,0.3\n";
   const core::Model logged =
       scene::LoadSceneFromString(Scene("time_history: track.csv"), "t.yaml", dir.path().string());
-  const core::Model fed = scene::LoadSceneFromString(
-      Scene("external: true, position: [0, 0, 0]"), "t.yaml", dir.path().string());
+  const core::Model fed = scene::LoadSceneFromString(Scene("external: true, position: [0, 0, 0]"),
+                                                     "t.yaml", dir.path().string());
   core::Simulation a(logged), b(fed);
   const int ship = a.num_spheres() + a.num_vehicles();  // bodies: spheres, vehicles, vessels
   ASSERT_TRUE(a.body_is_vessel(ship));
@@ -126,8 +128,8 @@ CheckedPose Fed(void (*change)(OdometryMsg*)) {
 }
 
 TEST(VesselPoseTranslator, RejectsWhatIsNotAPose) {
-  CheckedPose c =
-      Fed([](OdometryMsg* m) { m->pose.pose.position.y = std::numeric_limits<double>::quiet_NaN(); });
+  CheckedPose c = Fed(
+      [](OdometryMsg* m) { m->pose.pose.position.y = std::numeric_limits<double>::quiet_NaN(); });
   EXPECT_EQ(c.verdict, CheckedCommand::kRejected);
   EXPECT_EQ(c.reason, "pose.pose.position: NaN or infinite");
   c = Fed([](OdometryMsg* m) { m->twist.twist.angular.z = INFINITY; });
@@ -137,8 +139,7 @@ TEST(VesselPoseTranslator, RejectsWhatIsNotAPose) {
   EXPECT_NE(c.reason.find("|q| = "), std::string::npos) << c.reason;
   EXPECT_NE(c.reason.find("must be 1 within 1e-06"), std::string::npos) << c.reason;
   c = Fed([](OdometryMsg* m) { m->header.frame_id = const_cast<char*>("world"); });
-  EXPECT_EQ(c.reason,
-            "header.frame_id 'world': must be world_ned (NED, as the node's odometry)");
+  EXPECT_EQ(c.reason, "header.frame_id 'world': must be world_ned (NED, as the node's odometry)");
   c = Fed([](OdometryMsg* m) { m->child_frame_id = const_cast<char*>("ship"); });
   EXPECT_EQ(c.reason,
             "child_frame_id 'ship': must be ship_frd (the twist in the body frame forward, "

@@ -70,8 +70,9 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::To
   }
   const int first_vessel = num_spheres + sim.num_vehicles();
   for (int v : external_vessels) {
-    pose_topics_.emplace_back(participant, &nav_msgs_msg_dds__Odometry__desc,
-                              names.Name(wire::Topic::kPoseCommand, sim.body_name(first_vessel + v)));
+    pose_topics_.emplace_back(
+        participant, &nav_msgs_msg_dds__Odometry__desc,
+        names.Name(wire::Topic::kPoseCommand, sim.body_name(first_vessel + v)));
     pose_readers_.push_back(std::make_unique<dds::Reader<dds::OdometryMsg>>(
         participant, pose_topics_.back(), dds::CommandQos()));
     waitset_.Attach(pose_readers_.back()->condition());

@@ -54,10 +54,10 @@ namespace core = towsim::core;
 namespace dds = towsim::dds;
 namespace wire = towsim::wire;
 
-constexpr double kWaitSlice = 0.02;      // longest wait between polls of the stop signal [s]
-constexpr double kMatchTimeout = 10.0;   // for the node's pose reader to match [s]
-constexpr double kAckTimeout = 1.0;      // at the end, for the node to acknowledge [s]
-constexpr int kStatusDepth = 16;         // status history: no step lost in a burst
+constexpr double kWaitSlice = 0.02;     // longest wait between polls of the stop signal [s]
+constexpr double kMatchTimeout = 10.0;  // for the node's pose reader to match [s]
+constexpr double kAckTimeout = 1.0;     // at the end, for the node to acknowledge [s]
+constexpr int kStatusDepth = 16;        // status history: no step lost in a burst
 
 const char* kUsage =
     "usage: towsim_vessel_feed --vessel NAME --history FILE.csv [--domain N] [--namespace NS]\n"
