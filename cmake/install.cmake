@@ -29,6 +29,7 @@ set(TOWSIM_INSTALLED_PROGRAMS
   towsim_export
   towsim_sweep
   towsim_foxglove
+  towsim_vessel_feed
   maneuver_runner
   towfish_depth
   autopilot

@@ -45,6 +45,10 @@ std::vector<TopicSpec> BuildTable() {
        Q::kState, kOut},
       {T::kCommand, S::kBody, "command", &towsim_msgs_msg_dds__ActuatorCommand__desc, Q::kCommand,
        kIn},
+      // an external vessel's pose (docs/vessels.md "External vessels"): its odometry as the
+      // node publishes it on odom, stamped with the time the pose belongs to
+      {T::kPoseCommand, S::kBody, "pose_command", &nav_msgs_msg_dds__Odometry__desc, Q::kCommand,
+       kIn},
   };
 }
 

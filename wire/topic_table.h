@@ -43,6 +43,7 @@ enum class Topic {
   kPressure,
   kEnvironment,
   kCommand,
+  kPoseCommand,
 };
 
 // which way a topic flows, seen from the node

@@ -251,6 +251,7 @@ const VesselPose& Simulation::vessel_pose(int v) const { return impl_->vessel_no
 void Simulation::SetVesselPose(int v, double t, const VesselPose& pose) {
   if (!impl_->vessels[v].external()) return;
   impl_->vessels[v].SetExternal(t, pose);
+  if (t == impl_->state.t) impl_->vessel_now[v] = impl_->vessels[v].At(t);
 }
 
 Vec3 Simulation::node_position(int i, int c) const {

@@ -126,7 +126,9 @@ class Simulation {
   const VesselPose& vessel_pose(int v) const;
   // an external vessel (Vessel::external): its pose at time t, held and carried forward by
   // its rates until the next (the node gives the pose for the end of the next step before it;
-  // the step starts from the pose reported now, vessel_pose; ignored for a prescribed vessel)
+  // the step starts from the pose reported now, vessel_pose; ignored for a prescribed vessel).
+  // A pose for the time now (t == time(), e.g. the initial pose at t = 0) also replaces the
+  // pose reported now, from which the next step starts.
   void SetVesselPose(int v, double t, const VesselPose& pose);
 
   // --- the winch at the cable's start (winch.h, docs/winch.md) ---

@@ -23,9 +23,12 @@ Eigen::Vector2d Rotate(double psi, const Eigen::Vector2d& x) {
 
 }  // namespace
 
-Eigen::Quaterniond VesselPose::attitude() const { return QuaternionFromEulerZYX(euler); }
+Eigen::Quaterniond VesselPose::attitude() const {
+  return given ? given->q_WB : QuaternionFromEulerZYX(euler);
+}
 
 Eigen::Matrix<double, 6, 1> VesselPose::twist() const {
+  if (given) return given->twist;
   // body rates from the ZYX Euler rates: p = phi' - psi' sin theta,
   // q = theta' cos phi + psi' cos theta sin phi, r = -theta' sin phi + psi' cos theta cos phi
   const double phi = euler.x(), theta = euler.y();
@@ -107,10 +110,13 @@ void VesselMotion::Motions(double t, const CourseSample& course, Vec6* xi, Vec6*
 VesselPose VesselMotion::At(double t) const {
   VesselPose p;
   if (external_) {
-    const double dt = t - external_time_;
     p = external_pose_;
+    // at the pose's own time: as given, untouched (-0 + 0 would turn a -0 into +0)
+    if (t == external_time_) return p;
+    const double dt = t - external_time_;
     p.position += dt * external_pose_.velocity;
     p.euler += dt * external_pose_.euler_rate;
+    p.given.reset();
     return p;
   }
   if (history_) {

@@ -24,8 +24,9 @@
 //              the vessel turns is slow and left out of the derivatives).
 //   time history: the pose and its derivatives from the spline (pose_spline.h).
 //   external: the pose last given (SetExternal) at its time t_e, carried forward to t by its
-//              velocity and Euler rates: p(t) = p_e + v_e (t - t_e) (a late pose holds the last
-//              motion, docs/vessels.md "External").
+//              velocity and Euler rates: p(t) = p_e + v_e (t - t_e), euler(t) = euler_e +
+//              euler_rate_e (t - t_e) (a late pose holds the last motion, docs/vessels.md
+//              "External vessels"); at t = t_e exactly the pose as given, to the last bit.
 
 #include <memory>
 #include <optional>
@@ -48,6 +49,18 @@ struct VesselPose {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();      // of the origin, world [m/s]
   Eigen::Vector3d euler_rate = Eigen::Vector3d::Zero();    // d/dt of euler [rad/s]
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();  // of the origin, world [m/s^2]
+
+  // The attitude and the body twist exactly as another program gave them (an external
+  // vessel's odometry, docs/vessels.md "External vessels"); unset for a computed pose. When
+  // set, attitude() and twist() return them rather than recomputing them from euler and the
+  // rates (which were derived from them and would round differently), so a pose fed back from
+  // the node's own odometry reproduces the run to the last bit. A pose carried forward in time
+  // drops them.
+  struct Given {
+    Eigen::Quaterniond q_WB = Eigen::Quaterniond::Identity();
+    Eigen::Matrix<double, 6, 1> twist = Eigen::Matrix<double, 6, 1>::Zero();  // [u v w p q r]
+  };
+  std::optional<Given> given;
 
   Eigen::Quaterniond attitude() const;  // q_WB
   // [u v w p q r]: the origin's velocity and the angular velocity in the body frame

@@ -1,5 +1,6 @@
 #include "dds/command_arbiter.h"
 
+#include <cmath>
 #include <cstdio>
 #include <utility>
 
@@ -45,6 +46,27 @@ CheckedWinchCommand CommandArbiter::Receive(int v, const WinchCommandMsg& msg, d
   return checked;
 }
 
+CheckedPose CommandArbiter::Receive(int v, const OdometryMsg& msg, double t, uint64_t step,
+                                    double h) {
+  CheckedPose checked = FromPoseCommand(msg, vehicles_[v].name);
+  State& s = state_[v];
+  if (checked.verdict == CheckedCommand::kAccepted && s.has_command &&
+      checked.t < s.held_pose_time) {
+    // older than the pose held (out of order): counted, the newest stays
+    ++received_;
+    s.heard = true;
+    return checked;
+  }
+  // the state nearest the stamp
+  const int64_t state = static_cast<int64_t>(step) + std::llround((checked.t - t) / h);
+  if (Count(v, checked.verdict, checked.reason, step, t)) {
+    s.held_pose = checked.pose;
+    s.held_pose_time = checked.t;
+    s.held_state = state;
+  }
+  return checked;
+}
+
 void CommandArbiter::EnterFailsafe(int v, const std::string& why) {
   State& s = state_[v];
   if (!s.failsafe) {
@@ -63,8 +85,12 @@ int CommandArbiter::CheckTimeouts(double t) {
     if (!s.has_command || s.failsafe) continue;
     const double silent = t - s.last_time;
     if (silent >= command_timeout_ - kCommandTimeTolerance) {
-      char why[96];
-      std::snprintf(why, sizeof why, "no command for %.3g s of simulation time", silent);
+      char why[128];
+      std::snprintf(why, sizeof why,
+                    vehicles_[v].vessel
+                        ? "no pose for %.3g s of simulation time (its last motion carried on)"
+                        : "no command for %.3g s of simulation time",
+                    silent);
       EnterFailsafe(v, why);
       ++n;
     }
@@ -72,26 +98,51 @@ int CommandArbiter::CheckTimeouts(double t) {
   return n;
 }
 
-bool CommandArbiter::ReadyFor(uint64_t step) const {
+bool CommandArbiter::Answers(int v, int64_t step) const {
+  const State& s = state_[v];
+  if (vehicles_[v].vessel) return s.has_command && s.held_state >= step + 1;
+  return step < 0 || (s.has_command && s.held_step == static_cast<uint64_t>(step));
+}
+
+bool CommandArbiter::ReadyFor(int64_t step) const {
   for (int v = 0; v < size(); ++v) {
-    const State& s = state_[v];
-    if (!vehicles_[v].lockstep || !s.waited_for) continue;
-    if (!s.has_command || s.held_step != step) return false;
+    if (!vehicles_[v].lockstep || !state_[v].waited_for) continue;
+    if (!Answers(v, step)) return false;
   }
   return true;
 }
 
-std::vector<int> CommandArbiter::Missing(uint64_t step) const {
+std::vector<int> CommandArbiter::Missing(int64_t step) const {
   std::vector<int> missing;
   for (int v = 0; v < size(); ++v) {
-    const State& s = state_[v];
-    if (!vehicles_[v].lockstep || !s.waited_for) continue;
-    if (!s.has_command || s.held_step != step) missing.push_back(v);
+    if (!vehicles_[v].lockstep || !state_[v].waited_for) continue;
+    if (!Answers(v, step)) missing.push_back(v);
   }
   return missing;
 }
 
-int CommandArbiter::TimeOut(uint64_t step, bool unheard_too) {
+int CommandArbiter::CountMissingPoses(uint64_t step) {
+  int started = 0;
+  for (int v = 0; v < size(); ++v) {
+    if (!vehicles_[v].vessel) continue;
+    State& s = state_[v];
+    const bool on_time = Answers(v, static_cast<int64_t>(step));
+    if (on_time) {
+      s.late = false;
+      continue;
+    }
+    ++poses_missing_;
+    if (!s.late) {
+      s.late = true;
+      ++started;
+      last_event_ = vehicles_[v].name + ": no pose for the end of step " + std::to_string(step) +
+                    " (its last motion carried on)";
+    }
+  }
+  return started;
+}
+
+int CommandArbiter::TimeOut(int64_t step, bool unheard_too) {
   int n = 0;
   for (int v : Missing(step)) {
     State& s = state_[v];
@@ -100,6 +151,14 @@ int CommandArbiter::TimeOut(uint64_t step, bool unheard_too) {
     s.waited_for = false;
     ++lockstep_timeouts_;
     ++n;
+    if (vehicles_[v].vessel) {
+      EnterFailsafe(v, std::string(s.has_command || !s.heard ? "lockstep: no pose"
+                                                             : "lockstep: no valid pose") +
+                           (step < 0 ? std::string(" for the initial state")
+                                     : " for the end of step " + std::to_string(step)) +
+                           " in time (its last motion carried on)");
+      continue;
+    }
     EnterFailsafe(v, std::string(s.has_command || !s.heard ? "lockstep: no command"
                                                            : "lockstep: no valid command") +
                          " for step " + std::to_string(step) + " in time");
@@ -129,9 +188,19 @@ bool CommandArbiter::Take(int v, core::WinchCommand* command) {
   return TakeHeld(state_[v], state_[v].held_winch, command);
 }
 
+bool CommandArbiter::Take(int v, core::VesselPose* pose, double* t, int64_t* state) {
+  State& s = state_[v];
+  if (!s.fresh) return false;
+  s.fresh = false;
+  *pose = s.held_pose;
+  *t = s.held_pose_time;
+  *state = s.held_state;
+  return true;
+}
+
 void CommandArbiter::Reset() {
   for (State& s : state_) s = State{};
-  received_ = rejected_ = clamped_ = failsafe_count_ = lockstep_timeouts_ = 0;
+  received_ = rejected_ = clamped_ = failsafe_count_ = lockstep_timeouts_ = poses_missing_ = 0;
   last_event_.clear();
   last_failsafe_reason_.clear();
 }

@@ -19,6 +19,17 @@
 // WinchCommand samples are checked against its limits (dds/winch_command.h), counted with the
 // vehicles' commands, held; its failsafe holds the drum at speed 0; lockstep waits for it
 // like for a vehicle.
+// An external vessel (docs/vessels.md "External vessels") is one more entry, after the
+// vehicles and the winch, whose "command" is its pose (nav_msgs/Odometry on
+// rt/<ns>/<vessel>/pose_command, dds/vessel_pose_translator.h): checked (non-finite numbers,
+// a quaternion that is not a rotation, foreign frames: rejected), counted with the commands,
+// the newest by stamp held. A pose belongs to the state nearest its stamp: state
+// k = n + round((stamp - t_n) / h) for a pose taken at state n. Lockstep step n waits for a
+// pose of state n + 1 (or later), and "step -1" (before the initial state is published) for a
+// pose of state 0. A vessel has no failsafe command: in failsafe (no pose for
+// `command_timeout`, or a lockstep timeout) and whenever a step has no pose for its end, its
+// last pose is carried forward by its rates (core/vessel_motion.h); the steps without their
+// pose are counted (poses_missing), and the start of each run of them is the last event.
 
 #include <cstdint>
 #include <string>
@@ -26,7 +37,9 @@
 #include <vector>
 
 #include "core/vehicle_model.h"
+#include "core/vessel_motion.h"
 #include "dds/translators.h"
+#include "dds/vessel_pose_translator.h"
 #include "dds/winch_command.h"
 
 namespace towsim::dds {
@@ -46,10 +59,17 @@ class CommandArbiter {
       w.winch_params = params;
       return w;
     }
+    // an external vessel's entry (its pose_command)
+    static Vehicle Vessel(std::string name, bool waited) {
+      Vehicle v(std::move(name), {}, waited);
+      v.vessel = true;
+      return v;
+    }
     std::string name;
     CommandLimits limits;
     bool lockstep = true;  // lockstep mode waits for its commands
     bool winch = false;    // the winch's entry: WinchCommand within winch_params' limits
+    bool vessel = false;   // an external vessel's entry: its pose
     core::WinchParams winch_params;
   };
 
@@ -60,20 +80,25 @@ class CommandArbiter {
   CheckedCommand Receive(int v, const ActuatorCommandMsg& msg, double t);
   // a sample for the winch entry v (Vehicle::winch) taken at simulation time t [s] (counted)
   CheckedWinchCommand Receive(int v, const WinchCommandMsg& msg, double t);
+  // a pose for the vessel entry v taken at state `step` (simulation time t [s], steps of h
+  // [s]); counted; held if newer (by stamp) than the one held
+  CheckedPose Receive(int v, const OdometryMsg& msg, double t, uint64_t step, double h);
 
   // enters failsafe every vehicle whose last valid command is `command_timeout` or more
   // before t; call at the start of every step. Returns how many entered failsafe.
   int CheckTimeouts(double t);
 
-  // lockstep: every lockstep vehicle that is waited for holds a command answering `step`
-  bool ReadyFor(uint64_t step) const;
+  // lockstep: every lockstep vehicle that is waited for holds a command answering `step`,
+  // every such vessel a pose of state step + 1 or later; step -1: the vessels' poses of state
+  // 0 (the vehicles are not waited for)
+  bool ReadyFor(int64_t step) const;
   // the vehicles ReadyFor is waiting for (names), for messages
-  std::vector<int> Missing(uint64_t step) const;
+  std::vector<int> Missing(int64_t step) const;
   // lockstep: the wait for `step` timed out: every missing vehicle that has sent a command
   // before, valid or rejected, enters failsafe and is no longer waited for; with
   // `unheard_too`, a vehicle never heard from too (else it is still waited for: its
   // controller may not have started yet). Returns how many timed out.
-  int TimeOut(uint64_t step, bool unheard_too = false);
+  int TimeOut(int64_t step, bool unheard_too = false);
 
   // The command vehicle v must be given before the next step, if any: the failsafe command
   // on every step of a failsafe (so that no script overrides it), a newly received command
@@ -81,6 +106,17 @@ class CommandArbiter {
   bool Take(int v, core::VehicleCommand* command);
   // the same for the winch entry v: speed 0 on every step of a failsafe
   bool Take(int v, core::WinchCommand* command);
+  // the same for the vessel entry v: a newly received pose, once (nothing in failsafe: the
+  // last pose is carried forward), its stamp t [s] and the state it belongs to
+  bool Take(int v, core::VesselPose* pose, double* t, int64_t* state);
+
+  // before step `step` (state step -> step + 1): every vessel entry without a pose of state
+  // step + 1 or later is counted in poses_missing() (its last pose is carried forward);
+  // returns how many of them had their pose at the step before (late(v) says which: a run of
+  // late steps starts, the node says so once)
+  int CountMissingPoses(uint64_t step);
+  // vessel entry v had no pose for the end of the last step counted
+  bool late(int v) const { return state_[v].late; }
 
   // back to the start: no command held, nothing in failsafe, counters zero
   void Reset();
@@ -97,6 +133,8 @@ class CommandArbiter {
   uint64_t clamped() const { return clamped_; }
   uint64_t failsafe_count() const { return failsafe_count_; }  // failsafe entries
   uint64_t lockstep_timeouts() const { return lockstep_timeouts_; }
+  // steps an external vessel took without a pose for their end (CountMissingPoses)
+  uint64_t poses_missing() const { return poses_missing_; }
   // the last clamp / reject / failsafe, for the status message
   const std::string& last_event() const { return last_event_; }
   // why the last entry that entered failsafe did ("no command for 0.5 s of simulation time",
@@ -114,8 +152,15 @@ class CommandArbiter {
     bool failsafe = false;
     bool waited_for = true;  // lockstep: false after a lockstep timeout until commands resume
     bool fresh = false;      // held not yet given to the simulation
+    // a vessel's entry: the pose held, its stamp [s], the state it belongs to (-1: none)
+    core::VesselPose held_pose;
+    double held_pose_time = 0.0;
+    int64_t held_state = -1;
+    bool late = false;  // no pose for the end of the last step counted
   };
   void EnterFailsafe(int v, const std::string& why);
+  // entry v holds what `step` needs (ReadyFor's rule for one entry, whether waited for or not)
+  bool Answers(int v, int64_t step) const;
   // Take's rule for either kind of command held in s
   template <class Command>
   static bool TakeHeld(State& s, const Command& held, Command* command);
@@ -128,6 +173,7 @@ class CommandArbiter {
   double command_timeout_;
   uint64_t received_ = 0, rejected_ = 0, clamped_ = 0, failsafe_count_ = 0;
   uint64_t lockstep_timeouts_ = 0;
+  uint64_t poses_missing_ = 0;
   std::string last_event_;
   std::string last_failsafe_reason_;
 };

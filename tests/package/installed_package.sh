@@ -48,7 +48,7 @@ example)
     grep -q "^usage: $name" "$work/help.txt" || fail "$name --help: no usage on stdout"
     programs=$((programs + 1))
   done
-  [[ "$programs" -eq 10 ]] || fail "bin/ holds $programs programs, not the 10 of TOWSIM_INSTALLED_PROGRAMS"
+  [[ "$programs" -eq 11 ]] || fail "bin/ holds $programs programs, not the 11 of TOWSIM_INSTALLED_PROGRAMS"
   # a bare --config name finds the installed file (P/share/towsim/maneuvers, autopilot): the
   # file is read, then the bad --timeout is the error (exit 2); a name installed nowhere is
   # reported as the file it names

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "dds/command_arbiter.h"
+#include "dds/vessel_pose_translator.h"
 
 namespace towsim::dds {
 namespace {
@@ -237,6 +238,114 @@ TEST(CommandArbiterWinchTest, LockstepWaitsForTheWinchLikeForAVehicle) {
   EXPECT_TRUE(a.failsafe(1));
   EXPECT_TRUE(a.ReadyFor(1));
   EXPECT_EQ(a.lockstep_timeouts(), 1u);
+}
+
+// --- external vessels (docs/vessels.md "External vessels") ---
+
+// a vessel's pose message stamped t [s], at x north [m]
+struct PoseMessage {
+  explicit PoseMessage(double t, double x = 0.0) : m(kWorldFrame, "ship_frd") {
+    core::VesselPose p;
+    p.position.x() = x;
+    p.velocity.x() = 2.0;
+    ToPoseCommand(p, t, &m.msg);
+  }
+  OdometryMessage m;
+};
+
+CommandArbiter VehicleAndShip(bool ship_waited = true) {
+  return CommandArbiter(
+      {{"tow_vehicle", Limits(), true}, CommandArbiter::Vehicle::Vessel("ship", ship_waited)},
+      kTimeout);
+}
+
+TEST(CommandArbiterTest, AVesselsPoseBelongsToTheStateNearestItsStamp) {
+  CommandArbiter a = VehicleAndShip();
+  // before the initial state (step -1): the vessel's pose of state 0, the vehicle not waited
+  EXPECT_FALSE(a.ReadyFor(-1));
+  EXPECT_EQ(a.Missing(-1), std::vector<int>{1});
+  a.Receive(1, PoseMessage(0.0).m.msg, 0.0, 0, kH);
+  EXPECT_TRUE(a.ReadyFor(-1));
+  core::VesselPose pose;
+  double t = -1.0;
+  int64_t state = -1;
+  ASSERT_TRUE(a.Take(1, &pose, &t, &state));
+  EXPECT_EQ(state, 0);
+  EXPECT_EQ(t, 0.0);
+  EXPECT_FALSE(a.Take(1, &pose, &t, &state));  // given once
+  // step 12 (state 12 at 0.6 s) waits for the command of step 12 and the pose of state 13
+  a.Receive(0, Command(1000.0, 12), 0.6);
+  EXPECT_FALSE(a.ReadyFor(12));
+  // stamped in whole nanoseconds: 0.65 s is state 13 within half a step
+  a.Receive(1, PoseMessage(0.65 + 0.2e-9, 5.0).m.msg, 0.6, 12, kH);
+  EXPECT_TRUE(a.ReadyFor(12));
+  ASSERT_TRUE(a.Take(1, &pose, &t, &state));
+  EXPECT_EQ(state, 13);
+  EXPECT_EQ(pose.position.x(), 5.0);
+  EXPECT_TRUE(pose.given.has_value());
+  // a later one releases the step too (state 14 >= 13)
+  a.Receive(1, PoseMessage(0.7).m.msg, 0.6, 12, kH);
+  EXPECT_TRUE(a.ReadyFor(12));
+  // an older one (out of order) is counted and not held
+  a.Receive(1, PoseMessage(0.55, 9.0).m.msg, 0.6, 12, kH);
+  EXPECT_FALSE(a.Take(1, &pose, &t, &state) && pose.position.x() == 9.0);
+  EXPECT_EQ(a.received(), 5u);
+  EXPECT_EQ(a.rejected(), 0u);
+}
+
+TEST(CommandArbiterTest, AVesselsRejectedPoseIsCountedAndNotHeld) {
+  CommandArbiter a = VehicleAndShip();
+  PoseMessage bad(0.05);
+  bad.m.msg.pose.pose.orientation.w = 2.0;
+  const CheckedPose r = a.Receive(1, bad.m.msg, 0.0, 0, kH);
+  EXPECT_EQ(r.verdict, CheckedCommand::kRejected);
+  EXPECT_EQ(a.rejected(), 1u);
+  EXPECT_FALSE(a.ReadyFor(0));
+  EXPECT_EQ(a.last_event().rfind("ship: command rejected (pose.pose.orientation: |q| = ", 0), 0u)
+      << a.last_event();
+}
+
+TEST(CommandArbiterTest, StepsWithoutTheirPoseAreCountedOncePerRun) {
+  CommandArbiter a = VehicleAndShip(false);      // realtime: not waited for
+  EXPECT_EQ(a.Missing(0), std::vector<int>{0});  // the vehicle only
+  // no pose yet: step 0 goes without one; its run of missing poses starts
+  EXPECT_EQ(a.CountMissingPoses(0), 1);
+  EXPECT_TRUE(a.late(1));
+  EXPECT_EQ(a.last_event(), "ship: no pose for the end of step 0 (its last motion carried on)");
+  EXPECT_EQ(a.CountMissingPoses(1), 0);  // still late: counted, not started again
+  EXPECT_EQ(a.poses_missing(), 2u);
+  a.Receive(1, PoseMessage(0.15).m.msg, 0.1, 2, kH);  // state 3: the end of step 2
+  EXPECT_EQ(a.CountMissingPoses(2), 0);
+  EXPECT_FALSE(a.late(1));
+  EXPECT_EQ(a.poses_missing(), 2u);
+  EXPECT_EQ(a.CountMissingPoses(3), 1);  // a new run
+  EXPECT_EQ(a.poses_missing(), 3u);
+}
+
+TEST(CommandArbiterTest, AVesselWithoutPosesTimesOutIntoFailsafe) {
+  CommandArbiter a = VehicleAndShip();
+  a.Receive(1, PoseMessage(0.05).m.msg, 0.0, 0, kH);
+  EXPECT_EQ(a.CheckTimeouts(kTimeout - kH), 0);
+  EXPECT_EQ(a.CheckTimeouts(kTimeout), 1);
+  EXPECT_TRUE(a.failsafe(1));
+  EXPECT_EQ(a.last_failsafe_reason(),
+            "no pose for 0.5 s of simulation time (its last motion carried on)");
+  core::VesselPose pose;
+  double t;
+  int64_t state;
+  EXPECT_FALSE(a.Take(1, &pose, &t, &state));  // no failsafe pose: the last motion goes on
+  // lockstep: the pose of step 11's end did not come in time
+  a.Receive(1, PoseMessage(0.55).m.msg, 0.5, 10, kH);
+  EXPECT_FALSE(a.failsafe(1));  // poses resumed
+  a.Receive(0, Command(1.0, 11), 0.55);
+  EXPECT_EQ(a.TimeOut(11), 1);
+  EXPECT_EQ(a.last_failsafe_reason(),
+            "lockstep: no pose for the end of step 11 in time (its last motion carried on)");
+  EXPECT_TRUE(a.ReadyFor(11));  // no longer waited for
+  EXPECT_EQ(a.lockstep_timeouts(), 1u);
+  a.Reset();
+  EXPECT_EQ(a.poses_missing(), 0u);
+  EXPECT_FALSE(a.ReadyFor(-1));
 }
 
 }  // namespace

@@ -24,6 +24,11 @@ towsim_add_test(dds_winch_command_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_winch_command_test.cc
   LIBS towsim::dds)
 
+# an external vessel's pose on the wire (dds/vessel_pose_translator)
+towsim_add_test(dds_vessel_pose_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_vessel_pose_test.cc
+  LIBS towsim::dds towsim::scene)
+
 towsim_add_test(dds_command_arbiter_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_command_arbiter_test.cc
   LIBS towsim::dds)

@@ -134,5 +134,32 @@ TEST(VesselMotion, ExternalPoseIsCarriedForwardByItsRates) {
   EXPECT_NEAR(motion.At(3.5).euler.z(), 0.05, kExact);
 }
 
+// at its own time an external pose is returned as given, to the bit (a -0 stays -0, the
+// attitude and twist given are kept); carried to another time it is computed again
+TEST(VesselMotion, ExternalPoseAtItsOwnTimeIsAsGiven) {
+  Vessel v;
+  v.external = true;
+  const WaveField calm;
+  VesselMotion motion(v, calm);
+  VesselPose p;
+  p.position = Eigen::Vector3d(-0.0, 3.0, -0.0);
+  p.velocity = Eigen::Vector3d(1.0, 0.0, 0.0);
+  VesselPose::Given g;
+  g.q_WB = Eigen::Quaterniond(0.5, 0.5, 0.5, 0.5);
+  g.twist << 1, 2, 3, 4, 5, 6;
+  p.given = g;
+  motion.SetExternal(0.3, p);
+  const VesselPose at = motion.At(0.3);
+  EXPECT_TRUE(std::signbit(at.position.x()));
+  EXPECT_TRUE(std::signbit(at.position.z()));
+  ASSERT_TRUE(at.given.has_value());
+  EXPECT_EQ(at.attitude().coeffs(), g.q_WB.coeffs());
+  EXPECT_EQ(at.twist(), g.twist);
+  const VesselPose later = motion.At(0.4);
+  EXPECT_FALSE(later.given.has_value());
+  EXPECT_NEAR(later.position.x(), 0.1, kExact);
+  EXPECT_EQ(later.attitude().coeffs(), Eigen::Quaterniond::Identity().coeffs());
+}
+
 }  // namespace
 }  // namespace towsim::core

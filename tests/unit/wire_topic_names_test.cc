@@ -26,6 +26,7 @@ void ExpectNames(const TopicNames& n, const std::string& p) {
   EXPECT_EQ(n.Name(Topic::kPressure, "towfish"), p + "towfish/pressure");
   EXPECT_EQ(n.Name(Topic::kEnvironment, "towfish"), p + "towfish/environment");
   EXPECT_EQ(n.Name(Topic::kCommand, "tow_vehicle"), p + "tow_vehicle/command");
+  EXPECT_EQ(n.Name(Topic::kPoseCommand, "ship"), p + "ship/pose_command");
   // the root topics stay at the root in every namespace
   EXPECT_EQ(n.Name(Topic::kClock), "rt/clock");
   EXPECT_EQ(n.Name(Topic::kTf), "rt/tf");
@@ -77,7 +78,7 @@ TEST(TopicNamesTest, RosAndDdsNames) {
 // one row per topic, each with a type, and the direction and QoS the node uses
 TEST(TopicTableTest, RowsOfTheContract) {
   const std::vector<TopicSpec>& table = TopicTable();
-  ASSERT_EQ(table.size(), 15u);
+  ASSERT_EQ(table.size(), 16u);
   EXPECT_EQ(table.front().topic, Topic::kSceneInfo);  // scene_info first
   for (size_t i = 0; i < table.size(); ++i) {
     EXPECT_NE(table[i].type, nullptr) << table[i].name;
@@ -93,6 +94,9 @@ TEST(TopicTableTest, RowsOfTheContract) {
   EXPECT_EQ(SpecOf(Topic::kSimControl).direction, Direction::kIn);
   EXPECT_EQ(SpecOf(Topic::kWinchCommand).direction, Direction::kIn);
   EXPECT_EQ(SpecOf(Topic::kOdom).direction, Direction::kOut);
+  EXPECT_EQ(SpecOf(Topic::kPoseCommand).direction, Direction::kIn);
+  EXPECT_EQ(SpecOf(Topic::kPoseCommand).scope, Scope::kBody);
+  EXPECT_EQ(SpecOf(Topic::kPoseCommand).type, SpecOf(Topic::kOdom).type);  // nav_msgs/Odometry
   EXPECT_EQ(SpecOf(Topic::kCableState).scope, Scope::kCable);
   EXPECT_EQ(SpecOf(Topic::kWinchCommand).scope, Scope::kWinch);
   EXPECT_STREQ(SpecOf(Topic::kOdom).type->m_typename, "nav_msgs::msg::dds_::Odometry_");

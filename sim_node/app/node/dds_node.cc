@@ -86,9 +86,19 @@ class DdsNode {
   // reset, rate, resume), so that a wait must end
   bool HandleControl();
   void TakeCommands();
-  // lockstep: waits for the commands of step_ (call it right after HandleControl and
-  // TakeCommands); false if a signal or a control request interrupted the wait
-  bool WaitLockstep();
+  // lockstep: waits for the commands of `step` (call it right after HandleControl and
+  // TakeCommands); false if a signal or a control request interrupted the wait. step -1: the
+  // external vessels' poses of the initial state (docs/vessels.md "External vessels"), before
+  // it is published; control requests then wait until it ends (a RESET publishes the initial
+  // state from within HandleControl)
+  bool WaitLockstep(int64_t step);
+  // the external vessels' newly received poses given to the simulation: a pose of the state
+  // now or of the next one at the simulation's own time of that state (its stamp carries
+  // whole nanoseconds), any other at its stamp
+  void ApplyPoses();
+  // before a step: the external vessels without a pose for its end, counted; the start of a
+  // run of them said on stderr
+  void CountMissingPoses();
   // paused: status now and then, and wait for control requests
   void Idle();
   // the arbiter entries --wait-for-controllers waits for: every vehicle that takes commands,
@@ -117,6 +127,8 @@ class DdsNode {
   void NoteCommand(const Checked& c, int i);
   // arbiter entries 0 .. num_command_vehicles() - 1 are the vehicles, then the winch's
   int num_command_vehicles() const { return static_cast<int>(n_.command_vehicles.size()); }
+  // the arbiter entry of an external vessel
+  bool is_vessel_entry(int i) const { return n_.arbiter->vehicle(i).vessel; }
 
   const core::Model& model_;
   DdsNodeOptions opt_;
@@ -140,6 +152,7 @@ class DdsNode {
   double rtf_sim_ = 0.0, rtf_ = 0.0;
   RunCounters before_reset_;  // the runs before the last RESET, and the RESETs
   int command_notes_ = 0;
+  std::vector<int> late_notes_;  // by external vessel: runs of missing poses said on stderr
   std::string awaited_note_;  // the last NoteAwaited() line
   // --winch script: commands on the winch's topic, rejected (received and rejected in the
   // status, with the commands on topics of no commandable body)
@@ -238,7 +251,7 @@ int DdsNode::Loop() {
       control_.ControllersReady();
       if (realtime()) pacer_.Start(period());  // the pacing starts with the first step
     }
-    if (lockstep() && !WaitLockstep()) continue;
+    if (lockstep() && !WaitLockstep(static_cast<int64_t>(step_))) continue;
     if (realtime()) {
       const bool on_time = pacer_.WaitForDeadline(
           [this] { return !StopRequested() && !HandleControl(); }, kWaitSlice);
@@ -265,6 +278,13 @@ void DdsNode::PublishInitial() {
   }
   n_.endpoints->PublishSceneInfo(info);
 
+  // lockstep: the external vessels' poses of the initial state before it is published
+  // (docs/vessels.md "External vessels"); elsewhere the scene's pose until one comes
+  if (lockstep() && !n_.vessel_entries.empty()) {
+    TakeCommands();
+    WaitLockstep(-1);
+  }
+  ApplyPoses();
   last_status_ = core::StepStatus{};
   n_.endpoints->PublishState(*n_.sim, step_, n_.strides, /*all=*/true);
   PublishStatus(RunningState());
@@ -348,6 +368,12 @@ void DdsNode::TakeCommands() {
     std::fprintf(stderr, "sim_node: %s\n", n_.unknown->last_event().c_str());
   }
   const double t = n_.sim->time();
+  for (int i = 0; i < n_.endpoints->num_pose_readers(); ++i) {
+    const int e = n_.vessel_entries[i];
+    n_.endpoints->pose_reader(i).TakeEach([&](const dds::OdometryMsg& msg, const auto&) {
+      NoteCommand(n_.arbiter->Receive(e, msg, t, step_, h_), e);
+    });
+  }
   for (int i = 0; i < n_.endpoints->num_command_readers(); ++i) {
     n_.endpoints->command_reader(i).TakeEach(
         [&](const dds::ActuatorCommandMsg& msg, const dds_sample_info_t&) {
@@ -372,9 +398,10 @@ void DdsNode::NoteFailsafe(std::string failure) {
   if (opt_.fail_on_failsafe && failsafe_failure_.empty()) failsafe_failure_ = std::move(failure);
 }
 
-bool DdsNode::WaitLockstep() {
+bool DdsNode::WaitLockstep(int64_t step) {
   dds::CommandArbiter& arbiter = *n_.arbiter;
-  if (arbiter.ReadyFor(step_)) return true;
+  const bool initial = step < 0;
+  if (arbiter.ReadyFor(step)) return true;
   // --lockstep-timeout 0: no limit, not even for a vehicle never heard from
   const double limit = opt_.lockstep_timeout;
   const bool forever = limit == 0.0;
@@ -393,7 +420,7 @@ bool DdsNode::WaitLockstep() {
     if ((!forever && !timed_out && waited >= limit) || (start_over && !start_timed_out)) {
       timed_out = true;
       start_timed_out = start_over;
-      if (arbiter.TimeOut(step_, start_over) > 0) {
+      if (arbiter.TimeOut(step, start_over) > 0) {
         std::fprintf(stderr, "sim_node: %s\n", arbiter.last_event().c_str());
         bool never_heard = start_over;
         for (int v = 0; v < arbiter.size(); ++v) {
@@ -402,23 +429,26 @@ bool DdsNode::WaitLockstep() {
         NoteFailsafe(LockstepTimeoutFailure(FailsafeEntries(arbiter), n_.sim->time(), step_, waited,
                                             limit, never_heard));
         PublishStatus(RunningState());
-        if (arbiter.ReadyFor(step_)) return true;
+        if (arbiter.ReadyFor(step)) return true;
       }
     }
     if (!hinted && waited >= kLockstepHintAfter) {
       hinted = true;
       // secured: a controller whose identity may not command is refused in its own process;
       // nothing of it reaches the node (docs/security.md, "A refused command")
-      std::fprintf(stderr, "sim_node: lockstep: waiting for the commands of step %llu: %s%s\n",
-                   static_cast<unsigned long long>(step_), Describe(arbiter.Missing(step_)).c_str(),
+      std::string what = "the commands of step " + std::to_string(step_);
+      if (initial) what = "the initial poses";
+      std::fprintf(stderr, "sim_node: lockstep: waiting for %s: %s%s\n", what.c_str(),
+                   Describe(arbiter.Missing(step)).c_str(),
                    opt_.security.empty()
                        ? ""
                        : " (secured: a controller whose identity may not command one of them is "
                          "refused in its own process, which the node cannot see; check the "
                          "controller's output)");
     }
-    if (Seconds(now - last_status_wall_) >= kIdleStatusPeriod) {
-      // again, for late joiners (volatile topics): the state, then the status
+    if (!initial && Seconds(now - last_status_wall_) >= kIdleStatusPeriod) {
+      // again, for late joiners (volatile topics): the state, then the status (not before the
+      // initial state: a status asks the vessels' feeders for the pose of the next state)
       n_.endpoints->PublishState(*n_.sim, step_, n_.strides, /*all=*/true);
       PublishStatus(kWaiting);
     }
@@ -426,9 +456,44 @@ bool DdsNode::WaitLockstep() {
     if (!timed_out && !forever) slice = std::min(slice, std::max(1e-4, limit - waited));
     n_.endpoints->WaitForInput(slice);
     if (StopRequested()) return false;
-    if (HandleControl()) return false;
+    if (!initial && HandleControl()) return false;
     TakeCommands();
-    if (arbiter.ReadyFor(step_)) return true;
+    if (arbiter.ReadyFor(step)) return true;
+  }
+}
+
+void DdsNode::ApplyPoses() {
+  core::Simulation& sim = *n_.sim;
+  const int64_t now = static_cast<int64_t>(step_);
+  for (size_t i = 0; i < n_.vessel_entries.size(); ++i) {
+    core::VesselPose pose;
+    double stamp = 0.0;
+    int64_t state = -1;
+    if (!n_.arbiter->Take(n_.vessel_entries[i], &pose, &stamp, &state)) continue;
+    // t_n + h as the step computes it (core/simulation.cc), so that the pose is met exactly
+    const double t = state == now ? sim.time() : state == now + 1 ? sim.time() + h_ : stamp;
+    sim.SetVesselPose(n_.external_vessels[i], t, pose);
+  }
+}
+
+void DdsNode::CountMissingPoses() {
+  if (n_.vessel_entries.empty()) return;
+  if (n_.arbiter->CountMissingPoses(step_) == 0) return;
+  late_notes_.resize(n_.vessel_entries.size(), 0);
+  for (size_t i = 0; i < n_.vessel_entries.size(); ++i) {
+    const int e = n_.vessel_entries[i];
+    if (!n_.arbiter->late(e) || late_notes_[i] > kMaxCommandNotes) continue;
+    // said once per run of missing poses, at most kMaxCommandNotes times per vessel
+    if (++late_notes_[i] > kMaxCommandNotes) {
+      std::fprintf(stderr, "sim_node: %s: (further missing poses: see the summary)\n",
+                   n_.arbiter->vehicle(e).name.c_str());
+      continue;
+    }
+    std::fprintf(stderr,
+                 "sim_node: warning: %s: no pose for t = %.9g s (the end of step %llu): its last "
+                 "motion carried on\n",
+                 n_.arbiter->vehicle(e).name.c_str(), n_.sim->time() + h_,
+                 static_cast<unsigned long long>(step_));
   }
 }
 
@@ -446,6 +511,7 @@ std::vector<int> DdsNode::Awaited() const {
   if (const int w = n_.winch_entry; w >= 0 && n_.arbiter->vehicle(w).lockstep) {
     entries.push_back(w);
   }
+  for (int e : n_.vessel_entries) entries.push_back(e);
   return entries;
 }
 
@@ -461,8 +527,9 @@ std::string DdsNode::Describe(const std::vector<int>& entries) const {
   std::string text;
   for (int i : entries) {
     const std::string& name = n_.arbiter->vehicle(i).name;
-    const std::string topic = i == n_.winch_entry ? names.Name(wire::Topic::kWinchCommand)
-                                                  : names.Name(wire::Topic::kCommand, name);
+    const std::string topic = i == n_.winch_entry  ? names.Name(wire::Topic::kWinchCommand)
+                              : is_vessel_entry(i) ? names.Name(wire::Topic::kPoseCommand, name)
+                                                   : names.Name(wire::Topic::kCommand, name);
     text += (text.empty() ? "" : ", ") + name + " (" + topic + ")";
   }
   return text;
@@ -496,6 +563,9 @@ bool DdsNode::DoStep() {
   if (core::WinchCommand winch; n_.winch_entry >= 0 && n_.arbiter->Take(n_.winch_entry, &winch)) {
     sim.SetWinchCommand(winch);
   }
+  // the external vessels' poses (docs/vessels.md "External vessels")
+  ApplyPoses();
+  CountMissingPoses();
 
   const Clock::time_point t0 = Clock::now();
   const double t_before = sim.time();
@@ -552,6 +622,10 @@ bool DdsNode::DoReset() {
   ++before_reset_.resets;
   *n_.sim = std::move(*fresh);
   n_.script.emplace(model_);
+  // the poses of the old run that came in the meantime are not the new run's
+  for (int i = 0; i < n_.endpoints->num_pose_readers(); ++i) {
+    n_.endpoints->pose_reader(i).TakeEach([](const dds::OdometryMsg&, const auto&) {});
+  }
   n_.arbiter->Reset();
   step_ = 0;
   last_status_ = core::StepStatus{};
@@ -590,6 +664,7 @@ RunCounters DdsNode::ThisRun() const {
   c.clamped = n_.arbiter->clamped();
   c.failsafes = n_.arbiter->failsafe_count();
   c.lockstep_timeouts = n_.arbiter->lockstep_timeouts();
+  c.poses_missing = n_.arbiter->poses_missing();
   return c;
 }
 
@@ -598,6 +673,7 @@ RunCounters DdsNode::Totals() const {
   c += ThisRun();
   c.overruns = pacer_.overruns();
   c.unknown_commands = n_.unknown->count() + winch_script_rejected_;
+  c.external_vessels = static_cast<int>(n_.vessel_entries.size());
   return c;
 }
 

@@ -17,7 +17,8 @@ uint64_t SimNs(double t) { return t > 0.0 ? static_cast<uint64_t>(std::llround(t
 }  // namespace
 
 NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::TopicNames& names,
-                             const core::Simulation& sim, const std::vector<int>& command_vehicles)
+                             const core::Simulation& sim, const std::vector<int>& command_vehicles,
+                             const std::vector<int>& external_vessels)
     : status_topic_(participant, &towsim_msgs_msg_dds__SimStatus__desc,
                     names.Name(wire::Topic::kStatus)),
       scene_topic_(participant, &towsim_msgs_msg_dds__SceneInfo__desc,
@@ -66,6 +67,15 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::To
     command_readers_.push_back(std::make_unique<dds::Reader<dds::ActuatorCommandMsg>>(
         participant, command_topics_.back(), dds::CommandQos()));
     waitset_.Attach(command_readers_.back()->condition());
+  }
+  const int first_vessel = num_spheres + sim.num_vehicles();
+  for (int v : external_vessels) {
+    pose_topics_.emplace_back(
+        participant, &nav_msgs_msg_dds__Odometry__desc,
+        names.Name(wire::Topic::kPoseCommand, sim.body_name(first_vessel + v)));
+    pose_readers_.push_back(std::make_unique<dds::Reader<dds::OdometryMsg>>(
+        participant, pose_topics_.back(), dds::CommandQos()));
+    waitset_.Attach(pose_readers_.back()->condition());
   }
   if (sim.has_winch()) {
     winch_topic_ =
@@ -235,6 +245,7 @@ void NodeEndpoints::PublishSceneInfo(const dds::SceneInfoSample& sample) {
 std::vector<dds_entity_t> NodeEndpoints::readers() const {
   std::vector<dds_entity_t> out;
   for (const auto& r : command_readers_) out.push_back(r->get());
+  for (const auto& r : pose_readers_) out.push_back(r->get());
   if (winch_reader_) out.push_back(winch_reader_->get());
   out.push_back(control_reader_.get());
   return out;

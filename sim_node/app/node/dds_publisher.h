@@ -30,10 +30,12 @@ namespace towsim::app {
 
 class NodeEndpoints {
  public:
-  // topics for every body of `sim` and commands for `command_vehicles` (vehicle indices);
-  // throws dds::DdsError
+  // topics for every body of `sim`, commands for `command_vehicles` (vehicle indices) and
+  // poses for `external_vessels` (vessel indices, docs/vessels.md "External vessels"); throws
+  // dds::DdsError
   NodeEndpoints(const dds::Participant& participant, const wire::TopicNames& names,
-                const core::Simulation& sim, const std::vector<int>& command_vehicles);
+                const core::Simulation& sim, const std::vector<int>& command_vehicles,
+                const std::vector<int>& external_vessels = {});
 
   // the state of `sim` after `step` steps: the topics whose stride divides `step` (all of
   // them when `all`); those of each body, then those of the node, /clock last
@@ -63,6 +65,9 @@ class NodeEndpoints {
   // command reader i (the order of command_vehicles) and the sim_control reader
   dds::Reader<dds::ActuatorCommandMsg>& command_reader(int i) { return *command_readers_[i]; }
   int num_command_readers() const { return static_cast<int>(command_readers_.size()); }
+  // pose reader i (the order of external_vessels: rt/<ns>/<vessel>/pose_command)
+  dds::Reader<dds::OdometryMsg>& pose_reader(int i) { return *pose_readers_[i]; }
+  int num_pose_readers() const { return static_cast<int>(pose_readers_.size()); }
   dds::Reader<dds::SimControlMsg>& control_reader() { return control_reader_; }
   // the winch's command reader (rt/<ns>/winch/command, docs/winch_dds.md); nullptr when the
   // scene has no winch
@@ -118,6 +123,8 @@ class NodeEndpoints {
   std::vector<Published> state_;  // in the order they are published
   std::vector<dds::Topic> command_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
+  std::vector<dds::Topic> pose_topics_;
+  std::vector<std::unique_ptr<dds::Reader<dds::OdometryMsg>>> pose_readers_;
   dds::Reader<dds::SimControlMsg> control_reader_;
   std::unique_ptr<dds::Topic> winch_topic_;
   std::unique_ptr<dds::Reader<dds::WinchCommandMsg>> winch_reader_;

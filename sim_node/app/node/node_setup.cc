@@ -53,6 +53,11 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
       return bad("body " + v.name + ": " + e + " (it names DDS topics)");
     }
   }
+  for (const core::Vessel& v : model.vessels) {
+    if (const std::string e = wire::CheckBodyName(v.name); !e.empty()) {
+      return bad("body " + v.name + ": " + e + " (it names DDS topics)");
+    }
+  }
 
   // the vehicles that take commands, and those lockstep waits for
   std::vector<dds::CommandArbiter::Vehicle> vehicles;
@@ -86,11 +91,25 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     vehicles.push_back(dds::CommandArbiter::Vehicle::Winch(*model.cables[0].winch, lockstep && waited));
     n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
   }
+  // the external vessels (docs/vessels.md "External vessels"): one entry each, their poses
+  // waited for in lockstep like a vehicle's commands
+  for (size_t v = 0; v < model.vessels.size(); ++v) {
+    const core::Vessel& vessel = model.vessels[v];
+    if (!vessel.external) continue;
+    const bool waited = opt.lockstep_bodies.empty() ||
+                        std::find(opt.lockstep_bodies.begin(), opt.lockstep_bodies.end(),
+                                  vessel.name) != opt.lockstep_bodies.end();
+    n.external_vessels.push_back(static_cast<int>(v));
+    n.vessel_entries.push_back(static_cast<int>(vehicles.size()));
+    vehicles.push_back(dds::CommandArbiter::Vehicle::Vessel(vessel.name, lockstep && waited));
+    n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
+  }
   for (const std::string& name : opt.lockstep_bodies) {
     bool found = false;
     for (const auto& v : vehicles) found = found || v.name == name;
     if (!found) {
-      return bad("lockstep body " + name + ": not a vehicle of the scene that takes commands" +
+      return bad("lockstep body " + name +
+                 ": not a vehicle of the scene that takes commands nor an external vessel" +
                  (n.winch_entry >= 0 ? " nor the winch" : "") +
                  (n.winch_script ? " (--winch script: the winch is not waited for)" : ""));
     }
@@ -122,7 +141,7 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
         opt.domain, config, opt.security,
         opt.open_outputs ? wire::Admit::kOpenOutputs : wire::Admit::kAuthenticated);
     n.endpoints = std::make_unique<NodeEndpoints>(*n.participant, wire::TopicNames(opt.ns), *n.sim,
-                                                  n.command_vehicles);
+                                                  n.command_vehicles, n.external_vessels);
     std::vector<std::string> commanded;
     // the vehicles' names (the winch's topic carries another type)
     for (size_t i = 0; i < n.command_vehicles.size(); ++i) {

@@ -36,6 +36,11 @@ struct NodeParts {
   // the winch's arbiter entry, after the vehicles'; < 0: no winch, or it follows the script
   int winch_entry = -1;
   bool winch_script = false;  // --winch script: the scene's winch follows its script
+  // the external vessels (docs/vessels.md "External vessels"): vessel_entries[i] is the
+  // arbiter entry of the vessel external_vessels[i] (index into Model::vessels), after the
+  // vehicles' and the winch's entries
+  std::vector<int> external_vessels;
+  std::vector<int> vessel_entries;
   bool has_lockstep_vehicles = false;
   std::optional<dds::CommandArbiter> arbiter;
   std::optional<core::Simulation> sim;

@@ -1,5 +1,6 @@
 #include "app/node/run_counters.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace towsim::app {
@@ -15,6 +16,8 @@ RunCounters& operator+=(RunCounters& a, const RunCounters& b) {
   a.lockstep_timeouts += b.lockstep_timeouts;
   a.unknown_commands += b.unknown_commands;
   a.resets += b.resets;
+  a.poses_missing += b.poses_missing;
+  a.external_vessels = std::max(a.external_vessels, b.external_vessels);
   return a;
 }
 
@@ -36,6 +39,10 @@ std::string NodeSummaryLine(const std::string& scene, const std::string& mode, c
       static_cast<unsigned long long>(c.rejected + c.unknown_commands),
       static_cast<unsigned long long>(c.clamped),
       static_cast<unsigned long long>(c.lockstep_timeouts), c.resets);
+  if (c.external_vessels > 0 && n > 0 && n < static_cast<int>(sizeof line)) {
+    n += std::snprintf(line + n, sizeof line - n, ", vessel poses missing %llu",
+                       static_cast<unsigned long long>(c.poses_missing));
+  }
   if (!strain.empty() && n > 0 && n < static_cast<int>(sizeof line)) {
     n += std::snprintf(line + n, sizeof line - n, "%s", strain.c_str());
   }

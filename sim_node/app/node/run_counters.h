@@ -6,7 +6,8 @@
 //
 //   sim_node: <scene>: <mode>, <steps> steps, <sim s> s simulated in <wall s> s (RTF <x>),
 //   overruns <n>, failsafes <n>, commands <n> (rejected <n>, clamped <n>), lockstep timeouts
-//   <n>, resets <n>[, max cable strain ...][, other nodes in the namespace: <names>]
+//   <n>, resets <n>[, vessel poses missing <n>][, max cable strain ...][, other nodes in the
+//   namespace: <names>]
 //   [, lateness p50 <us> us p99 <us> us max <us> us]
 //
 // (one line; at most 639 characters, the rest cut off).
@@ -30,6 +31,10 @@ struct RunCounters {
   // received and rejected
   uint64_t unknown_commands = 0;
   int resets = 0;  // SimControl RESETs
+  // steps an external vessel took without a pose for their end (docs/vessels.md "External
+  // vessels"); in the line when the scene has external vessels
+  uint64_t poses_missing = 0;
+  int external_vessels = 0;  // of the scene (not summed)
 };
 
 // fieldwise sum: `a` then covers the runs of both
