@@ -113,13 +113,7 @@ VehicleInput ReadVehicle(const std::string& name, const BodyKeys& keys, bool has
   // the initial state belongs to the scene: origin position, attitude, body-frame velocity
   const MapReader& scene = keys.scene();
   vehicle.position = scene.Vector("position");
-  if (scene.Has("euler_deg")) {
-    // [roll, pitch, yaw] in degrees, ZYX; pitch away from the +-90 deg singularity
-    const Field euler = scene.Get("euler_deg");
-    const core::Vec3 deg = euler.Vector();
-    euler.Items()[1].Number(Range::Open(-90.0, 90.0));
-    vehicle.euler = kDegToRad * deg;
-  }
+  vehicle.euler = ReadEulerDeg(scene);
   input.velocity_given = scene.Has("velocity");
   if (input.velocity_given) vehicle.nu.head<3>() = scene.Vector("velocity");
 
@@ -251,6 +245,15 @@ BodiesInput ReadBodies(const Field& bodies, const std::string& base_dir) {
   BodiesInput inputs;
   for (const auto& [name, field] : map.entries()) ReadBody(name, field, base_dir, &inputs);
   return inputs;
+}
+
+core::Vec3 ReadEulerDeg(const MapReader& scene) {
+  // [roll, pitch, yaw] in degrees, ZYX; pitch away from the +-90 deg singularity
+  if (!scene.Has("euler_deg")) return core::Vec3::Zero();
+  const Field euler = scene.Get("euler_deg");
+  const core::Vec3 deg = euler.Vector();
+  euler.Items()[1].Number(Range::Open(-90.0, 90.0));
+  return kDegToRad * deg;
 }
 
 BodyRef FindBody(const core::Model& model, const std::string& name) {

@@ -87,6 +87,10 @@ struct BodiesInput {
 // inside a model file name that file and line.
 BodiesInput ReadBodies(const Field& bodies, const std::string& base_dir);
 
+// a body's `euler_deg` in the scene entry ([roll, pitch, yaw] in degrees, ZYX, pitch within
+// (-90, 90)) in radians; zero when absent
+core::Vec3 ReadEulerDeg(const MapReader& scene);
+
 // A body of the scene by name: a sphere (index into Model::spheres), a vehicle (index into
 // Model::vehicles) or a vessel (index into Model::vessels).
 struct BodyRef {

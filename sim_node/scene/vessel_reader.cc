@@ -70,12 +70,7 @@ core::Vessel ReadVessel(const std::string& name, const BodyKeys& keys,
   }
   // the initial pose belongs to the scene
   v.position = scene.Vector("position");
-  if (scene.Has("euler_deg")) {
-    const Field euler = scene.Get("euler_deg");
-    const core::Vec3 deg = euler.Vector();
-    euler.Items()[1].Number(Range::Open(-90.0, 90.0));
-    v.euler = kDegToRad * deg;
-  }
+  v.euler = ReadEulerDeg(scene);
   if (keys.Has("speed")) v.speed = keys.Get("speed").Number();
   if (keys.Has("max_acceleration"))
     v.max_acceleration = keys.Get("max_acceleration").Number(Range::Above(0.0));
