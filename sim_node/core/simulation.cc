@@ -39,7 +39,8 @@ struct Simulation::Impl {
     Vec3 at_B = Vec3::Zero();
   };
   std::vector<VesselEnd> vessel_ends;
-  std::vector<VesselPose> vessel_next;  // work space: the poses at the step's end
+  std::vector<VesselPose> vessel_next;  // work space: the poses at the step's end,
+  double vessel_next_t = std::numeric_limits<double>::quiet_NaN();  // at this time
   int coupling_iterations = 0;
   // the vessels' poses at state.t and their ends held there (a state that starts a run)
   void HoldVessels();
@@ -100,9 +101,10 @@ void Simulation::Impl::HoldVessels() {
 }
 
 void Simulation::Impl::MoveVessels(double h) {
-  if (vessel_ends.empty()) return;
+  if (vessels.empty()) return;
   const double t0 = state.t, t1 = t0 + h;
   for (size_t v = 0; v < vessels.size(); ++v) vessel_next[v] = vessels[v].At(t1);
+  vessel_next_t = t1;
   for (const VesselEnd& e : vessel_ends) {
     SupportMotion& s = state.supports[e.end];
     s.p0 = vessel_now[e.vessel].PointAt(e.at_B);  // the pose at t0 as it was reported
@@ -130,8 +132,13 @@ StepStatus Simulation::StepBy(double h) {
   const StepStatus s =
       impl_->winch.Step(h, &impl_->state, [this](double dt) { return impl_->StepSystem(dt); });
   if (s.ok()) ++impl_->state.step;
-  for (size_t v = 0; v < impl_->vessels.size(); ++v)
-    impl_->vessel_now[v] = impl_->vessels[v].At(impl_->state.t);
+  // the poses now: those the step ended on, unless the state ended elsewhere (a failed step)
+  if (impl_->vessel_next_t == impl_->state.t) {
+    impl_->vessel_now = impl_->vessel_next;  // same size: copies in place
+  } else {
+    for (size_t v = 0; v < impl_->vessels.size(); ++v)
+      impl_->vessel_now[v] = impl_->vessels[v].At(impl_->state.t);
+  }
   return s;
 }
 
