@@ -25,6 +25,14 @@ std::vector<TopicSpec> BuildTable() {
       {T::kClock, S::kRoot, "clock", &rosgraph_msgs_msg_dds__Clock__desc, Q::kState, kOut},
       {T::kStatus, S::kNode, "status", &towsim_msgs_msg_dds__SimStatus__desc, Q::kState, kOut},
       {T::kCableState, S::kCable, "state", &towsim_msgs_msg_dds__CableState__desc, Q::kState, kOut},
+      // the force at a cable end that forces.csv has a row of (docs/topics.md "Cable end
+      // forces"): an end held by a fixed or driven support (frame world_ned, the force on the
+      // support, moment 0), or an end on a body held by two or more cable ends (frame <b>_frd,
+      // the force and moment of that end alone about the body origin)
+      {T::kCableStartForce, S::kCable, "start_force", &geometry_msgs_msg_dds__WrenchStamped__desc,
+       Q::kState, kOut},
+      {T::kCableEndForce, S::kCable, "end_force", &geometry_msgs_msg_dds__WrenchStamped__desc,
+       Q::kState, kOut},
       {T::kSimControl, S::kNode, "sim_control", &towsim_msgs_msg_dds__SimControl__desc, Q::kControl,
        kIn},
       // the winch at the cable's start (docs/winch_dds.md)

@@ -12,6 +12,9 @@
 //   kCable   rt/<ns>/<cable>/<name>      one per cable; the one cable is "cable" (kOneCable)
 //   kWinch   rt/<ns>/<winch>/<name>      one per winch; the one winch is "winch" (kOneWinch)
 // so a per-cable topic rt/<ns>/<cable>/state keeps the one-cable name rt/<ns>/cable/state.
+// A row of a topic that exists only for some owners (a cable end's force: a held end, or a
+// body's attachment among several) is named for every owner; the node writes the ones its
+// scene has (sim_node/app/common/node_topics.cc), a subscriber to another one hears nothing.
 
 #include <vector>
 
@@ -32,6 +35,8 @@ enum class Topic {
   kClock,
   kStatus,
   kCableState,
+  kCableStartForce,
+  kCableEndForce,
   kSimControl,
   kWinchCommand,
   kTf,

@@ -10,8 +10,8 @@ namespace {
 
 char* Chars(const std::string& s) { return const_cast<char*>(s.c_str()); }
 
-// the attachment frame of a cable end and its pose in the parent frame; false if the end has
-// none (free or driven)
+// the attachment frame of a cable end on /tf_static and its pose in the parent frame; false if
+// the end has none there (free, or driven: its frame moves, on /tf)
 bool EndFrame(const core::Simulation& sim, const core::CableEnd& end, std::string* parent,
               core::Vec3* offset) {
   switch (end.kind) {
@@ -117,6 +117,14 @@ std::unique_ptr<TransformsMessage> BodyTransforms(const core::Simulation& sim) {
   for (int b = 0; b < sim.num_bodies(); ++b) {
     edges.emplace_back(kWorldFrame, FrdFrame(sim.body_name(b)));
   }
+  for (const core::CableParams& cable : sim.model().cables) {
+    const core::CableEnd* ends[2] = {&cable.start, &cable.end};
+    for (int e = 0; e < 2; ++e) {
+      if (ends[e]->kind == core::EndKind::kDriven) {
+        edges.emplace_back(kWorldFrame, CableEndFrame(cable.name, e));
+      }
+    }
+  }
   return std::make_unique<TransformsMessage>(edges);
 }
 
@@ -128,6 +136,18 @@ void ToBodyTransforms(const core::Simulation& sim, TransformsMessage* out) {
     t.header.stamp = stamp;
     // the pose of the odometry (ToOdometry): p_WB, q_WB
     SetTransform(sim.body_position(b), sim.body_attitude(b), &t);
+  }
+  // the driven ends, in BodyTransforms' order: the driven point r(t) = position + velocity t
+  int i = n;
+  for (const core::CableParams& cable : sim.model().cables) {
+    const core::CableEnd* ends[2] = {&cable.start, &cable.end};
+    for (int e = 0; e < 2 && i < out->size(); ++e) {
+      if (ends[e]->kind != core::EndKind::kDriven) continue;
+      TransformStampedMsg& t = out->transform(i++);
+      t.header.stamp = stamp;
+      SetTransform(ends[e]->position + ends[e]->velocity * sim.time(),
+                   Eigen::Quaterniond::Identity(), &t);
+    }
   }
 }
 

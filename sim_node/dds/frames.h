@@ -7,12 +7,16 @@
 //   <b>_frd          body b, forward-starboard-down: the physics' body frame B
 //   <b>              body b, forward-left-up (REP-103's body axes)
 //   <c>_start,       the attachment points of cable c: children of <b>_frd (an end on a body,
-//   <c>_end          offset at_B, axes of B) or of world_ned (a fixed end); a driven or free
-//                    end has no frame. The one cable is named "cable": cable_start, cable_end
+//   <c>_end          offset at_B, axes of B) or of world_ned (a fixed end, or a driven end at
+//                    its moving point, axes of world_ned); a free end has no frame. The one
+//                    cable is named "cable": cable_start, cable_end
 //
-//   /tf_static  world -> world_ned, <b>_frd -> <b>, <b>_frd -> <c>_start | <c>_end (cables in
-//               the scene's order, the start before the end)
-//   /tf         world_ned -> <b>_frd: (p_WB, q_WB), the pose of the odometry of the same state
+//   /tf_static  world -> world_ned, <b>_frd -> <b>, <b>_frd | world_ned -> <c>_start | <c>_end
+//               of the body-held and fixed ends (cables in the scene's order, the start
+//               before the end)
+//   /tf         world_ned -> <b>_frd: (p_WB, q_WB), the pose of the odometry of the same state;
+//               then world_ned -> <c>_start | <c>_end of each driven end (the same order):
+//               r(t) = position + velocity t (core/model.h, docs/frames.md), no rotation
 //
 // A transform "parent -> child" holds the pose of the child frame in the parent frame
 // (geometry_msgs/Transform: translation = child origin in parent, rotation q_parent_child).
@@ -70,10 +74,11 @@ void SetTransform(const core::Vec3& translation, const Eigen::Quaterniond& rotat
 // the static transforms of sim's scene (listed above), stamped with sim.time()
 std::unique_ptr<TransformsMessage> StaticTransforms(const core::Simulation& sim);
 
-// the edges world_ned -> <b>_frd of every body, in body order
+// the edges world_ned -> <b>_frd of every body, in body order, then world_ned -> <c>_start |
+// <c>_end of every driven cable end
 std::unique_ptr<TransformsMessage> BodyTransforms(const core::Simulation& sim);
-// fills the edges of BodyTransforms from sim's state: (p_WB, q_WB) of each body, stamped
-// sim.time()
+// fills the edges of BodyTransforms from sim's state: (p_WB, q_WB) of each body, the driven
+// point r(t) = position + velocity t of each driven end, stamped sim.time()
 void ToBodyTransforms(const core::Simulation& sim, TransformsMessage* out);
 
 }  // namespace towsim::dds

@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "core/actuator.h"
+#include "core/model.h"
+#include "core/system.h"
 #include "dds/command_arbiter.h"
 #include "towsim_msgs.h"
 #include "wire/topic_table.h"
@@ -139,6 +141,36 @@ void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg) 
   sim.BodyCableWrench(body, &force_B, &moment_B);
   Set(force_B, &msg->wrench.force);
   Set(moment_B, &msg->wrench.torque);
+}
+
+bool HasEndForce(const core::Simulation& sim, int end, int c) {
+  const core::CableParams& cable = sim.model().cables[static_cast<size_t>(c)];
+  const core::EndKind kind = (end == 0 ? cable.start : cable.end).kind;
+  if (kind == core::EndKind::kFixed || kind == core::EndKind::kDriven) return true;
+  const int body = sim.EndBody(end, c);
+  if (body < 0) return false;  // a free end
+  int held = 0;  // the cable ends on that body
+  for (int k = 0; k < sim.num_cables(); ++k) {
+    for (int e = 0; e < 2; ++e) held += sim.EndBody(e, k) == body;
+  }
+  return held >= 2;
+}
+
+void ToCableEndForce(const core::Simulation& sim, int end, int c, WrenchStampedMsg* msg) {
+  msg->header.stamp = ToTimeMsg(sim.time());
+  const int body = sim.EndBody(end, c);
+  if (body < 0) {  // a support: the force on it, in W
+    Set(sim.end_force(end, c), &msg->wrench.force);
+    Set(core::Vec3::Zero(), &msg->wrench.torque);
+    return;
+  }
+  // one attachment of a body: f_B = R_WB^T f_W, m_B = at_B x f_B
+  const core::Vec3 f = sim.body_attitude(body).conjugate() * sim.end_force(end, c);
+  const core::Vec3 m = !sim.body_is_sphere(body)
+                           ? core::Vec3(sim.system().End(end, c).at_B.cross(f))
+                           : core::Vec3::Zero();
+  Set(f, &msg->wrench.force);
+  Set(m, &msg->wrench.torque);
 }
 
 void ToClock(double t, ClockMsg* msg) { msg->clock = ToTimeMsg(t); }

@@ -81,6 +81,15 @@ class CableStateMessage {
 void ToOdometry(const core::Simulation& sim, int body, OdometryMsg* msg);
 // the cable's force and moment on body b, in B; zero when the cable is not attached to it
 void ToCableForce(const core::Simulation& sim, int body, WrenchStampedMsg* msg);
+// whether forces.csv has a row of end `end` (0: start, 1: end) of cable c, and so the node the
+// topic <c>/start_force or <c>/end_force (docs/topics.md "Cable end forces"): the end is held
+// by a fixed or driven support, or by a body that holds two or more cable ends
+bool HasEndForce(const core::Simulation& sim, int end, int c);
+// that end's force, as its forces.csv row (docs/command_line.md "Output files"): on a support,
+// the force the cable exerts on it in W (NED) and moment 0; on a body (EndBody >= 0), the force
+// f_B = R_WB^T f_W of that end alone and its moment about the body origin at_B x f_B in B
+// (Eq. 29-30; a sphere: 0)
+void ToCableEndForce(const core::Simulation& sim, int end, int c, WrenchStampedMsg* msg);
 void ToClock(double t, ClockMsg* msg);
 // cable c of sim (Model::cables order; the one cable: 0): every node in use (sim.num_nodes(c),
 // which a winch changes), and the winch's paid-out length, speed, drum tension and the node

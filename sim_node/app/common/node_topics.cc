@@ -94,6 +94,11 @@ void Environment(const core::Simulation& sim, int b, uint64_t step,
 void CableState(const core::Simulation& sim, int c, uint64_t step, dds::CableStateMessage* m) {
   dds::ToCableState(sim, step, m, c);
 }
+// a cable end's force (the row's End: 0 start, 1 end) of cable c
+template <int End>
+void EndForce(const core::Simulation& sim, int c, uint64_t, dds::WrenchStampedMessage* m) {
+  dds::ToCableEndForce(sim, End, c, &m->msg);
+}
 void Clock(const core::Simulation& sim, int, uint64_t, ClockHolder* m) {
   dds::ToClock(sim.time(), &m->msg);
 }
@@ -126,6 +131,21 @@ std::unique_ptr<StateTopic> MakeSensor(const dds::Participant& participant, cons
       dds::MakeSensorModel(*errors, sensor, sim.model().time.step));
 }
 
+// the force topic of end End of cable c where forces.csv has its row (dds::HasEndForce), in the
+// frame of its support (world_ned) or of its body (<b>_frd); nullptr elsewhere
+template <int End>
+std::unique_ptr<StateTopic> MakeEndForce(const dds::Participant& participant, const TopicRow& row,
+                                         const std::string& name, const core::Simulation& sim,
+                                         int c) {
+  if (!dds::HasEndForce(sim, End, c)) return nullptr;
+  const int body = sim.EndBody(End, c);
+  return Make<dds::WrenchStampedMessage, EndForce<End>>(
+      participant, row, name,
+      std::make_unique<dds::WrenchStampedMessage>(
+          body < 0 ? std::string(dds::kWorldFrame) : dds::FrdFrame(sim.body_name(body))),
+      c);
+}
+
 std::vector<TopicRow> BuildTable() {
   using P = const dds::Participant&;
   using S = const core::Simulation&;
@@ -143,6 +163,9 @@ std::vector<TopicRow> BuildTable() {
              std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim, c)),
              c);
        }},
+      // the held ends' forces, with the bodies' cable_force (forces.csv's rows)
+      {T::kCableStartForce, PublishRate::kCableForce, &MakeEndForce<0>},
+      {T::kCableEndForce, PublishRate::kCableForce, &MakeEndForce<1>},
       // /tf: the same state as the odometry, at its rate
       {T::kTf, PublishRate::kOdom,
        [](P p, const TopicRow& row, N name, S sim, int) {

@@ -40,6 +40,8 @@ struct Frame {
   std::map<std::string, WrenchStamped> forces;  // by body
   std::map<std::string, BodyEnvironment> environment;  // by body
   std::map<std::string, CableState> cables;            // by cable
+  // the held ends' forces (<c>/start_force, <c>/end_force) by cable and end (0, 1)
+  std::map<std::pair<std::string, int>, WrenchStamped> end_forces;
 };
 
 class CsvFile {
@@ -80,10 +82,21 @@ ExportCounts ExportCsv(const std::string& mcap_path, const std::string& dir, con
 ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                        const std::string& ns) {
   // the channels of the node under `ns`, by what they carry
-  enum class Kind { kOdom, kForce, kEnvironment, kCable, kStatus, kSceneInfo, kCommand };
+  enum class Kind {
+    kOdom,
+    kForce,
+    kEnvironment,
+    kCable,
+    kEndForce,
+    kStatus,
+    kSceneInfo,
+    kCommand
+  };
   struct Route {
     Kind kind;
     std::string body;  // kOdom, kForce, kEnvironment, kCommand; the cable's name for kCable
+                       // and kEndForce
+    int end = 0;       // kEndForce: 0 start, 1 end
   };
   bool sea = false;  // environment topics: environment.csv is written
   std::map<std::uint16_t, Route> routes;
@@ -112,6 +125,11 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
       expect("towsim_msgs/msg/CableState");
       routes[id] = {Kind::kCable, rest.substr(0, slash)};
       channel_cables.push_back(rest.substr(0, slash));
+    } else if (slash != std::string::npos &&
+               (rest.substr(slash) == "/start_force" || rest.substr(slash) == "/end_force")) {
+      // rt/<ns>/<cable>/start_force, end_force: a held end's force (forces.csv's dotted rows)
+      expect("geometry_msgs/msg/WrenchStamped");
+      routes[id] = {Kind::kEndForce, rest.substr(0, slash), rest.substr(slash) == "/end_force"};
     } else if (rest == "status") {
       expect("towsim_msgs/msg/SimStatus");
       routes[id] = {Kind::kStatus, ""};
@@ -177,6 +195,12 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           CableState c = io::cdr::DecodeCableState(p, n);
           const std::int64_t stamp = StampNs(c.header.stamp);
           frames[stamp].cables[route->second.body] = std::move(c);
+          break;
+        }
+        case Kind::kEndForce: {
+          WrenchStamped w = io::cdr::DecodeWrenchStamped(p, n);
+          frames[StampNs(w.header.stamp)].end_forces[{route->second.body, route->second.end}] =
+              std::move(w);
           break;
         }
         case Kind::kStatus: {
@@ -282,14 +306,34 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
         ++counts.winch_rows;
       }
     }
+    // forces.csv in the node's order (io/csv_writer.h): each body's total, then its
+    // attachments (the end forces in its frame <b>_frd, cables in order, start before end),
+    // then the supports (the end forces in world_ned)
+    auto force_row = [&](const std::string& name, const WrenchStamped& m) {
+      std::fprintf(forces_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
+                   io::CsvField(name).c_str(), m.force.x, m.force.y, m.force.z, m.torque.x,
+                   m.torque.y, m.torque.z);
+      ++counts.forces_rows;
+    };
+    static const char* const kEndNames[2] = {"start", "end"};
     for (const std::string& b : bodies) {
       const auto w = frame.forces.find(b);
       if (w == frame.forces.end()) continue;
-      const WrenchStamped& m = w->second;
-      std::fprintf(forces_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
-                   io::CsvField(b).c_str(), m.force.x, m.force.y, m.force.z, m.torque.x, m.torque.y,
-                   m.torque.z);
-      ++counts.forces_rows;
+      force_row(b, w->second);
+      for (const std::string& c : cables) {
+        for (int e = 0; e < 2; ++e) {
+          const auto f = frame.end_forces.find({c, e});
+          if (f == frame.end_forces.end() || f->second.header.frame_id != b + "_frd") continue;
+          force_row(b + "." + c + "." + kEndNames[e], f->second);
+        }
+      }
+    }
+    for (const std::string& c : cables) {
+      for (int e = 0; e < 2; ++e) {
+        const auto f = frame.end_forces.find({c, e});
+        if (f == frame.end_forces.end() || f->second.header.frame_id != "world_ned") continue;
+        force_row(c + "." + kEndNames[e], f->second);
+      }
     }
     for (const std::string& b : bodies) {
       const auto e = frame.environment.find(b);

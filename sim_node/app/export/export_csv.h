@@ -31,11 +31,15 @@
 //                                                 captures them, sim_node --record does not)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).
-// Not on the wire, hence not exported: the forces.csv rows of cable ends held by fixed or
-// driven supports ("<cable>.start", "<cable>.end") and, in a network, the rows of each
-// attachment of a body held by several cable ends ("<body>.<cable>.<start|end>"; its total is
-// on the wire as <body>/cable_force and exported). One run per recording: after a RESET the
-// stamps repeat and the rows of equal stamps are merged.
+//   NS/<c>/start_force geometry_msgs/WrenchStamped -> forces.csv's rows of held cable ends:
+//   NS/<c>/end_force                              frame world_ned: a fixed or driven support,
+//                                                 row "<c>.start" / "<c>.end" after the
+//                                                 bodies; frame <b>_frd: one attachment of a
+//                                                 body held by several cable ends, row
+//                                                 "<b>.<c>.<start|end>" after that body's total
+//                                                 (the node's order, io/csv_writer.h)
+// One run per recording: after a RESET the stamps repeat and the rows of equal stamps are
+// merged.
 
 #include <cstdint>
 #include <string>
