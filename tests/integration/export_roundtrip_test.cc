@@ -1,9 +1,9 @@
 // towsim_export: a run recorded by `sim_node --record` and exported with
 // `towsim_export --csv` gives the node's own `--csv` files of the same run, byte for byte
 // (same rows, every number equal to its 9 printed digits), with the publish rates of the scene
-// set to the CSV output rate. The only rows that cannot come back are the support reactions
-// of cable ends held by fixed / driven points ("cable.start", "cable.end" in forces.csv): they
-// are not published. --info lists the topics; a damaged recording exits 2 naming the offset.
+// set to the CSV output rate; forces.csv with the support reactions of cable ends held by fixed
+// / driven points ("cable.start", from rt/<ns>/cable/start_force) and a network's
+// per-attachment rows. --info lists the topics; a damaged recording exits 2 naming the offset.
 // A sea scene's environment topic comes back as the node's environment.csv; the commands
 // towsim_record captured come back as commands.csv; a network's cables as their <cable>.csv.
 // DDS domains 91, 92, 134, 188, 198 and 216.
@@ -81,23 +81,17 @@ class ExportRoundTrip : public ::testing::Test {
   fs::path dir_;
 };
 
-std::vector<std::string> Lines(const std::string& path, bool drop_supports = false) {
+std::vector<std::string> Lines(const std::string& path) {
   std::vector<std::string> out;
   std::istringstream in(ReadFile(path));
-  for (std::string line; std::getline(in, line);) {
-    if (drop_supports && (line.find(",cable.start,") != std::string::npos ||
-                          line.find(",cable.end,") != std::string::npos)) {
-      continue;
-    }
-    out.push_back(line);
-  }
+  for (std::string line; std::getline(in, line);) out.push_back(line);
   return out;
 }
 
 void ExpectSameCsv(const fs::path& node, const fs::path& exported, std::size_t rows_per_file_min) {
   for (const char* file : {"bodies.csv", "cable.csv", "forces.csv", "status.csv"}) {
     SCOPED_TRACE(file);
-    const auto a = Lines((node / file).string(), std::string(file) == "forces.csv");
+    const auto a = Lines((node / file).string());
     const auto b = Lines((exported / file).string());
     EXPECT_GE(a.size(), rows_per_file_min);
     ASSERT_EQ(a.size(), b.size());
@@ -115,8 +109,15 @@ TEST_F(ExportRoundTrip, SteadyTowRecordedAndExportedEqualsTheNodesCsv) {
   ASSERT_EQ(exp.exit_code(), 0) << exp.err();
   // 20 s at 10 Hz: 201 row sets (t = 0 included)
   ExpectSameCsv(dir_ / "node", dir_ / "exported", 202);
-  // the node also writes the driven start's reaction: not on the wire, so not exported
-  EXPECT_NE(ReadFile((dir_ / "node/forces.csv").string()).find(",cable.start,"), std::string::npos);
+  // the driven start's reaction (rt/towsim/cable/start_force) comes back: one row per row set
+  const std::string forces = ReadFile((dir_ / "exported/forces.csv").string());
+  std::size_t supports = 0;
+  for (auto at = forces.find(",cable.start,"); at != std::string::npos;
+       at = forces.find(",cable.start,", at + 1)) {
+    ++supports;
+  }
+  EXPECT_EQ(supports, 201u);
+  EXPECT_EQ(forces.find(",cable.end,"), std::string::npos);  // the towfish's end: a body's
   // --info: like ros2 bag info
   const std::string info = exp.out();
   EXPECT_NE(info.find("Storage id:        mcap"), std::string::npos) << info;
@@ -128,6 +129,11 @@ TEST_F(ExportRoundTrip, SteadyTowRecordedAndExportedEqualsTheNodesCsv) {
                       "201"),
             std::string::npos)
       << info;
+  EXPECT_NE(info.find("Topic: /towsim/cable/start_force | Type: geometry_msgs/msg/WrenchStamped | "
+                      "Count: 201"),
+            std::string::npos)
+      << info;
+  EXPECT_EQ(info.find("/towsim/cable/end_force"), std::string::npos) << info;
   EXPECT_NE(info.find("MCAP profile:      ros2"), std::string::npos) << info;
   EXPECT_NE(info.find("Metadata records:  rosbag2"), std::string::npos) << info;
 }
@@ -285,10 +291,10 @@ TEST_F(ExportRoundTrip, SeaSceneEnvironmentTopicExportedEqualsTheNodesEnvironmen
 
 // a cable network (tests/integration/scenes/network_two_part_tow.yaml: main cable and tether,
 // docs/scene_format.md "Networks"): each cable's rt/<ns>/<cable>/state comes back as the node's
-// own <cable>.csv, byte for byte; bodies.csv and status.csv too; forces.csv has the bodies'
-// totals (their cable_force topics), not the rows that are not on the wire: the driven tow
-// point's "main.start" and the depressor's per-attachment rows "depressor.main.end",
-// "depressor.tether.start". DDS domain 216.
+// own <cable>.csv, byte for byte; bodies.csv, status.csv and forces.csv too: the bodies'
+// totals (their cable_force topics), the depressor's per-attachment rows "depressor.main.end",
+// "depressor.tether.start" (main/end_force, tether/start_force in depressor_frd) and the driven
+// tow point's "main.start" (main/start_force in world_ned). DDS domain 216.
 TEST_F(ExportRoundTrip, NetworkRecordedAndExportedGivesTheNodesCsvOfEveryCable) {
   RecordRun("tests/integration/scenes/network_two_part_tow.yaml", 216, 3.0);
   Process exp = Export(
@@ -298,9 +304,10 @@ TEST_F(ExportRoundTrip, NetworkRecordedAndExportedGivesTheNodesCsvOfEveryCable) 
   EXPECT_FALSE(fs::exists(dir_ / "node/cable.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "exported/cable.csv"));
   // 3 s at 10 Hz: 31 row sets (t = 0 included) of 21 and 11 nodes, and the header
+  // forces.csv: per row set the depressor, its two attachments, the towfish, the tow point
   const std::map<std::string, std::size_t> rows = {
       {"main.csv", 1 + 31 * 21}, {"tether.csv", 1 + 31 * 11}, {"bodies.csv", 1 + 31 * 2},
-      {"status.csv", 1 + 31}};
+      {"status.csv", 1 + 31},    {"forces.csv", 1 + 31 * 5}};
   for (const auto& [file, count] : rows) {
     SCOPED_TRACE(file);
     const auto a = Lines((dir_ / "node" / file).string());
@@ -311,22 +318,23 @@ TEST_F(ExportRoundTrip, NetworkRecordedAndExportedGivesTheNodesCsvOfEveryCable) 
       ASSERT_EQ(a[i], b[i]) << "first difference at line " << i + 1;
     }
   }
-  // forces.csv: the node's rows of the bodies, in order, are the exported file
-  std::vector<std::string> node_forces, dotted;
-  for (const std::string& line : Lines((dir_ / "node/forces.csv").string())) {
-    const std::string body = line.substr(line.find(',') + 1, line.find(',', line.find(',') + 1) -
-                                                                 line.find(',') - 1);
-    if (body.find('.') == std::string::npos) {
-      node_forces.push_back(line);
-    } else if (dotted.size() < 3) {
-      dotted.push_back(body);
-    }
+  // the first row set of forces.csv, in the node's order
+  std::vector<std::string> first;
+  for (const std::string& line : Lines((dir_ / "exported/forces.csv").string())) {
+    if (line.rfind("0,", 0) != 0) continue;
+    first.push_back(line.substr(2, line.find(',', 2) - 2));
   }
-  EXPECT_EQ(dotted, (std::vector<std::string>{"depressor.main.end", "depressor.tether.start",
-                                              "main.start"}));
-  EXPECT_EQ(node_forces.size(), 1 + 31 * 2u);
-  EXPECT_EQ(node_forces, Lines((dir_ / "exported/forces.csv").string()));
+  EXPECT_EQ(first, (std::vector<std::string>{"depressor", "depressor.main.end",
+                                             "depressor.tether.start", "towfish", "main.start"}));
   const std::string info = exp.out();
+  for (const char* topic :
+       {"/towsim/main/start_force", "/towsim/main/end_force", "/towsim/tether/start_force"}) {
+    EXPECT_NE(info.find(std::string("Topic: ") + topic +
+                        " | Type: geometry_msgs/msg/WrenchStamped | Count: 31 | "),
+              std::string::npos)
+        << info;
+  }
+  EXPECT_EQ(info.find("/towsim/tether/end_force"), std::string::npos) << info;  // one attachment
   for (const char* topic : {"/towsim/main/state", "/towsim/tether/state"}) {
     EXPECT_NE(info.find(std::string("Topic: ") + topic +
                         " | Type: towsim_msgs/msg/CableState | Count: 31 | "),

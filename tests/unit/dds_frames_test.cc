@@ -178,6 +178,42 @@ bodies: {}
   EXPECT_EQ(Translation(statics->transform(1)), core::Vec3(1, 2, 3));
 }
 
+// a driven end (a towing point moving at constant velocity) has its frame on /tf, a child of
+// world_ned at the driven point of the same time, where the solver holds the cable's node
+// (Eq. 24 to the Newton tolerance); it is not on /tf_static
+TEST(FramesTest, DrivenEndsMoveOnTfAtTheirDrivenPoint) {
+  const char* scene = R"(
+name: driven
+time: {step: 0.05, duration: 1, output_rate: 10}
+cable: {length: 20, elements: 3, diameter: 0.02, density: 1300, youngs_modulus: 7.0e8,
+        initial: vertical, start: {driven: {position: [1, 2, 3], velocity: [2, -1, 0.5]}},
+        end: {body: fish}}
+bodies:
+  fish: {type: sphere, mass: 50, volume: 0.01, position: [1, 2, 23]}
+)";
+  const core::Model model = scene::LoadSceneFromString(scene, "driven.yaml", ".");
+  core::Simulation sim(model);
+  for (int k = 0; k < 8; ++k) ASSERT_TRUE(sim.Step().ok());
+  const auto statics = StaticTransforms(sim);
+  for (int i = 0; i < statics->size(); ++i) {
+    EXPECT_STRNE(statics->transform(i).child_frame_id, "cable_start");
+  }
+  const auto tf = BodyTransforms(sim);
+  ToBodyTransforms(sim, tf.get());
+  ASSERT_EQ(tf->size(), 2);  // world_ned -> fish_frd, world_ned -> cable_start
+  const TransformStampedMsg& t = tf->transform(1);
+  EXPECT_STREQ(t.header.frame_id, "world_ned");
+  EXPECT_STREQ(t.child_frame_id, "cable_start");
+  EXPECT_EQ(t.header.stamp.sec, 0);
+  EXPECT_EQ(t.header.stamp.nanosec, 400000000u);  // 8 steps of 0.05 s
+  // r(0.4 s) = (1, 2, 3) + 0.4 (2, -1, 0.5), written out
+  EXPECT_NEAR(t.transform.translation.x, 1.8, 1e-15);
+  EXPECT_NEAR(t.transform.translation.y, 1.6, 1e-15);
+  EXPECT_NEAR(t.transform.translation.z, 3.2, 1e-15);
+  EXPECT_EQ(t.transform.rotation.w, 1.0);
+  EXPECT_LE((Translation(t) - sim.node_position(0)).norm(), kJointTol);
+}
+
 // a network (tests/unit/network_scene.h): one frame per held end of each cable, named
 // <cable>_start / <cable>_end, in the scene's order, on its support or body, at the node it holds
 TEST(FramesTest, ANetworkHasTheEndFramesOfEveryCable) {

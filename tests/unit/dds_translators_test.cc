@@ -253,6 +253,88 @@ TEST(NetworkCableStateTest, EachCableCarriesItsOwnNodes) {
   EXPECT_GT(tether.msg.tensions._buffer[0], 0.0);
 }
 
+// a towing vehicle held by two cables (a bridle), each to its own sphere, and a riser from a
+// driven point left free: forces.csv's rows and the end force topics (docs/topics.md "Cable
+// end forces")
+constexpr const char* kBridleScene = R"(
+name: bridle
+time: {step: 0.05, duration: 1, output_rate: 10}
+bodies:
+  fish: {type: sphere, mass: 100, volume: 0.02, position: [0, 0, 33.7]}
+  fish2: {type: sphere, mass: 80, volume: 0.02, position: [1, 0, 33.7]}
+  tow_vehicle: {model: ../vehicles/tow_vehicle.yaml, position: [0, 0, 3.5], euler_deg: [0, 0, 0]}
+cables:
+  port: {length: 30, elements: 3, diameter: 0.03, density: 1300, youngs_modulus: 7.0e8,
+         initial: vertical, start: {body: tow_vehicle, at: [0, 0, 0.2]}, end: {body: fish}}
+  starboard: {length: 30, elements: 3, diameter: 0.03, density: 1300, youngs_modulus: 7.0e8,
+              initial: vertical, start: {body: tow_vehicle, at: [1, 0, 0.2]},
+              end: {body: fish2}}
+  riser: {length: 10, elements: 2, diameter: 0.02, density: 1300, youngs_modulus: 7.0e8,
+          initial: vertical, start: {driven: {position: [5, 0, 0], velocity: [0.5, 0, 0]}},
+          end: {free: true}}
+script:
+  - {at: 0, body: tow_vehicle, thrust: 3000, rudder_deg: 10}
+)";
+
+// the force and moment of each attachment of a body sum to its cable wrench (the sum over its
+// joint multipliers, Eq. 29-30: BodyCableWrench, computed apart): a few ulps of the forces
+constexpr double kSumTol = 1e-9;  // relative to |f| (and |f| * 1 m for the moments)
+
+TEST(EndForceTest, HeldEndsAndAttachmentsOfABodyWithSeveral) {
+  const core::Model model = scene::LoadSceneFromString(
+      kBridleScene, "bridle.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes");
+  core::Simulation sim(model);
+  core::ScriptRunner script(model);
+  for (int k = 0; k < 10; ++k) {
+    script.Apply(&sim);
+    ASSERT_TRUE(sim.Step().ok());
+  }
+  ASSERT_EQ(sim.num_cables(), 3);
+  const int tv = 2;  // spheres first
+  ASSERT_EQ(sim.body_name(tv), "tow_vehicle");
+  // the vehicle's two attachments (it holds two ends), the driven start; not the spheres' ends
+  // (one each: their totals are their cable_force) nor the free end
+  EXPECT_TRUE(HasEndForce(sim, 0, 0));
+  EXPECT_TRUE(HasEndForce(sim, 0, 1));
+  EXPECT_FALSE(HasEndForce(sim, 1, 0));
+  EXPECT_FALSE(HasEndForce(sim, 1, 1));
+  EXPECT_TRUE(HasEndForce(sim, 0, 2));
+  EXPECT_FALSE(HasEndForce(sim, 1, 2));
+
+  core::Vec3 f_total, m_total;
+  sim.BodyCableWrench(tv, &f_total, &m_total);
+  core::Vec3 f_sum = core::Vec3::Zero(), m_sum = core::Vec3::Zero();
+  for (int c = 0; c < 2; ++c) {
+    WrenchStampedMessage w("tow_vehicle_frd");
+    ToCableEndForce(sim, 0, c, &w.msg);
+    EXPECT_EQ(w.msg.header.stamp.sec, 0);
+    EXPECT_EQ(w.msg.header.stamp.nanosec, 500000000u);  // 10 steps of 0.05 s
+    const core::Vec3 f(w.msg.wrench.force.x, w.msg.wrench.force.y, w.msg.wrench.force.z);
+    const core::Vec3 m(w.msg.wrench.torque.x, w.msg.wrench.torque.y, w.msg.wrench.torque.z);
+    // the end's own force in B, and its moment about the origin from its attachment point
+    const core::Vec3 f_B = sim.body_attitude(tv).conjugate() * sim.end_force(0, c);
+    EXPECT_LE((f - f_B).norm(), kRotationTol * f_B.norm()) << c;
+    const core::Vec3 at_B = c == 0 ? core::Vec3(0, 0, 0.2) : core::Vec3(1, 0, 0.2);
+    EXPECT_LE((m - at_B.cross(f_B)).norm(), kRotationTol * f_B.norm()) << c;
+    EXPECT_GT(f.norm(), 1.0) << c;  // each holds a sphere and its cable
+    f_sum += f;
+    m_sum += m;
+  }
+  EXPECT_LE((f_sum - f_total).norm(), kSumTol * f_total.norm());
+  EXPECT_LE((m_sum - m_total).norm(), kSumTol * f_total.norm());
+  EXPECT_GT(m_total.norm(), 1.0);  // the offsets give a moment to check
+
+  // the driven support: the force on it in W, no moment
+  WrenchStampedMessage support(kWorldFrame);
+  ToCableEndForce(sim, 0, 2, &support.msg);
+  EXPECT_EQ(support.msg.wrench.force.x, sim.end_force(0, 2).x());
+  EXPECT_EQ(support.msg.wrench.force.z, sim.end_force(0, 2).z());
+  EXPECT_GT(support.msg.wrench.force.z, 0.0);  // the hanging riser pulls its support down
+  EXPECT_EQ(support.msg.wrench.torque.x, 0.0);
+  EXPECT_EQ(support.msg.wrench.torque.y, 0.0);
+  EXPECT_EQ(support.msg.wrench.torque.z, 0.0);
+}
+
 // SceneOf: the cables with their node counts in the scene's order; the one-cable fields are
 // the first cable's; no winch: none listed
 TEST(SceneInfoTest, ListsTheCablesOfANetwork) {

@@ -57,8 +57,14 @@ TEST(NodeTopicsTest, ANetworkHasTheStateOfEveryCable) {
     cable_states += t.descriptor == &towsim_msgs_msg_dds__CableState__desc;
   }
   EXPECT_EQ(cable_states, 2);
-  // one more cable, one more topic
-  EXPECT_EQ(topics.size(), NodeTopics(names, {"depressor", "towfish"}, true, {"main"}).size() + 1);
+  // each cable's end forces (docs/topics.md "Cable end forces"), named for every cable: a
+  // recorder or bridge subscribes to them all, the node writes those of its held ends
+  for (const char* c : {"main", "tether"}) {
+    EXPECT_TRUE(Has(n, std::string("rt/towsim/") + c + "/start_force")) << c;
+    EXPECT_TRUE(Has(n, std::string("rt/towsim/") + c + "/end_force")) << c;
+  }
+  // one more cable, three more topics: its state and its two end forces
+  EXPECT_EQ(topics.size(), NodeTopics(names, {"depressor", "towfish"}, true, {"main"}).size() + 3);
 }
 
 }  // namespace

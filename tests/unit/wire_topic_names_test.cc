@@ -17,6 +17,8 @@ void ExpectNames(const TopicNames& n, const std::string& p) {
   EXPECT_EQ(n.Name(Topic::kSceneInfo), p + "scene_info");
   EXPECT_EQ(n.Name(Topic::kStatus), p + "status");
   EXPECT_EQ(n.Name(Topic::kCableState), p + "cable/state");
+  EXPECT_EQ(n.Name(Topic::kCableStartForce), p + "cable/start_force");
+  EXPECT_EQ(n.Name(Topic::kCableEndForce, "tether"), p + "tether/end_force");
   EXPECT_EQ(n.Name(Topic::kSimControl), p + "sim_control");
   EXPECT_EQ(n.Name(Topic::kWinchCommand), p + "winch/command");
   EXPECT_EQ(n.Name(Topic::kMarkers), p + "markers");
@@ -78,7 +80,7 @@ TEST(TopicNamesTest, RosAndDdsNames) {
 // one row per topic, each with a type, and the direction and QoS the node uses
 TEST(TopicTableTest, RowsOfTheContract) {
   const std::vector<TopicSpec>& table = TopicTable();
-  ASSERT_EQ(table.size(), 16u);
+  ASSERT_EQ(table.size(), 18u);
   EXPECT_EQ(table.front().topic, Topic::kSceneInfo);  // scene_info first
   for (size_t i = 0; i < table.size(); ++i) {
     EXPECT_NE(table[i].type, nullptr) << table[i].name;
@@ -98,6 +100,12 @@ TEST(TopicTableTest, RowsOfTheContract) {
   EXPECT_EQ(SpecOf(Topic::kPoseCommand).scope, Scope::kBody);
   EXPECT_EQ(SpecOf(Topic::kPoseCommand).type, SpecOf(Topic::kOdom).type);  // nav_msgs/Odometry
   EXPECT_EQ(SpecOf(Topic::kCableState).scope, Scope::kCable);
+  // a held end's force: the type of a body's cable_force, one per cable
+  EXPECT_EQ(SpecOf(Topic::kCableStartForce).scope, Scope::kCable);
+  EXPECT_EQ(SpecOf(Topic::kCableEndForce).scope, Scope::kCable);
+  EXPECT_EQ(SpecOf(Topic::kCableStartForce).type, SpecOf(Topic::kCableForce).type);
+  EXPECT_EQ(SpecOf(Topic::kCableEndForce).direction, Direction::kOut);
+  EXPECT_EQ(SpecOf(Topic::kCableEndForce).qos, QosProfile::kState);
   EXPECT_EQ(SpecOf(Topic::kWinchCommand).scope, Scope::kWinch);
   EXPECT_STREQ(SpecOf(Topic::kOdom).type->m_typename, "nav_msgs::msg::dds_::Odometry_");
 }
