@@ -182,6 +182,8 @@ TEST(RecordingTest, NodeRecordHoldsEveryMessageItPublishedByteForByte) {
       {"/towsim/cable/state", "towsim_msgs/msg/CableState"},
       {"/towsim/towfish/odom", "nav_msgs/msg/Odometry"},
       {"/towsim/towfish/cable_force", "geometry_msgs/msg/WrenchStamped"},
+      // the driven tow point's force (docs/topics.md "Cable end forces")
+      {"/towsim/cable/start_force", "geometry_msgs/msg/WrenchStamped"},
       {"/towsim/towfish/altitude", "sensor_msgs/msg/Range"},
       {"/towsim/towfish/pressure", "sensor_msgs/msg/FluidPressure"},
       {"/tf", "tf2_msgs/msg/TFMessage"},
@@ -197,6 +199,7 @@ TEST(RecordingTest, NodeRecordHoldsEveryMessageItPublishedByteForByte) {
   const Messages m = ByTopic(r);
   EXPECT_EQ(m.at("/towsim/towfish/odom").size(), kSteps + 1);
   EXPECT_EQ(m.at("/towsim/towfish/cable_force").size(), kSteps + 1);
+  EXPECT_EQ(m.at("/towsim/cable/start_force").size(), kSteps + 1);  // at cable_force's rate
   EXPECT_EQ(m.at("/towsim/towfish/altitude").size(), kSteps + 1);  // publish.sensors: every step
   EXPECT_EQ(m.at("/towsim/towfish/pressure").size(), kSteps + 1);
   EXPECT_EQ(m.at("/clock").size(), kSteps + 1);

@@ -119,6 +119,50 @@ TEST_F(SweepSignals, MissingFilesAndEmptyWindowsThrow) {
   EXPECT_THROW(One(R("towfish.z", "final", 5.0)), std::runtime_error);
 }
 
+// a network's cables (docs/sweeps.md "Results"): a qualified cable signal reads <cable>.csv, an
+// unqualified one the scene's first cable (CheckSweepResults sets SweepResult::cable)
+TEST_F(SweepSignals, CableSignalsTakeACableQualifier) {
+  // main: tensions 7, 9 at t=0; 8, 6 at t=1. tether: 2, 1 at t=0; 3, 2 at t=1
+  Write(dir_.path() / "main.csv", std::string(io::kCsvCableHeader) + "\n" +
+                                      "0,0,0,0,0,7\n0,1,30,40,10,9\n"
+                                      "1,0,0,0,0,8\n1,1,60,80,10,6\n");
+  Write(dir_.path() / "tether.csv", std::string(io::kCsvCableHeader) + "\n" +
+                                        "0,0,30,40,10,2\n0,1,33,44,20,1\n"
+                                        "1,0,60,80,10,3\n1,1,66,88,20,2\n");
+  std::vector<SweepResult> r = {R("main.top_tension", "final"), R("tether.top_tension", "max"),
+                                R("top_tension", "initial"),    R("tether.end_tension", "mean"),
+                                R("main.max_tension", "min"),   R("tether.layback", "final"),
+                                R("layback", "final")};
+  CheckSweepResults(&r, {"depressor", "towfish"}, {"main", "tether"});
+  EXPECT_EQ(r[0].cable, "main");
+  EXPECT_EQ(r[1].cable, "tether");
+  EXPECT_EQ(r[2].cable, "main");  // unqualified: the first cable
+  const std::vector<double> v = ComputeSweepResults(r, dir_.path().string(), "");
+  EXPECT_NEAR(v[0], 8.0, kExact);
+  EXPECT_NEAR(v[1], 3.0, kExact);
+  EXPECT_NEAR(v[2], 7.0, kExact);
+  EXPECT_NEAR(v[3], 1.5, kExact);
+  EXPECT_NEAR(v[4], 8.0, kExact);   // max over the nodes: 9 at t=0, 8 at t=1
+  EXPECT_NEAR(v[5], 10.0, kExact);  // |(6, 8)|
+  EXPECT_NEAR(v[6], 100.0, kExact);  // main: |(60, 80)|
+  // the one cable of a `cable:` scene answers to "cable" too: cable.csv
+  std::vector<SweepResult> one = {R("cable.top_tension", "final"), R("top_tension", "final")};
+  CheckSweepResults(&one, {"tow", "towfish"});
+  const std::vector<double> w = ComputeSweepResults(one, dir_.path().string(), "");
+  EXPECT_NEAR(w[0], 5.0, kExact);
+  EXPECT_NEAR(w[1], 5.0, kExact);
+  // an unknown cable names the scene's cables
+  std::vector<SweepResult> bad = {R("riser.top_tension", "final")};
+  try {
+    CheckSweepResults(&bad, {"depressor", "towfish"}, {"main", "tether"});
+    ADD_FAILURE() << "no exception";
+  } catch (const scene::ConfigError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "results.r.signal = riser.top_tension (sweep.yaml:1): no cable named riser in the "
+              "scene (cables: main, tether)");
+  }
+}
+
 TEST(SweepSignalNames, UnknownSignalsAreBadInput) {
   const std::vector<std::string> bodies = {"tow", "towfish"};
   auto error = [&](const std::string& signal, const std::string& stat) -> std::string {

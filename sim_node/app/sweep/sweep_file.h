@@ -62,6 +62,9 @@ struct SweepResult {
   std::optional<double> from, to;  // time window [s]; all the run if absent
   std::optional<SweepSettled> settled;
   std::string location;  // "sweep.yaml:12"
+  // a cable signal's cable (CheckSweepResults: its qualifier, `main` of main.top_tension, or
+  // the scene's first cable), whose <cable>.csv it reads; empty: "cable" (cable.csv)
+  std::string cable;
 };
 
 struct SweepSpec {

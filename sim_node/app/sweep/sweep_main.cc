@@ -244,7 +244,9 @@ int Run(const Options& o) {
     std::vector<std::string> bodies;
     for (const auto& s : model.spheres) bodies.push_back(s.name);
     for (const auto& v : model.vehicles) bodies.push_back(v.name);
-    towsim::app::CheckSweepResults(&spec.results, bodies);
+    std::vector<std::string> cables;  // Model::cables order: the one cable is "cable"
+    for (const auto& c : model.cables) cables.push_back(c.name);
+    towsim::app::CheckSweepResults(&spec.results, bodies, cables);
     cases = towsim::app::CombineParameters(spec.parameters, spec.combine);
     for (const towsim::app::SweepController& k : spec.controllers) {
       std::string why;

@@ -118,8 +118,31 @@ Series CableSeries(const io::CsvTable& table, const std::string& file,
   return s;
 }
 
-Series SignalSeries(const std::string& signal, CaseFiles* files) {
-  const auto [body, quantity] = Split(signal);
+Series SignalSeries(const SweepResult& r, CaseFiles* files) {
+  const auto [body, quantity] = Split(r.signal);
+  if (In(kCableSignals, quantity)) {
+    // <cable>.csv: the qualifier's, else the cable CheckSweepResults chose (the first)
+    const std::string csv = (!body.empty() ? body : r.cable.empty() ? "cable" : r.cable) + ".csv";
+    const io::CsvTable& t = files->Get(csv, io::kCsvCableHeader);
+    const std::string file = files->Path(csv);
+    // columns t,node,x,y,z,tension
+    if (quantity == "layback") {
+      return CableSeries(t, file, [](const auto& n) {
+        return std::hypot(n.back()[2] - n.front()[2], n.back()[3] - n.front()[3]);
+      });
+    }
+    if (quantity == "top_tension") {
+      return CableSeries(t, file, [](const auto& n) { return n.front()[5]; });
+    }
+    if (quantity == "end_tension") {
+      return CableSeries(t, file, [](const auto& n) { return n.back()[5]; });
+    }
+    return CableSeries(t, file, [](const auto& n) {
+      double m = -INFINITY;
+      for (const auto& node : n) m = std::max(m, node[5]);
+      return m;
+    });
+  }
   if (!body.empty() && (In(kBodyColumns, quantity) || In(kBodyDerived, quantity))) {
     const io::CsvTable& t = files->Get("bodies.csv", io::kCsvBodiesHeader);
     const std::string file = files->Path("bodies.csv");
@@ -154,27 +177,6 @@ Series SignalSeries(const std::string& signal, CaseFiles* files) {
     }
     const int c = t.Column(quantity);
     return BodySeries(t, file, body, [c](const auto& r) { return r[c]; });
-  }
-  if (In(kCableSignals, quantity)) {
-    const io::CsvTable& t = files->Get("cable.csv", io::kCsvCableHeader);
-    const std::string file = files->Path("cable.csv");
-    // columns t,node,x,y,z,tension
-    if (quantity == "layback") {
-      return CableSeries(t, file, [](const auto& n) {
-        return std::hypot(n.back()[2] - n.front()[2], n.back()[3] - n.front()[3]);
-      });
-    }
-    if (quantity == "top_tension") {
-      return CableSeries(t, file, [](const auto& n) { return n.front()[5]; });
-    }
-    if (quantity == "end_tension") {
-      return CableSeries(t, file, [](const auto& n) { return n.back()[5]; });
-    }
-    return CableSeries(t, file, [](const auto& n) {
-      double m = -INFINITY;
-      for (const auto& node : n) m = std::max(m, node[5]);
-      return m;
-    });
   }
   // status.csv: t,step,newton_iterations,residual,wall_us,cable_length
   const io::CsvTable& t = files->Get("status.csv", io::kCsvStatusHeader);
@@ -252,7 +254,8 @@ SettledCheck CheckSettled(const std::vector<std::pair<double, double>>& rows,
 }
 
 void CheckSweepResults(std::vector<SweepResult>* results,
-                       const std::vector<std::string>& body_names) {
+                       const std::vector<std::string>& body_names,
+                       const std::vector<std::string>& cable_names) {
   for (SweepResult& r : *results) {
     const std::string key = "results." + r.name + ".signal";
     auto fail = [&](const std::string& rule) {
@@ -268,11 +271,19 @@ void CheckSweepResults(std::vector<SweepResult>* results,
       continue;
     }
     if (r.stat.empty()) r.stat = "final";
+    if (In(kCableSignals, quantity)) {
+      // a cable's: the one named by the qualifier, else the first
+      if (!body.empty() && !In(cable_names, body)) {
+        fail("no cable named " + body + " in the scene (cables: " + Join(cable_names) + ")");
+      }
+      r.cable = !body.empty() ? body : cable_names.empty() ? "cable" : cable_names.front();
+      continue;
+    }
     if (body.empty()) {
-      if (In(kCableSignals, quantity) || In(kStatusSignals, quantity)) continue;
+      if (In(kStatusSignals, quantity)) continue;
       fail("unknown signal; the signals are <body>.<quantity> (bodies: " + Join(body_names) +
-           "), " + Join(kCableSignals) + ", " + Join(kStatusSignals) + ", and the run totals " +
-           Join(kRunTotals));
+           "), [<cable>.]" + Join(kCableSignals) + " (cables: " + Join(cable_names) + "), " +
+           Join(kStatusSignals) + ", and the run totals " + Join(kRunTotals));
     }
     if (!In(body_names, body)) {
       fail("no body named " + body + " in the scene (bodies: " + Join(body_names) + ")");
@@ -304,7 +315,7 @@ std::vector<double> ComputeSweepResults(const std::vector<SweepResult>& results,
       values.push_back(RunTotal(quantity, *summary));
       continue;
     }
-    Series s = SignalSeries(r.signal, &files);
+    Series s = SignalSeries(r, &files);
     // the window [from, to], with the CSV's 9-digit times
     const double from = r.from.value_or(-INFINITY), to = r.to.value_or(INFINITY);
     s.erase(std::remove_if(s.begin(), s.end(),

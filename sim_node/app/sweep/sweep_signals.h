@@ -10,10 +10,13 @@
 //                                             t = 0 heading (positive to starboard)
 //   <body>.fx fy fz mx my mz                  forces.csv: the cable's force and moment on it
 //   <body>.cable_force                        |(fx, fy, fz)| [N]
-//   layback                                   horizontal distance from the tow point (cable
+//   [<cable>.]layback                         horizontal distance from the tow point (cable
 //                                             node 0) to the towed end (the last node) [m]
-//   top_tension, end_tension, max_tension     axial force at node 0, at the last node, the
-//                                             largest over the nodes [N] (cable.csv)
+//   [<cable>.]top_tension, end_tension,       axial force at node 0, at the last node, the
+//             max_tension                     largest over the nodes [N] (cable.csv; with a
+//                                             qualifier <cable>.csv of that cable of a
+//                                             network, main.top_tension; without one the
+//                                             scene's first or only cable)
 //   newton_iterations, residual, step_wall_us status.csv (the steps at the output times)
 // Statistics over the output rows in the window [from, to]: final, initial, min, max,
 // max_abs, mean, rms, std (population). `settled` (SweepSettled): over the rows of that window
@@ -30,11 +33,13 @@
 
 namespace towsim::app {
 
-// Checks every result's signal and statistic against the scene's body names; a time signal
-// without a statistic takes `final`. Throws scene::ConfigError (key results.<name>.signal,
-// the result's location, the rule with the allowed names).
+// Checks every result's signal and statistic against the scene's body and cable names (the
+// one cable of a `cable:` scene is "cable"); a time signal without a statistic takes `final`;
+// sets each cable signal's SweepResult::cable. Throws scene::ConfigError (key
+// results.<name>.signal, the result's location, the rule with the allowed names).
 void CheckSweepResults(std::vector<SweepResult>* results,
-                       const std::vector<std::string>& body_names);
+                       const std::vector<std::string>& body_names,
+                       const std::vector<std::string>& cable_names = {"cable"});
 
 // the settled check of one result
 struct SettledCheck {
