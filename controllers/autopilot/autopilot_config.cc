@@ -90,7 +90,8 @@ std::vector<std::string> AutopilotFlagNames() {
           "domain",
           "namespace",
           "timeout",
-          "security"};
+          "security",
+          "cable"};
 }
 std::vector<std::string> AutopilotSwitchNames() { return {}; }
 

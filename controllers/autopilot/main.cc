@@ -25,11 +25,15 @@ constexpr char kUsage[] =
     "                 [--acceptance-radius 30] [--heading-kp ..] [--heading-ki ..]\n"
     "                 [--heading-kd ..] [--speed-kp ..] [--speed-ki ..] [--log FILE]\n"
     "                 [--domain 0] [--namespace /towsim] [--timeout 30] [--security DIR/NAME]\n"
+    "                 [--cable NAME]\n"
     "--config: config/autopilot/*.yaml; a bare NAME: the installed\n"
     "P/share/towsim/autopilot/NAME.yaml.\n"
     "Setpoints from t = 0, changed by the file's `schedule`; with waypoints (file) or a survey\n"
     "(flags or file) the heading setpoint comes from the guidance. --log writes one line per\n"
-    "step: \"t x y yaw u speed_d heading_d thrust rudder elevator waypoint\". At the end it "
+    "step: \"t x y yaw u speed_d heading_d thrust rudder elevator waypoint\"; with --cable NAME\n"
+    "(the state <ns>/NAME/state of that cable: the one cable, cable, a network's by name; a name\n"
+    "the node's scene has no cable of is refused, naming its cables) and \"t_c top end\": the\n"
+    "newest cable sample's stamp and its tension at node 0 and the last node [N]. At the end it "
     "prints\n"
     "the waypoints with the time each was reached. Needs CYCLONEDDS_URI. Exit 0 at the end of\n"
     "the node's run or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line or\n"
@@ -52,6 +56,8 @@ int main(int argc, char** argv) {
     opt.ns = f.String("namespace", "/towsim");
     opt.timeout = f.Number("timeout", 30.0);
     opt.security = f.String(kSecurityFlag, "");
+    opt.cable = f.Has("cable");  // docs/controllers.md "Cables"
+    opt.cable_name = f.String("cable", opt.cable_name);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "autopilot: error: %s\n", e.what());
     return 2;
@@ -87,9 +93,11 @@ int main(int argc, char** argv) {
       m.z_dot = b.z_dot;
       const AutopilotCommand a = AutopilotStep(c.gains, state, sp, m, b.dt);
       if (log != nullptr) {
-        std::fprintf(log, "%.4f %.4f %.4f %.6f %.5f %.4f %.6f %.3f %.6f %.6f %zu\n", b.t, b.x, b.y,
+        std::fprintf(log, "%.4f %.4f %.4f %.6f %.5f %.4f %.6f %.3f %.6f %.6f %zu", b.t, b.x, b.y,
                      b.yaw, b.u, sp.speed, sp.heading, a.thrust, a.rudder, a.elevator,
                      tracker.target);
+        if (opt.cable) std::fputs(CableLogColumns(b.cable).c_str(), log);
+        std::fputc('\n', log);
       }
       return Actuation{a.thrust, a.rudder, a.elevator};
     });

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -44,6 +45,15 @@ std::string RootedNamespace(const std::string& ns) {
 }
 
 }  // namespace
+
+std::string CableLogColumns(const CableSample& cable) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double top = cable.tension.empty() ? nan : cable.tension.front();
+  const double end = cable.tension.empty() ? nan : cable.tension.back();
+  char text[96];
+  std::snprintf(text, sizeof text, " %.6f %.6f %.6f", cable.t, top, end);
+  return text;
+}
 
 std::string RequireDdsUri() {
   const char* uri = std::getenv("CYCLONEDDS_URI");

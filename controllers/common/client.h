@@ -122,6 +122,12 @@ struct Actuation {
 // CYCLONEDDS_URI, or throws std::runtime_error saying how to set it
 std::string RequireDdsUri();
 
+// " t_c top end": what a controller's --log line ends with when it reads a cable (--cable
+// NAME, ClientOptions::cable; docs/controllers.md "Cables"): the newest cable sample's stamp
+// t_c [s] (-1: none yet) and its axial tension at node 0 and at the last node [N] (nan without
+// nodes), each "%.6f"
+std::string CableLogColumns(const CableSample& cable);
+
 // SIGINT / SIGTERM set a flag the loop polls (every 100 ms at most)
 void InstallStopHandlers();
 bool StopRequested();

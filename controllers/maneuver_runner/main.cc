@@ -33,7 +33,7 @@ constexpr char kUsage[] =
     "                       [--payout-rate 1] [--hold 100] [--towfish towfish]\n"
     "                       [--sample-period 10] [--results FILE.yaml] [--plot FILE.svg]\n"
     "                       [--domain 0] [--namespace /towsim] [--timeout 30]\n"
-    "                       [--security DIR/NAME]\n"
+    "                       [--security DIR/NAME] [--cable NAME]\n"
     "  case1           thrust T, rudder 0 (the paper's Case 1)\n"
     "  uturn           from `start` the rudder at D until the yaw reaches --until-yaw-deg, then 0\n"
     "                  (the paper's Case 2; the default manoeuvre)\n"
@@ -46,6 +46,10 @@ constexpr char kUsage[] =
     "                  `start`, holds --hold s, reels back in (maneuver_runner/payout.h): sheet\n"
     "                  with the towfish's depth against the paid-out length and time, --plot\n"
     "                  draws it (the scene needs cable.winch; commands on <ns>/winch/command)\n"
+    "  --cable NAME    the cable whose state <ns>/NAME/state the manoeuvre reads (payout: the\n"
+    "                  sheet's paid-out length; default the one cable, `cable`; a network's\n"
+    "                  cables by name, the winch's cable); a name the node's scene has no\n"
+    "                  cable of is refused, naming its cables (exit 1)\n"
     "Parameters from --config (config/maneuvers/*.yaml; a bare NAME: the installed\n"
     "P/share/towsim/maneuvers/NAME.yaml) and flags (flags win), see\n"
     "maneuver_runner/maneuver_config.h. Needs CYCLONEDDS_URI. Exit 0 at the end of the node's\n"
@@ -74,6 +78,9 @@ int main(int argc, char** argv) {
       opt.cable = true;         // the paid-out length, for the sheet
       opt.observe = c.towfish;  // its depth, for the sheet
     }
+    // the cable read (docs/controllers.md "Cables"): checked against the scene's cables
+    opt.cable = opt.cable || f.Has("cable");
+    opt.cable_name = f.String("cable", opt.cable_name);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "maneuver_runner: error: %s\n", e.what());
     return 2;

@@ -55,7 +55,7 @@ std::vector<std::string> ManeuverFlagNames() {
           "rudder-deg", "heading-deg", "until-yaw-deg", "until-turn-deg", "reversals",
           "results",    "domain",      "namespace",     "timeout",
           "security",   "tow-speed",   "from-length",   "to-length",      "payout-rate",
-          "hold",       "towfish",     "sample-period", "plot"};
+          "hold",       "towfish",     "sample-period", "plot",           "cable"};
 }
 std::vector<std::string> ManeuverSwitchNames() { return {"port-first"}; }
 

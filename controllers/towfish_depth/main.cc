@@ -8,7 +8,7 @@
 //                 [--security DIR/NAME] [--winch [--winch-gain 0.1] [--winch-deadband 0.5]
 //                 [--winch-filter 10] [--winch-elevator-depth 25] [--winch-max-speed V]
 //                 [--winch-max-acceleration A]]
-//                 [--log FILE]
+//                 [--log FILE] [--cable NAME]
 // Altitude mode: the commanded depth is z + range cos(roll) cos(pitch) - A, range the sim's own
 // altimeter (<ns>/<body>/altitude, sensor_msgs/Range, docs/sensors.md: along the body's z axis,
 // so its vertical part is the depth of the echo below the body) of the step answered; while it
@@ -25,7 +25,8 @@
 // each step also publishes a WinchCommand (SPEED) on <ns>/winch/command, within the winch's
 // max_speed and max_acceleration (from the node's scene_info, or less with --winch-max-speed,
 // --winch-max-acceleration); the node clamps the length to [min_length, max_length].
-// --log writes "t z elevator target_depth" per step (winch mode: and the drum speed commanded). Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run
+// --log writes "t z elevator target_depth" per step (winch mode: and the drum speed commanded;
+// --cable NAME: and the cable's "t_c top end", common/client.h CableLogColumns). Needs CYCLONEDDS_URI. Exit 0 at the end of the node's run
 // or on SIGINT/SIGTERM, 1 on an error or a timeout, 2 on a bad command line.
 
 #include <algorithm>
@@ -54,7 +55,7 @@ constexpr char kUsage[] =
     "                     [--namespace /towsim] [--timeout 30] [--security DIR/NAME] [--log FILE]\n"
     "                     [--winch [--winch-gain 0.1] [--winch-deadband 0.5] [--winch-filter 10]\n"
     "                     [--winch-elevator-depth 25] [--winch-max-speed V]\n"
-    "                     [--winch-max-acceleration A]]\n"
+    "                     [--winch-max-acceleration A]] [--cable NAME]\n"
     "  --depth D          hold the depth D [m] below the surface\n"
     "  --altitude A       hold A [m] above the seabed, measured by the sim's own altimeter\n"
     "                     (<ns>/<body>/altitude, sensor_msgs/Range); while it sees no seabed\n"
@@ -70,7 +71,11 @@ constexpr char kUsage[] =
     "                     --winch-deadband D [m], --winch-filter T [s], --winch-max-speed V\n"
     "                     [m/s], --winch-max-acceleration A [m/s^2] (towfish_depth/winch_law.h)\n"
     "  --log FILE         writes \"t z elevator target_depth\" per step (--winch: and the\n"
-    "                     drum speed)\n"
+    "                     drum speed; --cable: and \"t_c top end\")\n"
+    "  --cable NAME       also read the state of cable NAME (<ns>/NAME/state; the one cable:\n"
+    "                     cable, a network's by name) and log the newest sample's stamp t_c\n"
+    "                     and its tension at node 0 and at the last node [N]; a name the\n"
+    "                     node's scene has no cable of is refused, naming its cables (exit 1)\n"
     "Exit 0 at the end of the node's run or on SIGINT/SIGTERM, 1 error or timeout, 2 bad "
     "command line.\n";
 }  // namespace
@@ -91,7 +96,7 @@ int main(int argc, char** argv) {
                    "max-pitch-deg", "elevator-sign", "domain", "namespace", "timeout", "log",
                    "altitude", "seabed-depth", "seabed-profile", "winch-gain", "winch-deadband",
                    "winch-filter", "winch-max-speed", "winch-max-acceleration", "winch-elevator-depth",
-                   kSecurityFlag},
+                   kSecurityFlag, "cable"},
                   {"hold", "winch"});
     if (f.Help()) {
       std::printf("%s", kUsage);
@@ -150,6 +155,8 @@ int main(int argc, char** argv) {
     p.max_pitch = Rad(f.Number("max-pitch-deg", Deg(p.max_pitch), 0.0, 90.0, /*lo_open=*/true));
     p.hold = f.Has("hold");
     log_path = f.String("log", "");
+    opt.cable = f.Has("cable");  // docs/controllers.md "Cables"
+    opt.cable_name = f.String("cable", opt.cable_name);
     opt.winch = f.Has("winch");
     for (const char* w : {"winch-gain", "winch-deadband", "winch-filter", "winch-max-speed",
                           "winch-max-acceleration", "winch-elevator-depth"}) {
@@ -218,11 +225,11 @@ int main(int argc, char** argv) {
         const double deeper = p.sign >= 0.0 ? elevator : -elevator;
         a.winch.value = WinchDepthStep(winch, winch_state, p.depth, b.z, deeper, b.dt);
       }
-      if (log != nullptr && opt.winch) {
-        std::fprintf(log, "%.6f %.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth,
-                     a.winch.value);
-      } else if (log != nullptr) {
-        std::fprintf(log, "%.6f %.6f %.6f %.6f\n", b.t, b.z, elevator, p.depth);
+      if (log != nullptr) {
+        std::fprintf(log, "%.6f %.6f %.6f %.6f", b.t, b.z, elevator, p.depth);
+        if (opt.winch) std::fprintf(log, " %.6f", a.winch.value);
+        if (opt.cable) std::fputs(CableLogColumns(b.cable).c_str(), log);
+        std::fputc('\n', log);
       }
       return a;
     });

@@ -195,6 +195,92 @@ TEST_F(SweepLocal, TableEqualsDirectRunsAndFailedCasesAreRecordedThenResumed) {
   }
 }
 
+// the rows of a case's <cable>.csv by time: each time's nodes as (t, node, x, y, z, tension),
+// the fields as written and parsed
+struct CableRows {
+  std::vector<std::vector<std::string>> text;  // the last row set, as written
+  std::vector<std::vector<std::vector<double>>> sets;  // every row set, node order
+};
+CableRows ReadCable(const std::string& path) {
+  const io::CsvTable t = io::ReadCsvFile(path);
+  CableRows c;
+  std::string time;
+  for (const auto& row : t.rows) {
+    if (row[0] != time) {
+      c.sets.emplace_back();
+      c.text.clear();
+      time = row[0];
+    }
+    std::vector<double> x;
+    for (const std::string& f : row) x.push_back(std::stod(f));
+    c.sets.back().push_back(x);
+    c.text.push_back(row);
+  }
+  return c;
+}
+
+// a network sweep (tests/integration/sweeps/network_sweep.yaml, offline): the cable signals
+// with a cable qualifier read that cable's <cable>.csv, without one the first cable's, checked
+// against the cases' own main.csv and tether.csv
+TEST_F(SweepLocal, NetworkCableSignalsReadTheirCablesCsv) {
+  // the table prints "%.9g": a mean recomputed here agrees to its 9 digits
+  constexpr double kPrinted = 1e-8;  // relative
+  const std::string out = Tmp("out");
+  const Sweep s = RunSweep({kSource + "/tests/integration/sweeps/network_sweep.yaml", "--out",
+                            out, "--workers", "2"},
+                           Tmp("log"));
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  auto rows = Table(out + "/results.csv");
+  ASSERT_EQ(rows.size(), 2u);
+  std::vector<double> tether_tops;
+  for (const std::string name : {"case_0000", "case_0001"}) {
+    SCOPED_TRACE(name);
+    auto& row = rows[name];
+    ASSERT_EQ(row["status"], "ok") << row["message"];
+    EXPECT_FALSE(fs::exists(out + "/" + name + "/cable.csv"));  // a network: <cable>.csv
+    const CableRows main = ReadCable(out + "/" + name + "/main.csv");
+    const CableRows tether = ReadCable(out + "/" + name + "/tether.csv");
+    ASSERT_EQ(main.sets.size(), 21u);  // 2 s at 10 Hz, t = 0 included
+    ASSERT_EQ(tether.sets.size(), 21u);
+    // final values: the last row set's field as written
+    EXPECT_EQ(row["main_top"], main.text.front()[5]);
+    EXPECT_EQ(row["first_top"], main.text.front()[5]);  // unqualified: the first cable, main
+    double top_max = -INFINITY, end_sum = 0.0, first_max = -INFINITY;
+    for (const auto& set : tether.sets) {
+      top_max = std::max(top_max, set.front()[5]);
+      end_sum += set.back()[5];
+    }
+    for (const auto& node : main.sets.front()) first_max = std::max(first_max, node[5]);
+    EXPECT_NEAR(std::stod(row["tether_top_max"]), top_max, kPrinted * top_max);
+    const double end_mean = end_sum / 21.0;
+    EXPECT_NEAR(std::stod(row["tether_end_mean"]), end_mean, kPrinted * end_mean);
+    EXPECT_NEAR(std::stod(row["main_max_tension"]), first_max, kPrinted * first_max);
+    const auto& last = tether.sets.back();
+    const double layback = std::hypot(last.back()[2] - last.front()[2],
+                                      last.back()[3] - last.front()[3]);
+    EXPECT_NEAR(std::stod(row["tether_layback"]), layback, kPrinted * layback);
+    // the cables differ: the main cable also holds the depressor
+    EXPECT_GT(std::stod(row["main_top"]), 1.5 * std::stod(row["tether_top_max"]));
+    tether_tops.push_back(top_max);
+  }
+  // a heavier towfish pulls harder on its tether
+  EXPECT_GT(tether_tops[1], tether_tops[0]);
+
+  // a cable the scene does not have: exit 2 naming the scene's cables
+  const std::string bad = Tmp("bad_sweep.yaml");
+  std::ofstream(bad) << "scene: " << kSource
+                     << "/tests/integration/scenes/network_two_part_tow.yaml\n"
+                        "duration: 1\nparameters:\n  bodies.towfish.mass: [400]\n"
+                        "results:\n  r: {signal: cable.top_tension}\n";
+  const Sweep refused = RunSweep({bad, "--out", Tmp("bad_out")}, Tmp("bad_log"));
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("results.r.signal = cable.top_tension"), std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("no cable named cable in the scene (cables: main, tether)"),
+            std::string::npos)
+      << refused.err;
+}
+
 TEST_F(SweepLocal, SigtermLosesNoFinishedCaseAndResumeRunsTheRest) {
   // six cases of ~0.3 s each (Case 1 for 400 s) on one worker; SIGTERM during the third
   const std::string dir = Tmp("sweep");
