@@ -308,7 +308,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     }
     // forces.csv in the node's order (io/csv_writer.h): each body's total, then its
     // attachments (the end forces in its frame <b>_frd, cables in order, start before end),
-    // then the supports (the end forces in world_ned)
+    // then the supports (the end forces in world_ned); the frames of docs/frames.md
     auto force_row = [&](const std::string& name, const WrenchStamped& m) {
       std::fprintf(forces_csv.get(), "%.9g,%s,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", t,
                    io::CsvField(name).c_str(), m.force.x, m.force.y, m.force.z, m.torque.x,
