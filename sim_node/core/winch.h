@@ -37,6 +37,7 @@
 // with its neighbour when it would fall below kMergeLength l_e.
 
 #include <limits>
+#include <string>
 
 #include "core/actuator.h"
 
@@ -51,6 +52,9 @@ inline constexpr double kSplitLength = 1.6;
 inline constexpr double kMergeLength = 0.4;
 
 struct WinchParams {               // Model::cable.winch (std::optional<WinchParams>)
+  // its name: its command topic <ns>/<name>/command and CSV file <name>.csv
+  // (docs/scene_format.md "Networks"): `winch` in a scene with one winch
+  std::string name = "winch";
   double min_length = 0.0;         // [m]
   double max_length = 0.0;         // [m]
   double max_speed = 0.0;          // |dL/dt| [m/s]
