@@ -52,14 +52,14 @@ inline constexpr double kSplitLength = 1.6;
 inline constexpr double kMergeLength = 0.4;
 
 struct WinchParams {               // Model::cable.winch (std::optional<WinchParams>)
-  // its name: its command topic <ns>/<name>/command and CSV file <name>.csv
-  // (docs/scene_format.md "Networks"): `winch` in a scene with one winch
-  std::string name = "winch";
   double min_length = 0.0;         // [m]
   double max_length = 0.0;         // [m]
   double max_speed = 0.0;          // |dL/dt| [m/s]
   double max_acceleration = 0.0;   // |d2L/dt2| [m/s^2]
   double brake_tension = std::numeric_limits<double>::infinity();  // [N]
+  // its name: its command topic <ns>/<name>/command and CSV file <name>.csv
+  // (docs/scene_format.md "Networks"): `winch` in a scene with one winch
+  std::string name = "winch";
 };
 
 struct WinchCommand {  // an input, like VehicleCommand (not part of State)
