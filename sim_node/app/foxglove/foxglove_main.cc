@@ -209,7 +209,8 @@ class Bridge {
 
 void Bridge::Serve(const std::vector<std::string>& bodies, const std::vector<std::string>& cables,
                    const std::vector<std::string>& winches) {
-  for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies, true, cables)) {
+  for (const towsim::app::NodeTopic& t :
+       towsim::app::NodeTopics(names_, bodies, true, cables, winches)) {
     auto s = std::make_unique<Served>();
     s->topic = t;
     const std::string type = towsim::io::Ros2TypeName(t.descriptor->m_typename);
