@@ -214,7 +214,8 @@ struct Model {
   Environment environment;
   // the cables (docs/scene_format.md "Networks"): one for the one-cable form `cable:`, else
   // the entries of `cables:`; the winched cables come first, in the scene's order (their
-  // drums' nodes are the ones that change, system.h; winch w is cable w's). Any number of cable ends may hold the same sphere or vehicle.
+  // drums' nodes are the ones that change, system.h; winch w is cable w's). Any number of
+  // cable ends may hold the same sphere or vehicle.
   std::vector<CableParams> cables = std::vector<CableParams>(1);
   std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cables' Newton solve
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme

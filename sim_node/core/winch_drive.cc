@@ -113,8 +113,10 @@ void WinchDrive::SolveBrakeSlip(double h, State* state,
     iterations += s->iterations;
   }
   s->iterations = iterations;
-  for (int w = 0; w < nw; ++w)
-    if (braking_[w] && brakes_[w]->attempts() > 1) state->winches[w].slip_slope = brakes_[w]->slope();
+  for (int w = 0; w < nw; ++w) {
+    if (braking_[w] && brakes_[w]->attempts() > 1)
+      state->winches[w].slip_slope = brakes_[w]->slope();
+  }
 }
 
 StepStatus WinchDrive::Step(double h, State* state,

@@ -48,7 +48,10 @@ class WinchDrive {
   // winch w's command held from now on, clamped into its limits (WinchCommandRange); a
   // non-finite value is ignored (the command held so far stays). No such winch: ignored.
   void SetCommand(const WinchCommand& command, int w = 0);
-  const WinchCommand& command(int w = 0) const { return commands_[w]; }
+  // (no such winch: the default command, speed 0)
+  const WinchCommand& command(int w = 0) const {
+    return w >= 0 && w < num_winches() ? commands_[w] : no_command_;
+  }
 
   // one step h of *state (above); step_system(h) takes the cables and the vehicles over h from
   // *state (the same object), and may be called again after *state is reset to the step's
@@ -73,6 +76,7 @@ class WinchDrive {
 
   System* system_;
   std::vector<WinchCommand> commands_;  // per winch
+  WinchCommand no_command_;             // command() of a winch the scene does not have
   std::vector<WinchStep> steps_;        // the drums' motions over the step being taken
   // per winch: a brake that holds its cable this step, its slip and its secant iteration
   std::vector<char> braking_;

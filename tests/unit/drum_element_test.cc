@@ -25,6 +25,7 @@ constexpr double kShapeTol = 1e-11;  // [m]
 struct Fixture {
   Fixture() : system(test::SteadyTowWithWinch()) {
     BuildInitialState(system, &state);
+    state.winches.resize(1);  // WinchDrive::Initialize's (winch_drive.h)
     state.winches[0].nodes = system.num_nodes();
     state.winches[0].length = 204.0;  // the drum element 14 m
     system.SetLayout(state.winches[0].nodes, state.winches[0].length);

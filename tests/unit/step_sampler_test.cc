@@ -103,9 +103,12 @@ TEST(StepSampler, SamplesTheVehiclesAtTheStartAndThePredictedEnd) {
 }
 
 TEST(StepSampler, TakesTheSupportsAndTheDrumFromTheState) {
-  const System sys(WavyModel());
+  Model m = WavyModel();
+  m.cables[0].winch = WinchParams{20.0, 60.0, 1.0, 0.5};  // the drum at the vehicle
+  const System sys(m);
   State s;
   BuildInitialState(sys, &s);
+  s.winches.resize(1);  // WinchDrive::Initialize's (winch_drive.h)
   s.supports[0] = {Vec3(1, 2, 3), Vec3(4, 5, 6), 0.5, 0.75, 2.0 * Mat3::Identity(), Vec3(7, 8, 9)};
   s.winches[0].drum = {0.5, 12.0, 0.25, -0.125};
   StepInputs in;
