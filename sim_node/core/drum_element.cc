@@ -2,19 +2,20 @@
 
 namespace towsim::core {
 
-bool SplitDrumElement(System* system, State* state) {
-  const int first = system->first_node();
-  const double l0 = system->drum_length(), le = system->element_length();
+bool SplitDrumElement(System* system, State* state, int c) {
+  WinchState& winch = state->winches[c];
+  const int first = system->first_node(c);
+  const double l0 = system->drum_length(c), le = system->element_length(c);
   if (first == 0 || l0 <= le) return false;
   // r, r' of the new node from element 0's cubic, for each of q, v, a, a_alpha
   const double xi = (l0 - le) / l0;
   const ShapeAtPoint shape = EvaluateShape(xi, l0);
-  const int drum = system->ArrayDof(first), added = system->ArrayDof(first - 1);
+  const int drum = system->ArrayDof(first, c), added = system->ArrayDof(first - 1, c);
   const Vec12 e = state->q.segment<12>(drum), e_dot = state->v.segment<12>(drum);
   const Vec3 r0 = e.segment<3>(0), d0 = e.segment<3>(3), r1 = e.segment<3>(6), d1 = e.segment<3>(9);
   // the material velocity there (drum_element.h): the rate at fixed xi plus the material's
   // motion along the cable, (1 - xi) dl_0/dt r'
-  const double rate = state->winch.speed;
+  const double rate = winch.speed;
   const Vec3 dr = Interpolate(shape.dn, e), ddr = Interpolate(shape.ddn, e);
   const Vec3 v_xi =
       Interpolate(shape.n, e_dot) + (rate / l0) * (shape.n[1] * d0 + shape.n[3] * d1);
@@ -34,23 +35,24 @@ bool SplitDrumElement(System* system, State* state) {
     x->segment<3>(drum) = value;
     x->segment<3>(drum + 3) = slope;
   }
-  ++state->winch.nodes;
-  system->SetLayout(state->winch.nodes, state->winch.length);
+  ++winch.nodes;
+  system->SetLayout(winch.nodes, winch.length, c);
   state->newton.valid = false;
   return true;
 }
 
-bool MergeDrumElement(System* system, State* state) {
-  if (state->winch.nodes < 3) return false;
-  const int first = system->first_node();
-  const int drum = system->ArrayDof(first), next = system->ArrayDof(first + 1);
+bool MergeDrumElement(System* system, State* state, int c) {
+  WinchState& winch = state->winches[c];
+  if (winch.nodes < 3) return false;
+  const int first = system->first_node(c);
+  const int drum = system->ArrayDof(first, c), next = system->ArrayDof(first + 1, c);
   Eigen::VectorXd* vectors[4] = {&state->q, &state->v, &state->a, &state->a_alpha};
   for (Eigen::VectorXd* x : vectors) {
     x->segment<6>(next) = x->segment<6>(drum);  // the drum node replaces node 1
     if (x != &state->q) x->segment<6>(drum).setZero();  // parked at rest
   }
-  --state->winch.nodes;
-  system->SetLayout(state->winch.nodes, state->winch.length);
+  --winch.nodes;
+  system->SetLayout(winch.nodes, winch.length, c);
   state->newton.valid = false;
   return true;
 }

@@ -2,7 +2,7 @@
 // Splitting and merging the winch's drum element (docs/winch.md). Element 0 at the drum has the
 // variable rest length l_0 (system.h); the other elements keep l_e = cable.length /
 // cable.elements. With the nodes in use at the end of the preallocated arrays (the drum node at
-// array node f = System::first_node()):
+// array node f = System::first_node(c) of the winch's cable c):
 //
 // Split (l_0 -> l_0 - l_e and a new element of l_e): a node is added at x = l_0 - l_e from the
 // drum, xi = x / l_0, with r, r' (and their velocities, accelerations and the
@@ -28,9 +28,9 @@
 
 namespace towsim::core {
 
-// adds a node in element 0 (above); false if the arrays are full or l_0 <= l_e
-bool SplitDrumElement(System* system, State* state);
-// merges element 0 with element 1 (above); false with fewer than 3 nodes
-bool MergeDrumElement(System* system, State* state);
+// adds a node in element 0 of cable c (above); false if the arrays are full or l_0 <= l_e
+bool SplitDrumElement(System* system, State* state, int c = 0);
+// merges element 0 of cable c with its element 1 (above); false with fewer than 3 nodes
+bool MergeDrumElement(System* system, State* state, int c = 0);
 
 }  // namespace towsim::core

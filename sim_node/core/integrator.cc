@@ -144,8 +144,13 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.q = st.q;
       kept.v = st.v;
       kept.a = st.a;
-      kept.drum_length = st.winch.drum.LengthAt(t1);
-      kept.drum_rate = st.winch.drum.RateAt(t1);
+      const int nw = system_.num_winches();
+      kept.drum_length.resize(nw);  // once: no allocation after
+      kept.drum_rate.resize(nw);
+      for (int w = 0; w < nw; ++w) {
+        kept.drum_length[w] = st.winches[w].drum.LengthAt(t1);
+        kept.drum_rate[w] = st.winches[w].drum.RateAt(t1);
+      }
       if (waves_) kept.wave_q = waves_each_iteration ? st.q : wave_q_;
       kept.support_compliance.resize(st.supports.size());  // once: no allocation after
       for (size_t e = 0; e < st.supports.size(); ++e)
@@ -271,11 +276,13 @@ bool Integrator::RestoreNewtonMatrix(const State& s) {
     support.t0 = kept.t - h;
     support.t1 = kept.t;
   }
-  DrumMotion& drum = inputs_->drum;
-  drum = DrumMotion();
-  drum.t0 = kept.t;
-  drum.length = kept.drum_length;
-  drum.rate = kept.drum_rate;
+  for (size_t w = 0; w < kept.drum_length.size(); ++w) {
+    DrumMotion& drum = inputs_->drums[w];
+    drum = DrumMotion();
+    drum.t0 = kept.t;
+    drum.length = kept.drum_length[w];
+    drum.rate = kept.drum_rate[w];
+  }
   system_.Evaluate({kept.q, kept.v, kept.a, s.lambda, kept.t}, *inputs_, {1.0, cf},
                    {&r_, &phi_, &jac_});
   return jac_.Factor();

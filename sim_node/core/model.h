@@ -195,6 +195,7 @@ struct ScriptEntry {
   double rudder = 0.0;    // [rad]
   double elevator = 0.0;  // [rad]
   bool set_winch = false;  // winch_speed or winch_length given (vehicle = -1 without a body)
+  int winch_index = 0;     // the winch it commands (cable winch_index's; the entry's `winch:`)
   WinchCommand winch;
 };
 
@@ -212,8 +213,9 @@ struct Model {
   TimeSettings time;
   Environment environment;
   // the cables (docs/scene_format.md "Networks"): one for the one-cable form `cable:`, else
-  // the entries of `cables:`; a winched cable comes first (its drum's nodes are the ones that
-  // change, system.h). Any number of cable ends may hold the same sphere or vehicle.
+  // the entries of `cables:`; the winched cables come first, in the scene's order (their
+  // drums' nodes are the ones that change, system.h; winch w is cable w's). Any number of
+  // cable ends may hold the same sphere or vehicle.
   std::vector<CableParams> cables = std::vector<CableParams>(1);
   std::vector<SphereBody> spheres;  // 3-DOF point bodies, coupled in the cables' Newton solve
   std::vector<Vehicle> vehicles;   // 6-DOF vehicles, coupled by the `integrator.coupling` scheme

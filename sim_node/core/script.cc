@@ -72,7 +72,7 @@ int ScriptRunner::Apply(Simulation* sim) {
       if (e.set_elevator) command.elevator = e.elevator;
       sim->SetVehicleCommand(e.vehicle, command);
     }
-    if (e.set_winch) sim->SetWinchCommand(e.winch);
+    if (e.set_winch) sim->SetWinchCommand(e.winch, e.winch_index);
     fired_[i] = true;
     --remaining_;
     ++fired;

@@ -176,16 +176,19 @@ void Simulation::CheckStateShape(const State& s) const {
   CheckSize("a_alpha", s.a_alpha.size(), n, why.str());
   CheckSize("lambda", s.lambda.size(), sys.num_lambda(),
             "3 per held cable end, 2 more per clamped end");
-  // the cable's nodes in use are part of the shape (with a winch the arrays hold max_nodes)
-  if (s.winch.nodes < 2 || s.winch.nodes > sys.max_nodes() ||
-      (!sys.has_winch() && s.winch.nodes != sys.max_nodes())) {
+  CheckSize("winches", static_cast<long>(s.winches.size()), sys.num_cables(), "one per cable");
+  // each cable's nodes in use are part of the shape (with a winch the arrays hold max_nodes)
+  for (int c = 0; c < sys.num_cables(); ++c) {
+    const int nodes = s.winches[c].nodes;
+    if (nodes >= 2 && nodes <= sys.max_nodes(c) && (sys.has_winch(c) || nodes == sys.max_nodes(c)))
+      continue;
     std::ostringstream msg;
-    msg << "SetState: winch.nodes = " << s.winch.nodes << ", this model needs ";
-    if (sys.has_winch())
-      msg << "2 to " << sys.max_nodes()
+    msg << "SetState: winches[" << c << "].nodes = " << nodes << ", this model needs ";
+    if (sys.has_winch(c))
+      msg << "2 to " << sys.max_nodes(c)
           << " (cable nodes in use; the winch's max_length holds at most that many)";
     else
-      msg << sys.max_nodes() << " (cable.elements + 1; the scene has no winch)";
+      msg << sys.max_nodes(c) << " (cable.elements + 1; the cable has no winch)";
     throw std::invalid_argument(msg.str());
   }
   const long nv = num_vehicles();
@@ -207,7 +210,8 @@ void Simulation::CheckStateShape(const State& s) const {
 void Simulation::SetState(const State& state) {
   CheckStateShape(state);
   impl_->state = state;
-  impl_->system.SetLayout(state.winch.nodes, state.winch.length);
+  for (int c = 0; c < impl_->system.num_cables(); ++c)
+    impl_->system.SetLayout(state.winches[c].nodes, state.winches[c].length, c);
   impl_->coupling.SizeWorkSpace(impl_->state);
   if (!impl_->integrator.RestoreNewtonMatrix(impl_->state))
     throw SolverError("SetState: the kept Newton matrix of the state cannot be factored");
@@ -226,7 +230,8 @@ void Simulation::StartFrom(const State& state) {
   s.coupling.flow_end.assign(num_vehicles(), VehicleFlow());
   CheckStateShape(s);
   impl_->state = s;
-  impl_->system.SetLayout(s.winch.nodes, s.winch.length);
+  for (int c = 0; c < impl_->system.num_cables(); ++c)
+    impl_->system.SetLayout(s.winches[c].nodes, s.winches[c].length, c);
   impl_->coupling.HoldSupports(&impl_->state);
   impl_->HoldVessels();
   if (!impl_->integrator.InitializeAcceleration(&impl_->state))
@@ -342,11 +347,15 @@ void Simulation::SetVehicleCommand(int v, const VehicleCommand& command) {
 }
 
 bool Simulation::has_winch() const { return impl_->winch.has_winch(); }
-void Simulation::SetWinchCommand(const WinchCommand& command) { impl_->winch.SetCommand(command); }
-const WinchCommand& Simulation::winch_command() const { return impl_->winch.command(); }
-double Simulation::cable_length() const { return impl_->state.winch.length; }
-double Simulation::winch_speed() const { return impl_->state.winch.speed; }
-double Simulation::DrumTension() const { return NodeTension(0); }
+int Simulation::num_winches() const { return impl_->winch.num_winches(); }
+const std::string& Simulation::winch_name(int w) const { return model().cables[w].winch->name; }
+void Simulation::SetWinchCommand(const WinchCommand& command, int w) {
+  impl_->winch.SetCommand(command, w);
+}
+const WinchCommand& Simulation::winch_command(int w) const { return impl_->winch.command(w); }
+double Simulation::cable_length(int c) const { return impl_->state.winches[c].length; }
+double Simulation::winch_speed(int c) const { return impl_->state.winches[c].speed; }
+double Simulation::DrumTension(int c) const { return NodeTension(0, c); }
 
 Vec3 Simulation::end_force(int end, int c) const {
   const System& sys = impl_->system;

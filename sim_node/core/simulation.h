@@ -131,15 +131,20 @@ class Simulation {
   // pose reported now, from which the next step starts.
   void SetVesselPose(int v, double t, const VesselPose& pose);
 
-  // --- the winch at the cable's start (winch.h, docs/winch.md) ---
-  bool has_winch() const;  // the scene has cable.winch
-  // the command held from now on, clamped into the limits (WinchCommandRange); a non-finite
-  // value is ignored (the command held so far stays). Without a winch: ignored.
-  void SetWinchCommand(const WinchCommand& command);
-  const WinchCommand& winch_command() const;
-  double cable_length() const;  // paid-out unstretched length now [m] (no winch: cable.length)
-  double winch_speed() const;   // dL/dt now [m/s], + pays out (no winch: 0)
-  double DrumTension() const;   // axial tension at the cable's start (the drum) [N]
+  // --- the winches at their cables' starts (winch.h, docs/winch.md) ---
+  // winch w sits at the start of cable w (the scene puts the winched cables first, model.h)
+  bool has_winch() const;    // the scene has a winch (cable.winch or cables.<c>.winch)
+  int num_winches() const;   // how many
+  // winch w's name (WinchParams::name: its topic and CSV file, docs/winch_dds.md)
+  const std::string& winch_name(int w) const;
+  // winch w's command held from now on, clamped into its limits (WinchCommandRange); a
+  // non-finite value is ignored (the command held so far stays). No such winch: ignored.
+  void SetWinchCommand(const WinchCommand& command, int w = 0);
+  const WinchCommand& winch_command(int w = 0) const;
+  // cable c's paid-out unstretched length now [m] (no winch: cable.length)
+  double cable_length(int c = 0) const;
+  double winch_speed(int c = 0) const;  // cable c's dL/dt now [m/s], + pays out (no winch: 0)
+  double DrumTension(int c = 0) const;  // axial tension at cable c's start (the drum) [N]
 
   // force cable c exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end

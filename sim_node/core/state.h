@@ -56,7 +56,8 @@ struct NewtonPoint {
   Eigen::VectorXd q, v, a;  // the iterate it was evaluated at
   // the waves it was evaluated with: sampled at wave_q at t (only with waves)
   Eigen::VectorXd wave_q;
-  double drum_length = 0.0, drum_rate = 0.0;  // element 0's l_0 and dl_0/dt then (winch)
+  // each winch's drum element's l_0 and dl_0/dt then (State::winches order, one per winch)
+  std::vector<double> drum_length, drum_rate;
   // the support compliances it holds in its multiplier blocks (SupportMotion::compliance), one
   // per cable end (2 c + end)
   std::vector<Eigen::Matrix3d> support_compliance;
@@ -81,8 +82,8 @@ struct DrumMotion {
   double RateAt(double t) const { return rate + accel * (t - t0); }
 };
 
-// the winch (winch.h): the paid-out unstretched length, its rate and the nodes in use; without
-// a winch the length stays cable.length, the speed 0 and the nodes cable.elements + 1
+// a cable's winch (winch.h): the paid-out unstretched length, its rate and the nodes in use; a
+// cable without a winch keeps the length cable.length, the speed 0 and cable.elements + 1 nodes
 struct WinchState {
   double length = 0.0;  // L [m]
   double speed = 0.0;   // dL/dt [m/s], + pays out
@@ -107,7 +108,9 @@ struct State {
   std::vector<SupportMotion> supports;
   CouplingHistory coupling;
   NewtonPoint newton;
-  WinchState winch;
+  // one per cable (Model::cables order; the winched cables come first, so winch w is cable w):
+  // its length, drum and nodes in use (part of the state's shape)
+  std::vector<WinchState> winches;
 };
 
 }  // namespace towsim::core

@@ -58,8 +58,11 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   // at its rest length now (held: no rate)
   StepInputs inputs;
   inputs.supports = s->supports;
-  inputs.drum.t0 = s->t;
-  inputs.drum.length = sys.drum_length();
+  inputs.drums.resize(sys.num_winches());
+  for (int w = 0; w < sys.num_winches(); ++w) {
+    inputs.drums[w].t0 = s->t;
+    inputs.drums[w].length = sys.drum_length(w);
+  }
   VectorXd r, phi, rhs, dq, dl;
   constexpr int kMaxIterations = 2000;
   double delta = 1.0e-2;  // pseudo time step squared [s^2]

@@ -41,8 +41,8 @@ struct StepInputs {
   WaveSamples waves;
   // the cable ends' vehicle attachment points over the step (2 c + end; state.h)
   std::vector<SupportMotion> supports;
-  // element 0's rest length over the step (a winch; state.h)
-  DrumMotion drum;
+  // element 0's rest length over the step, one per winch (cable w for winch w; state.h)
+  std::vector<DrumMotion> drums;
   // the water at each vehicle at the start and the end of the step (Model::vehicles order;
   // vehicle_model.h)
   std::vector<VehicleFlow> vehicle_flow_start, vehicle_flow_end;

@@ -46,7 +46,9 @@ void StepSampler::SampleVehicleFlows(const State& start, double h, StepInputs* i
 
 void StepSampler::TakeMotions(const State& state, StepInputs* in) const {
   in->supports = state.supports;  // same size: copies in place
-  in->drum = state.winch.drum;
+  const int nw = system_.num_winches();
+  in->drums.resize(nw);  // the same size after the first call: no allocation
+  for (int w = 0; w < nw; ++w) in->drums[w] = state.winches[w].drum;
 }
 
 }  // namespace towsim::core

@@ -89,7 +89,8 @@ System::System(const Model& model) : model_(model), sea_(model.environment) {
                               sea_.has_seabed();
     p.weight_load = UniformLoad(p.loads.weight_per_length, p.element.props().length);
     p.load_fields = p.state_dependent_loads ? LoadFields(p.loads, sea_) : 0;
-    p.winch = cp.winch.has_value();  // the scene puts a winched cable first (model.h)
+    p.winch = cp.winch.has_value();  // the scene puts the winched cables first (model.h)
+    if (p.winch) num_winches_ = c + 1;
     p.num_nodes = cp.elements + 1;
     p.max_nodes = p.winch ? std::max(p.num_nodes, WinchMaxNodes(cp)) : p.num_nodes;
     p.first_node = p.max_nodes - p.num_nodes;
@@ -212,17 +213,17 @@ void System::BuildLayout() {
     }
 }
 
-void System::SetLayout(int nodes, double length) {
-  CablePart& p = cables_[0];
-  p.drum_length = length - (nodes - 2) * element_length();
+void System::SetLayout(int nodes, double length, int c) {
+  CablePart& p = cables_[c];
+  p.drum_length = length - (nodes - 2) * element_length(c);
   if (nodes == p.num_nodes) return;
   p.num_nodes = nodes;
   p.first_node = p.max_nodes - nodes;
   BuildLayout();
 }
 
-AncfElement System::DrumElement(double length) const {
-  ElementProperties p = cables_[0].element.props();
+AncfElement System::DrumElement(double length, int c) const {
+  ElementProperties p = cables_[c].element.props();
   p.length = length;
   return AncfElement(p);
 }
@@ -390,9 +391,11 @@ void System::AssembleCable(int cable_index, const SystemPoint& x, const StepInpu
   int first_plain = 0;  // the elements from here on have the nominal length l_e
   if (part.winch) {
     // the drum element's rest length l_0(t) and its rate at t (DrumMotion, state.h)
-    const double drum_l = in.drum.LengthAt(x.t);
-    const double drum_rate = in.drum.RateAt(x.t);
-    const AncfElement drum = DrumElement(drum_l);  // on the stack: Evaluate does not allocate
+    const DrumMotion& motion = in.drums[ci];  // winch ci on cable ci (model.h)
+    const double drum_l = motion.LengthAt(x.t);
+    const double drum_rate = motion.RateAt(x.t);
+    // on the stack: Evaluate does not allocate
+    const AncfElement drum = DrumElement(drum_l, ci);
     add_element(0, drum, UniformLoad(part.loads.weight_per_length, drum_l), drum_rate);
     first_plain = 1;
   }
@@ -520,10 +523,9 @@ void System::FromBlocks(const VectorXd& x, VectorXd* dq, VectorXd* dlambda) cons
 double System::KineticEnergy(const VectorXd& q, const VectorXd& v) const {
   double ke = 0.0;
   ElementLoadJacobians lj;
-  std::optional<AncfElement> drum;
-  if (has_winch()) drum.emplace(DrumElement(drum_length()));
   for (int c = 0; c < num_cables(); ++c) {
     const CablePart& p = cables_[c];
+    const std::optional<AncfElement> drum = DrumElementNow(c);
     CableLoadContext am_only = p.loads;
     am_only.drag = false;
     am_only.fluid_inertia_per_length = 0.0;
@@ -568,11 +570,11 @@ double System::PotentialEnergy(const VectorXd& q) const {
 
 double System::StrainEnergy(const VectorXd& q) const {
   double u = 0.0;
-  std::optional<AncfElement> drum;
-  if (has_winch()) drum.emplace(DrumElement(drum_length()));
-  for (int c = 0; c < num_cables(); ++c)
+  for (int c = 0; c < num_cables(); ++c) {
+    const std::optional<AncfElement> drum = DrumElementNow(c);
     for (int e = 0; e < NumElements(c); ++e)
       u += ElementAt(c, e, drum).StrainEnergy(q.segment<12>(CableDof(e, c)));
+  }
   return u;
 }
 
@@ -580,8 +582,7 @@ double System::NodeTension(const VectorXd& q, const VectorXd& v, int node, int c
   // average of the adjacent elements' end values
   double sum = 0.0;
   int n = 0;
-  std::optional<AncfElement> drum;
-  if (c == 0 && has_winch()) drum.emplace(DrumElement(drum_length()));
+  const std::optional<AncfElement> drum = DrumElementNow(c);
   if (node > 0) {
     const int o = CableDof(node - 1, c);
     sum += ElementAt(c, node - 1, drum).AxialForce(q.segment<12>(o), v.segment<12>(o), 1.0);

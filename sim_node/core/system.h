@@ -110,14 +110,16 @@ class System {
   int total_array_nodes() const { return total_array_nodes_; }
   // the nominal element rest length cable.length / cable.elements [m]
   double element_length(int c = 0) const { return cables_[c].element.props().length; }
-  // the winch is on cable 0 (Model::cables): `nodes` in use and the paid-out length L, so the
-  // drum element's rest length is L - (nodes - 2) element_length(); rebuilds the block
-  // layout (does not allocate)
-  void SetLayout(int nodes, double length);
-  double drum_length() const { return cables_[0].drum_length; }
-  bool has_winch() const { return cables_[0].winch; }
-  // cable 0's element with rest length l (the drum element)
-  AncfElement DrumElement(double length) const;
+  // the winches (docs/winch.md): the winched cables come first in Model::cables, so winch w
+  // sits at the start of cable w, w < num_winches()
+  int num_winches() const { return num_winches_; }
+  // cable c's winch: `nodes` in use and the paid-out length L, so the drum element's rest
+  // length is L - (nodes - 2) element_length(c); rebuilds the block layout (does not allocate)
+  void SetLayout(int nodes, double length, int c = 0);
+  double drum_length(int c = 0) const { return cables_[c].drum_length; }
+  bool has_winch(int c = 0) const { return cables_[c].winch; }
+  // cable c's element with rest length l (the drum element)
+  AncfElement DrumElement(double length, int c = 0) const;
   int SphereDof(int sphere) const { return 3 * sphere; }
   // cable ends: end k of cable c is end 2 c + k (0 start, 1 end) of the network; its
   // multipliers' offset and count
@@ -137,7 +139,7 @@ class System {
   // (AssembleCable), the spheres (AssembleSpheres) and each cable end's joint
   // (AssembleJoint). The waves come from in.waves (calm water without in.has_waves), the
   // current is evaluated here; a cable end on a vehicle follows in.supports[2 c + end], the
-  // drum element in.drum (step_inputs.h).
+  // drum element of winch w in.drums[w] (step_inputs.h).
   void Evaluate(const SystemPoint& x, const StepInputs& in, const EvaluateOptions& options,
                 const SystemResidual& out) const;
 
@@ -213,15 +215,21 @@ class System {
   // the joint at end `end` (0 = start, 1 = end) of cable c
   void AssembleJoint(int c, int end, const SystemPoint& x, const StepInputs& in,
                      const SystemResidual& out) const;
-  // the array elements of cable c from e_0 (the drum element's rest length with a winch)
+  // the array elements of cable c from e_0 (`drum`: cable c's drum element with a winch)
   const AncfElement& ElementAt(int c, int e, const std::optional<AncfElement>& drum) const {
-    return c == 0 && drum && e == 0 ? *drum : cables_[c].element;
+    return drum && e == 0 ? *drum : cables_[c].element;
+  }
+  // cable c's drum element at its rest length now (none without a winch)
+  std::optional<AncfElement> DrumElementNow(int c) const {
+    std::optional<AncfElement> drum;
+    if (has_winch(c)) drum.emplace(DrumElement(drum_length(c), c));
+    return drum;
   }
 
   Model model_;
   EnvironmentField sea_;
   std::vector<CablePart> cables_;
-  int num_q_ = 0, num_lambda_ = 0, total_array_nodes_ = 0;
+  int num_q_ = 0, num_lambda_ = 0, total_array_nodes_ = 0, num_winches_ = 0;
   // each sphere's place: the cable end whose block it is folded into (2 c + end), -1 free
   // (its own block after cable 0's), -2 a hub
   std::vector<int> sphere_end_;

@@ -37,6 +37,7 @@
 // with its neighbour when it would fall below kMergeLength l_e.
 
 #include <limits>
+#include <string>
 
 #include "core/actuator.h"
 
@@ -56,6 +57,9 @@ struct WinchParams {               // Model::cable.winch (std::optional<WinchPar
   double max_speed = 0.0;          // |dL/dt| [m/s]
   double max_acceleration = 0.0;   // |d2L/dt2| [m/s^2]
   double brake_tension = std::numeric_limits<double>::infinity();  // [N]
+  // its name: its command topic <ns>/<name>/command and CSV file <name>.csv
+  // (docs/scene_format.md "Networks"): `winch` in a scene with one winch
+  std::string name = "winch";
 };
 
 struct WinchCommand {  // an input, like VehicleCommand (not part of State)

@@ -15,7 +15,8 @@
 //   - lockstep: step k (from state k to k + 1) may start once every lockstep vehicle holds a
 //     command answering step k. A vehicle that timed out is not waited for until its
 //     commands resume.
-// The winch (docs/winch_dds.md) is one more entry, named kWinchName, with the same rules: its
+// Each winch (docs/winch_dds.md) is one more entry, named by the winch (the one winch:
+// kWinchName), with the same rules: its
 // WinchCommand samples are checked against its limits (dds/winch_command.h), counted with the
 // vehicles' commands, held; its failsafe holds the drum at speed 0; lockstep waits for it
 // like for a vehicle.
@@ -52,9 +53,9 @@ class CommandArbiter {
   struct Vehicle {
     Vehicle(std::string vehicle_name, CommandLimits command_limits, bool waited = true)
         : name(std::move(vehicle_name)), limits(command_limits), lockstep(waited) {}
-    // the winch's entry (named kWinchName)
+    // a winch's entry, named by the winch (WinchParams::name; the one winch: kWinchName)
     static Vehicle Winch(const core::WinchParams& params, bool waited) {
-      Vehicle w(kWinchName, {}, waited);
+      Vehicle w(params.name, {}, waited);
       w.winch = true;
       w.winch_params = params;
       return w;

@@ -51,10 +51,8 @@ bool Clamp(double lo, double hi, double* x) {
   return clamped;
 }
 
-// the paid-out length of cable c: the winch's (on the first cable) or the scene's length
-double CableLength(const core::Simulation& sim, int c) {
-  return c == 0 ? sim.cable_length() : sim.model().cables[c].length;
-}
+// the paid-out length of cable c: its winch's, or the scene's length (Simulation::cable_length)
+double CableLength(const core::Simulation& sim, int c) { return sim.cable_length(c); }
 
 }  // namespace
 
@@ -186,10 +184,11 @@ void ToCableState(const core::Simulation& sim, uint64_t step, CableStateMessage*
     Set(sim.node_velocity(static_cast<int>(i), c), &m.velocities._buffer[i]);
     m.tensions._buffer[i] = sim.NodeTension(static_cast<int>(i), c);
   }
-  // the winch drives the first cable's start (docs/winch.md); another cable keeps its length
+  // a winch drives its cable's start (docs/winch.md); a cable without one keeps its length,
+  // speed 0, and the tension at its start
   m.paid_out_length = CableLength(sim, c);
-  m.winch_speed = c == 0 ? sim.winch_speed() : 0.0;
-  m.drum_tension = c == 0 ? sim.DrumTension() : sim.NodeTension(0, c);
+  m.winch_speed = sim.winch_speed(c);
+  m.drum_tension = sim.DrumTension(c);
 }
 
 SimStatusMessage::SimStatusMessage() : msg{} { ToSimStatus(StatusSample{}, this); }
@@ -268,7 +267,8 @@ void SceneOf(const core::Simulation& sim, SceneInfoSample* out) {
     out->cables.push_back(sim.cable_name(c));
     out->cable_node_counts.push_back(static_cast<uint32_t>(sim.num_nodes(c)));
   }
-  // one winch per scene, on the first cable's start, named "winch" (wire/topic_table.h)
+  // every winch by name (the one winch: "winch", wire/topic_table.h) with its cable, winch w
+  // on cable w; the limits fields are the first winch's (docs/winch_dds.md)
   const std::optional<core::WinchParams>& winch = sim.model().cables[0].winch;
   out->has_winch = winch.has_value();
   if (winch) {
@@ -276,8 +276,10 @@ void SceneOf(const core::Simulation& sim, SceneInfoSample* out) {
     out->winch_max_length = winch->max_length;
     out->winch_max_speed = winch->max_speed;
     out->winch_max_acceleration = winch->max_acceleration;
-    out->winches.push_back(wire::kOneWinch);
-    out->winch_cables.push_back(sim.cable_name(0));
+  }
+  for (int w = 0; w < sim.num_winches(); ++w) {
+    out->winches.push_back(sim.winch_name(w));
+    out->winch_cables.push_back(sim.cable_name(w));
   }
 }
 

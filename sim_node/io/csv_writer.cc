@@ -125,7 +125,8 @@ void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned l
 }
 
 CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles,
-                     const std::vector<std::string>& cables)
+                     const std::vector<std::string>& cables,
+                     const std::vector<std::string>& winches)
     : dir_(dir), winch_(winch) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
@@ -141,13 +142,23 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles
     Open(forces_, "forces.csv", kCsvForcesHeader);
     Open(status_, "status.csv", kCsvStatusHeader);
     if (sea) Open(environment_, "environment.csv", kCsvEnvironmentHeader);
-    if (winch) Open(winch_file_, "winch.csv", kCsvWinchHeader);
+    if (winch) {
+      const std::vector<std::string> names = winches.empty() ? std::vector<std::string>{"winch"}
+                                                             : winches;
+      winch_files_.resize(names.size());
+      for (size_t w = 0; w < names.size(); ++w)
+        Open(winch_files_[w], (names[w] + ".csv").c_str(), kCsvWinchCommandHeader);
+    }
     if (vehicles) Open(actuators_, "actuators.csv", kCsvActuatorsHeader);
   } catch (...) {
     for (File* file :
-         {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
+         {&bodies_, &cable_, &forces_, &status_, &environment_, &actuators_}) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
+    }
+    for (File& file : winch_files_) {
+      if (file.f != nullptr) std::fclose(file.f);
+      file.f = nullptr;
     }
     for (File& file : more_cables_) {
       if (file.f != nullptr) std::fclose(file.f);
@@ -159,10 +170,12 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles
 
 CsvWriter::~CsvWriter() {
   for (File* file :
-       {&bodies_, &cable_, &forces_, &status_, &environment_, &winch_file_, &actuators_}) {
+       {&bodies_, &cable_, &forces_, &status_, &environment_, &actuators_}) {
     if (file->f != nullptr) std::fclose(file->f);
   }
   for (File& file : more_cables_)
+    if (file.f != nullptr) std::fclose(file.f);
+  for (File& file : winch_files_)
     if (file.f != nullptr) std::fclose(file.f);
 }
 
@@ -184,7 +197,8 @@ void CsvWriter::Check(const File& file) const {
 }
 
 void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us,
-                      const std::vector<bool>& failsafe) {
+                      const std::vector<bool>& failsafe,
+                      const std::vector<bool>& winch_failsafe) {
   if (bodies_.f == nullptr) throw std::runtime_error("CsvWriter::Write after Close");
   const core::Model& model = sim.model();
   const double t = sim.time();
@@ -259,15 +273,22 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
   for (const File& file : more_cables_) Check(file);
   if (environment_.f != nullptr) WriteEnvironment(sim);
-  if (winch_file_.f != nullptr) {
+  for (size_t w = 0; w < winch_files_.size(); ++w) {
+    // winch w on cable w (core/model.h); its command appended (the header's order)
+    const int c = static_cast<int>(w);
+    const core::WinchCommand& command = sim.winch_command(c);
+    const bool in_failsafe = w < winch_failsafe.size() && winch_failsafe[w];
     Row(&line)
         .Number(t)
-        .Number(sim.cable_length())
-        .Number(sim.winch_speed())
-        .Number(sim.DrumTension())
-        .Integer(sim.num_nodes())
-        .WriteTo(winch_file_.f);
-    Check(winch_file_);
+        .Number(sim.cable_length(c))
+        .Number(sim.winch_speed(c))
+        .Number(sim.DrumTension(c))
+        .Integer(sim.num_nodes(c))
+        .Integer(command.mode == core::WinchCommand::Mode::kLength ? 1 : 0)
+        .Number(command.value)
+        .Integer(in_failsafe ? 1 : 0)
+        .WriteTo(winch_files_[w].f);
+    Check(winch_files_[w]);
   }
   if (actuators_.f != nullptr) WriteActuators(sim, failsafe);
 }
@@ -318,9 +339,10 @@ void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
 
 void CsvWriter::Close() {
   std::string error;
-  std::vector<File*> files = {&bodies_,     &cable_,      &forces_,   &status_,
-                              &environment_, &winch_file_, &actuators_};
+  std::vector<File*> files = {&bodies_,     &cable_, &forces_, &status_,
+                              &environment_, &actuators_};
   for (File& file : more_cables_) files.push_back(&file);
+  for (File& file : winch_files_) files.push_back(&file);
   for (File* file : files) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {

@@ -32,12 +32,18 @@
 //               wave orbital velocity, world NED) [m/s] (Simulation::BodyAltitude, BodyDepth,
 //               SurfaceElevationAt, WaterVelocityAt; docs/environment.md)
 //
-//   winch.csv   t,paid_out_length,winch_speed,drum_tension,node_count
-//               one row per Write, only when the scene has a winch (cable.winch; a scene without
-//               one writes none): the paid-out unstretched length [m], dL/dt (+ pays out)
-//               [m/s], the axial tension at the cable's start (the drum) [N] and the nodes in
-//               use (the rows of cable.csv at that time) (Simulation::cable_length,
-//               winch_speed, drum_tension, num_nodes; docs/winch_dds.md)
+//   winch.csv   t,paid_out_length,winch_speed,drum_tension,node_count,
+//               command_mode,command_value,failsafe
+//               one file per winch, <winch name>.csv (winch.csv for a scene's one winch; a
+//               scene without one writes none), one row per Write: the paid-out unstretched
+//               length [m], dL/dt (+ pays out) [m/s], the axial tension at the cable's start
+//               (the drum) [N] and the nodes in use (the rows of its cable's CSV at that time)
+//               (Simulation::cable_length, winch_speed, DrumTension, num_nodes;
+//               docs/winch_dds.md); then, appended, the command in force during the step that
+//               ended at t (Simulation::winch_command: the script's offline, the arbiter's
+//               choice over DDS): its mode, 0 speed or 1 length (WinchCommand.SPEED / LENGTH),
+//               its value [m/s or m], and 1 if the winch was in failsafe during that step, else
+//               0 (offline: always 0)
 //
 //   actuators.csv  t,body,thrust_command,rudder_command,elevator_command,
 //                  thrust,rudder,elevator,failsafe
@@ -78,7 +84,11 @@ inline constexpr char kCsvForcesHeader[] = "t,body,fx,fy,fz,mx,my,mz";
 inline constexpr char kCsvStatusHeader[] = "t,step,newton_iterations,residual,wall_us,cable_length";
 inline constexpr char kCsvEnvironmentHeader[] =
     "t,body,wave_elevation,altitude,depth,current_u,current_v,current_w";
+// the winch's state columns (towsim_export writes these alone, from CableState), and the
+// node's file: those and its command's, appended (above)
 inline constexpr char kCsvWinchHeader[] = "t,paid_out_length,winch_speed,drum_tension,node_count";
+inline constexpr char kCsvWinchCommandHeader[] =
+    "t,paid_out_length,winch_speed,drum_tension,node_count,command_mode,command_value,failsafe";
 inline constexpr char kCsvActuatorsHeader[] =
     "t,body,thrust_command,rudder_command,elevator_command,thrust,rudder,elevator,failsafe";
 inline constexpr char kCsvCommandsHeader[] = "t,body,step,thrust,rudder,elevator";
@@ -112,13 +122,15 @@ void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned l
 class CsvWriter {
  public:
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
-  // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has cable.winch;
+  // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has a winch;
   // actuators.csv when `vehicles`, the scene has vehicles) and writes their headers; throws
   // std::runtime_error naming the path if a file cannot be opened
-  // `cables`: the cables' names (Model::cables order), one <name>.csv each
+  // `cables`: the cables' names (Model::cables order), one <name>.csv each; `winches`: the
+  // winches' names (winch w on cable w), one <name>.csv each (empty with `winch`: {"winch"})
   explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false,
                      bool vehicles = false,
-                     const std::vector<std::string>& cables = {"cable"});
+                     const std::vector<std::string>& cables = {"cable"},
+                     const std::vector<std::string>& winches = {});
   ~CsvWriter();  // closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
@@ -128,10 +140,11 @@ class CsvWriter {
   // environment.csv when it is written, one per vehicle in actuators.csv). `status` is the
   // status of the step that produced the state (a default StepStatus at t = 0), `wall_us` its
   // wall time; `failsafe[v]` whether vehicle v was in failsafe during that step (a vehicle
-  // beyond its size: not; offline: empty). Throws std::runtime_error if writing fails (e.g.
-  // disk full).
+  // beyond its size: not; offline: empty), `winch_failsafe[w]` the same for winch w. Throws
+  // std::runtime_error if writing fails (e.g. disk full).
   void Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us,
-             const std::vector<bool>& failsafe = {});
+             const std::vector<bool>& failsafe = {},
+             const std::vector<bool>& winch_failsafe = {});
 
   // flushes and closes the files; further Write() calls throw. Throws std::runtime_error if
   // the final flush fails.
@@ -159,7 +172,7 @@ class CsvWriter {
   File forces_;
   File status_;
   File environment_;  // f == nullptr: not written (a calm scene)
-  File winch_file_;   // f == nullptr: not written (no winch)
+  std::vector<File> winch_files_;  // one per winch (none: no winch)
   File actuators_;    // f == nullptr: not written (no vehicles)
 };
 

@@ -213,6 +213,13 @@ core::WinchParams ReadWinch(const MapReader& cable, const core::CableParams& c,
         "must be a map {min_length, max_length, max_speed, max_acceleration, brake_tension}");
   }
   core::WinchParams w;
+  // its name (docs/scene_format.md "Networks"): given, or set by the scene's rule (empty here)
+  w.name.clear();
+  if (map.Has("name")) {
+    const Field name = map.Get("name");
+    w.name = name.String();
+    if (!IsValidName(w.name)) name.Fail(std::string("winch names ") + kNameRule);
+  }
   w.min_length = map.Number("min_length", Range::Above(0.0));
   if (w.min_length > c.length) {
     map.Get("min_length").Fail("must be <= cable.length = " + FormatNumber(c.length));

@@ -64,17 +64,48 @@ std::vector<core::CableParams> ReadCables(const Field& field, const Field& line_
   }
   const int nc = static_cast<int>(cables.size());
 
-  // one winch, on its cable's start (its drum): that cable goes first (core/model.h)
-  int winched = -1;
+  // the winches, each on its cable's start (its drum): named `winch` when the scene has one,
+  // `<cable>_winch` when it has several, unless `name:` names it; one namespace with the
+  // cables and bodies (topics <ns>/<name>/command, files <name>.csv)
+  int num_winches = 0;
+  for (int c = 0; c < nc; ++c) num_winches += cables[c].winch ? 1 : 0;
+  std::vector<std::string> winch_names;
   for (int c = 0; c < nc; ++c) {
     if (!cables[c].winch) continue;
-    if (winched >= 0) {
-      MapReader(fields[c], MapKind::kCable)
-          .Get("winch")
-          .Fail("a second winch (cables." + cables[winched].name +
-                " has one): this version runs one winch per scene");
+    core::WinchParams& w = *cables[c].winch;
+    const MapReader winch(MapReader(fields[c], MapKind::kCable).Get("winch"), MapKind::kWinch);
+    const bool given = !w.name.empty();
+    if (!given) w.name = num_winches == 1 ? "winch" : cables[c].name + "_winch";
+    const Field at = given ? winch.Get("name") : winch.field();
+    const std::string what = given ? "winch name " : "winch name (cable name + _winch) ";
+    if (w.name != "winch" && IsReservedCableName(w.name)) {
+      at.Fail(what + w.name +
+              " is taken by a file or topic of every run (bodies, forces, status, environment, "
+              "actuators, commands, scene_info, markers, clock, tf, tf_static, sim_control, "
+              "results): choose another");
     }
-    winched = c;
+    if (w.name == "winch" && num_winches > 1) {
+      at.Fail("winch name winch is the one winch's of a scene (winch.csv, rt/<ns>/winch/command); "
+              "with " + std::to_string(num_winches) + " winches name them otherwise");
+    }
+    for (const core::CableParams& other : cables) {
+      if (other.name == w.name) {
+        at.Fail(what + w.name +
+                " is also a cable's name: winches, cables and bodies share one namespace "
+                "(topics, files)");
+      }
+    }
+    // (a body named winch beside the one winch: sim_node's rule for its command topic)
+    if (w.name != "winch" && FindBody(model, w.name).kind != BodyRef::kNone) {
+      at.Fail(what + w.name +
+              " is also a body's name: winches, cables and bodies share one namespace (topics, "
+              "files)");
+    }
+    for (size_t k = 0; k < winch_names.size(); ++k) {
+      if (winch_names[k] == w.name)
+        at.Fail(what + w.name + " is taken by another winch: each winch has its own name");
+    }
+    winch_names.push_back(w.name);
   }
 
   // initial: static solves the whole network at once, in one frame moving with the tow
@@ -132,7 +163,9 @@ std::vector<core::CableParams> ReadCables(const Field& field, const Field& line_
                    "to a vehicle or a buoyant sphere (rho_w V > m)");
   }
 
-  if (winched > 0) std::rotate(cables.begin(), cables.begin() + winched, cables.begin() + winched + 1);
+  // the winched cables first, each group in the scene's order (core/model.h: winch w on cable w)
+  std::stable_partition(cables.begin(), cables.end(),
+                        [](const core::CableParams& c) { return c.winch.has_value(); });
   return cables;
 }
 

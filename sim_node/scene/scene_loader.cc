@@ -135,6 +135,18 @@ core::Model BuildModel(const Field& root, const std::string& base_dir) {
   } else {
     model.cables = {
         internal::ReadCable(scene.Require("cable"), scene.Get("line_types"), base_dir, model)};
+    // the one cable's winch is `winch` (its topic <ns>/winch/command, winch.csv)
+    if (std::optional<core::WinchParams>& w = model.cables[0].winch) {
+      if (!w->name.empty() && w->name != "winch") {
+        internal::MapReader(internal::MapReader(scene.Get("cable"), internal::MapKind::kCable)
+                                .Get("winch"),
+                            internal::MapKind::kWinch)
+            .Get("name")
+            .Fail("the winch of the one-cable form is named winch (rt/<ns>/winch/command, "
+                  "winch.csv); name: applies to the winches of cables:");
+      }
+      w->name = "winch";
+    }
   }
   // a sphere without mass (nor added mass) is a junction: its position is set by the cable
   // ends that meet there, two or more (one alone would leave it undetermined)

@@ -92,7 +92,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
       {MapKind::kCables, {}},
       {MapKind::kCable, join({"length", "elements", "line_type"}, {&kLineTypeKeys, &kCableKeys})},
       {MapKind::kWinch,
-       {"min_length", "max_length", "max_speed", "max_acceleration", "brake_tension"}},
+       {"name", "min_length", "max_length", "max_speed", "max_acceleration", "brake_tension"}},
       {MapKind::kEnd, {"fixed", "slope", "driven", "free", "body", "at"}},
       {MapKind::kDriven, {"position", "velocity"}},
       {MapKind::kBodies, {}},
@@ -129,7 +129,7 @@ const std::vector<std::string>& AllowedKeys(MapKind kind) {
         "max_coupling_iterations"}},
       {MapKind::kScriptEntry,
        {"at", "when", "body", "thrust", "rudder", "rudder_deg", "elevator", "elevator_deg",
-        "winch_speed", "winch_length", "speed", "heading_deg", "turn_rate_deg"}},
+        "winch", "winch_speed", "winch_length", "speed", "heading_deg", "turn_rate_deg"}},
   };
   return kKeys.at(kind);
 }

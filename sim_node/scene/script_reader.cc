@@ -143,6 +143,35 @@ core::CourseChange ReadCourseChange(const MapReader& map, const core::Vessel& ve
   return c;
 }
 
+// the winch a script entry's winch_speed / winch_length (`value`) commands: its `winch:`,
+// or the scene's one winch (winch w on cable w, core/model.h)
+int WinchIndex(const MapReader& map, const core::Model& model, const Field& value) {
+  std::vector<std::string> names;
+  for (const core::CableParams& c : model.cables)
+    if (c.winch) names.push_back(c.winch->name);
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  if (!map.Has("winch")) {
+    if (names.size() > 1)
+      value.Fail("needs winch: <name>, the scene has " + std::to_string(names.size()) +
+                 " winches (" + list + ")");
+    return 0;
+  }
+  const Field winch = map.Get("winch");
+  const std::string name = winch.String();
+  for (size_t w = 0; w < names.size(); ++w)
+    if (names[w] == name) return static_cast<int>(w);
+  winch.Fail("no such winch (winches: " + list + ")");
+  return 0;
+}
+
+// the scene key of winch w's limits: cable.winch, or cables.<c>.winch in a network
+std::string WinchKey(const core::Model& model, int w) {
+  return model.cables.size() == 1 && model.cables[0].name == "cable"
+             ? std::string("cable.winch")
+             : "cables." + model.cables[w].name + ".winch";
+}
+
 }  // namespace
 
 std::vector<core::ScriptEntry> ReadScript(const Field& field, core::Model* vessels_model) {
@@ -169,7 +198,11 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field, core::Model* vesse
       entry.condition = ReadCondition(map.Get("when"), model);
     }
 
-    // the winch: a speed or a length, not both, within the scene's cable.winch limits
+    // the winch: a speed or a length, not both, within its limits; `winch: <name>` names it
+    // (may be left out when the scene has one winch)
+    if (map.Has("winch") && !map.Has("winch_speed") && !map.Has("winch_length")) {
+      map.Get("winch").Fail("names the winch of a winch_speed or winch_length; give one");
+    }
     if (map.Has("winch_speed") || map.Has("winch_length")) {
       if (map.Has("winch_speed") && map.Has("winch_length")) {
         map.Get("winch_length").Fail("give winch_speed or winch_length, not both");
@@ -177,19 +210,22 @@ std::vector<core::ScriptEntry> ReadScript(const Field& field, core::Model* vesse
       const bool speed = map.Has("winch_speed");
       const Field f = map.Get(speed ? "winch_speed" : "winch_length");
       if (!model.cables[0].winch) f.Fail("the scene has no cable.winch");
-      const core::WinchParams& w = *model.cables[0].winch;
+      entry.winch_index = WinchIndex(map, model, f);
+      const core::WinchParams& w = *model.cables[entry.winch_index].winch;
       entry.set_winch = true;
       if (speed) {
         entry.winch.mode = core::WinchCommand::Mode::kSpeed;
         entry.winch.value = f.Number();
         if (std::abs(entry.winch.value) > w.max_speed) {
-          f.Fail("must be within +-cable.winch.max_speed = " + FormatNumber(w.max_speed));
+          f.Fail("must be within +-" + WinchKey(model, entry.winch_index) + ".max_speed = " +
+                 FormatNumber(w.max_speed));
         }
       } else {
         entry.winch.mode = core::WinchCommand::Mode::kLength;
         entry.winch.value = f.Number();
         if (entry.winch.value < w.min_length || entry.winch.value > w.max_length) {
-          f.Fail("must be within cable.winch [min_length, max_length] = [" +
+          f.Fail("must be within " + WinchKey(model, entry.winch_index) +
+                 " [min_length, max_length] = [" +
                  FormatNumber(w.min_length) + ", " + FormatNumber(w.max_length) + "]");
         }
       }

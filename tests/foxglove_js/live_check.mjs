@@ -348,7 +348,8 @@ if (withWinch) {
     cable.set(stampSec(value.header.stamp).toFixed(6), value);
   }
   const winchLines = readFileSync(join(outDir, "csv/winch.csv"), "utf8").trim().split("\n");
-  check(winchLines.shift() === "t,paid_out_length,winch_speed,drum_tension,node_count", "winch.csv header");
+  // the node's winch.csv: the state's five columns, then the command's appended
+  check(winchLines.shift() === "t,paid_out_length,winch_speed,drum_tension,node_count,command_mode,command_value,failsafe", "winch.csv header");
   let winchCompared = 0;
   for (const line of winchLines) {
     const [t, length, speed, , nodes] = line.split(",");

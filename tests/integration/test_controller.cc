@@ -5,7 +5,7 @@
 //   test_controller --domain N [--namespace /towsim] [--until-step K] [--log FILE]
 //                   [--command BODY@T=THRUST,RUDDER,ELEVATOR ...] [--timeout S] [--stats]
 //                   [--security DIR/NAME] [--body NAME ...]
-//                   [--winch T=speed:V | T=length:L | T=mode:M:V ...]
+//                   [--winch [W@]T=speed:V | [W@]T=length:L | [W@]T=mode:M:V ...]
 //                   [--winch-until T] [--pause STEP=S]
 //
 // It learns the bodies from rt/<ns>/scene_info, then answers every SimStatus of a new step k
@@ -16,9 +16,11 @@
 // that step (matched by stamp):
 //   step body x y z qx qy qz qw u v w p q r      (%.17g: the doubles exactly)
 // It exits 0 once the node reports step K (--until-step) or the end of its run, 1 when
-// nothing has happened for --timeout seconds (default 30) or on a DDS error. A scene with a
-// winch (SceneInfo.has_winch): every step answered also gets one WinchCommand stamped k on
-// rt/<ns>/winch/command, speed 0 or the latest --winch whose time has come (mode:M:V sends the
+// nothing has happened for --timeout seconds (default 30) or on a DDS error. A scene with
+// winches (SceneInfo.winches; has_winch alone: the one winch `winch`): every step answered
+// also gets one WinchCommand stamped k per winch on rt/<ns>/<winch>/command, speed 0 or the
+// latest --winch of that winch (W@: the winch named W, else the first) whose time has come
+// (mode:M:V sends the
 // raw mode number M, and V may be nan or inf, for the tests of rejected commands), until the
 // simulation time --winch-until (then the winch is no longer answered). Needs
 // CYCLONEDDS_URI (the loopback configuration). --security: DDS Security with the identity
@@ -60,7 +62,8 @@ struct ScheduledCommand {
 };
 
 struct ScheduledWinch {
-  double at = 0.0;  // [s]
+  std::string winch;  // W@ (empty: the scene's first winch)
+  double at = 0.0;    // [s]
   uint8_t mode = 0;
   double value = 0.0;
   bool fired = false;
@@ -128,9 +131,13 @@ Args Parse(int argc, char** argv) {
     } else if (arg == "--timeout") {
       a.timeout = std::strtod(value().c_str(), nullptr);
     } else if (arg == "--winch") {
-      // T=speed:V, T=length:L or T=mode:M:V
-      const std::string v = value();
+      // [W@]T=speed:V, [W@]T=length:L or [W@]T=mode:M:V
+      std::string v = value();
       ScheduledWinch w;
+      if (const auto at = v.find('@'); at != std::string::npos) {
+        w.winch = v.substr(0, at);
+        v = v.substr(at + 1);
+      }
       const auto eq = v.find('=');
       const std::string usage = "--winch " + v + ": must be T=speed:V, T=length:L or T=mode:M:V";
       if (eq == std::string::npos) Fail(usage);
@@ -216,7 +223,7 @@ int main(int argc, char** argv) {
 
   std::vector<Body> bodies;
   std::vector<std::string> commanded;
-  bool has_winch = false;
+  std::vector<std::string> winches;  // by name, SceneInfo order
   const Clock::time_point t_begin = Clock::now();
   while (bodies.empty()) {
     void* samples[1] = {nullptr};
@@ -245,7 +252,8 @@ int main(int argc, char** argv) {
           Fail("--body " + name + ": not a commanded body of the node's scene");
         }
       }
-      has_winch = s.has_winch;
+      winches = s.winches;
+      if (s.has_winch && winches.empty()) winches.push_back(wire::kOneWinch);  // an older node
     }
     if (n > 0) dds_return_loan(scene_reader, samples, n);
     if (bodies.empty()) {
@@ -272,16 +280,21 @@ int main(int argc, char** argv) {
     writers.push_back(
         Check(dds_create_writer(participant, t, command_qos, nullptr), "command writer"));
   }
-  dds_entity_t winch_writer = 0;
-  if (has_winch) {
-    const dds_entity_t t = CreateTopic(participant, names, wire::Topic::kWinchCommand);
-    winch_writer = Check(dds_create_writer(participant, t, command_qos, nullptr), "winch writer");
+  std::vector<dds_entity_t> winch_writers;  // one per winch
+  for (const std::string& name : winches) {
+    const dds_entity_t t = CreateTopic(participant, names, wire::Topic::kWinchCommand, name);
+    winch_writers.push_back(
+        Check(dds_create_writer(participant, t, command_qos, nullptr), "winch writer"));
+  }
+  for (const ScheduledWinch& c : args.winch) {
+    if (!c.winch.empty() && std::find(winches.begin(), winches.end(), c.winch) == winches.end())
+      Fail("--winch " + c.winch + "@...: not a winch of the node's scene");
   }
   // the node must hear the first command: wait until every writer and reader matched
   for (;;) {
     bool all = true;
     std::vector<dds_entity_t> all_writers = writers;
-    if (winch_writer != 0) all_writers.push_back(winch_writer);
+    all_writers.insert(all_writers.end(), winch_writers.begin(), winch_writers.end());
     for (dds_entity_t w : all_writers) {
       dds_publication_matched_status_t m;
       dds_get_publication_matched_status(w, &m);
@@ -311,7 +324,9 @@ int main(int argc, char** argv) {
   std::map<std::string, towsim_msgs_msg_dds__ActuatorCommand_> held;
   for (const std::string& name : commanded) held[name] = towsim_msgs_msg_dds__ActuatorCommand_{};
   std::vector<ScheduledWinch> winch_schedule = args.winch;
-  towsim_msgs_msg_dds__WinchCommand_ winch_held{};  // speed 0
+  // per winch, speed 0 until its schedule says otherwise
+  std::vector<towsim_msgs_msg_dds__WinchCommand_> winch_held(winches.size(),
+                                                              towsim_msgs_msg_dds__WinchCommand_{});
 
   std::string run_id;
   unsigned long long answered = ~0ULL;
@@ -402,19 +417,24 @@ int main(int argc, char** argv) {
         if (rc < 0) Fail(std::string("writing a command: ") + dds_strretcode(rc));
       }
       for (ScheduledWinch& c : winch_schedule) {
-        if (c.fired || s.t < c.at - 1e-9) continue;
+        if (c.fired || s.t < c.at - 1e-9 || winches.empty()) continue;
         c.fired = true;
-        winch_held.mode = c.mode;
-        winch_held.value = c.value;
+        const size_t w = c.winch.empty() ? 0
+                                         : std::find(winches.begin(), winches.end(), c.winch) -
+                                               winches.begin();
+        winch_held[w].mode = c.mode;
+        winch_held[w].value = c.value;
       }
-      if (winch_writer != 0 && s.t < args.winch_until - 1e-9) {
-        towsim_msgs_msg_dds__WinchCommand_ cmd = winch_held;
-        cmd.header.stamp = raw->header.stamp;
-        cmd.header.frame_id = const_cast<char*>("");
-        cmd.step = s.step;
-        const dds_return_t rc = dds_write(winch_writer, &cmd);
-        if (rc < 0) Fail(std::string("writing a winch command: ") + dds_strretcode(rc));
-      } else if (winch_writer == 0 && !winch_schedule.empty()) {
+      if (!winch_writers.empty() && s.t < args.winch_until - 1e-9) {
+        for (size_t w = 0; w < winch_writers.size(); ++w) {
+          towsim_msgs_msg_dds__WinchCommand_ cmd = winch_held[w];
+          cmd.header.stamp = raw->header.stamp;
+          cmd.header.frame_id = const_cast<char*>("");
+          cmd.step = s.step;
+          const dds_return_t rc = dds_write(winch_writers[w], &cmd);
+          if (rc < 0) Fail(std::string("writing a winch command: ") + dds_strretcode(rc));
+        }
+      } else if (winch_writers.empty() && !winch_schedule.empty()) {
         Fail("--winch: the node's scene has no winch");
       }
     }

@@ -1,7 +1,7 @@
 // The winch over DDS (docs/winch_dds.md) as processes over loopback: sim_node, the test
 // controller (msgs/ only) sending WinchCommand on rt/<ns>/winch/command, the controllers
 // (towfish_depth --winch, maneuver_runner --maneuver payout) and this test as a DDS participant.
-// Domains 157-159, 163-168 (tests/integration/README.md).
+// Domains 157-159, 163-168 and 191 (tests/integration/README.md).
 
 #include <signal.h>
 #include <unistd.h>
@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -20,6 +21,7 @@
 
 #include "dds_observer.h"
 #include "testing/csv_file.h"
+#include "testing/dds_domain.h"
 #include "testing/process.h"
 #include "towed_cable_steady.h"
 #include "towsim_msgs.h"
@@ -73,21 +75,27 @@ std::string LockstepRun(int domain, double duration, const std::vector<std::stri
 }
 
 // winch.csv: t, paid_out_length, winch_speed, drum_tension, node_count
+// (appended) command_mode, command_value, failsafe: the command in force during the step
 struct WinchRow {
   double t = 0, length = 0, speed = 0, tension = 0;
   int nodes = 0;
+  int mode = 0;
+  double value = 0;
+  int failsafe = 0;
 };
-std::vector<WinchRow> WinchRows(const std::string& dir) {
-  const CsvTable csv = ReadCsv(dir + "/winch.csv");
-  EXPECT_EQ(JoinCsvRow(csv.header), "t,paid_out_length,winch_speed,drum_tension,node_count");
+std::vector<WinchRow> WinchRows(const std::string& dir, const std::string& file = "winch.csv") {
+  const CsvTable csv = ReadCsv(dir + "/" + file);
+  EXPECT_EQ(JoinCsvRow(csv.header),
+            "t,paid_out_length,winch_speed,drum_tension,node_count,command_mode,command_value,"
+            "failsafe");
   std::vector<WinchRow> rows;
   for (const auto& f : csv.rows) {
-    if (f.size() != 5) {
-      ADD_FAILURE() << "winch.csv row " << JoinCsvRow(f);
+    if (f.size() != 8) {
+      ADD_FAILURE() << file << " row " << JoinCsvRow(f);
       continue;
     }
-    rows.push_back(
-        {std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[3]), std::stoi(f[4])});
+    rows.push_back({std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[3]),
+                    std::stoi(f[4]), std::stoi(f[5]), std::stod(f[6]), std::stoi(f[7])});
   }
   return rows;
 }
@@ -474,6 +482,71 @@ TEST_F(WinchDdsTest, PayoutManoeuvreSheetAgreesWithTheSteadySolution) {
         "payout sheet, end of %s: length %.3f m, depth below the drum %.3f m, steady %.3f "
         "m (%.2f %%)\n",
         phase, sheet.at(p + "_length"), below, steady, 100.0 * (below / steady - 1.0));
+  }
+}
+
+// domain 191: two winches (tests/integration/scenes/two_winches.yaml) in lockstep, each
+// commanded by the test controller on its own rt/<ns>/<winch>/command and waited for under its
+// own name; the node without a script. Each drum follows its commands: the files equal the
+// offline run of the scene's script (the same commands) to the last digit, the command columns
+// included (the arbiter's choice over DDS, the script's offline), and the drums end where the
+// commands take them (port at its 70 m target, starboard paying out at 0.25 m/s)
+TEST_F(WinchDdsTest, TwoWinchesCommandedByNameEachFollowTheirCommands) {
+  const DomainLease lease(191);
+  const int domain = lease.id();
+  constexpr double kDuration = 20.0;
+  const std::string scene = kSource + "/tests/integration/scenes/two_winches.yaml";
+  const std::string dds = LogPrefix("d191_csv");
+  Process node(SimNodeArgs(TOWSIM_SIM_NODE, scene, "lockstep", domain,
+                           {"--duration", std::to_string(kDuration), "--set", "script=[]",
+                            "--wait-for-controllers", "--csv", dds}),
+               LogPrefix("d191_node"));
+  Process controller(
+      Controller(domain, {"port_winch@1=speed:1", "starboard_winch@2=speed:-1",
+                          "port_winch@6=length:70", "starboard_winch@10=speed:0.25"}),
+      LogPrefix("d191_controller"));
+  ASSERT_TRUE(controller.Wait(kProcessTimeout)) << controller.command_line();
+  EXPECT_EQ(controller.exit_code(), 0) << controller.err();
+  ASSERT_TRUE(node.Wait(kProcessTimeout)) << node.command_line();
+  ASSERT_EQ(node.exit_code(), 0) << node.err();
+  // lockstep waited for both winches by name, and never timed out nor fell to failsafe
+  EXPECT_NE(node.err().find("port_winch (rt/towsim/port_winch/command), starboard_winch "
+                            "(rt/towsim/starboard_winch/command)"),
+            std::string::npos)
+      << node.err();
+  EXPECT_NE(node.out().find("failsafes 0"), std::string::npos) << node.out();
+  EXPECT_NE(node.out().find("lockstep timeouts 0"), std::string::npos) << node.out();
+
+  const std::string offline = LogPrefix("two_winches_offline_csv");
+  Process off({TOWSIM_SIM_NODE, "--scene", scene, "--mode", "offline", "--duration",
+               std::to_string(kDuration), "--csv", offline},
+              LogPrefix("two_winches_offline"));
+  ASSERT_TRUE(off.Wait(kProcessTimeout));
+  ASSERT_EQ(off.exit_code(), 0) << off.err();
+  for (const char* file : {"bodies.csv", "port.csv", "starboard.csv", "forces.csv",
+                           "port_winch.csv", "starboard_winch.csv"}) {
+    const std::string fo = ReadFile(offline + "/" + file), fd = ReadFile(dds + "/" + file);
+    EXPECT_FALSE(fo.empty()) << file;
+    EXPECT_TRUE(fo == fd) << file << " differs: offline " << offline << ", lockstep " << dds;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dds + "/winch.csv")) << "no winch.csv with two winches";
+  // the drums where their commands take them (the analytic profiles of
+  // tests/reference/winch_network_core_test.cc): port stopped at its 70 m target, starboard
+  // 60 - 1 * 5 / 2 - 1 * 3 = 54.5 m at 10 s, then at +0.25 m/s after 6.25 s of braking at 0.2
+  constexpr double kLengthTol = 1e-6;  // [m] the drum's kinematics, to rounding
+  const std::vector<WinchRow> port = WinchRows(dds, "port_winch.csv");
+  const std::vector<WinchRow> star = WinchRows(dds, "starboard_winch.csv");
+  ASSERT_FALSE(port.empty());
+  ASSERT_FALSE(star.empty());
+  EXPECT_NEAR(port.back().length, 70.0, kLengthTol);
+  EXPECT_EQ(port.back().mode, 1);
+  EXPECT_EQ(port.back().value, 70.0);
+  EXPECT_NEAR(star.back().length, 52.15625 + 0.25 * (kDuration - 16.25), kLengthTol);
+  EXPECT_EQ(star.back().mode, 0);
+  EXPECT_EQ(star.back().value, 0.25);
+  for (const auto& row : star) {
+    if (std::abs(row.t - 10.0) < 1e-9) EXPECT_NEAR(row.length, 54.5, kLengthTol);
+    EXPECT_EQ(row.failsafe, 0);
   }
 }
 

@@ -261,7 +261,7 @@ double DrumPower(const core::Simulation& sim) {
     return potential - 0.5 * e_dot.dot(element.mass() * e_dot);
   };
   const double l0 = sys.drum_length(), dl = 1e-4 * l0;  // O(dl^2) ~ 1e-8 relative
-  return st.winch.speed * (lagrangian(l0 + dl) - lagrangian(l0 - dl)) / (2.0 * dl);
+  return st.winches[0].speed * (lagrangian(l0 + dl) - lagrangian(l0 - dl)) / (2.0 * dl);
 }
 
 // the same power as the continuum's flux at the drum: the tension's power on the material
@@ -401,7 +401,7 @@ TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
     ASSERT_TRUE(s.ok()) << "step " << i;
     iterations += s.iterations;
     if (i == 100) v_start = sim.winch_speed();
-    if (sim.state().winch.slipping) {
+    if (sim.state().winches[0].slipping) {
       ++slipping;
       worst = std::max(worst, std::abs(sim.DrumTension() - 2000.0));
     } else {
@@ -416,7 +416,7 @@ TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
       iterations / 400.0);
   EXPECT_GT(sim.cable_length(), 105.0);  // paid out under the load
   EXPECT_GT(sim.winch_speed(), v_start);  // the load accelerates: a brake, not a damper
-  EXPECT_TRUE(sim.state().winch.slipping);
+  EXPECT_TRUE(sim.state().winches[0].slipping);
   // Coulomb friction (winch.h): while slipping the drum tension is the brake's at every step,
   // within the band the slip's secant iteration solves it to (kBrakeTensionRelTol = 1e-3: 2 N;
   // the explicit slip law before it, reading the tension at the step's start, rang by +-7 %);
@@ -439,7 +439,7 @@ TEST(WinchCore, BrakeSlipsAboveItsTensionAndHoldsBelow) {
   }
   std::printf("held: %.2f Newton iterations per step\n", held_iterations / 400.0);
   EXPECT_EQ(hold.cable_length(), 100.0);
-  EXPECT_FALSE(hold.state().winch.slipping);
+  EXPECT_FALSE(hold.state().winches[0].slipping);
 }
 
 }  // namespace

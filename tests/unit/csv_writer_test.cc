@@ -550,7 +550,7 @@ TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
   auto write = [&](const core::StepStatus& status) {
     csv.Write(sim, status, 0);
     expected.push_back({sim.time(), sim.cable_length(), sim.winch_speed(), sim.DrumTension(),
-                        static_cast<double>(sim.num_nodes())});
+                        static_cast<double>(sim.num_nodes()), 0.0, 0.5, 0.0});
   };
   write(core::StepStatus{});
   for (int k = 0; k < 4; ++k) {
@@ -561,12 +561,18 @@ TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
   csv.Close();
   std::string header;
   const Rows rows = ReadCsv(tmp.path() / "winch.csv", &header);
-  EXPECT_EQ(header, "t,paid_out_length,winch_speed,drum_tension,node_count");
+  // the state's columns, then the command's appended (mode 0 speed, its value, no failsafe)
+  EXPECT_EQ(header,
+            "t,paid_out_length,winch_speed,drum_tension,node_count,command_mode,command_value,"
+            "failsafe");
   ASSERT_EQ(rows.size(), expected.size());
   for (size_t i = 0; i < rows.size(); ++i) {
-    ASSERT_EQ(rows[i].size(), 5u) << "row " << i;
+    ASSERT_EQ(rows[i].size(), 8u) << "row " << i;
     for (int c = 0; c < 4; ++c) ExpectNear(rows[i][c], expected[i][c], "column " + std::to_string(c));
     EXPECT_EQ(std::stoi(rows[i][4]), static_cast<int>(expected[i][4])) << "node_count, row " << i;
+    EXPECT_EQ(rows[i][5], "0") << "command_mode, row " << i;
+    EXPECT_EQ(rows[i][6], "0.5") << "command_value, row " << i;
+    EXPECT_EQ(rows[i][7], "0") << "failsafe, row " << i;
   }
   // the drum's tension is the tension at node 0 (the accessors agree), the cable's weight
   // below it in this hanging cable: > 0
@@ -579,6 +585,56 @@ TEST(CsvWriterTest, WinchRowsAreTheCoreAccessorsOnlyWithAWinch) {
   csv_plain.Write(fixed, core::StepStatus{}, 0);
   csv_plain.Close();
   EXPECT_FALSE(std::filesystem::exists(plain.path() / "winch.csv"));
+}
+
+// two winches (docs/recording_formats.md): one <winch name>.csv each, its cable's drum and its
+// own command, and the failsafe flag the caller gives per winch
+TEST(CsvWriterTest, OneFilePerWinchWithItsOwnCommand) {
+  TempDir tmp;
+  core::Model model = TinyModel();
+  core::WinchParams w;
+  w.min_length = 5.0;
+  w.max_length = 20.0;
+  w.max_speed = 1.0;
+  w.max_acceleration = 0.5;
+  w.name = "port_winch";
+  model.cables[0].winch = w;
+  model.cables[0].name = "port";
+  core::CableParams second = model.cables[0];
+  second.name = "starboard";
+  second.winch->name = "starboard_winch";
+  second.start.position = core::Vec3(0.0, 5.0, 0.0);
+  second.end.kind = core::EndKind::kFixed;
+  second.end.position = core::Vec3(0.0, 5.0, 10.0);
+  model.cables.push_back(second);
+  core::Simulation sim(model);
+  ASSERT_EQ(sim.num_winches(), 2);
+  sim.SetWinchCommand({core::WinchCommand::Mode::kSpeed, 0.5}, 0);
+  sim.SetWinchCommand({core::WinchCommand::Mode::kLength, 7.5}, 1);
+  CsvWriter csv(tmp.path().string(), false, /*winch=*/true, false, {"port", "starboard"},
+                {"port_winch", "starboard_winch"});
+  csv.Write(sim, core::StepStatus{}, 0, {}, {false, true});
+  for (int k = 0; k < 4; ++k) {
+    ASSERT_TRUE(sim.Step().ok());
+    csv.Write(sim, core::StepStatus{}, 0, {}, {false, true});
+  }
+  csv.Close();
+  EXPECT_FALSE(std::filesystem::exists(tmp.path() / "winch.csv"));
+  std::string header;
+  const Rows port = ReadCsv(tmp.path() / "port_winch.csv", &header);
+  EXPECT_EQ(header, kCsvWinchCommandHeader);
+  const Rows star = ReadCsv(tmp.path() / "starboard_winch.csv", &header);
+  EXPECT_EQ(header, kCsvWinchCommandHeader);
+  ASSERT_EQ(port.size(), 5u);
+  ASSERT_EQ(star.size(), 5u);
+  // port pays out at 0.5 m/s^2 toward 0.5 m/s; starboard reels in toward 7.5 m
+  ExpectNear(port.back()[1], sim.cable_length(0), "port length");
+  ExpectNear(star.back()[1], sim.cable_length(1), "starboard length");
+  EXPECT_GT(sim.cable_length(0), 10.0);
+  EXPECT_LT(sim.cable_length(1), 10.0);
+  EXPECT_EQ(port.back()[4], std::to_string(sim.num_nodes(0)));
+  EXPECT_EQ(port.back()[5] + "," + port.back()[6] + "," + port.back()[7], "0,0.5,0");
+  EXPECT_EQ(star.back()[5] + "," + star.back()[6] + "," + star.back()[7], "1,7.5,1");
 }
 
 }  // namespace

@@ -25,9 +25,10 @@ constexpr double kShapeTol = 1e-11;  // [m]
 struct Fixture {
   Fixture() : system(test::SteadyTowWithWinch()) {
     BuildInitialState(system, &state);
-    state.winch.nodes = system.num_nodes();
-    state.winch.length = 204.0;  // the drum element 14 m
-    system.SetLayout(state.winch.nodes, state.winch.length);
+    state.winches.resize(1);  // WinchDrive::Initialize's (winch_drive.h)
+    state.winches[0].nodes = system.num_nodes();
+    state.winches[0].length = 204.0;  // the drum element 14 m
+    system.SetLayout(state.winches[0].nodes, state.winches[0].length);
     // bend element 0 and give it a velocity field (any smooth values)
     const int o = system.CableDof(0);
     state.q.segment<3>(o + 3) = Vec3(0.3, 0.1, 0.95);
@@ -50,14 +51,14 @@ TEST(DrumElement, SplitKeepsTheCubicAndMergeUndoesIt) {
   const double l0 = f.system.drum_length(), le = f.system.element_length();
   ASSERT_DOUBLE_EQ(l0, 14.0);
   const State before = f.state;
-  const int nodes = f.state.winch.nodes;
+  const int nodes = f.state.winches[0].nodes;
   std::vector<Vec3> r, v;
   for (int k = 0; k <= 14; ++k) {
     r.push_back(At(f.system, before.q, 0, k, l0));
     v.push_back(At(f.system, before.v, 0, k, l0));
   }
   ASSERT_TRUE(SplitDrumElement(&f.system, &f.state));
-  EXPECT_EQ(f.state.winch.nodes, nodes + 1);
+  EXPECT_EQ(f.state.winches[0].nodes, nodes + 1);
   EXPECT_DOUBLE_EQ(f.system.drum_length(), l0 - le);
   EXPECT_FALSE(f.state.newton.valid);
   // x in [0, 4]: the new drum element; x in [4, 14]: the new element 1 of l_e
@@ -72,7 +73,7 @@ TEST(DrumElement, SplitKeepsTheCubicAndMergeUndoesIt) {
     EXPECT_LE((vk - v[k]).norm(), kShapeTol) << "v at x = " << x;  // drum at rest
   }
   ASSERT_TRUE(MergeDrumElement(&f.system, &f.state));
-  EXPECT_EQ(f.state.winch.nodes, nodes);
+  EXPECT_EQ(f.state.winches[0].nodes, nodes);
   EXPECT_DOUBLE_EQ(f.system.drum_length(), l0);
   const int o = f.system.CableDof(0);
   EXPECT_LE((f.state.q.segment<12>(o) - before.q.segment<12>(o)).lpNorm<Eigen::Infinity>(), 0.0);

@@ -96,7 +96,7 @@ TEST(NoAllocation, BrakeSlipping) {
   model.cables[0].winch->brake_tension = 0.7 * Simulation(model).DrumTension();
   Simulation sim(model);
   for (int k = 0; k < 20; ++k) ASSERT_TRUE(sim.Step().ok());  // warm-up: work space sized
-  ASSERT_TRUE(sim.state().winch.slipping);
+  ASSERT_TRUE(sim.state().winches[0].slipping);
   const double length = sim.cable_length();
   ExpectNextStepsDoNotAllocate(sim);
   EXPECT_GT(sim.cable_length(), length);  // it slipped

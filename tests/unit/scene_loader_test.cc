@@ -786,7 +786,7 @@ TEST_F(SceneLoaderTest, WinchErrorsNameKeyValueAndRule) {
             "cable.winch.max_acceleration = -1 (t.yaml:13): must be > 0");
   EXPECT_EQ(error(Replace(winch, "max_acceleration: 0.2", "max_acceleration: 0.2, brake: 5")),
             "cable.winch.brake = 5 (t.yaml:13): unknown key; did you mean brake_tension? "
-            "(allowed: min_length, max_length, max_speed, max_acceleration, brake_tension)");
+            "(allowed: name, min_length, max_length, max_speed, max_acceleration, brake_tension)");
   EXPECT_EQ(error(winch + "script:\n  - {at: 1, winch_speed: 2}\n"),
             "script[0].winch_speed = 2 (t.yaml:18): must be within +-cable.winch.max_speed = 1");
   EXPECT_EQ(error(winch + "script:\n  - {at: 1, winch_length: 200}\n"),

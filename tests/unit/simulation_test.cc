@@ -56,7 +56,7 @@ void ExpectBitIdentical(const Simulation& a, const Simulation& b) {
   EXPECT_EQ(a.cable_length(), b.cable_length());
   EXPECT_EQ(a.winch_speed(), b.winch_speed());
   EXPECT_EQ(a.num_nodes(), b.num_nodes());
-  EXPECT_EQ(x.winch.slip_slope, y.winch.slip_slope);
+  EXPECT_EQ(x.winches[0].slip_slope, y.winches[0].slip_slope);
 }
 
 // the uninterrupted run against one restored into a fresh Simulation and one restored into
@@ -143,10 +143,10 @@ TEST(SimulationState, RoundTripBrakeSlipping) {
   model.cables[0].winch->brake_tension = 0.7 * Simulation(model).DrumTension();
   Simulation straight(model);
   StepN(&straight, 20);
-  ASSERT_TRUE(straight.state().winch.slipping);
+  ASSERT_TRUE(straight.state().winches[0].slipping);
   const State taken = straight.GetState();
   StepN(&straight, kAfter);
-  ASSERT_GT(straight.cable_length(), taken.winch.length);  // it slipped on
+  ASSERT_GT(straight.cable_length(), taken.winches[0].length);  // it slipped on
   Simulation fresh(model);
   fresh.SetState(taken);
   StepN(&fresh, kAfter);
@@ -200,15 +200,15 @@ TEST(SimulationState, WrongShapeIsRejected) {
             "per clamped end)");
   // the nodes in use are part of the shape
   s = Simulation(model).GetState();
-  s.winch.nodes = 30;
+  s.winches[0].nodes = 30;
   EXPECT_EQ(SetStateError(model, s),
-            "SetState: winch.nodes = 30, this model needs 21 (cable.elements + 1; the scene has "
-            "no winch)");
+            "SetState: winches[0].nodes = 30, this model needs 21 (cable.elements + 1; the cable "
+            "has no winch)");
   const Model winch = test::SteadyTowWithWinch(model);
   s = Simulation(winch).GetState();
-  s.winch.nodes = 1;
+  s.winches[0].nodes = 1;
   EXPECT_EQ(SetStateError(winch, s),
-            "SetState: winch.nodes = 1, this model needs 2 to 28 (cable nodes in use; the "
+            "SetState: winches[0].nodes = 1, this model needs 2 to 28 (cable nodes in use; the "
             "winch's max_length holds at most that many)");
 }
 

@@ -103,11 +103,14 @@ TEST(StepSampler, SamplesTheVehiclesAtTheStartAndThePredictedEnd) {
 }
 
 TEST(StepSampler, TakesTheSupportsAndTheDrumFromTheState) {
-  const System sys(WavyModel());
+  Model m = WavyModel();
+  m.cables[0].winch = WinchParams{20.0, 60.0, 1.0, 0.5};  // the drum at the vehicle
+  const System sys(m);
   State s;
   BuildInitialState(sys, &s);
+  s.winches.resize(1);  // WinchDrive::Initialize's (winch_drive.h)
   s.supports[0] = {Vec3(1, 2, 3), Vec3(4, 5, 6), 0.5, 0.75, 2.0 * Mat3::Identity(), Vec3(7, 8, 9)};
-  s.winch.drum = {0.5, 12.0, 0.25, -0.125};
+  s.winches[0].drum = {0.5, 12.0, 0.25, -0.125};
   StepInputs in;
   StepSampler(sys).TakeMotions(s, &in);
   EXPECT_EQ(in.supports[0].p1, Vec3(4, 5, 6));
@@ -116,8 +119,8 @@ TEST(StepSampler, TakesTheSupportsAndTheDrumFromTheState) {
   EXPECT_EQ(in.supports[0].lambda1, Vec3(7, 8, 9));
   EXPECT_EQ(in.supports[1].p1, s.supports[1].p1);
   // l_0(t) = 12 + 0.25 (t - 0.5) - 0.0625 (t - 0.5)^2
-  EXPECT_EQ(in.drum.LengthAt(2.5), 12.0 + 0.5 - 0.25);
-  EXPECT_EQ(in.drum.RateAt(2.5), 0.25 - 0.25);
+  EXPECT_EQ(in.drums[0].LengthAt(2.5), 12.0 + 0.5 - 0.25);
+  EXPECT_EQ(in.drums[0].RateAt(2.5), 0.25 - 0.25);
 }
 
 }  // namespace

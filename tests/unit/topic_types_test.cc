@@ -67,5 +67,19 @@ TEST(NodeTopicsTest, ANetworkHasTheStateOfEveryCable) {
   EXPECT_EQ(topics.size(), NodeTopics(names, {"depressor", "towfish"}, true, {"main"}).size() + 3);
 }
 
+// several winches (docs/winch_dds.md "Several winches on the wire"): one command topic each,
+// named by the winch; without the list, the one winch's winch/command as before
+TEST(NodeTopicsTest, EveryWinchHasItsCommandTopic) {
+  const wire::TopicNames names("/towsim");
+  const std::vector<std::string> one = Names(NodeTopics(names, {"fish"}, false, {"main"}));
+  EXPECT_TRUE(Has(one, "rt/towsim/winch/command"));
+  const std::vector<std::string> two = Names(NodeTopics(
+      names, {"fish"}, false, {"port", "starboard"}, {"port_winch", "starboard_winch"}));
+  EXPECT_TRUE(Has(two, "rt/towsim/port_winch/command"));
+  EXPECT_TRUE(Has(two, "rt/towsim/starboard_winch/command"));
+  EXPECT_FALSE(Has(two, "rt/towsim/winch/command"));
+  EXPECT_EQ(two.size(), one.size() + 2);  // one more cable state, one more winch command
+}
+
 }  // namespace
 }  // namespace towsim::app

@@ -25,9 +25,9 @@ TEST(WinchDrive, DrumMotionAroundTheCablesStep) {
   ASSERT_TRUE(drive.has_winch());
   drive.Initialize(&state);
   const double l0 = model.cables[0].length;
-  EXPECT_EQ(state.winch.length, l0);
-  EXPECT_EQ(state.winch.speed, 0.0);
-  EXPECT_EQ(state.winch.nodes, system.num_nodes());
+  EXPECT_EQ(state.winches[0].length, l0);
+  EXPECT_EQ(state.winches[0].speed, 0.0);
+  EXPECT_EQ(state.winches[0].nodes, system.num_nodes());
 
   drive.SetCommand({WinchCommand::Mode::kSpeed, 10.0});  // clamped to max_speed
   EXPECT_EQ(drive.command().value, 5.0);
@@ -45,18 +45,18 @@ TEST(WinchDrive, DrumMotionAroundTheCablesStep) {
   result.code = StepStatus::kNotConverged;
   EXPECT_FALSE(drive.Step(h, &state, step_system).ok());
   EXPECT_EQ(calls, 1);
-  EXPECT_EQ(state.winch.length, l0);  // a failed step leaves the winch where it was
-  EXPECT_EQ(state.winch.speed, 0.0);
+  EXPECT_EQ(state.winches[0].length, l0);  // a failed step leaves the winch where it was
+  EXPECT_EQ(state.winches[0].speed, 0.0);
   // the drum element's motion over the step: l_0 reaches l_0 + dL at t + h from rate 0
-  EXPECT_EQ(state.winch.drum.accel, 2.0 * 0.0390625 / (h * h));
+  EXPECT_EQ(state.winches[0].drum.accel, 2.0 * 0.0390625 / (h * h));
 
   result.code = StepStatus::kOk;
   EXPECT_TRUE(drive.Step(h, &state, step_system).ok());
   EXPECT_EQ(calls, 2);
-  EXPECT_EQ(state.winch.length, l0 + 0.0390625);
-  EXPECT_EQ(state.winch.speed, 0.625);
-  EXPECT_EQ(state.winch.drive_speed, 0.625);
-  EXPECT_FALSE(state.winch.slipping);
+  EXPECT_EQ(state.winches[0].length, l0 + 0.0390625);
+  EXPECT_EQ(state.winches[0].speed, 0.625);
+  EXPECT_EQ(state.winches[0].drive_speed, 0.625);
+  EXPECT_FALSE(state.winches[0].slipping);
   EXPECT_EQ(state.step, 0);  // the step count is the Simulation's
 }
 
@@ -78,7 +78,7 @@ TEST(WinchDrive, WithoutAWinchOnlyTheCablesStep) {
   };
   EXPECT_TRUE(drive.Step(0.1, &state, step_system).ok());
   EXPECT_EQ(calls, 1);
-  EXPECT_EQ(state.winch.length, model.cables[0].length);
+  EXPECT_EQ(state.winches[0].length, model.cables[0].length);
 }
 
 }  // namespace

@@ -32,7 +32,8 @@ const dds_topic_descriptor_t* DescriptorOfRos2Type(const std::string& ros2_type)
 
 std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
                                   const std::vector<std::string>& bodies, bool with_scene_info,
-                                  const std::vector<std::string>& cables) {
+                                  const std::vector<std::string>& cables,
+                                  const std::vector<std::string>& winches) {
   std::vector<NodeTopic> all;
   auto add = [&](const wire::TopicSpec& row, const std::string& owner) {
     all.push_back({names.Name(row.topic, owner), row.type, row.qos == wire::QosProfile::kLatched});
@@ -43,6 +44,10 @@ std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
     if (!with_scene_info && row.topic == wire::Topic::kSceneInfo) continue;
     if (row.scope == wire::Scope::kCable) {
       for (const std::string& c : cables.empty() ? one_cable : cables) add(row, c);
+      continue;
+    }
+    if (row.scope == wire::Scope::kWinch && !winches.empty()) {
+      for (const std::string& w : winches) add(row, w);
       continue;
     }
     add(row, "");

@@ -29,10 +29,12 @@ struct NodeTopic {
 // wire/topic_table.h: /clock, status, <cable>/state of each cable, sim_control, /tf,
 // /tf_static, markers, and per body odom, cable_force, altitude, pressure and command);
 // scene_info first when `with_scene_info`. `cables`: SceneInfo.cables; empty: the one cable
-// ("cable", the scene info of a towsim that did not list its cables)
+// ("cable", the scene info of a towsim that did not list its cables). `winches`:
+// SceneInfo.winches, each winch's <w>/command; empty: the one winch's winch/command
 std::vector<NodeTopic> NodeTopics(const wire::TopicNames& names,
                                   const std::vector<std::string>& bodies,
                                   bool with_scene_info = false,
-                                  const std::vector<std::string>& cables = {});
+                                  const std::vector<std::string>& cables = {},
+                                  const std::vector<std::string>& winches = {});
 
 }  // namespace towsim::app

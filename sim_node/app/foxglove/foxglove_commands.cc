@@ -62,7 +62,8 @@ std::size_t SampleSize(const dds::RawType& type, const uint8_t* data, std::size_
 
 FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
                                    const wire::TopicNames& names,
-                                   const std::vector<std::string>& bodies, bool winch)
+                                   const std::vector<std::string>& bodies,
+                                   const std::vector<std::string>& winches)
     : participant_(participant),
       command_type_(participant, &towsim_msgs_msg_dds__ActuatorCommand__desc),
       control_type_(participant, &towsim_msgs_msg_dds__SimControl__desc),
@@ -75,8 +76,9 @@ FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
     in.type = &command_type_;
     in.teleop = true;
   }
-  if (winch) {  // the winch's own command (docs/winch_dds.md), checked by the node like any
-    Inbound& in = inbound_[wire::RosTopicName(names.Name(wire::Topic::kWinchCommand))];
+  for (const std::string& w : winches) {  // each winch's own command (docs/winch_dds.md),
+                                          // checked by the node like any
+    Inbound& in = inbound_[wire::RosTopicName(names.Name(wire::Topic::kWinchCommand, w))];
     in.schema_name = "towsim_msgs/msg/WinchCommand";
     in.descriptor = &towsim_msgs_msg_dds__WinchCommand__desc;
     in.type = &winch_type_;

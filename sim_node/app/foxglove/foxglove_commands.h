@@ -49,9 +49,11 @@ std::string TrailingBytes(std::size_t size, std::size_t sample_size);
 
 class FoxgloveCommands {
  public:
-  // `winch`: the scene has a winch (SceneInfo.has_winch), so clients may command it
+  // `winches`: the scene's winches by name (SceneInfo.winches; the one winch: "winch"), so
+  // clients may command each on its rt/<ns>/<winch>/command
   FoxgloveCommands(const dds::Participant& participant, const wire::TopicNames& names,
-                   const std::vector<std::string>& bodies, bool winch);
+                   const std::vector<std::string>& bodies,
+                   const std::vector<std::string>& winches);
   FoxgloveCommands(const FoxgloveCommands&) = delete;
   FoxgloveCommands& operator=(const FoxgloveCommands&) = delete;
 

@@ -15,8 +15,8 @@
 // time: the header stamp of each message, /clock for the time messages.
 //
 // clientPublish: a client may advertise rt/<ns>/<body>/command (towsim_msgs/msg/
-// ActuatorCommand), rt/<ns>/winch/command (towsim_msgs/msg/WinchCommand, when the scene info
-// says the scene has a winch; docs/winch_dds.md) and rt/<ns>/sim_control (towsim_msgs/msg/
+// ActuatorCommand), rt/<ns>/<winch>/command (towsim_msgs/msg/WinchCommand, per winch the scene info
+// lists; docs/winch_dds.md) and rt/<ns>/sim_control (towsim_msgs/msg/
 // SimControl) with encoding cdr.
 // Each message is checked to be a valid CDR sample of its type (Cyclone's deserializer) and
 // written on DDS as it is; the node validates it exactly like any DDS command (NaN rejected,
@@ -187,10 +187,11 @@ class Bridge {
   int Run();
 
  private:
-  // winch: the scene has one (SceneInfo.has_winch), so clients may command it
+  // winches: SceneInfo.winches (the one winch "winch" when an earlier towsim sent only
+  // has_winch), so clients may command each
   // cables: SceneInfo.cables (empty from an earlier towsim: the one cable)
   void Serve(const std::vector<std::string>& bodies, const std::vector<std::string>& cables,
-             bool winch);
+             const std::vector<std::string>& winches);
   // readers for the channels with subscribers (and /clock while a client is connected)
   void UpdateReaders();
   void TakeAll();
@@ -207,8 +208,9 @@ class Bridge {
 };
 
 void Bridge::Serve(const std::vector<std::string>& bodies, const std::vector<std::string>& cables,
-                   bool winch) {
-  for (const towsim::app::NodeTopic& t : towsim::app::NodeTopics(names_, bodies, true, cables)) {
+                   const std::vector<std::string>& winches) {
+  for (const towsim::app::NodeTopic& t :
+       towsim::app::NodeTopics(names_, bodies, true, cables, winches)) {
     auto s = std::make_unique<Served>();
     s->topic = t;
     const std::string type = towsim::io::Ros2TypeName(t.descriptor->m_typename);
@@ -226,7 +228,8 @@ void Bridge::Serve(const std::vector<std::string>& bodies, const std::vector<std
     s->topic_entity = dds::Entity(e);
     served_.push_back(std::move(s));
   }
-  commands_ = std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winch);
+  commands_ =
+      std::make_unique<towsim::app::FoxgloveCommands>(participant_, names_, bodies, winches);
   commands_->Attach(&server_);
 }
 
@@ -297,15 +300,16 @@ int Bridge::Run() {
   dds::Topic scene_topic(participant_, &towsim_msgs_msg_dds__SceneInfo__desc,
                          names_.Name(wire::Topic::kSceneInfo));
   dds::Reader<dds::SceneInfoMsg> scene(participant_, scene_topic, dds::SceneInfoQos());
-  std::vector<std::string> bodies, cables;
-  bool have_scene = false, hinted = false, winch = false;
+  std::vector<std::string> bodies, cables, winches;
+  bool have_scene = false, hinted = false;
   const double start = static_cast<double>(dds_time()) * 1e-9;
   while (!have_scene && !towsim::app::StopRequested()) {
     scene.TakeEach([&](const dds::SceneInfoMsg& m, const dds_sample_info_t&) {
       if (have_scene) return;
       for (uint32_t i = 0; i < m.bodies._length; ++i) bodies.push_back(m.bodies._buffer[i]);
       for (uint32_t i = 0; i < m.cables._length; ++i) cables.push_back(m.cables._buffer[i]);
-      winch = m.has_winch;
+      for (uint32_t i = 0; i < m.winches._length; ++i) winches.push_back(m.winches._buffer[i]);
+      if (m.has_winch && winches.empty()) winches.push_back(wire::kOneWinch);
       have_scene = true;
     });
     if (!have_scene) dds_sleepfor(DDS_MSECS(10));
@@ -319,7 +323,7 @@ int Bridge::Run() {
     server_.Stop();
     return kExitOk;
   }
-  Serve(bodies, cables, winch);
+  Serve(bodies, cables, winches);
   server_.Start();
 
   // the waitset wakes on data; it holds this guard condition so that a wait without readers

@@ -36,8 +36,10 @@ int RunDdsModes(const towsim::core::Model& model, const towsim::app::Options& op
   dds.fail_on_failsafe = options.fail_on_failsafe;
   if (csv != nullptr) {
     dds.output = [csv](const towsim::core::Simulation& s, const towsim::core::StepStatus& st,
-                       long us,
-                       const std::vector<bool>& failsafe) { csv->Write(s, st, us, failsafe); };
+                       long us, const std::vector<bool>& failsafe,
+                       const std::vector<bool>& winch_failsafe) {
+      csv->Write(s, st, us, failsafe, winch_failsafe);
+    };
   }
   return towsim::app::RunDdsNode(model, dds);
 }

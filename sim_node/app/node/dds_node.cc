@@ -127,8 +127,9 @@ class DdsNode {
   void NoteCommand(const Checked& c, int i);
   // arbiter entries 0 .. num_command_vehicles() - 1 are the vehicles, then the winch's
   int num_command_vehicles() const { return static_cast<int>(n_.command_vehicles.size()); }
-  // the arbiter entry of an external vessel
+  // the arbiter entry of an external vessel, of a winch
   bool is_vessel_entry(int i) const { return n_.arbiter->vehicle(i).vessel; }
+  bool is_winch_entry(int i) const { return n_.arbiter->vehicle(i).winch; }
 
   const core::Model& model_;
   DdsNodeOptions opt_;
@@ -159,6 +160,7 @@ class DdsNode {
   uint64_t winch_script_rejected_ = 0;
   bool output_failed_ = false;  // opt_.output threw io::OutputError
   std::vector<bool> failsafe_;  // by vehicle, for opt_.output (reused: no allocation per output)
+  std::vector<bool> winch_failsafe_;  // by winch, the same
   // --fail-on-failsafe: why the run ends (app/node/failsafe_failure.h); empty: no failsafe yet
   std::string failsafe_failure_;
   dds::StatusSample status_;  // reused: no allocation per step
@@ -380,17 +382,20 @@ void DdsNode::TakeCommands() {
           NoteCommand(n_.arbiter->Receive(i, msg, t), i);
         });
   }
-  if (const int w = n_.winch_entry; w >= 0) {
-    n_.endpoints->winch_reader()->TakeEach(
-        [&](const dds::WinchCommandMsg& msg, const dds_sample_info_t&) {
-          NoteCommand(n_.arbiter->Receive(w, msg, t), w);
-        });
-  } else if (n_.winch_script) {
-    n_.endpoints->winch_reader()->TakeEach([&](const dds::WinchCommandMsg&, const auto&) {
-      if (++winch_script_rejected_ == 1) {
-        std::fprintf(stderr, "sim_node: %s\n", kWinchScriptRejected);
-      }
-    });
+  // winch w's reader feeds its entry winch_entry + w (winch w on cable w)
+  for (int w = 0; w < n_.endpoints->num_winch_readers(); ++w) {
+    if (const int e = n_.winch_entry + w; n_.winch_entry >= 0) {
+      n_.endpoints->winch_reader(w).TakeEach(
+          [&](const dds::WinchCommandMsg& msg, const dds_sample_info_t&) {
+            NoteCommand(n_.arbiter->Receive(e, msg, t), e);
+          });
+    } else if (n_.winch_script) {
+      n_.endpoints->winch_reader(w).TakeEach([&](const dds::WinchCommandMsg&, const auto&) {
+        if (++winch_script_rejected_ == 1) {
+          std::fprintf(stderr, "sim_node: %s\n", kWinchScriptRejected);
+        }
+      });
+    }
   }
 }
 
@@ -508,8 +513,8 @@ void DdsNode::Idle() {
 std::vector<int> DdsNode::Awaited() const {
   std::vector<int> entries;
   for (int i = 0; i < num_command_vehicles(); ++i) entries.push_back(i);
-  if (const int w = n_.winch_entry; w >= 0 && n_.arbiter->vehicle(w).lockstep) {
-    entries.push_back(w);
+  for (int w = 0; w < n_.num_winch_entries; ++w) {
+    if (n_.arbiter->vehicle(n_.winch_entry + w).lockstep) entries.push_back(n_.winch_entry + w);
   }
   for (int e : n_.vessel_entries) entries.push_back(e);
   return entries;
@@ -527,7 +532,7 @@ std::string DdsNode::Describe(const std::vector<int>& entries) const {
   std::string text;
   for (int i : entries) {
     const std::string& name = n_.arbiter->vehicle(i).name;
-    const std::string topic = i == n_.winch_entry  ? names.Name(wire::Topic::kWinchCommand)
+    const std::string topic = is_winch_entry(i)    ? names.Name(wire::Topic::kWinchCommand, name)
                               : is_vessel_entry(i) ? names.Name(wire::Topic::kPoseCommand, name)
                                                    : names.Name(wire::Topic::kCommand, name);
     text += (text.empty() ? "" : ", ") + name + " (" + topic + ")";
@@ -560,8 +565,9 @@ bool DdsNode::DoStep() {
     core::VehicleCommand command;
     if (n_.arbiter->Take(i, &command)) sim.SetVehicleCommand(n_.command_vehicles[i], command);
   }
-  if (core::WinchCommand winch; n_.winch_entry >= 0 && n_.arbiter->Take(n_.winch_entry, &winch)) {
-    sim.SetWinchCommand(winch);
+  for (int w = 0; w < n_.num_winch_entries; ++w) {
+    if (core::WinchCommand winch; n_.arbiter->Take(n_.winch_entry + w, &winch))
+      sim.SetWinchCommand(winch, w);
   }
   // the external vessels' poses (docs/vessels.md "External vessels")
   ApplyPoses();
@@ -646,8 +652,12 @@ void DdsNode::Output(const core::StepStatus& status, long wall_us) {
   for (int i = 0; i < num_command_vehicles(); ++i) {
     failsafe_[n_.command_vehicles[i]] = n_.arbiter->failsafe(i);
   }
+  // the winches': entry winch_entry + w is winch w (none with --winch script: never failsafe)
+  winch_failsafe_.assign(n_.sim->num_winches(), false);
+  for (int w = 0; w < n_.num_winch_entries; ++w)
+    winch_failsafe_[w] = n_.arbiter->failsafe(n_.winch_entry + w);
   try {
-    opt_.output(*n_.sim, status, wall_us, failsafe_);
+    opt_.output(*n_.sim, status, wall_us, failsafe_, winch_failsafe_);
   } catch (const io::OutputError&) {
     output_failed_ = true;
     throw;

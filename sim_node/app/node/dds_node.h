@@ -94,10 +94,10 @@ struct DdsNodeOptions {
   bool winch_script = false;
   // called with the state at t = 0, every k = max(1, round(1 / (output_rate h))) steps and at
   // the last state (e.g. CsvWriter::Write), and failsafe[v]: whether vehicle v (Model::vehicles)
-  // was in failsafe during the step that led there (dds/command_arbiter.h); may throw (then
-  // RunDdsNode throws)
+  // was in failsafe during the step that led there (dds/command_arbiter.h), winch_failsafe[w]
+  // the same for winch w; may throw (then RunDdsNode throws)
   std::function<void(const core::Simulation&, const core::StepStatus&, long wall_us,
-                     const std::vector<bool>& failsafe)>
+                     const std::vector<bool>& failsafe, const std::vector<bool>& winch_failsafe)>
       output;
 };
 

@@ -77,13 +77,13 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::To
         participant, pose_topics_.back(), dds::CommandQos()));
     waitset_.Attach(pose_readers_.back()->condition());
   }
-  if (sim.has_winch()) {
-    winch_topic_ =
+  for (int w = 0; w < sim.num_winches(); ++w) {
+    winch_topics_.push_back(
         std::make_unique<dds::Topic>(participant, &towsim_msgs_msg_dds__WinchCommand__desc,
-                                     names.Name(wire::Topic::kWinchCommand));
-    winch_reader_ = std::make_unique<dds::Reader<dds::WinchCommandMsg>>(participant, *winch_topic_,
-                                                                        dds::CommandQos());
-    waitset_.Attach(winch_reader_->condition());
+                                     names.Name(wire::Topic::kWinchCommand, sim.winch_name(w))));
+    winch_readers_.push_back(std::make_unique<dds::Reader<dds::WinchCommandMsg>>(
+        participant, *winch_topics_.back(), dds::CommandQos()));
+    waitset_.Attach(winch_readers_.back()->condition());
   }
   waitset_.Attach(control_reader_.condition());
 }
@@ -165,13 +165,14 @@ void NodeEndpoints::StartFoxglove(const dds::Participant& participant, FoxgloveS
       server->AddChannel(wire::RosTopicName(t.name()), type, io::Ros2MsgSchema(type));
     }
   }
-  if (winch_topic_) {
+  std::vector<std::string> winches;
+  for (const auto& topic : winch_topics_) {
     const char* type = "towsim_msgs/msg/WinchCommand";
-    server->AddChannel(wire::RosTopicName(winch_topic_->name()), type, io::Ros2MsgSchema(type));
+    server->AddChannel(wire::RosTopicName(topic->name()), type, io::Ros2MsgSchema(type));
+    winches.push_back(*names_.Owner(wire::Topic::kWinchCommand, topic->name()));
   }
   // clients publish through writers of the node's participant: its own readers take them
-  fox_commands_ = std::make_unique<FoxgloveCommands>(participant, names_, body_names_,
-                                                     winch_topic_ != nullptr);
+  fox_commands_ = std::make_unique<FoxgloveCommands>(participant, names_, body_names_, winches);
   fox_commands_->Attach(server);
 }
 
@@ -246,7 +247,7 @@ std::vector<dds_entity_t> NodeEndpoints::readers() const {
   std::vector<dds_entity_t> out;
   for (const auto& r : command_readers_) out.push_back(r->get());
   for (const auto& r : pose_readers_) out.push_back(r->get());
-  if (winch_reader_) out.push_back(winch_reader_->get());
+  for (const auto& r : winch_readers_) out.push_back(r->get());
   out.push_back(control_reader_.get());
   return out;
 }

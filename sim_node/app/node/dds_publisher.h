@@ -69,9 +69,10 @@ class NodeEndpoints {
   dds::Reader<dds::OdometryMsg>& pose_reader(int i) { return *pose_readers_[i]; }
   int num_pose_readers() const { return static_cast<int>(pose_readers_.size()); }
   dds::Reader<dds::SimControlMsg>& control_reader() { return control_reader_; }
-  // the winch's command reader (rt/<ns>/winch/command, docs/winch_dds.md); nullptr when the
-  // scene has no winch
-  dds::Reader<dds::WinchCommandMsg>* winch_reader() { return winch_reader_.get(); }
+  // winch w's command reader (rt/<ns>/<winch name>/command: rt/<ns>/winch/command for the one
+  // winch, docs/winch_dds.md), winch w on cable w; none when the scene has no winch
+  int num_winch_readers() const { return static_cast<int>(winch_readers_.size()); }
+  dds::Reader<dds::WinchCommandMsg>& winch_reader(int w) { return *winch_readers_[w]; }
   // blocks until a command or a control request is available, or `timeout` [s]
   void WaitForInput(double timeout);
 
@@ -126,8 +127,8 @@ class NodeEndpoints {
   std::vector<dds::Topic> pose_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::OdometryMsg>>> pose_readers_;
   dds::Reader<dds::SimControlMsg> control_reader_;
-  std::unique_ptr<dds::Topic> winch_topic_;
-  std::unique_ptr<dds::Reader<dds::WinchCommandMsg>> winch_reader_;
+  std::vector<std::unique_ptr<dds::Topic>> winch_topics_;  // one per winch
+  std::vector<std::unique_ptr<dds::Reader<dds::WinchCommandMsg>>> winch_readers_;
   dds::WaitSet waitset_;
 
   dds::SimStatusMessage status_msg_;

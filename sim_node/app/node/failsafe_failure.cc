@@ -9,7 +9,12 @@ std::string FailsafeEntries(const dds::CommandArbiter& arbiter) {
   for (int v = 0; v < arbiter.size(); ++v) {
     if (!arbiter.failsafe(v)) continue;
     if (!text.empty()) text += ", ";
-    text += arbiter.vehicle(v).winch ? "the winch" : "body " + arbiter.vehicle(v).name;
+    const std::string& name = arbiter.vehicle(v).name;
+    if (!arbiter.vehicle(v).winch) {
+      text += "body " + name;
+    } else {
+      text += name == dds::kWinchName ? std::string("the winch") : "the winch " + name;
+    }
   }
   return text;
 }

@@ -99,11 +99,14 @@ int Run(const Options& options, DdsModeRunner run_dds) {
   std::unique_ptr<io::CsvWriter> csv;
   if (!options.csv_dir.empty()) {
     try {
-      std::vector<std::string> cables;
-      for (const core::CableParams& c : model.cables) cables.push_back(c.name);
+      std::vector<std::string> cables, winches;
+      for (const core::CableParams& c : model.cables) {
+        cables.push_back(c.name);
+        if (c.winch) winches.push_back(c.winch->name);  // winch w on cable w (core/model.h)
+      }
       csv = std::make_unique<io::CsvWriter>(options.csv_dir, io::HasSea(model.environment),
-                                            model.cables[0].winch.has_value(),
-                                            !model.vehicles.empty(), cables);
+                                            !winches.empty(), !model.vehicles.empty(), cables,
+                                            winches);
     } catch (const io::OutputError& e) {  // opened, not written: disk full
       std::fprintf(stderr, "sim_node: error: --csv %s: %s\n", options.csv_dir.c_str(), e.what());
       return kExitError;

@@ -71,25 +71,30 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     vehicles.push_back({vehicle.name, dds::LimitsOf(vehicle.params), lockstep && waited});
     n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
   }
-  // the winch (docs/winch_dds.md): one more entry, after the vehicles, waited for in lockstep
-  // like a commanded body; none with --winch script (the scene's script drives it)
+  // the winches (docs/winch_dds.md): one more entry each, after the vehicles, named by the
+  // winch (winch w on cable w, core/model.h), waited for in lockstep like a commanded body;
+  // none with --winch script (the scene's script drives them)
   n.winch_script = model.cables[0].winch.has_value() && opt.winch_script;
-  if (model.cables[0].winch) {
+  for (const core::CableParams& c : model.cables) {
+    if (!c.winch) continue;
     for (const auto& v : vehicles) {
-      if (v.name == dds::kWinchName) {
-        return bad(
-            "body winch: the name is taken by the winch's topic rt/<ns>/winch/command "
-            "(rename the vehicle)");
+      if (v.name == c.winch->name) {
+        return bad("body " + v.name + ": the name is taken by the winch's topic rt/<ns>/" +
+                   v.name + "/command (rename the vehicle)");
       }
     }
   }
   if (model.cables[0].winch && !opt.winch_script) {
-    const bool waited = opt.lockstep_bodies.empty() ||
-                        std::find(opt.lockstep_bodies.begin(), opt.lockstep_bodies.end(),
-                                  dds::kWinchName) != opt.lockstep_bodies.end();
     n.winch_entry = static_cast<int>(vehicles.size());
-    vehicles.push_back(dds::CommandArbiter::Vehicle::Winch(*model.cables[0].winch, lockstep && waited));
-    n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
+    for (const core::CableParams& c : model.cables) {
+      if (!c.winch) continue;
+      const bool waited = opt.lockstep_bodies.empty() ||
+                          std::find(opt.lockstep_bodies.begin(), opt.lockstep_bodies.end(),
+                                    c.winch->name) != opt.lockstep_bodies.end();
+      vehicles.push_back(dds::CommandArbiter::Vehicle::Winch(*c.winch, lockstep && waited));
+      ++n.num_winch_entries;
+      n.has_lockstep_vehicles = n.has_lockstep_vehicles || (lockstep && waited);
+    }
   }
   // the external vessels (docs/vessels.md "External vessels"): one entry each, their poses
   // waited for in lockstep like a vehicle's commands
@@ -110,8 +115,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
     if (!found) {
       return bad("lockstep body " + name +
                  ": not a vehicle of the scene that takes commands nor an external vessel" +
-                 (n.winch_entry >= 0 ? " nor the winch" : "") +
-                 (n.winch_script ? " (--winch script: the winch is not waited for)" : ""));
+                 (n.winch_entry >= 0 ? " nor a winch" : "") +
+                 (n.winch_script ? " (--winch script: the winches are not waited for)" : ""));
     }
   }
   n.arbiter.emplace(std::move(vehicles), opt.command_timeout);

@@ -33,9 +33,11 @@ inline constexpr int kExitStoppedInSetup = -1;  // a signal stopped the setup (t
 // the node's parts, in the order they are built (and destroyed in reverse)
 struct NodeParts {
   std::vector<int> command_vehicles;  // vehicle index of arbiter entry i
-  // the winch's arbiter entry, after the vehicles'; < 0: no winch, or it follows the script
+  // the first winch's arbiter entry, after the vehicles'; winch w's is winch_entry + w
+  // (num_winch_entries of them); < 0: no winch, or they follow the script
   int winch_entry = -1;
-  bool winch_script = false;  // --winch script: the scene's winch follows its script
+  int num_winch_entries = 0;
+  bool winch_script = false;  // --winch script: the scene's winches follow its script
   // the external vessels (docs/vessels.md "External vessels"): vessel_entries[i] is the
   // arbiter entry of the vessel external_vessels[i] (index into Model::vessels), after the
   // vehicles' and the winch's entries

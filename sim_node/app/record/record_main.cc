@@ -10,7 +10,8 @@
 //
 // It learns the bodies and cables from rt/<ns>/scene_info (transient local: also when the node
 // started first), then subscribes to every towsim topic of the namespace (docs/contract.md §3:
-// per body odom, cable_force and command; <cable>/state per cable, status, scene_info,
+// per body odom, cable_force and command; <cable>/state per cable, <winch>/command per winch,
+// status, scene_info,
 // sim_control, markers), /clock, /tf
 // and /tf_static, or to the
 // --topics given (ROS names, "/towsim/towfish/odom"). The payloads are stored as received
@@ -178,6 +179,7 @@ class Recorder {
   uint64_t sim_now_ = 0;  // the last /clock taken [ns] (--use-sim-time)
   std::vector<std::string> bodies_;
   std::vector<std::string> cables_;  // SceneInfo.cables (empty from an earlier towsim: one)
+  std::vector<std::string> winches_;  // SceneInfo.winches (empty: the one winch's topic)
   bool have_scene_ = false;
   double start_ = 0.0, last_progress_ = -1.0;
   bool progress_drawn_ = false;
@@ -233,6 +235,9 @@ bool Recorder::TakeAll() {
               }
               for (uint32_t i = 0; i < msg.cables._length; ++i) {
                 cables_.push_back(msg.cables._buffer[i]);
+              }
+              for (uint32_t i = 0; i < msg.winches._length; ++i) {
+                winches_.push_back(msg.winches._buffer[i]);
               }
               have_scene_ = true;
             }
@@ -306,6 +311,7 @@ int Recorder::Run() {
       std::set<std::string> wanted(opt_.topics.begin(), opt_.topics.end());
       std::vector<std::string> bodies = bodies_;
       std::vector<std::string> cables = cables_;
+      std::vector<std::string> winches = winches_;
       if (explicit_topics) {
         // the bodies and cables the explicit topics name (<ns>/<owner>/<topic>: the owner as
         // a body and as a cable; the topic table keeps only the names that exist)
@@ -320,12 +326,15 @@ int Recorder::Run() {
           if (std::find(cables.begin(), cables.end(), owner) == cables.end()) {
             cables.push_back(owner);
           }
+          if (std::find(winches.begin(), winches.end(), owner) == winches.end()) {
+            winches.push_back(owner);  // and as a winch (<w>/command)
+          }
           if (owner != wire::kOneCable) bodies.push_back(owner);
         }
       }
       std::set<std::string> known;
       for (const towsim::app::NodeTopic& t :
-           towsim::app::NodeTopics(names_, bodies, false, cables)) {
+           towsim::app::NodeTopics(names_, bodies, false, cables, winches)) {
         const std::string ros = wire::RosTopicName(t.dds_name);
         if (known.count(ros)) continue;
         known.insert(ros);
