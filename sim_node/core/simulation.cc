@@ -147,6 +147,9 @@ const System& Simulation::system() const { return impl_->system; }
 const State& Simulation::state() const { return impl_->state; }
 double Simulation::time() const { return impl_->state.t; }
 long Simulation::step_count() const { return impl_->state.step; }
+FoldReport Simulation::FindFold() const {
+  return core::FindFold(impl_->system, impl_->state.q);
+}
 int Simulation::coupling_iterations() const { return impl_->coupling_iterations; }
 
 State Simulation::GetState() const { return impl_->state; }

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fold_check.h"
 #include "core/model.h"
 #include "core/vehicle_model.h"
 #include "core/vessel_motion.h"
@@ -149,6 +150,10 @@ class Simulation {
   // force cable c exerts on its support at the start (end = 0) or the end (end = 1),
   // world frame [N]; zero for a free end
   Vec3 end_force(int end, int c = 0) const;
+
+  // the first folded element of the cables now (fold_check.h; folded = false if none); a few
+  // dot products per element, for the runners' fold watch (docs/faults.md)
+  FoldReport FindFold() const;
 
   // joint-force iterations of the last step (kStrong; 1 for kStaggered, 0 without vehicles)
   int coupling_iterations() const;

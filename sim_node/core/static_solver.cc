@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
+
+#include "core/fold_check.h"
+#include "core/gauss_quadrature.h"
+#include "core/initial_shape.h"
 
 namespace towsim::core {
 
@@ -35,10 +40,65 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, cons
   return std::max(f, 1.0);
 }
 
-}  // namespace
+// why the converged shape at *s is not a cable's (fold_check.h, the tension bound of
+// static_solver.h), or empty
+std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity, const State& s) {
+  const FoldReport fold = FindFold(sys, s.q);
+  if (fold.folded) return fold.Describe(sys);
+  for (int c = 0; c < sys.num_cables(); ++c) {
+    const double turning = TotalTurning(sys, s.q, c);
+    if (turning <= kMaxStaticTurning) continue;
+    std::ostringstream msg;
+    msg << "cable '" << sys.model().cables[c].name << "' is looped: its tangent turns through "
+        << turning * 180.0 / M_PI << " deg from end to end (a cable at rest: less than 180 deg, "
+        << "at most " << kMaxStaticTurning * 180.0 / M_PI << ")";
+    return msg.str();
+  }
+  double support = 0.0;  // the largest support force
+  for (int c = 0; c < sys.num_cables(); ++c)
+    for (int end = 0; end < 2; ++end)
+      if (sys.end_lambda_count(end, c) >= 3)
+        support = std::max(support, s.lambda.segment<3>(sys.EndLambda(end, c)).norm());
+  const double bound = kTensionBoundFactor * (support + ForceScale(sys, frame_velocity, s));
+  // each element's mean axial force EA (l_s / l - 1) from its stretched length
+  // l_s = int_0^1 |dr/dxi| dxi (3-point Gauss on the cubic Hermite shape, Eq. 4): the node values
+  // of the Green strain carry the coarse elements' curvature error, the length does not
+  const GaussRule<3> gauss = Gauss3();
+  for (int c = 0; c < sys.num_cables(); ++c) {
+    const double ea = sys.model().cables[c].axial_stiffness;
+    for (int e = 0; e < sys.NumElements(c); ++e) {
+      const int o = sys.CableDof(e, c);
+      const double l =
+          (c == 0 && e == 0 && sys.has_winch()) ? sys.drum_length() : sys.element_length(c);
+      const Vec3 ra = s.q.segment<3>(o), da = s.q.segment<3>(o + 3);
+      const Vec3 rb = s.q.segment<3>(o + 6), db = s.q.segment<3>(o + 9);
+      double stretched = 0.0;
+      for (int g = 0; g < 3; ++g) {
+        const double x = gauss.xi[g];
+        // d/dxi of the Hermite functions h00, l h10, h01, l h11
+        const Vec3 d = (6.0 * x * x - 6.0 * x) * (ra - rb) +
+                       l * ((3.0 * x * x - 4.0 * x + 1.0) * da + (3.0 * x * x - 2.0 * x) * db);
+        stretched += gauss.weight[g] * d.norm();
+      }
+      const double strain = stretched / l - 1.0;
+      const double force = ea * strain;
+      if (std::abs(force) <= bound) continue;
+      std::ostringstream msg;
+      msg << "cable '" << sys.model().cables[c].name << "' element " << e << " (nodes " << e
+          << "-" << e + 1 << "): mean axial force " << force << " N (strain " << strain
+          << "), beyond what the loads can give (" << bound << " N: " << kTensionBoundFactor
+          << " x (largest support force " << support << " N + external loads "
+          << bound / kTensionBoundFactor - support << " N))";
+      return msg.str();
+    }
+  }
+  return {};
+}
 
-StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                         const std::function<bool()>& stop) {
+// one pseudo-transient Newton solve from *s; slope_limit bounds the change of every slope
+// component per iteration (infinite: no bound)
+StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
+                   const std::function<bool()>& stop, double slope_limit) {
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
   const double tol = sys.model().integrator.tolerance;
@@ -97,7 +157,15 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
     // limit the step to a tenth of the cable length per iteration
     const double step = dq.lpNorm<Eigen::Infinity>();
     const double limit = 0.1 * q_scale;
-    const double scale = step > limit ? limit / step : 1.0;
+    double scale = step > limit ? limit / step : 1.0;
+    if (std::isfinite(slope_limit)) {
+      double slope_step = 0.0;
+      for (int c = 0; c < sys.num_cables(); ++c)
+        for (int i = 0; i < sys.num_nodes(c); ++i)
+          slope_step =
+              std::max(slope_step, dq.segment<3>(sys.CableDof(i, c) + 3).lpNorm<Eigen::Infinity>());
+      if (scale * slope_step > slope_limit) scale = slope_limit / slope_step;
+    }
     s->q += scale * dq;
     s->lambda += scale * dl;
     if (!s->q.allFinite()) break;
@@ -110,6 +178,37 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
       << sys.DescribeDof(worst, s->q);
   res.message = msg.str();
   return res;
+}
+
+}  // namespace
+
+StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
+                         const std::function<bool()>& stop) {
+  const State guess = *s;
+  StaticResult first = Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity());
+  first.attempts = 1;
+  if (first.stopped) return first;
+  std::string why = first.ok ? CheckShape(sys, frame_velocity, *s) : first.message;
+  if (first.ok && why.empty()) return first;
+  // the second attempt: the slack-free catenary guess for every cable with two known ends,
+  // slopes limited per iteration
+  *s = guess;
+  for (int c = 0; c < sys.num_cables(); ++c) LayOutCatenary(sys, c, s);
+  StaticResult second = Solve(sys, frame_velocity, s, stop, kMaxSlopeStep);
+  second.attempts = 2;
+  second.iterations += first.iterations;
+  second.rejected = (first.ok ? "converged to a shape that is not a cable's: " : "") + why;
+  if (second.stopped) return second;
+  const std::string why2 = second.ok ? CheckShape(sys, frame_velocity, *s) : second.message;
+  if (second.ok && why2.empty()) return second;
+  second.ok = false;
+  second.message = "static equilibrium not found: from the initial guess " + second.rejected +
+                   "; from the catenary guess " +
+                   (second.ok || why2 != second.message
+                        ? "converged to a shape that is not a cable's: " + why2
+                        : why2) +
+                   " (docs/physics.md, \"Initial shapes\")";
+  return second;
 }
 
 }  // namespace towsim::core

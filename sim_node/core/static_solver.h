@@ -7,6 +7,17 @@
 // K + M_eff / delta, delta grown by switched evolution relaxation (delta_{k+1} = delta_k
 // |R_{k-1}| / |R_k|), so far from equilibrium it is damped implicit dynamics and near it plain
 // Newton with quadratic convergence. Exact to the solver tolerance, no dynamic relaxation.
+//
+// A converged shape is accepted only if it is a cable's (docs/physics.md "Initial shapes"): no
+// folded element (fold_check.h), no loop (its tangent turns by at most kMaxStaticTurning in
+// all) and no element force beyond what the loads can give, the
+// largest support force plus the external loads on the whole network,
+//   |T(s)| <= kTensionBoundFactor (max_ends |lambda_end| + F_ext)
+// (dT/ds = -f . t along a cable, so T varies by at most the load on it). A first solve that
+// converges to a shape failing this check is repeated from the slack-free catenary guess
+// (initial_shape.h, LayOutCatenary) with every slope's change per iteration limited to
+// kMaxSlopeStep, so that no element can turn over in one Newton step; if that shape fails
+// too, the solve fails with the diagnosis (the element, its strain, its slopes).
 
 #include <functional>
 #include <string>
@@ -22,7 +33,19 @@ struct StaticResult {
   int iterations = 0;
   double residual = 0.0;  // inf-norm of R [N]
   std::string message;
+  int attempts = 0;  // 1, or 2 when the first shape failed the check (restarted: guess)
+  std::string rejected;  // why the first attempt's shape was rejected (empty if it was not)
 };
+
+// a converged shape's element forces may exceed the bound of the loads by this factor (the
+// bending shear and the drag scale's estimate of the speeds are not in the bound) [-]
+constexpr double kTensionBoundFactor = 2.0;
+// a static cable's tangent turns by less than pi in all under gravity and a uniform flow
+// (fold_check.h, TotalTurning); an S-shape in a current profile adds to it, a loop adds 2 pi:
+// a shape whose tangent turns by more than this is rejected as looped [rad]
+constexpr double kMaxStaticTurning = 1.75 * 3.14159265358979323846;
+// largest change of a slope component r' per Newton iteration of the second attempt [-]
+constexpr double kMaxSlopeStep = 0.2;
 
 // *state holds the initial guess (q) and is overwritten with the equilibrium, v = V_f on every
 // node position and body, lambda the support reactions. `stop` (if set) is asked before every

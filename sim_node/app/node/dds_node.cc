@@ -20,6 +20,7 @@
 #include "app/node/node_setup.h"
 #include "app/node/run_control.h"
 #include "app/node/run_counters.h"
+#include "app/node/fold_watch.h"
 #include "app/node/strain_watch.h"
 #include "dds/command_arbiter.h"
 #include "dds/translators.h"
@@ -137,6 +138,7 @@ class DdsNode {
   NodeParts n_;  // app/node/node_setup.h
   RunControl control_;
   StrainWatch strain_;  // the largest cable strain, at the output times
+  FoldWatch fold_{model_.time.step};  // folded elements, every FoldWatch::kCheckInterval
 
   // the run (from the start or the last reset)
   std::string run_id_;
@@ -588,6 +590,17 @@ bool DdsNode::DoStep() {
   last_status_ = status;
   ++step_;
   control_.Stepped();
+  const FoldWatch::Event folded = fold_.Observe(sim, static_cast<long>(step_));
+  if (folded == FoldWatch::Event::kFolded) {
+    std::fprintf(stderr, "sim_node: %s\n", fold_.Warning().c_str());
+  } else if (folded == FoldWatch::Event::kFailed) {
+    char text[160];
+    std::snprintf(text, sizeof text, "solver failure at t = %.9g s (step %llu): ", sim.time(),
+                  static_cast<unsigned long long>(step_));
+    control_.Fail(text + fold_.Failure());
+    std::fprintf(stderr, "sim_node: %s\n", control_.failure().c_str());
+    return false;
+  }
 
   n_.endpoints->PublishState(sim, step_, n_.strides, /*all=*/false);
   const Clock::time_point t1 = Clock::now();
@@ -627,6 +640,7 @@ bool DdsNode::DoReset() {
   before_reset_ += ThisRun();
   ++before_reset_.resets;
   *n_.sim = std::move(*fresh);
+  fold_ = FoldWatch(model_.time.step);  // the new run's folds only
   n_.script.emplace(model_);
   // the poses of the old run that came in the meantime are not the new run's
   for (int i = 0; i < n_.endpoints->num_pose_readers(); ++i) {

@@ -10,6 +10,7 @@
 #include "app/common/run_stats.h"
 #include "app/common/stop_signal.h"
 #include "app/node/progress.h"
+#include "app/node/fold_watch.h"
 #include "app/node/strain_watch.h"
 #include "core/script.h"
 #include "core/simulation.h"
@@ -58,6 +59,7 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
   core::StepStatus status;  // of the last completed step; default (0 iterations) at t = 0
   long wall_us = 0;         // wall time of the last completed step [us]
   StrainWatch strain;       // at the output times
+  FoldWatch fold(h);        // every FoldWatch::kCheckInterval
   strain.Observe(*sim);
   long written = 0;  // last step written to CSV
   int exit_code = kExitOk;
@@ -87,6 +89,17 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
           static_cast<long>(std::chrono::duration_cast<std::chrono::microseconds>(t1 - t0).count());
       stats.Add(status, sim->coupling_iterations());
       t_reached = sim->time();
+      const FoldWatch::Event folded = fold.Observe(*sim, k);
+      if (folded == FoldWatch::Event::kFolded) {
+        progress.Finish();
+        std::fprintf(stderr, "sim_node: %s\n", fold.Warning().c_str());
+      } else if (folded == FoldWatch::Event::kFailed) {
+        progress.Finish();
+        std::fprintf(stderr, "sim_node: solver failure at t = %.9g s (step %ld): %s\n",
+                     sim->time(), k, fold.Failure().c_str());
+        exit_code = kExitSolver;
+        break;
+      }
       if (k % stride == 0 && strain.Observe(*sim)) {
         progress.Finish();
         std::fprintf(stderr, "sim_node: %s\n", strain.Warning().c_str());
