@@ -12,6 +12,7 @@
 #include "core/state.h"
 #include "core/static_solver.h"
 #include "core/system.h"
+#include "core/vehicle_balance.h"
 #include "core/vehicle_coupling.h"
 #include "core/winch_drive.h"
 
@@ -72,12 +73,26 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
   for (const CableParams& c : model.cables)
     if (c.initial == InitialShape::kStatic && !static_cable) static_cable = &c;
   if (static_cable) {
-    const StaticResult r = SolveStatic(sys, static_cable->initial_velocity, &s, stop_requested);
-    if (r.stopped) {
-      throw StopRequestedError("stopped during the static solve after " +
-                               std::to_string(r.iterations) + " iterations");
+    if (HeldVehicles(sys).empty()) {
+      const StaticResult r = SolveStatic(sys, static_cable->initial_velocity, &s, stop_requested);
+      if (r.stopped) {
+        throw StopRequestedError("stopped during the static solve after " +
+                                 std::to_string(r.iterations) + " iterations");
+      }
+      if (!r.ok) throw SolverError(r.message);
+    } else {
+      // the vehicles balanced with the cables (vehicle_balance.h); a towing vehicle's thrust
+      // becomes its command
+      const BalanceResult r = SolveStaticWithVehicles(sys, static_cable->initial_velocity,
+                                                      &impl_->commands, &s, stop_requested);
+      if (r.stopped) {
+        throw StopRequestedError("stopped during the static solve after " +
+                                 std::to_string(r.static_solves) + " static solves");
+      }
+      if (!r.ok) throw SolverError("initial: static: " + r.message);
+      impl_->coupling.HoldSupports(&s);
+      impl_->HoldVessels();
     }
-    if (!r.ok) throw SolverError(r.message);
   }
   if (!impl_->integrator.InitializeAcceleration(&s))
     throw SolverError(

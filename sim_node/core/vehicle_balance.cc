@@ -1,0 +1,367 @@
+#include "core/vehicle_balance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include <Eigen/Dense>
+
+#include "core/actuator.h"
+#include "core/constants.h"
+
+namespace towsim::core {
+
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+constexpr int kMaxIterations = 100;     // Levenberg-Marquardt iterations
+constexpr int kMaxTries = 16;           // damping increases within one iteration
+constexpr double kMaxTurn = 0.2;        // largest attitude change per step [rad]
+constexpr double kMaxShift = 0.1;       // largest position change per step, of the cable [-]
+constexpr double kStepPosition = 1e-4;  // difference steps: of the vehicle's length [m / m],
+constexpr double kStepAngle = 1e-5;     // [rad]
+constexpr double kStepThrust = 1e-5;    // of max_thrust [N / N]
+
+// the unknowns of one vehicle, in this order; a towing vehicle has no kX, kY but kThrust
+enum Unknown { kX, kY, kZ, kRoll, kPitch, kYaw, kThrustUnknown };
+
+struct Variable {
+  int vehicle = 0;
+  Unknown unknown = kX;
+};
+
+struct VehiclePose {
+  Vec3 p = Vec3::Zero();
+  Vec3 rpy = Vec3::Zero();
+  double thrust = 0.0;
+};
+
+class Balance {
+ public:
+  Balance(const System& sys, const Vec3& frame_velocity, std::vector<VehicleCommand>* commands)
+      : sys_(sys), vf_(frame_velocity), commands_(*commands), held_(HeldVehicles(sys)) {
+    const Model& m = sys.model();
+    min_length_ = std::numeric_limits<double>::infinity();
+    for (const CableParams& c : m.cables) min_length_ = std::min(min_length_, c.length);
+    for (int v : held_) {
+      const bool tows = IsTowingVehicle(sys, v);
+      for (int u = tows ? kZ : kX; u <= kYaw; ++u) vars_.push_back({v, static_cast<Unknown>(u)});
+      if (tows) vars_.push_back({v, kThrustUnknown});
+    }
+  }
+
+  const std::vector<int>& held() const { return held_; }
+  int size() const { return static_cast<int>(vars_.size()); }
+
+  // the unknowns' values from the vehicles' poses of *s and the commands
+  void Read(const State& s, std::vector<VehiclePose>* poses) const {
+    poses->assign(sys_.model().vehicles.size(), VehiclePose());
+    for (int v : held_) {
+      (*poses)[v].p = s.vehicles[v].p_W;
+      (*poses)[v].rpy = EulerZYX(s.vehicles[v].q_WB);
+      (*poses)[v].thrust = commands_[v].thrust;
+    }
+  }
+  VectorXd Pack(const std::vector<VehiclePose>& poses) const {
+    VectorXd x(size());
+    for (int i = 0; i < size(); ++i) {
+      VehiclePose pose = poses[vars_[i].vehicle];
+      x[i] = *Slot(vars_[i], &pose);
+    }
+    return x;
+  }
+  void Unpack(const VectorXd& x, std::vector<VehiclePose>* poses) const {
+    for (int i = 0; i < size(); ++i) *Slot(vars_[i], &(*poses)[vars_[i].vehicle]) = x[i];
+  }
+
+  // the difference step of unknown i
+  double Step(int i) const {
+    const VehicleParams& p = sys_.model().vehicles[vars_[i].vehicle].params;
+    switch (vars_[i].unknown) {
+      case kX: case kY: case kZ: return kStepPosition * std::max(1.0, p.length);
+      case kThrustUnknown: return kStepThrust * std::max(1.0, p.max_thrust);
+      default: return kStepAngle;
+    }
+  }
+  // scales the step dx so that no position moves by more than kMaxShift of the shortest
+  // cable, no angle by more than kMaxTurn and no thrust by more than half its range
+  void Limit(VectorXd* dx) const {
+    double f = 1.0;
+    for (int i = 0; i < size(); ++i) {
+      const double d = std::abs((*dx)[i]);
+      double cap = kMaxTurn;
+      if (vars_[i].unknown <= kZ) cap = kMaxShift * min_length_;
+      if (vars_[i].unknown == kThrustUnknown)
+        cap = 0.5 * std::max(1.0, sys_.model().vehicles[vars_[i].vehicle].params.max_thrust);
+      if (d > cap) f = std::min(f, cap / d);
+    }
+    *dx *= f;
+  }
+
+  // The vehicles at `poses`, the cables solved against them (s in: the guess; out: the
+  // equilibrium), and the vehicles' residuals r (6 per held vehicle: (M_RB + M_A) nu_dot).
+  // False if the cables' static solve fails (its message in *why).
+  bool Evaluate(const std::vector<VehiclePose>& poses, State* s, VectorXd* r, std::string* why,
+                const std::function<bool()>& stop, bool* stopped) {
+    const Model& m = sys_.model();
+    for (int v : held_) Place(v, poses[v], s);
+    ++solves_;
+    const StaticResult res = SolveStatic(sys_, vf_, s, stop);
+    if (res.stopped) *stopped = true;
+    if (!res.ok) {
+      *why = res.message;
+      return false;
+    }
+    r->resize(6 * static_cast<int>(held_.size()));
+    for (size_t k = 0; k < held_.size(); ++k) {
+      const int v = held_[k];
+      const VehicleParams& p = m.vehicles[v].params;
+      const VehicleState& vs = s->vehicles[v];
+      const Mat3 r_wb = vs.q_WB.toRotationMatrix();
+      Vec3 force_B = Vec3::Zero(), moment_B = Vec3::Zero();
+      for (int end = 0; end < sys_.num_ends(); ++end) {
+        const CableEnd& e = sys_.End(end % 2, end / 2);
+        if (e.kind != EndKind::kVehicle || e.body != v) continue;
+        // the joint force on the vehicle is the end's multiplier (Eq. 29-30)
+        const Vec3 f_B = r_wb.transpose() * s->lambda.segment<3>(sys_.EndLambda(end % 2, end / 2));
+        force_B += f_B;
+        moment_B += e.at_B.cross(f_B);
+      }
+      if (sys_.sea().has_seabed()) {
+        const Vec6 w = SeabedContactWrench(p, sys_.sea(), vs);
+        force_B += w.head<3>();
+        moment_B += w.tail<3>();
+      }
+      const VehicleFlow flow = UniformFlow(sys_.sea().Current(vs.p_W, s->t).velocity);
+      const VehicleDerivative d =
+          VehicleRates(p, m.environment, vs, Command(v, poses[v]), force_B, moment_B, flow);
+      r->segment<6>(6 * k) = (RigidBodyMassMatrix(p) + p.added_mass) * d.nu_dot;
+      if (cable_force_.size() < held_.size()) cable_force_.push_back(force_B.norm());
+    }
+    return true;
+  }
+
+  // r weighted: forces by 1 / F_v, moments by 1 / (F_v L_v), F_v the vehicle's force scale
+  VectorXd Weigh(const VectorXd& r) const {
+    VectorXd w = r;
+    for (size_t k = 0; k < held_.size(); ++k) {
+      const double f = ForceScale(k), l = std::max(1.0, Length(k));
+      w.segment<3>(6 * k) /= f;
+      w.segment<3>(6 * k + 3) /= f * l;
+    }
+    return w;
+  }
+  double ForceScale(size_t k) const {
+    const VehicleParams& p = sys_.model().vehicles[held_[k]].params;
+    const double g = sys_.model().environment.gravity;
+    return std::max({1.0, p.mass * g, k < cable_force_.size() ? cable_force_[k] : 0.0});
+  }
+  double Length(size_t k) const { return sys_.model().vehicles[held_[k]].params.length; }
+
+  // the vehicle's command at the pose (a towing vehicle's thrust is the unknown's)
+  VehicleCommand Command(int v, const VehiclePose& pose) const {
+    VehicleCommand c = commands_[v];
+    if (IsTowingVehicle(sys_, v)) c.thrust = pose.thrust;
+    return c;
+  }
+  int solves() const { return solves_; }
+  const std::vector<Variable>& vars() const { return vars_; }
+
+  // vehicle v at `pose`: attitude, nu = [R^T V_f; 0], actuators at their commands, and the
+  // cable ends it holds as supports at their points
+  void Place(int v, const VehiclePose& pose, State* s) const {
+    const VehicleParams& p = sys_.model().vehicles[v].params;
+    VehicleState& vs = s->vehicles[v];
+    vs.p_W = pose.p;
+    vs.q_WB = QuaternionFromEulerZYX(pose.rpy);
+    const Mat3 r_wb = vs.q_WB.toRotationMatrix();
+    vs.nu.head<3>() = r_wb.transpose() * vf_;
+    vs.nu.tail<3>().setZero();
+    const VehicleCommand c = Command(v, pose);
+    for (int a = 0; a < kVehicleActuatorCount; ++a) {
+      const Actuator law = kVehicleActuators[a].law(p);
+      vs.actuator[a] = law.fitted ? law.Target(c.*kVehicleActuators[a].command) : 0.0;
+    }
+    for (int end = 0; end < sys_.num_ends(); ++end) {
+      const CableEnd& e = sys_.End(end % 2, end / 2);
+      if (e.kind != EndKind::kVehicle || e.body != v) continue;
+      const Vec3 point = vs.p_W + r_wb * e.at_B;
+      SupportMotion& sm = s->supports[end];
+      sm = SupportMotion();
+      sm.p0 = sm.p1 = point;
+      sm.t0 = sm.t1 = s->t;
+    }
+  }
+
+ private:
+  static double* Slot(const Variable& var, VehiclePose* pose) {
+    switch (var.unknown) {
+      case kX: return &pose->p.x();
+      case kY: return &pose->p.y();
+      case kZ: return &pose->p.z();
+      case kRoll: return &pose->rpy.x();
+      case kPitch: return &pose->rpy.y();
+      case kYaw: return &pose->rpy.z();
+      default: return &pose->thrust;
+    }
+  }
+
+  const System& sys_;
+  Vec3 vf_;
+  const std::vector<VehicleCommand>& commands_;
+  std::vector<int> held_;
+  std::vector<Variable> vars_;
+  double min_length_ = 1.0;
+  int solves_ = 0;
+  mutable std::vector<double> cable_force_;  // |cable force| at the first evaluation [N]
+};
+
+// the worst balance left: "vehicle towfish: force [..] N, moment [..] N m"
+std::string DescribeResidual(const System& sys, const std::vector<int>& held, const VectorXd& r,
+                             const VectorXd& w) {
+  int worst = 0;
+  w.cwiseAbs().maxCoeff(&worst);
+  const int k = worst / 6;
+  std::ostringstream o;
+  o.precision(4);
+  const Vec6 rk = r.segment<6>(6 * k);
+  o << "vehicle " << sys.model().vehicles[held[k]].name << " out of balance by force ["
+    << rk[0] << ", " << rk[1] << ", " << rk[2] << "] N, moment [" << rk[3] << ", " << rk[4]
+    << ", " << rk[5] << "] N m (body frame)";
+  return o.str();
+}
+
+}  // namespace
+
+std::vector<int> HeldVehicles(const System& sys) {
+  std::vector<int> held;
+  for (int v = 0; v < static_cast<int>(sys.model().vehicles.size()); ++v)
+    for (int end = 0; end < sys.num_ends(); ++end) {
+      const CableEnd& e = sys.End(end % 2, end / 2);
+      if (e.kind == EndKind::kVehicle && e.body == v) {
+        held.push_back(v);
+        break;
+      }
+    }
+  return held;
+}
+
+bool IsTowingVehicle(const System& sys, int v) {
+  if (!sys.model().vehicles[v].params.has_propeller) return false;
+  for (int end = 0; end < sys.num_ends(); ++end) {
+    const EndKind k = sys.End(end % 2, end / 2).kind;
+    if (k == EndKind::kFixed || k == EndKind::kDriven || k == EndKind::kVessel) return false;
+  }
+  return true;
+}
+
+BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_velocity,
+                                      std::vector<VehicleCommand>* commands, State* s,
+                                      const std::function<bool()>& stop) {
+  BalanceResult res;
+  Balance b(sys, frame_velocity, commands);
+  const double tol = std::max(kBalanceTolerance, 10.0 * sys.model().integrator.tolerance);
+  std::vector<VehiclePose> poses, trial;
+  b.Read(*s, &poses);
+  VectorXd x = b.Pack(poses), r, w, r_try, w_try;
+  std::string why;
+  bool stopped = false;
+  auto finish = [&](bool ok, const std::string& message) {
+    res.ok = ok;
+    res.stopped = stopped;
+    res.static_solves = b.solves();
+    res.message = message;
+    return res;
+  };
+  if (!b.Evaluate(poses, s, &r, &why, stop, &stopped))
+    return finish(false, "the cables' static solve with the vehicles where the scene puts them "
+                         "failed: " + why);
+  w = b.Weigh(r);
+  double mu = 1e-3;
+  const int n = b.size();
+  State base = *s, work = *s;
+  for (int it = 1; it <= kMaxIterations; ++it) {
+    res.iterations = it;
+    res.residual = w.lpNorm<Eigen::Infinity>();
+    if (res.residual <= tol) {
+      for (int v : b.held()) (*commands)[v] = b.Command(v, poses[v]);
+      *s = base;
+      return finish(true, "");
+    }
+    if (stopped || (stop && stop())) {
+      stopped = true;
+      return finish(false, "stopped");
+    }
+    // J by forward differences, each column a static solve from the current equilibrium
+    MatrixXd jac(w.size(), n);
+    for (int i = 0; i < n; ++i) {
+      const double h = b.Step(i);
+      VectorXd xi = x;
+      xi[i] += h;
+      trial = poses;
+      b.Unpack(xi, &trial);
+      work = base;
+      if (!b.Evaluate(trial, &work, &r_try, &why, stop, &stopped))
+        return finish(false, "the cables' static solve failed while balancing: " + why);
+      jac.col(i) = (b.Weigh(r_try) - w) / h;
+    }
+    // (J^T J + mu diag(J^T J)) dx = -J^T w, mu raised until the residual falls
+    const MatrixXd a = jac.transpose() * jac;
+    const VectorXd g = jac.transpose() * w;
+    VectorXd d = a.diagonal();
+    const double floor = 1e-12 * std::max(d.maxCoeff(), 1e-300);
+    d = d.cwiseMax(floor);
+    bool accepted = false;
+    for (int k = 0; k < kMaxTries && !accepted; ++k) {
+      MatrixXd am = a;
+      am.diagonal() += mu * d;
+      VectorXd dx = am.ldlt().solve(-g);
+      if (!dx.allFinite()) {
+        mu *= 10.0;
+        continue;
+      }
+      b.Limit(&dx);
+      trial = poses;
+      b.Unpack(x + dx, &trial);
+      work = base;
+      if (b.Evaluate(trial, &work, &r_try, &why, stop, &stopped)) {
+        w_try = b.Weigh(r_try);
+        if (w_try.squaredNorm() < w.squaredNorm()) {
+          x += dx;
+          poses = trial;
+          base = work;
+          r = r_try;
+          w = w_try;
+          mu = std::max(mu / 3.0, 1e-9);
+          accepted = true;
+          break;
+        }
+      }
+      if (stopped) return finish(false, "stopped");
+      mu *= 5.0;
+    }
+    if (!accepted) break;
+  }
+  std::ostringstream msg;
+  msg << "no static equilibrium of the vehicles found after " << res.iterations
+      << " iterations (" << b.solves() << " static solves of the cables): "
+      << DescribeResidual(sys, b.held(), r, w) << ", " << res.residual
+      << " of its force scale (tolerance " << tol << ")";
+  // a towing vehicle whose thrust sits at a limit cannot hold the speed
+  for (int i = 0; i < n; ++i) {
+    if (b.vars()[i].unknown != kThrustUnknown) continue;
+    const int v = b.vars()[i].vehicle;
+    const Actuator law = ThrustActuator(sys.model().vehicles[v].params);
+    if (x[i] >= law.max || x[i] <= law.min)
+      msg << "; " << sys.model().vehicles[v].name << "'s propeller (thrust " << x[i]
+          << " N, range [" << law.min << ", " << law.max << "] N) cannot hold the speed";
+  }
+  msg << "; a buoyant vehicle on a slack line, or one its cable cannot hold, has none";
+  *s = base;
+  return finish(false, msg.str());
+}
+
+}  // namespace towsim::core
