@@ -31,6 +31,7 @@ struct Simulation::Impl {
   WinchDrive winch;
   State state;
   std::vector<VehicleCommand> commands;
+  std::string initial_report;  // initial_report()
   // the vessels' motions, their poses at state.t and the cable ends they hold
   std::vector<VesselMotion> vessels;
   std::vector<VesselPose> vessel_now;
@@ -90,6 +91,7 @@ Simulation::Simulation(const Model& model, const std::function<bool()>& stop_req
                                  std::to_string(r.static_solves) + " static solves");
       }
       if (!r.ok) throw SolverError("initial: static: " + r.message);
+      impl_->initial_report = r.report;
       impl_->coupling.HoldSupports(&s);
       impl_->HoldVessels();
     }
@@ -162,6 +164,7 @@ const System& Simulation::system() const { return impl_->system; }
 const State& Simulation::state() const { return impl_->state; }
 double Simulation::time() const { return impl_->state.t; }
 long Simulation::step_count() const { return impl_->state.step; }
+const std::string& Simulation::initial_report() const { return impl_->initial_report; }
 FoldReport Simulation::FindFold() const {
   return core::FindFold(impl_->system, impl_->state.q);
 }

@@ -155,6 +155,10 @@ class Simulation {
   // dot products per element, for the runners' fold watch (docs/faults.md)
   FoldReport FindFold() const;
 
+  // what initial: static did with the vehicles (vehicle_balance.h): "balanced N vehicles in K
+  // iterations (S static solves); tow_vehicle's thrust 4163 N"; empty without held vehicles
+  const std::string& initial_report() const;
+
   // joint-force iterations of the last step (kStrong; 1 for kStaggered, 0 without vehicles)
   int coupling_iterations() const;
 

@@ -98,10 +98,9 @@ std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity,
 // one pseudo-transient Newton solve from *s; slope_limit bounds the change of every slope
 // component per iteration (infinite: no bound)
 StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                   const std::function<bool()>& stop, double slope_limit) {
+                   const std::function<bool()>& stop, double slope_limit, double tol) {
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
-  const double tol = sys.model().integrator.tolerance;
   const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
   double q_scale = 1.0;
   for (const CableParams& c : sys.model().cables) q_scale = std::max(q_scale, c.length);
@@ -183,9 +182,11 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
 }  // namespace
 
 StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                         const std::function<bool()>& stop) {
+                         const std::function<bool()>& stop, double tolerance) {
   const State guess = *s;
-  StaticResult first = Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity());
+  const double tol = tolerance > 0.0 ? tolerance : sys.model().integrator.tolerance;
+  StaticResult first =
+      Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity(), tol);
   first.attempts = 1;
   if (first.stopped) return first;
   std::string why = first.ok ? CheckShape(sys, frame_velocity, *s) : first.message;
@@ -194,7 +195,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   // slopes limited per iteration
   *s = guess;
   for (int c = 0; c < sys.num_cables(); ++c) LayOutCatenary(sys, c, s);
-  StaticResult second = Solve(sys, frame_velocity, s, stop, kMaxSlopeStep);
+  StaticResult second = Solve(sys, frame_velocity, s, stop, kMaxSlopeStep, tol);
   second.attempts = 2;
   second.iterations += first.iterations;
   second.rejected = (first.ok ? "converged to a shape that is not a cable's: " : "") + why;

@@ -50,7 +50,9 @@ constexpr double kMaxSlopeStep = 0.2;
 // *state holds the initial guess (q) and is overwritten with the equilibrium, v = V_f on every
 // node position and body, lambda the support reactions. `stop` (if set) is asked before every
 // iteration; true ends the solve (the caller's stop request: the core has no signals).
+// `tolerance` (relative, of the force scale and the cable length) overrides
+// integrator.tolerance when positive (the vehicles' balance differences solves and asks more).
 StaticResult SolveStatic(const System& system, const Eigen::Vector3d& frame_velocity, State* state,
-                         const std::function<bool()>& stop = {});
+                         const std::function<bool()>& stop = {}, double tolerance = 0.0);
 
 }  // namespace towsim::core

@@ -24,6 +24,11 @@ constexpr double kMaxShift = 0.1;       // largest position change per step, of 
 constexpr double kStepPosition = 1e-4;  // difference steps: of the vehicle's length [m / m],
 constexpr double kStepAngle = 1e-5;     // [rad]
 constexpr double kStepThrust = 1e-5;    // of max_thrust [N / N]
+// the cables' static solves inside the balance converge to this relative tolerance: the
+// difference quotients divide their errors by the steps above (1e-5 relative), so a solve
+// converged only to the run's tolerance (1e-8) would leave them 0.1 % noisy (1e-12 is
+// below the round-off of a stiff cable's elastic forces, EA eps L / l)
+constexpr double kCableTolerance = 1e-10;
 
 // the unknowns of one vehicle, in this order; a towing vehicle has no kX, kY but kThrust
 enum Unknown { kX, kY, kZ, kRoll, kPitch, kYaw, kThrustUnknown };
@@ -65,35 +70,95 @@ class Balance {
       (*poses)[v].thrust = commands_[v].thrust;
     }
   }
+
+  // Each vehicle's position is an unknown in spherical coordinates about the far end c of the
+  // first cable it holds (range rho = |p - c|, azimuth, elevation), c taken from the current
+  // equilibrium *s: a taut cable makes R stiff along its chord and soft across it, and the
+  // valley of small |R| is a sphere about c, straight in these coordinates (in Cartesian ones
+  // every straight step leaves it, and Levenberg-Marquardt crawls).
+  void SetPivots(const State& s) {
+    pivot_.assign(sys_.model().vehicles.size(), Vec3::Zero());
+    for (int v : held_)
+      for (int end = 0; end < sys_.num_ends(); ++end) {
+        const int c = end / 2;
+        const CableEnd& e = sys_.End(end % 2, c);
+        if (e.kind != EndKind::kVehicle || e.body != v) continue;
+        const int far = end % 2 == 0 ? sys_.num_nodes(c) - 1 : 0;
+        pivot_[v] = s.q.segment<3>(sys_.CableDof(far, c));
+        break;
+      }
+  }
+  // the range of vehicle v from its pivot [m]
+  double Range(int v, const std::vector<VehiclePose>& poses) const {
+    return std::max(1.0, (poses[v].p - pivot_[v]).norm());
+  }
+
   VectorXd Pack(const std::vector<VehiclePose>& poses) const {
     VectorXd x(size());
     for (int i = 0; i < size(); ++i) {
-      VehiclePose pose = poses[vars_[i].vehicle];
-      x[i] = *Slot(vars_[i], &pose);
+      const int v = vars_[i].vehicle;
+      const Vec3 d = poses[v].p - pivot_[v];
+      switch (vars_[i].unknown) {
+        case kX: x[i] = d.norm(); break;
+        case kY: x[i] = std::atan2(d.y(), d.x()); break;
+        case kZ:
+          // a towing vehicle keeps x, y: its depth is its own
+          x[i] = IsTowingVehicle(sys_, v) ? poses[v].p.z() : std::atan2(d.z(), d.head<2>().norm());
+          break;
+        case kRoll: x[i] = poses[v].rpy.x(); break;
+        case kPitch: x[i] = poses[v].rpy.y(); break;
+        case kYaw: x[i] = poses[v].rpy.z(); break;
+        default: x[i] = poses[v].thrust;
+      }
     }
     return x;
   }
   void Unpack(const VectorXd& x, std::vector<VehiclePose>* poses) const {
-    for (int i = 0; i < size(); ++i) *Slot(vars_[i], &(*poses)[vars_[i].vehicle]) = x[i];
+    for (int i = 0; i < size(); ++i) {
+      const int v = vars_[i].vehicle;
+      VehiclePose& pose = (*poses)[v];
+      switch (vars_[i].unknown) {
+        case kX: {  // range, azimuth and elevation come in this order
+          const double rho = x[i], az = x[i + 1], el = x[i + 2];
+          pose.p = pivot_[v] + rho * Vec3(std::cos(el) * std::cos(az),
+                                          std::cos(el) * std::sin(az), std::sin(el));
+          i += 2;
+          break;
+        }
+        case kZ: pose.p.z() = x[i]; break;  // a towing vehicle's depth
+        case kRoll: pose.rpy.x() = x[i]; break;
+        case kPitch: pose.rpy.y() = x[i]; break;
+        case kYaw: pose.rpy.z() = x[i]; break;
+        default: pose.thrust = x[i];
+      }
+    }
+  }
+  // whether unknown i is an angle of a position (azimuth, elevation)
+  bool PositionAngle(int i) const {
+    const Unknown u = vars_[i].unknown;
+    return u == kY || (u == kZ && !IsTowingVehicle(sys_, vars_[i].vehicle));
   }
 
-  // the difference step of unknown i
-  double Step(int i) const {
-    const VehicleParams& p = sys_.model().vehicles[vars_[i].vehicle].params;
+  // the difference step of unknown i (about the poses `at`)
+  double Step(int i, const std::vector<VehiclePose>& at) const {
+    const int v = vars_[i].vehicle;
+    const VehicleParams& p = sys_.model().vehicles[v].params;
+    if (PositionAngle(i)) return kStepPosition * std::max(1.0, p.length) / Range(v, at);
     switch (vars_[i].unknown) {
-      case kX: case kY: case kZ: return kStepPosition * std::max(1.0, p.length);
+      case kX: case kZ: return kStepPosition * std::max(1.0, p.length);
       case kThrustUnknown: return kStepThrust * std::max(1.0, p.max_thrust);
       default: return kStepAngle;
     }
   }
   // scales the step dx so that no position moves by more than kMaxShift of the shortest
   // cable, no angle by more than kMaxTurn and no thrust by more than half its range
-  void Limit(VectorXd* dx) const {
+  void Limit(VectorXd* dx, const std::vector<VehiclePose>& at) const {
     double f = 1.0;
     for (int i = 0; i < size(); ++i) {
       const double d = std::abs((*dx)[i]);
       double cap = kMaxTurn;
       if (vars_[i].unknown <= kZ) cap = kMaxShift * min_length_;
+      if (PositionAngle(i)) cap /= Range(vars_[i].vehicle, at);
       if (vars_[i].unknown == kThrustUnknown)
         cap = 0.5 * std::max(1.0, sys_.model().vehicles[vars_[i].vehicle].params.max_thrust);
       if (d > cap) f = std::min(f, cap / d);
@@ -109,7 +174,7 @@ class Balance {
     const Model& m = sys_.model();
     for (int v : held_) Place(v, poses[v], s);
     ++solves_;
-    const StaticResult res = SolveStatic(sys_, vf_, s, stop);
+    const StaticResult res = SolveStatic(sys_, vf_, s, stop, kCableTolerance);
     if (res.stopped) *stopped = true;
     if (!res.ok) {
       *why = res.message;
@@ -214,6 +279,7 @@ class Balance {
   const std::vector<VehicleCommand>& commands_;
   std::vector<int> held_;
   std::vector<Variable> vars_;
+  std::vector<Vec3> pivot_;
   double min_length_ = 1.0;
   int solves_ = 0;
   mutable std::vector<double> cable_force_;  // |cable force| at the first evaluation [N]
@@ -266,6 +332,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
   const double tol = std::max(kBalanceTolerance, 10.0 * sys.model().integrator.tolerance);
   std::vector<VehiclePose> poses, trial;
   b.Read(*s, &poses);
+  b.SetPivots(*s);
   VectorXd x = b.Pack(poses), r, w, r_try, w_try;
   std::string why;
   bool stopped = false;
@@ -287,7 +354,17 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
     res.iterations = it;
     res.residual = w.lpNorm<Eigen::Infinity>();
     if (res.residual <= tol) {
-      for (int v : b.held()) (*commands)[v] = b.Command(v, poses[v]);
+      std::ostringstream report;
+      report.precision(6);
+      report << "balanced " << b.held().size() << (b.held().size() == 1 ? " vehicle" : " vehicles")
+             << " in " << it - 1 << " iterations (" << b.solves() << " static solves)";
+      for (int v : b.held()) {
+        (*commands)[v] = b.Command(v, poses[v]);
+        if (IsTowingVehicle(sys, v))
+          report << "; " << sys.model().vehicles[v].name << "'s thrust " << (*commands)[v].thrust
+                 << " N";
+      }
+      res.report = report.str();
       *s = base;
       return finish(true, "");
     }
@@ -296,9 +373,11 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
       return finish(false, "stopped");
     }
     // J by forward differences, each column a static solve from the current equilibrium
+    b.SetPivots(base);
+    x = b.Pack(poses);
     MatrixXd jac(w.size(), n);
     for (int i = 0; i < n; ++i) {
-      const double h = b.Step(i);
+      const double h = b.Step(i, poses);
       VectorXd xi = x;
       xi[i] += h;
       trial = poses;
@@ -323,7 +402,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
         mu *= 10.0;
         continue;
       }
-      b.Limit(&dx);
+      b.Limit(&dx, poses);
       trial = poses;
       b.Unpack(x + dx, &trial);
       work = base;

@@ -43,7 +43,10 @@ struct BalanceResult {
   int iterations = 0;    // Levenberg-Marquardt iterations
   int static_solves = 0;
   double residual = 0.0;  // largest relative residual (of the force scale)
-  std::string message;
+  std::string message;  // why it failed
+  // on success: "balanced 2 vehicles in 6 iterations (73 static solves); tow_vehicle's thrust
+  // 4162.7 N"
+  std::string report;
 };
 
 // the vehicles that hold a cable end (those the balance moves)

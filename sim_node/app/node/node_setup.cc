@@ -132,6 +132,8 @@ int SetUpNode(const core::Model& model, const DdsNodeOptions& opt, NodeParts* pa
                  e.what());
     return kExitSolver;
   }
+  if (!n.sim->initial_report().empty())
+    std::fprintf(stderr, "sim_node: initial: static: %s\n", n.sim->initial_report().c_str());
   n.script.emplace(model);
 
   // DDS: the configuration given, else $CYCLONEDDS_URI, plus the node's exit behaviour

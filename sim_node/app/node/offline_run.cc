@@ -40,6 +40,9 @@ int RunOffline(const core::Model& model, double duration, io::CsvWriter* csv) {
     return kExitSolver;
   }
 
+  if (!sim->initial_report().empty())
+    std::fprintf(stderr, "sim_node: initial: static: %s\n", sim->initial_report().c_str());
+
   // steps and output stride: k = max(1, round(1 / (output_rate h)))
   const double h = model.time.step;
   const long steps = std::max(0L, std::lround(duration / h));
