@@ -19,6 +19,9 @@ namespace {
 
 constexpr int kMaxIterations = 100;     // Levenberg-Marquardt iterations
 constexpr int kMaxTries = 16;           // damping increases within one iteration
+constexpr int kStallWindow = 10;        // iterations over which |R| must fall ...
+constexpr double kStall = 0.9;          // ... below this fraction of its value
+constexpr int kLimitIterations = 3;     // iterations a thrust may sit at its limit
 constexpr double kMaxTurn = 0.2;        // largest attitude change per step [rad]
 constexpr double kMaxShift = 0.1;       // largest position change per step, of the cable [-]
 constexpr double kStepPosition = 1e-4;  // difference steps: of the vehicle's length [m / m],
@@ -226,6 +229,25 @@ class Balance {
   }
   double Length(size_t k) const { return sys_.model().vehicles[held_[k]].params.length; }
 
+  // shortens dx so that no thrust leaves its propeller's range (past it the actuator saturates
+  // and the thrust has no effect on R: a flat direction)
+  void Clamp(const VectorXd& x, VectorXd* dx) const {
+    for (int i = 0; i < size(); ++i) {
+      if (vars_[i].unknown != kThrustUnknown) continue;
+      const Actuator law = ThrustActuator(sys_.model().vehicles[vars_[i].vehicle].params);
+      (*dx)[i] = std::clamp(x[i] + (*dx)[i], law.min, law.max) - x[i];
+    }
+  }
+  // whether a thrust unknown sits at its propeller's limit
+  bool AtThrustLimit(const VectorXd& x) const {
+    for (int i = 0; i < size(); ++i) {
+      if (vars_[i].unknown != kThrustUnknown) continue;
+      const Actuator law = ThrustActuator(sys_.model().vehicles[vars_[i].vehicle].params);
+      if (x[i] >= law.max || x[i] <= law.min) return true;
+    }
+    return false;
+  }
+
   // the vehicle's command at the pose (a towing vehicle's thrust is the unknown's)
   VehicleCommand Command(int v, const VehiclePose& pose) const {
     VehicleCommand c = commands_[v];
@@ -350,9 +372,19 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
   double mu = 1e-3;
   const int n = b.size();
   State base = *s, work = *s;
+  std::vector<double> history;  // |w| per iteration
+  int at_limit = 0;              // iterations in a row with a thrust at its limit
   for (int it = 1; it <= kMaxIterations; ++it) {
     res.iterations = it;
     res.residual = w.lpNorm<Eigen::Infinity>();
+    history.push_back(w.norm());
+    at_limit = b.AtThrustLimit(x) ? at_limit + 1 : 0;
+    // no progress: a thrust held at its limit, or |w| down by less than kStall in
+    // kStallWindow iterations (a residual that only creeps has no zero nearby)
+    if (res.residual > tol &&
+        (at_limit >= kLimitIterations ||
+         (it > kStallWindow && history[it - 1] > kStall * history[it - 1 - kStallWindow])))
+      break;
     if (res.residual <= tol) {
       std::ostringstream report;
       report.precision(6);
@@ -403,6 +435,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
         continue;
       }
       b.Limit(&dx, poses);
+      b.Clamp(x, &dx);
       trial = poses;
       b.Unpack(x + dx, &trial);
       work = base;
