@@ -189,11 +189,17 @@ void CheckInitialShape(const core::CableParams& cable, const EndInput& start, co
                        FormatVector(p_start));
       }
       if (span > (1.0 + kStraightMaxStretch) * length) {
+        // the axial force that stretch takes: N = EA eps, eps = span / length - 1 (the cable's
+        // EA as resolved: axial_stiffness, or youngs_modulus x A, its line type's included)
+        const double strain = span / length - 1.0;
+        char force[96];
+        std::snprintf(force, sizeof force, "%.3g kN at EA %.3g N",
+                      1e-3 * cable.axial_stiffness * strain, cable.axial_stiffness);
         end.field.Fail("with initial: straight the span from start " + FormatVector(p_start) +
                        " to end " + FormatVector(p_end) + " is " + FormatNumber(span) +
                        " m, which would stretch the " + FormatNumber(length) + " m cable by " +
-                       FormatPercent(span / length - 1.0) + "% (at most " +
-                       FormatPercent(kStraightMaxStretch) + "%)");
+                       FormatPercent(strain) + "% (at most " +
+                       FormatPercent(kStraightMaxStretch) + "%): " + force);
       }
       return;
     }

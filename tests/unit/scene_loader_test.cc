@@ -189,6 +189,42 @@ TEST_F(SceneLoaderTest, QuotedValueKeepsItsQuotes) {
   }
 }
 
+// initial: straight with a span more than 1 % longer than the cable: the message gives the
+// axial force that stretch would take, N = EA (span / length - 1), at the cable's EA as the
+// reader resolves it (docs/scene_format.md, `initial`): from axial_stiffness, and from a line
+// type's axial_stiffness
+TEST_F(SceneLoaderTest, StraightSpanTooLongGivesTheForceAtTheCablesEA) {
+  const std::string straight =
+      "initial: straight\n  start: {fixed: [0, 0, 0]}\n  end: {fixed: [103.4, 0, 0]}";
+  const std::string from = "initial: vertical\n  start: {fixed: [0, 0, 0]}\n  end: {body: fish}";
+  // EA = 2.6e7 N given; eps = 0.034: N = 2.6e7 x 0.034 = 884000 N
+  try {
+    Load(Replace(Edit(from, straight), "youngs_modulus: 7.0e8", "axial_stiffness: 2.6e7"));
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "cable.end");
+    EXPECT_EQ(e.rule(),
+              "with initial: straight the span from start [0, 0, 0] to end [103.4, 0, 0] is "
+              "103.4 m, which would stretch the 100 m cable by 3.4% (at most 1%): 884 kN at EA "
+              "2.6e+07 N");
+  }
+  // EA = 5e6 N from the line type; eps = 0.02: N = 5e6 x 0.02 = 100000 N
+  const std::string typed =
+      Replace(Replace(Edit(from, Replace(straight, "103.4", "102")),
+                      "  diameter: 0.04\n  density: 1300\n  youngs_modulus: 7.0e8\n",
+                      "  line_type: wire\n"),
+              "cable:\n", "line_types:\n  wire: {diameter: 0.04, mass_per_length: 1.6, "
+                          "axial_stiffness: 5.0e6}\ncable:\n");
+  try {
+    Load(typed);
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "cable.end");
+    EXPECT_NE(e.rule().find("by 2% (at most 1%): 100 kN at EA 5e+06 N"), std::string::npos)
+        << e.what();
+  }
+}
+
 struct BrokenCase {
   const char* name;
   std::string yaml;
@@ -344,7 +380,9 @@ INSTANTIATE_TEST_SUITE_P(
             "straight_too_long",
             Edit("initial: vertical\n  start: {fixed: [0, 0, 0]}\n  end: {body: fish}",
                  "initial: straight\n  start: {fixed: [0, 0, 0]}\n  end: {fixed: [110, 0, 0]}"),
-            "cable.end", "would stretch the 100 m cable by 10% (at most 1%)", ""},
+            "cable.end",
+            // N = EA (span / length - 1) = 7e8 Pa x pi 0.04^2 / 4 x 0.1 = 87965 N
+            "would stretch the 100 m cable by 10% (at most 1%): 88 kN at EA 8.8e+05 N", ""},
         BrokenCase{
             "straight_zero_span",
             Edit("initial: vertical\n  start: {fixed: [0, 0, 0]}\n  end: {body: fish}",
