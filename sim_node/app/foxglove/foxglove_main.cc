@@ -25,7 +25,10 @@
 // Each message is checked to be a valid CDR sample of its type (Cyclone's deserializer) and
 // written on DDS as it is; the node validates it exactly like any DDS command (NaN rejected,
 // out of range clamped, counted in its status). A malformed message is rejected here: an error
-// status to the client, and counted. Other topics or encodings are refused at advertise.
+// status to the client, and counted. Other topics or encodings are refused at advertise, but
+// for the topics Foxglove's 3D panel advertises when it opens (/move_base_simple/goal,
+// /clicked_point, /initialpose: FoxgloveCommands' kPanelTopics), taken and their messages
+// ignored.
 // Foxglove's Teleop panel publishes geometry_msgs/msg/Twist: on a command topic it becomes an
 // ActuatorCommand answering the step of the newest status seen, then goes the same way
 // (TwistToCommand): thrust = linear.x [N] when non-zero, else the thrust the panel set last
