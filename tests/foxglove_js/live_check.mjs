@@ -26,6 +26,9 @@
 // CableState equals the node's winch.csv row for row, and at the end the drum's kinematics:
 // 200 m + v^2 / (2 a) + v (T - t_on - v / a) = 204 m. Without `winch`, advertising
 // /towsim/winch/command is refused (an error status names the topic).
+// As Foxglove's 3D panel does when it opens, the client also advertises /move_base_simple/goal,
+// /clicked_point and /initialpose and sends a clicked point: taken and ignored, no error status
+// names them (docs/foxglove.md "Publishing from Foxglove").
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
 import { spawn } from "node:child_process";
 import { mkdirSync, readFileSync, rmSync } from "node:fs";
@@ -137,6 +140,21 @@ let commandWriter;
 let teleopChannel;
 let winchChannel;
 let winchWriter;
+let panelAdvertised = false;
+// the 3D panel's publish tools (its "publish" settings in the layout) and their schemas
+const kPanelTopics = {
+  "/move_base_simple/goal": "geometry_msgs/msg/PoseStamped",
+  "/clicked_point": "geometry_msgs/msg/PointStamped",
+  "/initialpose": "geometry_msgs/msg/PoseWithCovarianceStamped",
+};
+// a geometry_msgs/msg/PointStamped, as the panel's point tool sends it
+const clickedPoint = new MessageWriter(parseMessageDefinition(
+  "std_msgs/Header header\ngeometry_msgs/Point point\n" +
+  "================================================================================\n" +
+  "MSG: std_msgs/Header\nbuiltin_interfaces/Time stamp\nstring frame_id\n" +
+  "================================================================================\n" +
+  "MSG: geometry_msgs/Point\nfloat64 x\nfloat64 y\nfloat64 z\n", { ros2: true }))
+  .writeMessage({ header: { stamp: { sec: 1, nanosec: 0 }, frame_id: "world" }, point: { x: 1, y: 2, z: 3 } });
 // geometry_msgs/Twist as Foxglove's Teleop panel sends it, with the official definitions
 const twistWriter = new MessageWriter(parseMessageDefinition(
   "geometry_msgs/Vector3 linear\ngeometry_msgs/Vector3 angular\n================================================================================\nMSG: geometry_msgs/Vector3\nfloat64 x\nfloat64 y\nfloat64 z\n",
@@ -162,6 +180,13 @@ const finished = new Promise((resolve) => {
   client.on("status", (s) => statuses.push(s));
   client.on("time", (t) => times.push(t.timestamp));
   client.on("advertise", (list) => {
+    if (!panelAdvertised) {
+      panelAdvertised = true;
+      for (const [topic, schemaName] of Object.entries(kPanelTopics)) {
+        const id = client.advertise({ topic, encoding: "cdr", schemaName });
+        if (topic === "/clicked_point") client.sendMessage(id, clickedPoint);
+      }
+    }
     if (!withWinch && winchChannel === undefined) {
       // a scene without a winch: its command topic is refused (an error status names it)
       winchChannel = client.advertise({ topic: "/towsim/winch/command", encoding: "cdr", schemaName: "towsim_msgs/msg/WinchCommand" });
@@ -333,6 +358,10 @@ if (inNode) {
 } else {
   check(new RegExp(`malformed ${kMalformed}\\)`).test(bridge.out), `bridge summary: ${bridge.out.trim().split("\n").at(-1)}`);
 }
+// the 3D panel's advertisements and its clicked point: taken, no error status names them
+for (const topic of Object.keys(kPanelTopics)) {
+  check(!statuses.some((s) => s.message.includes(topic)), `no status about ${topic} (${JSON.stringify(statuses)})`);
+}
 if (!withWinch) {
   check(statuses.some((s) => s.level === 2 && /advertise \/towsim\/winch\/command: not a topic clients may publish on/.test(s.message)),
     `an error status refusing /towsim/winch/command without a winch (${JSON.stringify(statuses)})`);
@@ -390,9 +419,10 @@ for (const [id, panel] of Object.entries(layout.configById)) {
       const message = (byTopic.get(topic) ?? []).at(-1)?.value;
       let v = message;
       for (const part of value.slice(dot + 1).split(".")) {
-        const m = part.match(/^(\w+)(?:\[(\d+)\])?$/);
+        // an index counts from the end when negative (Foxglove's message path syntax)
+        const m = part.match(/^(\w+)(?:\[(-?\d+)\])?$/);
         v = v?.[m[1]];
-        if (m[2] !== undefined) v = v?.[Number(m[2])];
+        if (m[2] !== undefined) v = v?.at(Number(m[2]));
       }
       check(typeof v === "number" && Number.isFinite(v), `layout ${id}: ${value} = ${v}`);
     }

@@ -23,6 +23,13 @@ towsim_add_test(foxglove_commands_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_commands_test.cc
   LIBS towsim::foxglove_commands)
 
+# a Foxglove layout for a scene (app/foxglove/foxglove_layout): the node's topics for the
+# scene, indices in range, the camera framing the system, the shipped layout its output
+towsim_add_test(foxglove_layout_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/foxglove_layout_test.cc
+  LIBS towsim::foxglove_layout towsim::recording towsim::scene towsim::core)
+target_include_directories(foxglove_layout_test PRIVATE ${CMAKE_CURRENT_LIST_DIR})
+
 # the bound on what the Foxglove server holds for a client and the throttled notes
 # (app/foxglove/client_queue, note_throttle), no sockets
 towsim_add_test(foxglove_client_queue_test LABEL unit

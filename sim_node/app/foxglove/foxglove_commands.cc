@@ -58,6 +58,20 @@ std::size_t SampleSize(const dds::RawType& type, const uint8_t* data, std::size_
   return n;
 }
 
+// the PanelTopic of `topic`, or nullptr
+const PanelTopic* FindPanelTopic(const std::string& topic) {
+  for (const PanelTopic& p : kPanelTopics) {
+    if (topic == p.topic) return &p;
+  }
+  return nullptr;
+}
+
+// "geometry_msgs/msg/PointStamped" -> "geometry_msgs/PointStamped" (the ROS 1 spelling, which
+// clients may use too)
+std::string ShortName(const std::string& schema) {
+  return schema.substr(0, schema.find('/')) + schema.substr(schema.rfind('/'));
+}
+
 }  // namespace
 
 FoxgloveCommands::FoxgloveCommands(const dds::Participant& participant,
@@ -97,6 +111,15 @@ void FoxgloveCommands::Attach(FoxgloveServer* server) {
 }
 
 std::string FoxgloveCommands::Advertise(const foxglove::ClientChannel& c) {
+  // the 3D panel's publish tools: taken with their schema, whatever the encoding (the
+  // messages are ignored, never decoded)
+  if (const PanelTopic* p = FindPanelTopic(c.topic)) {
+    if (c.schema_name != p->schema && c.schema_name != ShortName(p->schema)) {
+      return "schema " + c.schema_name + ": must be " + p->schema +
+             " (the 3D panel's topic, taken and ignored)";
+    }
+    return "";
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = inbound_.find(c.topic);
   if (it == inbound_.end()) {
@@ -106,8 +129,7 @@ std::string FoxgloveCommands::Advertise(const foxglove::ClientChannel& c) {
   }
   Inbound& in = it->second;
   if (c.encoding != "cdr") return "encoding " + c.encoding + ": only cdr";
-  const std::string short_name = in.schema_name.substr(0, in.schema_name.find('/')) +
-                                 in.schema_name.substr(in.schema_name.rfind('/'));
+  const std::string short_name = ShortName(in.schema_name);
   const bool twist = in.teleop && (c.schema_name == "geometry_msgs/msg/Twist" ||
                                    c.schema_name == "geometry_msgs/Twist");
   if (c.schema_name != in.schema_name && c.schema_name != short_name && !twist) {
@@ -131,6 +153,11 @@ std::string FoxgloveCommands::Advertise(const foxglove::ClientChannel& c) {
 FoxgloveServer::Verdict FoxgloveCommands::Publish(const foxglove::ClientChannel& c,
                                                   const uint8_t* data, std::size_t size) {
   using Verdict = FoxgloveServer::Verdict;
+  // advertised only if Advertise took it (the server checks): taken, not written anywhere
+  if (FindPanelTopic(c.topic) != nullptr) {
+    ++ignored_;
+    return Verdict{};
+  }
   std::lock_guard<std::mutex> lock(mutex_);
   const auto it = inbound_.find(c.topic);
   if (it == inbound_.end() || !it->second.writer.valid()) {

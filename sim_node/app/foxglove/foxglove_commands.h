@@ -11,6 +11,10 @@
 // sends the reason to the client, counts it and notes it on stderr, throttled) and it is
 // counted here too.
 //
+// Foxglove's 3D panel advertises the topics of its publish tools (PanelTopics) as soon as it
+// opens; those are taken and their messages ignored, so the panel raises no error (docs/
+// foxglove.md "Publishing from Foxglove").
+//
 // Thread safety: Advertise, Publish and SetStatusStep may come from different threads.
 
 #include <atomic>
@@ -47,6 +51,18 @@ std::string NonFiniteTwistField(const geometry_msgs_msg_dds__Twist_& twist);
 // "8 bytes after the 36-byte sample (only padding to a multiple of 4 may follow)"
 std::string TrailingBytes(std::size_t size, std::size_t sample_size);
 
+// A topic the 3D panel's publish tools advertise (its standard ROS topics, at the root)
+struct PanelTopic {
+  const char* topic;   // "/clicked_point"
+  const char* schema;  // "geometry_msgs/msg/PointStamped"
+};
+// the 3D panel's pose goal, clicked point and pose estimate
+inline constexpr PanelTopic kPanelTopics[] = {
+    {"/move_base_simple/goal", "geometry_msgs/msg/PoseStamped"},
+    {"/clicked_point", "geometry_msgs/msg/PointStamped"},
+    {"/initialpose", "geometry_msgs/msg/PoseWithCovarianceStamped"},
+};
+
 class FoxgloveCommands {
  public:
   // `winches`: the scene's winches by name (SceneInfo.winches; the one winch: "winch"), so
@@ -67,6 +83,8 @@ class FoxgloveCommands {
   // the step of the newest status: what a Teleop Twist answers
   void SetStatusStep(uint64_t step) { status_step_ = step; }
   uint64_t malformed() const { return malformed_.load(); }
+  // messages taken on a PanelTopic and ignored
+  uint64_t ignored() const { return ignored_.load(); }
 
  private:
   struct Inbound {
@@ -85,6 +103,7 @@ class FoxgloveCommands {
   std::map<std::string, Inbound> inbound_;  // ROS topic -> writer
   std::atomic<uint64_t> status_step_{0};
   std::atomic<uint64_t> malformed_{0};
+  std::atomic<uint64_t> ignored_{0};
 };
 
 }  // namespace towsim::app

@@ -2,6 +2,10 @@
 //
 //   towsim_foxglove --domain N [--namespace NS] --port PORT [--address ADDR] [--quiet]
 //                   [--security DIR/NAME]
+//   towsim_foxglove --layout SCENE [--namespace NS] [--output FILE]
+//
+// --layout writes a Foxglove layout for the scene (app/foxglove/foxglove_layout.h) to FILE or
+// stdout and exits, without DDS.
 //
 // A bridge process: it subscribes over DDS like towsim_record does (so it shows a node and
 // towsim_replay alike), learning the bodies and cables from rt/<ns>/scene_info, and serves every
@@ -21,7 +25,10 @@
 // Each message is checked to be a valid CDR sample of its type (Cyclone's deserializer) and
 // written on DDS as it is; the node validates it exactly like any DDS command (NaN rejected,
 // out of range clamped, counted in its status). A malformed message is rejected here: an error
-// status to the client, and counted. Other topics or encodings are refused at advertise.
+// status to the client, and counted. Other topics or encodings are refused at advertise, but
+// for the topics Foxglove's 3D panel advertises when it opens (/move_base_simple/goal,
+// /clicked_point, /initialpose: FoxgloveCommands' kPanelTopics), taken and their messages
+// ignored.
 // Foxglove's Teleop panel publishes geometry_msgs/msg/Twist: on a command topic it becomes an
 // ActuatorCommand answering the step of the newest status seen, then goes the same way
 // (TwistToCommand): thrust = linear.x [N] when non-zero, else the thrust the panel set last
@@ -45,11 +52,13 @@
 // port in use.
 
 #include <atomic>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -66,12 +75,14 @@
 #include "app/common/tool_command_line.h"
 #include "app/common/topic_types.h"
 #include "app/foxglove/foxglove_commands.h"
+#include "app/foxglove/foxglove_layout.h"
 #include "app/foxglove/foxglove_server.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
 #include "dds/qos.h"
 #include "dds/raw_cdr.h"
 #include "io/ros2_schemas.h"
+#include "scene/scene_loader.h"
 #include "wire/topic_names.h"
 
 namespace {
@@ -90,6 +101,7 @@ using towsim::app::FoxgloveServer;
 const char* kUsage =
     "usage: towsim_foxglove --domain N [--namespace NS] --port PORT [--address ADDR] [--quiet]\n"
     "                       [--security DIR/NAME]\n"
+    "       towsim_foxglove --layout SCENE [--namespace NS] [--output FILE]\n"
     "  --domain N        DDS domain id of the node (0 to 232)\n"
     "  --namespace NS    ROS 2 namespace of the node's topics (default /towsim)\n"
     "  --port PORT       WebSocket port (Foxglove's default 8765; 0: any free port)\n"
@@ -97,6 +109,8 @@ const char* kUsage =
     "  --quiet           no progress notes on stderr\n"
     "  --security DIR/NAME DDS Security with the identity DIR/NAME (scripts/security.sh;\n"
     "                    docs/security.md)\n"
+    "  --layout SCENE    write a Foxglove layout for the scene file and exit (no DDS)\n"
+    "  --output FILE     where --layout writes it (default: stdout)\n"
     "Connect Foxglove to ws://ADDR:PORT; ends on SIGINT / SIGTERM.\n";
 
 struct Options {
@@ -107,6 +121,8 @@ struct Options {
   std::string address = "127.0.0.1";
   bool quiet = false;
   std::string security;  // --security DIR/NAME (wire/security.h); empty: none
+  std::string layout;    // --layout SCENE: write its layout and exit
+  std::string output;    // --output FILE of --layout; empty: stdout
 };
 
 // the options, read into `o`
@@ -129,8 +145,31 @@ towsim::app::ToolCommandLine CommandLine(Options* o) {
                o->address = v;
                return v.empty() ? "--address needs a value" : "";
              })
-      .Require([o]() -> std::string { return o->has_domain ? "" : "missing --domain N"; })
-      .Require([o]() -> std::string { return o->port < 0 ? "missing --port PORT" : ""; });
+      .Value("--layout",
+             [o](const std::string& v) -> std::string {
+               o->layout = v;
+               return v.empty() ? "--layout needs a scene file" : "";
+             })
+      .Value("--output",
+             [o](const std::string& v) -> std::string {
+               o->output = v;
+               return v.empty() ? "--output needs a file" : "";
+             })
+      .Require([o]() -> std::string {
+        if (o->layout.empty()) return o->output.empty() ? "" : "--output needs --layout SCENE";
+        // --layout writes a file: no DDS, no server
+        if (o->has_domain || o->port >= 0 || !o->security.empty()) {
+          return "--layout SCENE takes no --domain, --port or --security (it writes a layout "
+                 "and exits)";
+        }
+        return "";
+      })
+      .Require([o]() -> std::string {
+        return o->has_domain || !o->layout.empty() ? "" : "missing --domain N";
+      })
+      .Require([o]() -> std::string {
+        return o->port < 0 && o->layout.empty() ? "missing --port PORT" : "";
+      });
   return line;
 }
 
@@ -345,8 +384,36 @@ int Bridge::Run() {
 
 }  // namespace
 
+namespace {
+
+// --layout SCENE: the scene's Foxglove layout to --output (or stdout)
+int WriteLayout(const Options& o, const towsim::app::ToolCommandLine& line) {
+  std::string json;
+  try {
+    json = towsim::app::FoxgloveLayoutJson(towsim::scene::LoadScene(o.layout),
+                                           wire::TopicNames(o.ns));
+  } catch (const std::exception& e) {  // scene::ConfigError: file, line and rule
+    return line.Fail(std::string("--layout ") + o.layout + ": " + e.what());
+  }
+  if (o.output.empty()) {
+    std::fwrite(json.data(), 1, json.size(), stdout);
+    return std::fflush(stdout) == 0 ? kExitOk : kExitError;
+  }
+  std::ofstream out(o.output, std::ios::binary);
+  out << json;
+  out.close();
+  if (!out) {
+    return line.Fail("--output " + o.output + ": cannot write: " + std::strerror(errno));
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   Options options;
-  if (const std::optional<int> exit = CommandLine(&options).Read(argc, argv)) return *exit;
+  const towsim::app::ToolCommandLine line = CommandLine(&options);
+  if (const std::optional<int> exit = line.Read(argc, argv)) return *exit;
+  if (!options.layout.empty()) return WriteLayout(options, line);
   return towsim::app::RunDdsTool<Bridge>("towsim_foxglove", options, false);
 }
