@@ -10,7 +10,7 @@
 #   P/include/towsim/          msgs/*.h (generated from the IDL), wire/*.h (topic names, QoS,
 #                              Security, ROS 2 graph, decoders), common/*.h (client library),
 #                              testing/*.h (test fixture)
-#   P/lib/                     libtowsim_msgs.a, libtowsim_wire.a, libtowsim_client.a (+ laws),
+#   P/lib/                     libtowsim_msgs.a, libtowsim_wire.a, libtowsim_domain_lock.a, libtowsim_client.a (+ laws),
 #                              libtowsim_testing.a (+ libtowsim_installed.a, which it links)
 #   P/lib/cmake/towsim/        find_package(towsim): towsim::msgs, towsim::wire, towsim::client,
 #                              towsim::testing, towsim::sim_node (and every installed program as
@@ -48,7 +48,7 @@ install(TARGETS sim_node_dds RUNTIME DESTINATION libexec/towsim)
 
 # the libraries a user's controllers and tests link
 set_target_properties(towsim_controller_laws PROPERTIES EXPORT_NAME controller_laws)
-install(TARGETS towsim_msgs towsim_wire towsim_controller_laws towsim_controller_common
+install(TARGETS towsim_msgs towsim_wire towsim_domain_lock towsim_controller_laws towsim_controller_common
                 towsim_testing towsim_installed
         EXPORT towsimTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})

@@ -1,4 +1,4 @@
-// app/sweep/sweep_case_run, app/sweep/sweep_domain: how a case with controllers ends (the
+// app/sweep/sweep_case_run, wire/domain_lock: how a case with controllers ends (the
 // policy alone, then with stand-in processes: bash scripts for sim_node and the controllers),
 // and the DDS domain ids the cases take.
 
@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "app/common/text_file.h"
-#include "app/sweep/sweep_domain.h"
+#include "wire/domain_lock.h"
 #include "temp_dir.h"
 
 namespace towsim::app {
@@ -143,13 +143,13 @@ TEST_F(SweepCaseRun, TheNodesExitCodeAndOfflineCases) {
 
 // each taker gets its own id; when every id is held the case fails at once, saying so
 TEST_F(SweepCaseRun, DomainIdsAreLockedOneEach) {
-  std::optional<DomainLock> a = DomainLock::Take(209, 210);
-  std::optional<DomainLock> b = DomainLock::Take(209, 210);
+  std::optional<wire::DomainLock> a = wire::DomainLock::Take(209, 210);
+  std::optional<wire::DomainLock> b = wire::DomainLock::Take(209, 210);
   ASSERT_TRUE(a && b);
   EXPECT_EQ(a->id(), 209);
   EXPECT_EQ(b->id(), 210);
-  EXPECT_FALSE(DomainLock::Take(209, 210));
-  EXPECT_EQ(DomainLock::LockPath(209), (dir_.path() / "towsim-dds-domain-209.lock").string());
+  EXPECT_FALSE(wire::DomainLock::Take(209, 210));
+  EXPECT_EQ(wire::DomainLock::LockPath(209), (dir_.path() / "towsim-dds-domain-209.lock").string());
 
   case_.domain_last = 210;
   case_.controllers = {{"ctl", Script("ctl", "exit 0\n"), {}}};
@@ -158,9 +158,9 @@ TEST_F(SweepCaseRun, DomainIdsAreLockedOneEach) {
   ASSERT_TRUE(o);
   EXPECT_EQ(o->exit_code, 1);
   EXPECT_EQ(o->message, "no free DDS domain id in 209-210: other sweeps or tests hold them all (" +
-                            DomainLock::LockPath(209) + ", ...)");
+                            wire::DomainLock::LockPath(209) + ", ...)");
   a.reset();  // released: taken again
-  std::optional<DomainLock> c = DomainLock::Take(209, 210);
+  std::optional<wire::DomainLock> c = wire::DomainLock::Take(209, 210);
   ASSERT_TRUE(c);
   EXPECT_EQ(c->id(), 209);
 }

@@ -106,12 +106,12 @@ CaseRun::CaseRun(const std::string& sim_node, const LocalCase& c) {
   node_argv.insert(node_argv.end(), c.arguments.begin(), c.arguments.end());
   std::vector<std::string> env;
   if (!c.controllers.empty()) {
-    lock_ = DomainLock::Take(c.domain_first, c.domain_last);
+    lock_ = wire::DomainLock::Take(c.domain_first, c.domain_last);
     if (!lock_) {
       immediate_ = CaseOutcome{1, "no free DDS domain id in " + std::to_string(c.domain_first) +
                                       "-" + std::to_string(c.domain_last) +
                                       ": other sweeps or tests hold them all (" +
-                                      DomainLock::LockPath(c.domain_first) + ", ...)"};
+                                      wire::DomainLock::LockPath(c.domain_first) + ", ...)"};
       done_ = true;
       return;
     }

@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "app/sweep/sweep_controllers.h"
-#include "app/sweep/sweep_domain.h"
+#include "wire/domain_lock.h"
 
 namespace towsim::app {
 
@@ -95,7 +95,7 @@ class CaseRun {
   };
   void Signal(Child& child, int signal);
 
-  std::optional<DomainLock> lock_;
+  std::optional<wire::DomainLock> lock_;
   Child node_;
   std::vector<Child> controllers_;
   CaseJudge judge_{{}};

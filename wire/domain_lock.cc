@@ -1,4 +1,4 @@
-#include "app/sweep/sweep_domain.h"
+#include "wire/domain_lock.h"
 
 #include <arpa/inet.h>
 #include <fcntl.h>
@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 
-namespace towsim::app {
+namespace towsim::wire {
 namespace {
 
 // true if nothing in this network namespace has bound the UDP `port` on 127.0.0.1
@@ -28,6 +28,8 @@ bool PortFree(int port) {
 
 }  // namespace
 
+int DiscoveryPort(int id) { return 7400 + 250 * id + 10; }
+
 std::string DomainLock::LockPath(int id) {
   const char* dir = std::getenv("TOWSIM_DOMAIN_LOCK_DIR");
   const std::filesystem::path base = dir != nullptr && *dir != '\0'
@@ -36,15 +38,20 @@ std::string DomainLock::LockPath(int id) {
   return (base / ("towsim-dds-domain-" + std::to_string(id) + ".lock")).string();
 }
 
+std::optional<DomainLock> DomainLock::TakeExactly(int id) {
+  const int fd = open(LockPath(id).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
+  if (fd < 0) return std::nullopt;
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    close(fd);
+    return std::nullopt;
+  }
+  return DomainLock(id, fd);
+}
+
 std::optional<DomainLock> DomainLock::Take(int first, int last) {
   for (int id = first; id <= last; ++id) {
-    const int fd = open(LockPath(id).c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0666);
-    if (fd < 0) continue;
-    // the discovery port of participant index 0 (Cyclone: base 7400, gain 250, d1 10)
-    if (flock(fd, LOCK_EX | LOCK_NB) == 0 && PortFree(7400 + 250 * id + 10)) {
-      return DomainLock(id, fd);
-    }
-    close(fd);
+    std::optional<DomainLock> lock = TakeExactly(id);
+    if (lock && PortFree(DiscoveryPort(id))) return lock;
   }
   return std::nullopt;
 }
@@ -67,4 +74,4 @@ DomainLock::~DomainLock() {
   if (fd_ >= 0) close(fd_);
 }
 
-}  // namespace towsim::app
+}  // namespace towsim::wire
