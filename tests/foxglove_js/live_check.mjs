@@ -270,13 +270,14 @@ if (serverInfo) {
 const topics = new Set([...channels.values()].map((c) => c.topic));
 for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/status", "/towsim/scene_info",
   "/towsim/cable/state", "/towsim/sim_control", "/towsim/tow_vehicle/odom", "/towsim/tow_vehicle/command",
-  "/towsim/towfish/odom", "/towsim/towfish/cable_force"]) {
+  "/towsim/towfish/odom", "/towsim/towfish/cable_force", "/towsim/tow_vehicle/actuator_state",
+  "/towsim/towfish/actuator_state"]) {
   check(topics.has(t), `channel ${t} advertised`);
 }
 // the bridge's command channel carries the commands on DDS (this client's among them); the
 // node's own server advertises it for its schema only
 for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/cable/state", "/towsim/tow_vehicle/odom",
-  ...(inNode ? [] : ["/towsim/tow_vehicle/command"])]) {
+  "/towsim/tow_vehicle/actuator_state", ...(inNode ? [] : ["/towsim/tow_vehicle/command"])]) {
   check((byTopic.get(t) ?? []).length > 0, `messages on ${t}`);
 }
 check(decodeFailures === 0, `${decodeFailures} messages failed to decode`);
