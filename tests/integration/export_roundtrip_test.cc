@@ -21,6 +21,8 @@
 
 #include <gtest/gtest.h>
 
+#include "io/cdr_messages.h"
+#include "io/mcap_reader.h"
 #include "testing/dds_domain.h"
 #include "testing/process.h"
 
@@ -90,6 +92,21 @@ std::vector<std::string> Lines(const std::string& path) {
   return out;
 }
 
+// the `source` of the first <ns>/<body>/actuator_state message of each stamp of a recording,
+// by stamp [ns] (towsim_msgs/ActuatorState SOURCE_*: 0 none, 1 script, 2 DDS, 3 failsafe)
+std::map<std::int64_t, int> ActuatorSources(const std::string& mcap, const std::string& body) {
+  const towsim::io::McapReader reader = towsim::io::McapReader::Open(mcap);
+  std::map<std::int64_t, int> sources;
+  reader.ForEachMessage([&](const towsim::io::McapMessage& m) {
+    if (reader.channels().at(m.channel_id).topic != "/towsim/" + body + "/actuator_state") return;
+    const auto a = towsim::io::cdr::DecodeActuatorState(m.data.data(), m.data.size());
+    sources.emplace(static_cast<std::int64_t>(a.header.stamp.sec) * 1'000'000'000 +
+                        a.header.stamp.nanosec,
+                    a.source);
+  });
+  return sources;
+}
+
 void ExpectSameCsv(const fs::path& node, const fs::path& exported, std::size_t rows_per_file_min) {
   for (const char* file : {"bodies.csv", "cable.csv", "forces.csv", "status.csv"}) {
     SCOPED_TRACE(file);
@@ -154,9 +171,19 @@ TEST_F(ExportRoundTrip, TwoVehiclesRecordedAndExportedEqualsTheNodesCsv) {
   EXPECT_FALSE(fs::exists(dir_ / "node/environment.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "exported/environment.csv"));
   // sim_node --record holds no commands (it publishes none): no commands.csv; the node's own
-  // actuators.csv is not on the wire either
+  // actuators.csv comes back from the actuator_state topics (both vehicles take commands)
   EXPECT_TRUE(fs::exists(dir_ / "node/actuators.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "exported/commands.csv"));
+  EXPECT_EQ(ReadFile((dir_ / "node/actuators.csv").string()),
+            ReadFile((dir_ / "exported/actuators.csv").string()));
+  // no controller: the tow vehicle's command is the script's from the first step on (its
+  // entry at t = 0 fires before step 1), the towfish's the scene's initial one throughout
+  const auto tow = ActuatorSources((dir_ / "run.mcap").string(), "tow_vehicle");
+  const auto fish = ActuatorSources((dir_ / "run.mcap").string(), "towfish");
+  ASSERT_EQ(tow.size(), 101u);
+  ASSERT_EQ(fish.size(), 101u);
+  for (const auto& [stamp, source] : tow) EXPECT_EQ(source, stamp == 0 ? 0 : 1) << stamp;
+  for (const auto& [stamp, source] : fish) EXPECT_EQ(source, 0) << stamp;
 }
 
 // the commands a controller sent, recorded by towsim_record beside a lockstep node (Case 1,
@@ -316,6 +343,14 @@ TEST_F(ExportRoundTrip, RecordedActuatorStateExportedEqualsTheNodesActuatorsCsv)
     last_rudder = rudder;
   }
   EXPECT_EQ(moving, 8) << "t = 0.6 .. 1.3 s on the rate limit";
+  // the controller's commands from the first step on: source DDS (2); none (0) at t = 0
+  for (const char* body : {"tow_vehicle", "towfish"}) {
+    const auto sources = ActuatorSources((dir_ / "run.mcap").string(), body);
+    ASSERT_EQ(sources.size(), 21u) << body;
+    for (const auto& [stamp, source] : sources) {
+      EXPECT_EQ(source, stamp == 0 ? 0 : 2) << body << " at " << stamp << " ns";
+    }
+  }
   EXPECT_NEAR(last_t, 2.0, 1e-9);
   EXPECT_NEAR(last_rudder, kRudderCommand, kSettledTol) << "settled on the command at 2 s";
 }
