@@ -81,7 +81,8 @@ TEST(NodeTopicsTest, EveryWinchHasItsCommandTopic) {
   EXPECT_TRUE(Has(two, "rt/towsim/port_winch/command"));
   EXPECT_TRUE(Has(two, "rt/towsim/starboard_winch/command"));
   EXPECT_FALSE(Has(two, "rt/towsim/winch/command"));
-  EXPECT_EQ(two.size(), one.size() + 2);  // one more cable state, one more winch command
+  // one more cable (its state and its two end forces), one more winch command
+  EXPECT_EQ(two.size(), one.size() + 4);
 }
 
 }  // namespace
