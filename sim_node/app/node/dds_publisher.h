@@ -1,6 +1,7 @@
 #pragma once
 // The DDS endpoints of the node (docs/contract.md §3): the writers of the per-step state topics of
-// app/common/node_topics.h (odometry, cable force, altitude and pressure of each body; cable state,
+// app/common/node_topics.h (odometry, cable force, altitude and pressure of each body, actuator
+// state of each vehicle that takes commands; cable state,
 // /tf, markers, /clock), of status, scene info and /tf_static (docs/frames.md); readers of the
 // vehicles' commands and of sim_control. A message is built and serialized only when its
 // writer has a matched reader (or a recording or a Foxglove client takes it); scene info and
