@@ -7,7 +7,7 @@
 // A sea scene's environment topic comes back as the node's environment.csv; the commands
 // towsim_record captured come back as commands.csv; a network's cables as their <cable>.csv.
 // The actuator_state topics come back as the node's actuators.csv.
-// DDS domains 91, 92, 134, 188, 194, 198 and 216.
+// DDS domains 91, 92, 134, 188, 194, 195, 198 and 216.
 #include <unistd.h>
 
 #include <cstdlib>
@@ -92,18 +92,26 @@ std::vector<std::string> Lines(const std::string& path) {
   return out;
 }
 
-// the `source` of the first <ns>/<body>/actuator_state message of each stamp of a recording,
-// by stamp [ns] (towsim_msgs/ActuatorState SOURCE_*: 0 none, 1 script, 2 DDS, 3 failsafe)
-std::map<std::int64_t, int> ActuatorSources(const std::string& mcap, const std::string& body) {
+// the first /towsim/<body>/actuator_state message of each stamp of a recording, by stamp [ns]
+std::map<std::int64_t, towsim::io::cdr::ActuatorState> ActuatorStates(const std::string& mcap,
+                                                                      const std::string& body) {
   const towsim::io::McapReader reader = towsim::io::McapReader::Open(mcap);
-  std::map<std::int64_t, int> sources;
+  std::map<std::int64_t, towsim::io::cdr::ActuatorState> states;
   reader.ForEachMessage([&](const towsim::io::McapMessage& m) {
     if (reader.channels().at(m.channel_id).topic != "/towsim/" + body + "/actuator_state") return;
-    const auto a = towsim::io::cdr::DecodeActuatorState(m.data.data(), m.data.size());
-    sources.emplace(static_cast<std::int64_t>(a.header.stamp.sec) * 1'000'000'000 +
-                        a.header.stamp.nanosec,
-                    a.source);
+    auto a = towsim::io::cdr::DecodeActuatorState(m.data.data(), m.data.size());
+    const std::int64_t stamp =
+        static_cast<std::int64_t>(a.header.stamp.sec) * 1'000'000'000 + a.header.stamp.nanosec;
+    states.emplace(stamp, std::move(a));
   });
+  return states;
+}
+
+// the `source` of those (towsim_msgs/ActuatorState SOURCE_*: 0 none, 1 script, 2 DDS,
+// 3 failsafe)
+std::map<std::int64_t, int> ActuatorSources(const std::string& mcap, const std::string& body) {
+  std::map<std::int64_t, int> sources;
+  for (const auto& [stamp, a] : ActuatorStates(mcap, body)) sources[stamp] = a.source;
   return sources;
 }
 
@@ -353,6 +361,58 @@ TEST_F(ExportRoundTrip, RecordedActuatorStateExportedEqualsTheNodesActuatorsCsv)
   }
   EXPECT_NEAR(last_t, 2.0, 1e-9);
   EXPECT_NEAR(last_rudder, kRudderCommand, kSettledTol) << "settled on the command at 2 s";
+}
+
+// the failsafe on the wire: a lockstep run of Case 1 whose controller answers step 10 a second
+// late (test_controller --pause 10=1) beside --lockstep-timeout 0.3: both vehicles go to
+// failsafe at step 10, and the recorded actuator_state, exported, still gives the node's
+// actuators.csv line for line, its failsafe column included; on the wire a vehicle in failsafe
+// holds the failsafe command (source 3: zero thrust, fins centred) and no other does. DDS
+// domain 195.
+TEST_F(ExportRoundTrip, FailsafeOnTheWireExportedEqualsTheNodesActuatorsCsv) {
+  const towsim::testing::DomainLease lease(195);
+  constexpr int kSourceFailsafe = 3;  // towsim_msgs/ActuatorState SOURCE_FAILSAFE
+  Process node({TOWSIM_SIM_NODE, "--scene",
+                std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml", "--mode",
+                "lockstep", "--domain", std::to_string(lease.id()), "--duration", "2",
+                "--lockstep-timeout", "0.3", "--csv", (dir_ / "node").string(), "--record",
+                (dir_ / "run.mcap").string(), "--set", "publish.odom=10", "--set",
+                "publish.status=10"},
+               (dir_ / "node").string());
+  Process controller({TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(lease.id()), "--pause",
+                      "10=1"},
+                     (dir_ / "controller").string());
+  ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
+  ASSERT_EQ(node.exit_code(), 0) << node.err();
+  controller.Wait(20.0);
+  EXPECT_NE(node.out().find("lockstep timeouts"), std::string::npos) << node.out();
+
+  Process exp = Export({(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string()},
+                       "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  const auto node_rows = Lines((dir_ / "node/actuators.csv").string());
+  const auto exported = Lines((dir_ / "exported/actuators.csv").string());
+  ASSERT_EQ(node_rows.size(), 1 + 2 * 21u);
+  ASSERT_EQ(exported.size(), node_rows.size());
+  int failsafe_rows = 0;
+  for (std::size_t i = 0; i < node_rows.size(); ++i) {
+    ASSERT_EQ(exported[i], node_rows[i]) << "first difference at line " << i + 1;
+    failsafe_rows += i > 0 && node_rows[i].substr(node_rows[i].rfind(',')) == ",1";
+  }
+  EXPECT_GE(failsafe_rows, 2) << "both vehicles in failsafe at t = 0.6 s at least";
+  int failsafe_messages = 0;
+  for (const char* body : {"tow_vehicle", "towfish"}) {
+    for (const auto& [stamp, a] : ActuatorStates((dir_ / "run.mcap").string(), body)) {
+      EXPECT_EQ(a.failsafe, a.source == kSourceFailsafe) << body << " at " << stamp << " ns";
+      if (!a.failsafe) continue;
+      ++failsafe_messages;
+      EXPECT_EQ(a.thrust_command, 0.0) << body << " at " << stamp << " ns";
+      EXPECT_EQ(a.rudder_command, 0.0) << body << " at " << stamp << " ns";
+      EXPECT_EQ(a.elevator_command, 0.0) << body << " at " << stamp << " ns";
+    }
+  }
+  EXPECT_EQ(failsafe_messages, failsafe_rows);
 }
 
 // the sea on the wire (docs/environment.md): the steady tow in regular head waves, a sheared
