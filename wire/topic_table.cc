@@ -51,6 +51,10 @@ std::vector<TopicSpec> BuildTable() {
        kOut},
       {T::kEnvironment, S::kBody, "environment", &towsim_msgs_msg_dds__BodyEnvironment__desc,
        Q::kState, kOut},
+      // a commanded vehicle's command in force and actuator states, its actuators.csv row
+      // (docs/topics.md "Actuator state"): only for the vehicles that have a command topic
+      {T::kActuatorState, S::kBody, "actuator_state", &towsim_msgs_msg_dds__ActuatorState__desc,
+       Q::kState, kOut},
       {T::kCommand, S::kBody, "command", &towsim_msgs_msg_dds__ActuatorCommand__desc, Q::kCommand,
        kIn},
       // an external vessel's pose (docs/vessels.md "External vessels"): its odometry as the

@@ -47,6 +47,7 @@ enum class Topic {
   kAltitude,
   kPressure,
   kEnvironment,
+  kActuatorState,
   kCommand,
   kPoseCommand,
 };

@@ -56,7 +56,7 @@ ScriptRunner::ScriptRunner(const Model& model)
       fired_(model.script.size(), false),
       remaining_(static_cast<int>(model.script.size())) {}
 
-int ScriptRunner::Apply(Simulation* sim) {
+int ScriptRunner::Apply(Simulation* sim, std::vector<bool>* set) {
   int fired = 0;
   for (size_t i = 0; i < entries_.size(); ++i) {
     const ScriptEntry& e = entries_[i];
@@ -71,6 +71,7 @@ int ScriptRunner::Apply(Simulation* sim) {
       if (e.set_rudder) command.rudder = e.rudder;
       if (e.set_elevator) command.elevator = e.elevator;
       sim->SetVehicleCommand(e.vehicle, command);
+      if (set != nullptr) (*set)[e.vehicle] = true;
     }
     if (e.set_winch) sim->SetWinchCommand(e.winch, e.winch_index);
     fired_[i] = true;

@@ -37,8 +37,9 @@ class ScriptRunner {
   // and whose condition (if any) holds on the current vehicle states: its given fields
   // (thrust, rudder, elevator) replace those of the vehicle's command, through
   // Simulation::SetVehicleCommand; a winch_speed or winch_length replaces the winch's command
-  // (Simulation::SetWinchCommand). Returns the number of entries fired.
-  int Apply(Simulation* sim);
+  // (Simulation::SetWinchCommand). Returns the number of entries fired. With `set`, sized to
+  // the vehicles, set[v] becomes true for each vehicle v whose command an entry fired set.
+  int Apply(Simulation* sim, std::vector<bool>* set = nullptr);
 
   // every entry has fired
   bool done() const { return remaining_ == 0; }

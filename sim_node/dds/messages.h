@@ -22,6 +22,7 @@ using ClockMsg = rosgraph_msgs_msg_dds__Clock_;
 using CableStateMsg = towsim_msgs_msg_dds__CableState_;
 using BodyEnvironmentMsg = towsim_msgs_msg_dds__BodyEnvironment_;
 using ActuatorCommandMsg = towsim_msgs_msg_dds__ActuatorCommand_;
+using ActuatorStateMsg = towsim_msgs_msg_dds__ActuatorState_;
 using WinchCommandMsg = towsim_msgs_msg_dds__WinchCommand_;
 using SimStatusMsg = towsim_msgs_msg_dds__SimStatus_;
 using SimControlMsg = towsim_msgs_msg_dds__SimControl_;

@@ -122,6 +122,23 @@ ActuatorCommand DecodeActuatorCommand(const std::uint8_t* data, std::size_t size
   return m;
 }
 
+ActuatorState DecodeActuatorState(const std::uint8_t* data, std::size_t size) {
+  CdrReader r(data, size, "towsim_msgs/msg/ActuatorState");
+  ActuatorState m;
+  m.header = ReadHeader(r);
+  m.step = r.U64("step");
+  m.thrust_command = r.F64("thrust_command");
+  m.rudder_command = r.F64("rudder_command");
+  m.elevator_command = r.F64("elevator_command");
+  m.thrust = r.F64("thrust");
+  m.rudder = r.F64("rudder");
+  m.elevator = r.F64("elevator");
+  m.failsafe = r.U8("failsafe") != 0;
+  m.source = r.U8("source");
+  r.Finish();
+  return m;
+}
+
 WinchCommand DecodeWinchCommand(const std::uint8_t* data, std::size_t size) {
   CdrReader r(data, size, "towsim_msgs/msg/WinchCommand");
   WinchCommand m;

@@ -79,6 +79,15 @@ struct ActuatorCommand {  // towsim_msgs/ActuatorCommand
   double thrust = 0.0, rudder = 0.0, elevator = 0.0;
 };
 
+struct ActuatorState {  // towsim_msgs/ActuatorState
+  Header header;
+  std::uint64_t step = 0;
+  double thrust_command = 0.0, rudder_command = 0.0, elevator_command = 0.0;
+  double thrust = 0.0, rudder = 0.0, elevator = 0.0;
+  bool failsafe = false;
+  std::uint8_t source = 0;  // SOURCE_*
+};
+
 struct WinchCommand {  // towsim_msgs/WinchCommand
   Header header;
   std::uint64_t step = 0;
@@ -148,6 +157,7 @@ Clock DecodeClock(const std::uint8_t* data, std::size_t size);
 CableState DecodeCableState(const std::uint8_t* data, std::size_t size);
 BodyEnvironment DecodeBodyEnvironment(const std::uint8_t* data, std::size_t size);
 ActuatorCommand DecodeActuatorCommand(const std::uint8_t* data, std::size_t size);
+ActuatorState DecodeActuatorState(const std::uint8_t* data, std::size_t size);
 WinchCommand DecodeWinchCommand(const std::uint8_t* data, std::size_t size);
 SimStatus DecodeSimStatus(const std::uint8_t* data, std::size_t size);
 SimControl DecodeSimControl(const std::uint8_t* data, std::size_t size);

@@ -295,13 +295,14 @@ if (serverInfo) {
 const topics = new Set([...channels.values()].map((c) => c.topic));
 for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/status", "/towsim/scene_info",
   "/towsim/cable/state", "/towsim/sim_control", "/towsim/tow_vehicle/odom", "/towsim/tow_vehicle/command",
-  "/towsim/towfish/odom", "/towsim/towfish/cable_force"]) {
+  "/towsim/towfish/odom", "/towsim/towfish/cable_force", "/towsim/tow_vehicle/actuator_state",
+  "/towsim/towfish/actuator_state"]) {
   check(topics.has(t), `channel ${t} advertised`);
 }
 // the bridge's command channel carries the commands on DDS (this client's among them); the
 // node's own server advertises it for its schema only
 for (const t of ["/clock", "/tf", "/tf_static", "/towsim/markers", "/towsim/cable/state", "/towsim/tow_vehicle/odom",
-  ...(inNode ? [] : ["/towsim/tow_vehicle/command"])]) {
+  "/towsim/tow_vehicle/actuator_state", ...(inNode ? [] : ["/towsim/tow_vehicle/command"])]) {
   check((byTopic.get(t) ?? []).length > 0, `messages on ${t}`);
 }
 check(decodeFailures === 0, `${decodeFailures} messages failed to decode`);
@@ -331,6 +332,30 @@ for (const body of ["tow_vehicle", "towfish"]) {
   }
 }
 check(compared >= 2 * 10 * kDuration, `${compared} CSV rows compared`);
+
+// actuator states against actuators.csv (docs/topics.md "Actuator state"): the first message of
+// each stamp (a lockstep wait republishes a step), every row of both vehicles after t = 0
+const actuatorRows = readCsv(join(outDir, "csv/actuators.csv"));
+let actuatorsCompared = 0;
+for (const body of ["tow_vehicle", "towfish"]) {
+  const states = new Map();
+  for (const { value } of byTopic.get(`/towsim/${body}/actuator_state`) ?? []) {
+    const key = stampSec(value.header.stamp).toFixed(6);
+    if (!states.has(key)) states.set(key, value);
+  }
+  for (const r of actuatorRows.filter((r) => r.body === body && Number(r.t) > 0)) {
+    const a = states.get(Number(r.t).toFixed(6));
+    if (!check(a !== undefined, `${body} t = ${r.t}: an actuator_state message`)) continue;
+    check(a.header.frame_id === `${body}_frd`, `${body} actuator_state frame ${a.header.frame_id}`);
+    for (const key of ["thrust_command", "rudder_command", "elevator_command", "thrust", "rudder", "elevator"]) {
+      near(a[key], r[key], `${body} t = ${r.t} ${key}`);
+    }
+    check(Number(a.failsafe) === Number(r.failsafe), `${body} t = ${r.t} failsafe ${a.failsafe}`);
+    check(a.source === 2, `${body} t = ${r.t} source ${a.source} (SOURCE_DDS: the client's commands)`);
+    actuatorsCompared += 1;
+  }
+}
+check(actuatorsCompared >= 2 * 10 * kDuration, `${actuatorsCompared} actuators.csv rows compared`);
 
 // the vehicle responds to the commands sent through the WebSocket
 const u = (t) => Number(rows.find((r) => r.body === "tow_vehicle" && Math.abs(Number(r.t) - t) < 1e-6)?.u);

@@ -6,7 +6,8 @@
 // per-attachment rows. --info lists the topics; a damaged recording exits 2 naming the offset.
 // A sea scene's environment topic comes back as the node's environment.csv; the commands
 // towsim_record captured come back as commands.csv; a network's cables as their <cable>.csv.
-// DDS domains 91, 92, 134, 188, 198 and 216.
+// The actuator_state topics come back as the node's actuators.csv.
+// DDS domains 91, 92, 134, 188, 194, 195, 198 and 216.
 #include <unistd.h>
 
 #include <cstdlib>
@@ -20,6 +21,9 @@
 
 #include <gtest/gtest.h>
 
+#include "io/cdr_messages.h"
+#include "io/mcap_reader.h"
+#include "testing/dds_domain.h"
 #include "testing/process.h"
 
 namespace {
@@ -88,6 +92,29 @@ std::vector<std::string> Lines(const std::string& path) {
   return out;
 }
 
+// the first /towsim/<body>/actuator_state message of each stamp of a recording, by stamp [ns]
+std::map<std::int64_t, towsim::io::cdr::ActuatorState> ActuatorStates(const std::string& mcap,
+                                                                      const std::string& body) {
+  const towsim::io::McapReader reader = towsim::io::McapReader::Open(mcap);
+  std::map<std::int64_t, towsim::io::cdr::ActuatorState> states;
+  reader.ForEachMessage([&](const towsim::io::McapMessage& m) {
+    if (reader.channels().at(m.channel_id).topic != "/towsim/" + body + "/actuator_state") return;
+    auto a = towsim::io::cdr::DecodeActuatorState(m.data.data(), m.data.size());
+    const std::int64_t stamp =
+        static_cast<std::int64_t>(a.header.stamp.sec) * 1'000'000'000 + a.header.stamp.nanosec;
+    states.emplace(stamp, std::move(a));
+  });
+  return states;
+}
+
+// the `source` of those (towsim_msgs/ActuatorState SOURCE_*: 0 none, 1 script, 2 DDS,
+// 3 failsafe)
+std::map<std::int64_t, int> ActuatorSources(const std::string& mcap, const std::string& body) {
+  std::map<std::int64_t, int> sources;
+  for (const auto& [stamp, a] : ActuatorStates(mcap, body)) sources[stamp] = a.source;
+  return sources;
+}
+
 void ExpectSameCsv(const fs::path& node, const fs::path& exported, std::size_t rows_per_file_min) {
   for (const char* file : {"bodies.csv", "cable.csv", "forces.csv", "status.csv"}) {
     SCOPED_TRACE(file);
@@ -152,9 +179,19 @@ TEST_F(ExportRoundTrip, TwoVehiclesRecordedAndExportedEqualsTheNodesCsv) {
   EXPECT_FALSE(fs::exists(dir_ / "node/environment.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "exported/environment.csv"));
   // sim_node --record holds no commands (it publishes none): no commands.csv; the node's own
-  // actuators.csv is not on the wire either
+  // actuators.csv comes back from the actuator_state topics (both vehicles take commands)
   EXPECT_TRUE(fs::exists(dir_ / "node/actuators.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "exported/commands.csv"));
+  EXPECT_EQ(ReadFile((dir_ / "node/actuators.csv").string()),
+            ReadFile((dir_ / "exported/actuators.csv").string()));
+  // no controller: the tow vehicle's command is the script's from the first step on (its
+  // entry at t = 0 fires before step 1), the towfish's the scene's initial one throughout
+  const auto tow = ActuatorSources((dir_ / "run.mcap").string(), "tow_vehicle");
+  const auto fish = ActuatorSources((dir_ / "run.mcap").string(), "towfish");
+  ASSERT_EQ(tow.size(), 101u);
+  ASSERT_EQ(fish.size(), 101u);
+  for (const auto& [stamp, source] : tow) EXPECT_EQ(source, stamp == 0 ? 0 : 1) << stamp;
+  for (const auto& [stamp, source] : fish) EXPECT_EQ(source, 0) << stamp;
 }
 
 // the commands a controller sent, recorded by towsim_record beside a lockstep node (Case 1,
@@ -230,6 +267,152 @@ TEST_F(ExportRoundTrip, RecordedCommandsExportedAsCommandsCsvMatchTheNodesActuat
     ++matched;
   }
   EXPECT_EQ(matched, 2 * 20);
+}
+
+// the actuators on the wire (docs/topics.md "Actuator state"): a lockstep run of Case 1 with
+// test_controller's rudder step (0.3 rad at step 10), recorded by the node itself (--record),
+// exported: the actuator_state topics give the node's own actuators.csv, every row and every
+// printed digit. And the rudder follows its command as the actuator law says (sim_node/core/
+// actuator.h): at rest until the command, then at the rate limit max_rate_deg = 20 deg/s
+// (config/vehicles/tow_vehicle.yaml) until 3 deg short of it (the fin servo's lag T = 0.05 s
+// takes over where (u - x) / T < max_rate: 0.349 rad/s * 0.05 s = 0.0175 rad), then on to the
+// command, within 2e-8 rad of it at 2 s (0.0175 rad * exp(-0.69 s / 0.05 s)). DDS domain 194.
+TEST_F(ExportRoundTrip, RecordedActuatorStateExportedEqualsTheNodesActuatorsCsv) {
+  const towsim::testing::DomainLease lease(194);
+  constexpr double kStep = 0.05;                          // case1_forward.yaml time.step [s]
+  constexpr double kRudderCommand = 0.3;                  // [rad], from step 10 on
+  constexpr double kCommandTime = 10 * kStep;             // the state the command answers [s]
+  constexpr double kMaxRate = 20.0 * M_PI / 180.0;        // tow_vehicle.yaml max_rate_deg [rad/s]
+  constexpr double kLagStart = kRudderCommand - kMaxRate * 0.05;  // lag from here on [rad]
+  // 9 printed digits of numbers below 1 rad, and RK4, exact on the rate-limited (constant
+  // rate) stretch up to rounding
+  constexpr double kPrintTol = 1e-8;  // [rad]
+  constexpr double kSettledTol = 1e-6;  // [rad]: the lag's residue at 2 s is 2e-8 rad
+  Process node({TOWSIM_SIM_NODE, "--scene",
+                std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml", "--mode",
+                "lockstep", "--domain", std::to_string(lease.id()), "--duration", "2", "--csv",
+                (dir_ / "node").string(), "--record", (dir_ / "run.mcap").string(), "--set",
+                "publish.odom=10", "--set", "publish.status=10"},
+               (dir_ / "node").string());
+  Process controller({TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(lease.id()), "--command",
+                      "tow_vehicle@0=4165,0,0", "--command", "tow_vehicle@0.5=4165,0.3,-0.05"},
+                     (dir_ / "controller").string());
+  ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
+  ASSERT_EQ(node.exit_code(), 0) << node.err();
+  controller.Wait(20.0);
+
+  Process exp = Export({(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string(),
+                        "--info"},
+                       "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  EXPECT_NE(exp.err().find(", actuators 42"), std::string::npos) << exp.err();
+  EXPECT_NE(exp.out().find("Topic: /towsim/tow_vehicle/actuator_state | Type: "
+                           "towsim_msgs/msg/ActuatorState | Count: "),
+            std::string::npos)
+      << exp.out();
+  const auto node_rows = Lines((dir_ / "node/actuators.csv").string());
+  const auto exported = Lines((dir_ / "exported/actuators.csv").string());
+  ASSERT_EQ(node_rows.size(), 1 + 2 * 21u) << "two vehicles at t = 0, 0.1, ..., 2";
+  ASSERT_EQ(exported.size(), node_rows.size());
+  for (std::size_t i = 0; i < node_rows.size(); ++i) {
+    ASSERT_EQ(exported[i], node_rows[i]) << "first difference at line " << i + 1;
+  }
+
+  // the tow vehicle's rudder against the actuator law
+  double last_t = -1.0, last_rudder = 0.0;
+  int moving = 0;
+  for (std::size_t i = 1; i < exported.size(); ++i) {
+    std::vector<std::string> f;
+    std::stringstream in(exported[i]);
+    for (std::string x; std::getline(in, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 9u) << exported[i];
+    if (f[1] != "tow_vehicle") continue;
+    const double t = std::stod(f[0]), command = std::stod(f[3]), rudder = std::stod(f[6]);
+    EXPECT_EQ(f[8], "0") << "no failsafe: " << exported[i];
+    if (t <= kCommandTime + 1e-9) {
+      EXPECT_EQ(rudder, 0.0) << exported[i];
+    } else {
+      EXPECT_EQ(command, kRudderCommand) << exported[i];
+      const double ramp = kMaxRate * (t - kCommandTime);
+      if (ramp <= kLagStart) {
+        EXPECT_NEAR(rudder, ramp, kPrintTol) << "at the rate limit: " << exported[i];
+        ++moving;
+      } else {
+        EXPECT_LE(rudder, kRudderCommand + kPrintTol) << exported[i];
+        EXPECT_GE(rudder, kLagStart - kPrintTol) << exported[i];
+      }
+    }
+    if (last_t >= 0.0) {
+      EXPECT_LE(std::abs(rudder - last_rudder), kMaxRate * (t - last_t) + kPrintTol)
+          << "faster than the rate limit: " << exported[i];
+    }
+    last_t = t;
+    last_rudder = rudder;
+  }
+  EXPECT_EQ(moving, 8) << "t = 0.6 .. 1.3 s on the rate limit";
+  // the controller's commands from the first step on: source DDS (2); none (0) at t = 0
+  for (const char* body : {"tow_vehicle", "towfish"}) {
+    const auto sources = ActuatorSources((dir_ / "run.mcap").string(), body);
+    ASSERT_EQ(sources.size(), 21u) << body;
+    for (const auto& [stamp, source] : sources) {
+      EXPECT_EQ(source, stamp == 0 ? 0 : 2) << body << " at " << stamp << " ns";
+    }
+  }
+  EXPECT_NEAR(last_t, 2.0, 1e-9);
+  EXPECT_NEAR(last_rudder, kRudderCommand, kSettledTol) << "settled on the command at 2 s";
+}
+
+// the failsafe on the wire: a lockstep run of Case 1 whose controller answers step 10 a second
+// late (test_controller --pause 10=1) beside --lockstep-timeout 0.3: both vehicles go to
+// failsafe at step 10, and the recorded actuator_state, exported, still gives the node's
+// actuators.csv line for line, its failsafe column included; on the wire a vehicle in failsafe
+// holds the failsafe command (source 3: zero thrust, fins centred) and no other does. DDS
+// domain 195.
+TEST_F(ExportRoundTrip, FailsafeOnTheWireExportedEqualsTheNodesActuatorsCsv) {
+  const towsim::testing::DomainLease lease(195);
+  constexpr int kSourceFailsafe = 3;  // towsim_msgs/ActuatorState SOURCE_FAILSAFE
+  Process node({TOWSIM_SIM_NODE, "--scene",
+                std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/case1_forward.yaml", "--mode",
+                "lockstep", "--domain", std::to_string(lease.id()), "--duration", "2",
+                "--lockstep-timeout", "0.3", "--csv", (dir_ / "node").string(), "--record",
+                (dir_ / "run.mcap").string(), "--set", "publish.odom=10", "--set",
+                "publish.status=10"},
+               (dir_ / "node").string());
+  Process controller({TOWSIM_TEST_CONTROLLER, "--domain", std::to_string(lease.id()), "--pause",
+                      "10=1"},
+                     (dir_ / "controller").string());
+  ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
+  ASSERT_EQ(node.exit_code(), 0) << node.err();
+  controller.Wait(20.0);
+  EXPECT_NE(node.out().find("lockstep timeouts"), std::string::npos) << node.out();
+
+  Process exp = Export({(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string()},
+                       "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+  const auto node_rows = Lines((dir_ / "node/actuators.csv").string());
+  const auto exported = Lines((dir_ / "exported/actuators.csv").string());
+  ASSERT_EQ(node_rows.size(), 1 + 2 * 21u);
+  ASSERT_EQ(exported.size(), node_rows.size());
+  int failsafe_rows = 0;
+  for (std::size_t i = 0; i < node_rows.size(); ++i) {
+    ASSERT_EQ(exported[i], node_rows[i]) << "first difference at line " << i + 1;
+    failsafe_rows += i > 0 && node_rows[i].substr(node_rows[i].rfind(',')) == ",1";
+  }
+  EXPECT_GE(failsafe_rows, 2) << "both vehicles in failsafe at t = 0.6 s at least";
+  int failsafe_messages = 0;
+  for (const char* body : {"tow_vehicle", "towfish"}) {
+    for (const auto& [stamp, a] : ActuatorStates((dir_ / "run.mcap").string(), body)) {
+      EXPECT_EQ(a.failsafe, a.source == kSourceFailsafe) << body << " at " << stamp << " ns";
+      if (!a.failsafe) continue;
+      ++failsafe_messages;
+      EXPECT_EQ(a.thrust_command, 0.0) << body << " at " << stamp << " ns";
+      EXPECT_EQ(a.rudder_command, 0.0) << body << " at " << stamp << " ns";
+      EXPECT_EQ(a.elevator_command, 0.0) << body << " at " << stamp << " ns";
+    }
+  }
+  EXPECT_EQ(failsafe_messages, failsafe_rows);
 }
 
 // the sea on the wire (docs/environment.md): the steady tow in regular head waves, a sheared

@@ -1,8 +1,9 @@
 # towsim_export round trips: sim_node --record + --csv, then towsim_export --csv;
-# real processes over loopback DDS, domains 91, 92, 134, 188, 198 and 216. Included from tests/unit/mcap_tests.cmake.
+# real processes over loopback DDS, domains 91, 92, 134, 188, 194, 195, 198 and 216. Included from tests/unit/mcap_tests.cmake.
 set(_export_dir ${PROJECT_SOURCE_DIR}/tests/integration)
 add_executable(export_roundtrip_test ${_export_dir}/export_roundtrip_test.cc)
-target_link_libraries(export_roundtrip_test PRIVATE towsim::testing GTest::gtest GTest::gtest_main)
+target_link_libraries(export_roundtrip_test PRIVATE towsim::testing towsim::io GTest::gtest
+  GTest::gtest_main)
 target_compile_definitions(export_roundtrip_test PRIVATE
   TOWSIM_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
   TOWSIM_DDS_URI="file://${PROJECT_SOURCE_DIR}/config/cyclonedds.xml"

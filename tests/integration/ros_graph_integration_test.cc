@@ -213,7 +213,10 @@ TEST(RosGraph, NodeAndControllerListTheirDiscoveredEndpoints) {
                                                   "rt/towsim/tow_vehicle/altitude",
                                                   "rt/towsim/tow_vehicle/pressure",
                                                   "rt/towsim/towfish/altitude",
-                                                  "rt/towsim/towfish/pressure"};
+                                                  "rt/towsim/towfish/pressure",
+                                                  // both vehicles take commands
+                                                  "rt/towsim/tow_vehicle/actuator_state",
+                                                  "rt/towsim/towfish/actuator_state"};
   EXPECT_EQ(written, expected_written);
   const std::set<std::string> read =
       CheckEndpoints(sim.readers, sim.participant, o.subscriptions, "sim_node readers");

@@ -153,6 +153,37 @@ TEST_F(CdrMessagesTest, BodyEnvironmentFromCycloneBytes) {
   ExpectTruncationsFail(b, DecodeBodyEnvironment, "towsim_msgs/msg/BodyEnvironment");
 }
 
+TEST_F(CdrMessagesTest, ActuatorStateFromCycloneBytes) {
+  std::string frame = "tow_vehicle_frd";
+  dds::ActuatorStateMsg m{};
+  m.header.stamp.sec = 3;
+  m.header.stamp.nanosec = 250000000u;
+  m.header.frame_id = frame.data();
+  m.step = 65;
+  m.thrust_command = 4165.0;
+  m.rudder_command = 0.3;
+  m.elevator_command = -0.05;
+  m.thrust = 4164.75;
+  m.rudder = 1.0 / 7.0;
+  m.elevator = -2.5e-3;
+  m.failsafe = true;
+  m.source = towsim_msgs_msg_dds__ActuatorState_Constants_SOURCE_FAILSAFE;
+  const auto b = Serialize(&towsim_msgs_msg_dds__ActuatorState__desc, &m);
+  const ActuatorState d = DecodeActuatorState(b.data(), b.size());
+  EXPECT_EQ(d.header.stamp.seconds(), 3.25);
+  EXPECT_EQ(d.header.frame_id, "tow_vehicle_frd");
+  EXPECT_EQ(d.step, 65u);
+  EXPECT_EQ(d.thrust_command, 4165.0);
+  EXPECT_EQ(d.rudder_command, 0.3);
+  EXPECT_EQ(d.elevator_command, -0.05);
+  EXPECT_EQ(d.thrust, 4164.75);
+  EXPECT_EQ(d.rudder, 1.0 / 7.0);
+  EXPECT_EQ(d.elevator, -2.5e-3);
+  EXPECT_TRUE(d.failsafe);
+  EXPECT_EQ(d.source, 3);
+  ExpectTruncationsFail(b, DecodeActuatorState, "towsim_msgs/msg/ActuatorState");
+}
+
 TEST_F(CdrMessagesTest, CableStateFromCycloneBytes) {
   constexpr int kNodes = 21;
   std::vector<geometry_msgs_msg_dds__Point_> p(kNodes);

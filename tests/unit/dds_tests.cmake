@@ -20,6 +20,10 @@ towsim_add_test(sensor_errors_test LABEL unit
 towsim_add_test(environment_translator_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/environment_translator_test.cc
   LIBS towsim::dds towsim::scene)
+# a vehicle's actuators on the wire (dds/actuator_state_translator)
+towsim_add_test(actuator_state_translator_test LABEL unit
+  SOURCES ${CMAKE_CURRENT_LIST_DIR}/actuator_state_translator_test.cc
+  LIBS towsim::dds towsim::scene)
 towsim_add_test(dds_winch_command_test LABEL unit
   SOURCES ${CMAKE_CURRENT_LIST_DIR}/dds_winch_command_test.cc
   LIBS towsim::dds)

@@ -32,6 +32,9 @@ TEST(NodeTopicsTest, TheOneCableKeepsItsName) {
   EXPECT_TRUE(Has(n, "rt/towsim/cable/state"));
   EXPECT_TRUE(Has(n, "rt/towsim/towfish/odom"));
   EXPECT_FALSE(Has(n, "rt/towsim/scene_info"));
+  // named for every body: a recorder or bridge subscribes to it, the node writes the
+  // commanded vehicles' (docs/topics.md "Actuator state")
+  EXPECT_TRUE(Has(n, "rt/towsim/towfish/actuator_state"));
   // listing the one cable by name gives the same topics, in the same order
   EXPECT_EQ(Names(NodeTopics(names, {"towfish"}, false, {"cable"})), n);
   for (const NodeTopic& t : one) {

@@ -80,7 +80,7 @@ TEST(TopicNamesTest, RosAndDdsNames) {
 // one row per topic, each with a type, and the direction and QoS the node uses
 TEST(TopicTableTest, RowsOfTheContract) {
   const std::vector<TopicSpec>& table = TopicTable();
-  ASSERT_EQ(table.size(), 18u);
+  ASSERT_EQ(table.size(), 19u);
   EXPECT_EQ(table.front().topic, Topic::kSceneInfo);  // scene_info first
   for (size_t i = 0; i < table.size(); ++i) {
     EXPECT_NE(table[i].type, nullptr) << table[i].name;
@@ -108,6 +108,13 @@ TEST(TopicTableTest, RowsOfTheContract) {
   EXPECT_EQ(SpecOf(Topic::kCableEndForce).qos, QosProfile::kState);
   EXPECT_EQ(SpecOf(Topic::kWinchCommand).scope, Scope::kWinch);
   EXPECT_STREQ(SpecOf(Topic::kOdom).type->m_typename, "nav_msgs::msg::dds_::Odometry_");
+  // a commanded vehicle's actuators: out, per body, the odometry's QoS
+  EXPECT_EQ(SpecOf(Topic::kActuatorState).scope, Scope::kBody);
+  EXPECT_EQ(SpecOf(Topic::kActuatorState).direction, Direction::kOut);
+  EXPECT_EQ(SpecOf(Topic::kActuatorState).qos, SpecOf(Topic::kOdom).qos);
+  EXPECT_STREQ(SpecOf(Topic::kActuatorState).name, "actuator_state");
+  EXPECT_STREQ(SpecOf(Topic::kActuatorState).type->m_typename,
+               "towsim_msgs::msg::dds_::ActuatorState_");
 }
 
 TEST(TopicNamesTest, ChecksNamespaces) {

@@ -69,6 +69,28 @@ class Modelled final : public StateTopic {
   uint64_t last_ = 0;
 };
 
+// a commanded vehicle's actuator state (dds/actuator_state_translator.h): the simulation's
+// command and actuators with the node's flags of the vehicle, read when the message is filled
+class ActuatorStateTopic final : public StateTopic {
+ public:
+  ActuatorStateTopic(const dds::Participant& participant, const TopicRow& row,
+                     const std::string& name, const core::Simulation& sim, int vehicle,
+                     const VehicleCommands& vehicles)
+      : StateTopic(participant, row.spec().type, name, dds::QosOf(row.spec().qos), row.rate),
+        message_(dds::FrdFrame(sim.body_name(sim.num_spheres() + vehicle))),
+        vehicle_(vehicle),
+        vehicles_(vehicles) {}
+  const void* Fill(const core::Simulation& sim, uint64_t step) override {
+    dds::ToActuatorState(sim, vehicle_, step, vehicles_.flags[vehicle_], &message_.msg);
+    return &message_.msg;
+  }
+
+ private:
+  dds::ActuatorStateMessage message_;
+  int vehicle_;
+  const VehicleCommands& vehicles_;
+};
+
 // /clock has no strings to own
 struct ClockHolder {
   dds::ClockMsg msg{};
@@ -136,7 +158,7 @@ std::unique_ptr<StateTopic> MakeSensor(const dds::Participant& participant, cons
 template <int End>
 std::unique_ptr<StateTopic> MakeEndForce(const dds::Participant& participant, const TopicRow& row,
                                          const std::string& name, const core::Simulation& sim,
-                                         int c) {
+                                         int c, const VehicleCommands&) {
   if (!dds::HasEndForce(sim, End, c)) return nullptr;
   const int body = sim.EndBody(End, c);
   return Make<dds::WrenchStampedMessage, EndForce<End>>(
@@ -150,14 +172,15 @@ std::vector<TopicRow> BuildTable() {
   using P = const dds::Participant&;
   using S = const core::Simulation&;
   using N = const std::string&;
+  using V = const VehicleCommands&;
   using T = wire::Topic;
   return {
       {T::kClock, PublishRate::kClock,
-       [](P p, const TopicRow& row, N name, S, int) {
+       [](P p, const TopicRow& row, N name, S, int, V) {
          return Make<ClockHolder, Clock>(p, row, name, std::make_unique<ClockHolder>(), -1);
        }},
       {T::kCableState, PublishRate::kCableState,
-       [](P p, const TopicRow& row, N name, S sim, int c) {
+       [](P p, const TopicRow& row, N name, S sim, int c, V) {
          return Make<dds::CableStateMessage, CableState>(
              p, row, name,
              std::make_unique<dds::CableStateMessage>(dds::kWorldFrame, dds::MaxCableNodes(sim, c)),
@@ -168,17 +191,17 @@ std::vector<TopicRow> BuildTable() {
       {T::kCableEndForce, PublishRate::kCableForce, &MakeEndForce<1>},
       // /tf: the same state as the odometry, at its rate
       {T::kTf, PublishRate::kOdom,
-       [](P p, const TopicRow& row, N name, S sim, int) {
+       [](P p, const TopicRow& row, N name, S sim, int, V) {
          return Make<dds::TransformsMessage, Transforms>(p, row, name, dds::BodyTransforms(sim),
                                                          -1);
        }},
       {T::kMarkers, PublishRate::kMarkers,
-       [](P p, const TopicRow& row, N name, S sim, int) {
+       [](P p, const TopicRow& row, N name, S sim, int, V) {
          return Make<dds::SceneMarkers, Markers>(p, row, name,
                                                  std::make_unique<dds::SceneMarkers>(sim), -1);
        }},
       {T::kOdom, PublishRate::kOdom,
-       [](P p, const TopicRow& row, N name, S sim, int b) {
+       [](P p, const TopicRow& row, N name, S sim, int b, V) {
          return MakeSensor<dds::OdometryMessage, Odometry>(
              p, row, name,
              std::make_unique<dds::OdometryMessage>(dds::kWorldFrame,
@@ -186,19 +209,19 @@ std::vector<TopicRow> BuildTable() {
              sim, b, dds::Sensor::kOdometry);
        }},
       {T::kCableForce, PublishRate::kCableForce,
-       [](P p, const TopicRow& row, N name, S sim, int b) {
+       [](P p, const TopicRow& row, N name, S sim, int b, V) {
          return Make<dds::WrenchStampedMessage, CableForce>(
              p, row, name,
              std::make_unique<dds::WrenchStampedMessage>(dds::FrdFrame(sim.body_name(b))), b);
        }},
       {T::kAltitude, PublishRate::kSensors,
-       [](P p, const TopicRow& row, N name, S sim, int b) {
+       [](P p, const TopicRow& row, N name, S sim, int b, V) {
          return MakeSensor<dds::RangeMessage, Altitude>(
              p, row, name, std::make_unique<dds::RangeMessage>(sim.body_name(b)), sim, b,
              dds::Sensor::kAltimeter);
        }},
       {T::kPressure, PublishRate::kSensors,
-       [](P p, const TopicRow& row, N name, S sim, int b) {
+       [](P p, const TopicRow& row, N name, S sim, int b, V) {
          return MakeSensor<dds::FluidPressureMessage, Pressure>(
              p, row, name, std::make_unique<dds::FluidPressureMessage>(sim.body_name(b)), sim, b,
              dds::Sensor::kPressure);
@@ -206,10 +229,22 @@ std::vector<TopicRow> BuildTable() {
       // the sea at each body, as environment.csv: only in a scene with waves, a current or a
       // seabed (io::HasSea; a calm scene's node has no such topic)
       {T::kEnvironment, PublishRate::kSensors,
-       [](P p, const TopicRow& row, N name, S sim, int b) -> std::unique_ptr<StateTopic> {
+       [](P p, const TopicRow& row, N name, S sim, int b, V) -> std::unique_ptr<StateTopic> {
          if (!io::HasSea(sim.model().environment)) return nullptr;
          return Make<dds::BodyEnvironmentMessage, Environment>(
              p, row, name, std::make_unique<dds::BodyEnvironmentMessage>(dds::kWorldFrame), b);
+       }},
+      // a vehicle's command in force and actuator states, as actuators.csv, at the odometry's
+      // rate: only for the vehicles that take commands (those with a command topic)
+      {T::kActuatorState, PublishRate::kOdom,
+       [](P p, const TopicRow& row, N name, S sim, int b, V vehicles)
+           -> std::unique_ptr<StateTopic> {
+         const int v = b - sim.num_spheres();
+         if (v < 0 || v >= sim.num_vehicles() ||
+             v >= static_cast<int>(vehicles.commanded.size()) || !vehicles.commanded[v]) {
+           return nullptr;
+         }
+         return std::make_unique<ActuatorStateTopic>(p, row, name, sim, v, vehicles);
        }},
   };
 }

@@ -15,6 +15,7 @@
 
 #include "core/publish_rates.h"
 #include "core/simulation.h"
+#include "dds/actuator_state_translator.h"
 #include "dds/entities.h"
 #include "dds/qos.h"
 #include "wire/topic_table.h"
@@ -52,15 +53,24 @@ class StateTopic {
   dds::Writer<void> writer_;
 };
 
+// what the node knows of its vehicles beyond the simulation, by vehicle (Model::vehicles
+// order): whether it takes commands (has a command topic), and the failsafe flag and source
+// of the command it holds (the command arbiter's, kept by app/node/dds_node.cc)
+struct VehicleCommands {
+  std::vector<bool> commanded;
+  std::vector<dds::ActuatorFlags> flags;
+};
+
 struct TopicRow {
   wire::Topic topic;  // its name, type and QoS: wire/topic_table.h
   core::PublishRate rate;
   // its writer with its translator (owner: the body index of a per-body row, the cable index
   // (Model::cables order) of a per-cable row, else -1); nullptr where the scene has no such
-  // topic (the environment of a calm scene)
+  // topic (the environment of a calm scene, the actuator state of a vehicle without
+  // commands). `vehicles` outlives the topic; its flags are read at every Fill.
   std::unique_ptr<StateTopic> (*make)(const dds::Participant& participant, const TopicRow& row,
                                       const std::string& name, const core::Simulation& sim,
-                                      int owner);
+                                      int owner, const VehicleCommands& vehicles);
   const wire::TopicSpec& spec() const { return wire::SpecOf(topic); }
   bool per_body() const { return spec().scope == wire::Scope::kBody; }
   bool per_cable() const { return spec().scope == wire::Scope::kCable; }

@@ -25,6 +25,7 @@ namespace towsim::app {
 namespace {
 
 using io::cdr::ActuatorCommand;
+using io::cdr::ActuatorState;
 using io::cdr::BodyEnvironment;
 using io::cdr::CableState;
 using io::cdr::Odometry;
@@ -39,6 +40,7 @@ struct Frame {
   std::map<std::string, Odometry> odom;         // by body
   std::map<std::string, WrenchStamped> forces;  // by body
   std::map<std::string, BodyEnvironment> environment;  // by body
+  std::map<std::string, ActuatorState> actuators;      // by body
   std::map<std::string, CableState> cables;            // by cable
   // the held ends' forces (<c>/start_force, <c>/end_force) by cable and end (0, 1)
   std::map<std::pair<std::string, int>, WrenchStamped> end_forces;
@@ -90,15 +92,18 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
     kEndForce,
     kStatus,
     kSceneInfo,
-    kCommand
+    kCommand,
+    kActuatorState
   };
   struct Route {
     Kind kind;
-    std::string body;  // kOdom, kForce, kEnvironment, kCommand; the cable's name for kCable
+    std::string body;  // kOdom, kForce, kEnvironment, kCommand, kActuatorState; the cable's
+                       // name for kCable
                        // and kEndForce
     int end = 0;       // kEndForce: 0 start, 1 end
   };
   bool sea = false;  // environment topics: environment.csv is written
+  bool actuators = false;  // actuator_state topics: actuators.csv is written
   std::map<std::uint16_t, Route> routes;
   std::vector<std::string> channel_bodies;  // bodies in channel order (fallback order)
   std::vector<std::string> channel_cables;  // cables in channel order (fallback order)
@@ -147,6 +152,10 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
       expect("towsim_msgs/msg/BodyEnvironment");
       routes[id] = {Kind::kEnvironment, rest.substr(0, slash)};
       sea = true;
+    } else if (slash != std::string::npos && rest.substr(slash) == "/actuator_state") {
+      expect("towsim_msgs/msg/ActuatorState");
+      routes[id] = {Kind::kActuatorState, rest.substr(0, slash)};
+      actuators = true;
     } else if (slash != std::string::npos && rest.substr(slash) == "/command" &&
                type == "towsim_msgs/msg/ActuatorCommand" && channel.message_encoding == "cdr") {
       // a vehicle's commands (the winch's, towsim_msgs/WinchCommand, are not exported)
@@ -214,6 +223,13 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
           statuses.push_back(std::move(s));
           break;
         }
+        case Kind::kActuatorState: {
+          ActuatorState a = io::cdr::DecodeActuatorState(p, n);
+          // the first message of a stamp: the one published with the step, whose values the
+          // node's actuators.csv row has (a lockstep wait republishes the step later)
+          frames[StampNs(a.header.stamp)].actuators.emplace(route->second.body, std::move(a));
+          break;
+        }
         case Kind::kCommand:
           commands.emplace_back(route->second.body, io::cdr::DecodeActuatorCommand(p, n));
           break;
@@ -263,6 +279,8 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   std::optional<CsvFile> environment_csv;  // as the node: only for a scene with a sea
   if (sea) environment_csv.emplace(d / "environment.csv", io::kCsvEnvironmentHeader);
   CsvFile status_csv(d / "status.csv", io::kCsvStatusHeader);
+  std::optional<CsvFile> actuators_csv;  // a recording of a node with commanded vehicles
+  if (actuators) actuators_csv.emplace(d / "actuators.csv", io::kCsvActuatorsHeader);
   std::optional<CsvFile> winch_csv;
   if (has_winch) winch_csv.emplace(d / "winch.csv", io::kCsvWinchHeader);
   ExportCounts counts;
@@ -343,6 +361,21 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
                               m.current.x, m.current.y, m.current.z);
       ++counts.environment_rows;
     }
+    for (const std::string& b : bodies) {
+      const auto a = frame.actuators.find(b);
+      if (a == frame.actuators.end()) continue;
+      const ActuatorState& m = a->second;
+      core::VehicleCommand command;
+      command.thrust = m.thrust_command;
+      command.rudder = m.rudder_command;
+      command.elevator = m.elevator_command;
+      core::VehicleState state;
+      state.actuator[core::kThrust] = m.thrust;
+      state.actuator[core::kRudder] = m.rudder;
+      state.actuator[core::kElevator] = m.elevator;
+      io::WriteActuatorRow(actuators_csv->get(), t, b, command, state, m.failsafe);
+      ++counts.actuators_rows;
+    }
   }
   for (const io::cdr::SimStatus& s : statuses) {
     // the node's CSV: wall_us = lround(step wall time * 1e6), the same number it publishes
@@ -369,6 +402,7 @@ ExportCounts ExportCsv(const io::McapReader& reader, const std::string& dir,
   status_csv.Close();
   if (environment_csv) environment_csv->Close();
   if (winch_csv) winch_csv->Close();
+  if (actuators_csv) actuators_csv->Close();
   return counts;
 }
 

@@ -29,6 +29,11 @@
 //                                                 message in recorded order; written only when
 //                                                 the recording holds commands: towsim_record
 //                                                 captures them, sim_node --record does not)
+//   NS/<b>/actuator_state towsim_msgs/ActuatorState -> actuators.csv (the node's columns:
+//                                                 commands, actuator states, failsafe as
+//                                                 0 / 1; written only when the recording has
+//                                                 these topics: commanded vehicles; the first
+//                                                 message of a body and stamp)
 // A row set is written per recorded time stamp; `t` is the status's exact sim_time where a
 // status message has the same stamp, else the stamp (rounded to 1 ns by the node).
 //   NS/<c>/start_force geometry_msgs/WrenchStamped -> forces.csv's rows of held cable ends:
@@ -53,10 +58,11 @@ struct ExportCounts {
   std::uint64_t environment_rows = 0;
   std::uint64_t winch_rows = 0;  // a scene with a winch
   std::uint64_t commands_rows = 0;  // a recording with the vehicles' commands
+  std::uint64_t actuators_rows = 0;  // a recording with the vehicles' actuator states
 };
 
 // reads `reader_path` (McapReader::Open, or Recover if `recover`) and writes the four files
-// (and environment.csv, above)
+// (and environment.csv, actuators.csv, commands.csv, winch.csv, above)
 // into `dir` (created if needed). Throws mcap::McapError / cdr::CdrError (bad file: the
 // message names the offset and, for a payload, the topic), std::invalid_argument (no towsim
 // topics under `ns`, a topic with an unexpected type) or std::runtime_error (writing failed).

@@ -32,7 +32,7 @@ constexpr char kUsage[] =
     "usage: towsim_export FILE.mcap [--csv DIR] [--info] [--namespace NS] [--recover]\n"
     "  --csv DIR         write bodies.csv, cable.csv, forces.csv, status.csv into DIR\n"
     "                    (a network: <cable>.csv per cable; and winch.csv,\n"
-    "                    environment.csv, commands.csv when recorded)\n"
+    "                    environment.csv, actuators.csv, commands.csv when recorded)\n"
     "  --info            print topics, types, counts and the time range (like ros2 bag info)\n"
     "  --namespace NS    the node's namespace in the recording (default /towsim)\n"
     "  --recover         read what a killed recorder or damage left: every intact chunk;\n"
@@ -109,13 +109,15 @@ int main(int argc, char** argv) {
       std::fprintf(
           stderr,
           "towsim_export: %s -> %s: bodies %llu rows, cable %llu, forces %llu, status "
-          "%llu%s%s\n",
+          "%llu%s%s%s\n",
           o.file.c_str(), o.csv_dir.c_str(), static_cast<unsigned long long>(n.bodies_rows),
           static_cast<unsigned long long>(n.cable_rows),
           static_cast<unsigned long long>(n.forces_rows),
           static_cast<unsigned long long>(n.status_rows),
           n.environment_rows == 0 ? ""
                                   : (", environment " + std::to_string(n.environment_rows)).c_str(),
+          n.actuators_rows == 0 ? ""
+                                : (", actuators " + std::to_string(n.actuators_rows)).c_str(),
           n.commands_rows == 0 ? "" : (", commands " + std::to_string(n.commands_rows)).c_str());
     }
     if (!reader.skipped().empty()) {

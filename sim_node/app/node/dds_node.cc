@@ -22,6 +22,7 @@
 #include "app/node/run_counters.h"
 #include "app/node/fold_watch.h"
 #include "app/node/strain_watch.h"
+#include "dds/actuator_state_translator.h"
 #include "dds/command_arbiter.h"
 #include "dds/translators.h"
 #include "io/output_error.h"
@@ -115,6 +116,9 @@ class DdsNode {
   // back to the scene's initial state; false on solver failure
   bool DoReset();
   void PublishInitial();
+  // the state of step_ on the state topics (NodeEndpoints::PublishState), the vehicles'
+  // actuator flags first: the arbiter's failsafe flags and command_source_
+  void PublishState(bool all);
   void PublishStatus(uint8_t state);
   uint8_t RunningState() const;
   void Output(const core::StepStatus& status, long wall_us);
@@ -162,6 +166,10 @@ class DdsNode {
   uint64_t winch_script_rejected_ = 0;
   bool output_failed_ = false;  // opt_.output threw io::OutputError
   std::vector<bool> failsafe_;  // by vehicle, for opt_.output (reused: no allocation per output)
+  // by vehicle: who set the command it holds (dds::kSource*, docs/topics.md "Actuator state"),
+  // and the vehicles a script entry set in this step (reused)
+  std::vector<uint8_t> command_source_;
+  std::vector<bool> script_set_;
   std::vector<bool> winch_failsafe_;  // by winch, the same
   // --fail-on-failsafe: why the run ends (app/node/failsafe_failure.h); empty: no failsafe yet
   std::string failsafe_failure_;
@@ -177,6 +185,7 @@ int DdsNode::Run() {
                                             opt_.wait_for_controllers && !Awaited().empty(),
                                             n_.steps_to_run, opt_.rate});
   run_id_ = NewRunId(model_.name);
+  command_source_.assign(model_.vehicles.size(), dds::kSourceNone);
 
   int exit_code = kExitOk;
   start_wall_ = rtf_wall_ = last_status_wall_ = Clock::now();
@@ -290,9 +299,18 @@ void DdsNode::PublishInitial() {
   }
   ApplyPoses();
   last_status_ = core::StepStatus{};
-  n_.endpoints->PublishState(*n_.sim, step_, n_.strides, /*all=*/true);
+  PublishState(/*all=*/true);
   PublishStatus(RunningState());
   Output(last_status_, 0);
+}
+
+void DdsNode::PublishState(bool all) {
+  for (int i = 0; i < num_command_vehicles(); ++i) {
+    const int v = n_.command_vehicles[i];
+    n_.endpoints->SetActuatorFlags(v,
+                                   dds::ActuatorFlags{n_.arbiter->failsafe(i), command_source_[v]});
+  }
+  n_.endpoints->PublishState(*n_.sim, step_, n_.strides, all);
 }
 
 uint8_t DdsNode::RunningState() const {
@@ -456,7 +474,7 @@ bool DdsNode::WaitLockstep(int64_t step) {
     if (!initial && Seconds(now - last_status_wall_) >= kIdleStatusPeriod) {
       // again, for late joiners (volatile topics): the state, then the status (not before the
       // initial state: a status asks the vessels' feeders for the pose of the next state)
-      n_.endpoints->PublishState(*n_.sim, step_, n_.strides, /*all=*/true);
+      PublishState(/*all=*/true);
       PublishStatus(kWaiting);
     }
     double slice = kWaitSlice;
@@ -506,7 +524,7 @@ void DdsNode::CountMissingPoses() {
 
 void DdsNode::Idle() {
   if (Seconds(Clock::now() - last_status_wall_) >= kIdleStatusPeriod) {
-    n_.endpoints->PublishState(*n_.sim, step_, n_.strides, /*all=*/true);
+    PublishState(/*all=*/true);
     PublishStatus(RunningState());
   }
   n_.endpoints->WaitForInput(kWaitSlice);
@@ -562,10 +580,21 @@ bool DdsNode::DoStep() {
   }
   // the script entries due first, then the controllers' commands (and failsafes) over them:
   // the vehicles', then the winch's (docs/winch_dds.md)
-  if (opt_.use_script) n_.script->Apply(&sim);
+  // (the source of each vehicle's command: the last of them that set it)
+  if (opt_.use_script) {
+    script_set_.assign(model_.vehicles.size(), false);
+    n_.script->Apply(&sim, &script_set_);
+    for (std::size_t v = 0; v < script_set_.size(); ++v) {
+      if (script_set_[v]) command_source_[v] = dds::kSourceScript;
+    }
+  }
   for (int i = 0; i < num_command_vehicles(); ++i) {
     core::VehicleCommand command;
-    if (n_.arbiter->Take(i, &command)) sim.SetVehicleCommand(n_.command_vehicles[i], command);
+    if (n_.arbiter->Take(i, &command)) {
+      sim.SetVehicleCommand(n_.command_vehicles[i], command);
+      command_source_[n_.command_vehicles[i]] =
+          n_.arbiter->failsafe(i) ? dds::kSourceFailsafe : dds::kSourceDds;
+    }
   }
   for (int w = 0; w < n_.num_winch_entries; ++w) {
     if (core::WinchCommand winch; n_.arbiter->Take(n_.winch_entry + w, &winch))
@@ -602,7 +631,7 @@ bool DdsNode::DoStep() {
     return false;
   }
 
-  n_.endpoints->PublishState(sim, step_, n_.strides, /*all=*/false);
+  PublishState(/*all=*/false);
   const Clock::time_point t1 = Clock::now();
   step_wall_ = Seconds(t1 - t0);
 
@@ -647,6 +676,7 @@ bool DdsNode::DoReset() {
     n_.endpoints->pose_reader(i).TakeEach([](const dds::OdometryMsg&, const auto&) {});
   }
   n_.arbiter->Reset();
+  command_source_.assign(model_.vehicles.size(), dds::kSourceNone);
   step_ = 0;
   last_status_ = core::StepStatus{};
   step_wall_ = 0.0;

@@ -35,13 +35,16 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::To
       tf_static_msg_(dds::StaticTransforms(sim)),
       names_(names) {
   for (int b = 0; b < sim.num_bodies(); ++b) body_names_.push_back(sim.body_name(b));
+  vehicles_.commanded.assign(sim.num_vehicles(), false);
+  vehicles_.flags.assign(sim.num_vehicles(), dds::ActuatorFlags{});
+  for (int v : command_vehicles) vehicles_.commanded[v] = true;
   // the state topics (app/common/node_topics.h): each body's, then the node's, /clock last
   const std::vector<TopicRow>& table = NodeTopicTable();
   for (int b = 0; b < sim.num_bodies(); ++b) {
     for (const TopicRow& row : table) {
       if (!row.per_body()) continue;
       std::unique_ptr<StateTopic> topic =
-          row.make(participant, row, names.Name(row.topic, body_names_[b]), sim, b);
+          row.make(participant, row, names.Name(row.topic, body_names_[b]), sim, b, vehicles_);
       if (topic != nullptr) state_.push_back({std::move(topic), {}});  // else not in this scene
     }
   }
@@ -55,7 +58,7 @@ NodeEndpoints::NodeEndpoints(const dds::Participant& participant, const wire::To
         const std::string name = row.per_cable() ? names.Name(row.topic, sim.cable_name(c))
                                                  : names.Name(row.topic);
         std::unique_ptr<StateTopic> topic =
-            row.make(participant, row, name, sim, row.per_cable() ? c : -1);
+            row.make(participant, row, name, sim, row.per_cable() ? c : -1, vehicles_);
         if (topic != nullptr) state_.push_back({std::move(topic), {}});
       }
     }

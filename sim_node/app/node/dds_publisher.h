@@ -1,6 +1,7 @@
 #pragma once
 // The DDS endpoints of the node (docs/contract.md §3): the writers of the per-step state topics of
-// app/common/node_topics.h (odometry, cable force, altitude and pressure of each body; cable state,
+// app/common/node_topics.h (odometry, cable force, altitude and pressure of each body, actuator
+// state of each vehicle that takes commands; cable state,
 // /tf, markers, /clock), of status, scene info and /tf_static (docs/frames.md); readers of the
 // vehicles' commands and of sim_control. A message is built and serialized only when its
 // writer has a matched reader (or a recording or a Foxglove client takes it); scene info and
@@ -41,6 +42,11 @@ class NodeEndpoints {
   // them when `all`); those of each body, then those of the node, /clock last
   void PublishState(const core::Simulation& sim, uint64_t step, const core::PublishStrides& strides,
                     bool all);
+  // the failsafe flag and source of vehicle v's command (Model::vehicles order), for its
+  // actuator_state messages from now on (docs/topics.md "Actuator state")
+  void SetActuatorFlags(int vehicle, const dds::ActuatorFlags& flags) {
+    vehicles_.flags[vehicle] = flags;
+  }
   void PublishStatus(const dds::StatusSample& sample);
   void PublishSceneInfo(const dds::SceneInfoSample& sample);
   // from now on, every message published is also written to `recording` (one channel per
@@ -121,6 +127,8 @@ class NodeEndpoints {
   dds::Writer<dds::SimStatusMsg> status_;
   dds::Writer<dds::SceneInfoMsg> scene_;
   dds::Writer<dds::TfMsg> tf_static_;
+  // the vehicles' commands (app/common/node_topics.h): read by the actuator_state topics
+  VehicleCommands vehicles_;
   std::vector<Published> state_;  // in the order they are published
   std::vector<dds::Topic> command_topics_;
   std::vector<std::unique_ptr<dds::Reader<dds::ActuatorCommandMsg>>> command_readers_;
