@@ -66,6 +66,12 @@ example)
   set -e
   grep -q "zigzag_none: cannot read the file" "$work/config.err" ||
     fail "maneuver_runner --config zigzag_none: $(cat "$work/config.err")"
+  # the installed bridge writes the layout of an installed scene named bare: the shipped
+  # layout is its output for case1_forward (docs/foxglove.md "A layout for any scene")
+  "$work/prefix/bin/towsim_foxglove" --layout case1_forward --output "$work/layout.json" ||
+    fail "towsim_foxglove --layout case1_forward (installed)"
+  cmp -s "$work/layout.json" "$work/prefix/share/towsim/foxglove/towsim.json" ||
+    fail "towsim_foxglove --layout case1_forward differs from share/towsim/foxglove/towsim.json"
   # the plotting scripts start from the installation (paper_cases.py beside them), where a
   # python3 with matplotlib is there to run them
   if /usr/bin/python3 -c "import matplotlib" 2> /dev/null; then

@@ -76,6 +76,7 @@
 #include "app/common/topic_types.h"
 #include "app/foxglove/foxglove_commands.h"
 #include "app/foxglove/foxglove_layout.h"
+#include "installed/installed_data.h"
 #include "app/foxglove/foxglove_server.h"
 #include "dds/entities.h"
 #include "dds/messages.h"
@@ -390,7 +391,10 @@ namespace {
 int WriteLayout(const Options& o, const towsim::app::ToolCommandLine& line) {
   std::string json;
   try {
-    json = towsim::app::FoxgloveLayoutJson(towsim::scene::LoadScene(o.layout),
+    // a bare scene name also finds the scenes of an installed towsim, as sim_node's --scene
+    const std::string scene =
+        towsim::installed::ResolveInstalled(o.layout, towsim::installed::kScenes);
+    json = towsim::app::FoxgloveLayoutJson(towsim::scene::LoadScene(scene),
                                            wire::TopicNames(o.ns));
   } catch (const std::exception& e) {  // scene::ConfigError: file, line and rule
     return line.Fail(std::string("--layout ") + o.layout + ": " + e.what());
