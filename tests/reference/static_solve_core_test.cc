@@ -165,12 +165,14 @@ TEST(StaticSolveCore, SlackReleasedOntoTheSeabedSettlesToTheGroundedCatenary) {
   // anchor (straight, the cable would be compressed by 8 %)
   constexpr double kDepth = 60.0, kHeight = 40.0, kDistance = 184.0;
   const double span = std::sqrt(kDistance * kDistance - kHeight * kHeight);
-  for (const std::string& start : {"straight", "static"}) {
+  const std::string depth = std::to_string(kDepth);
+  for (const std::string start : {"straight", "static"}) {
     const core::Model m = scene::LoadScene(
         kCatenary,
-        {"cable.elements=40", "cable.initial=" + start, "cable.start={fixed: [0, 0, 60]}",
-         "cable.end={fixed: [" + std::to_string(span) + ", 0, 20]}",
-         "environment.seabed={depth: 60, stiffness: 3.0e6, damping: 3.0e4, friction: 0}"});
+        {"cable.elements=40", "cable.initial=" + start, "cable.start={fixed: [0, 0, " + depth + "]}",
+         "cable.end={fixed: [" + std::to_string(span) + ", 0, " +
+             std::to_string(kDepth - kHeight) + "]}",
+         "environment.seabed={depth: " + depth + ", stiffness: 3.0e6, damping: 3.0e4, friction: 0}"});
     GroundedCatenaryProblem p;
     p.length = m.cables[0].length;
     p.span = span;

@@ -41,11 +41,20 @@ std::string Num(double x) {
   return b;
 }
 
-// the paper's cable from a point driven at V (the tow point 3.5 m deep) to the towfish's bow
-core::Model TowedFish(double speed, double length) {
+// the paper's cable from its start to the towfish's bow, 20 elements, initial: static at V:
+// the start driven at V (the tow point 3.5 m deep), or on the towing vehicle (propeller, no
+// thrust given) when `towing`
+core::Model TowScene(double speed, double length, bool towing) {
   const double a = 30.0 * M_PI / 180.0;  // the hand-placed guess: 30 degrees down
+  const std::string v = Num(speed);
+  const std::string start = towing
+      ? "{body: tow_vehicle, at: [0, 0, 0.2]}"
+      : "{driven: {position: [0, 0, 3.5], velocity: [" + v + ", 0, 0]}}";
+  const std::string tow_vehicle =
+      towing ? "  tow_vehicle: {model: ../vehicles/tow_vehicle.yaml, position: [0, 0, 3.5]}\n"
+             : "";
   return scene::LoadSceneFromString(
-      "name: balance_towed\n"
+      "name: balance\n"
       "time: {step: 0.05, duration: 300, output_rate: 10}\n"
       "environment: {water_density: 1025, dynamic_viscosity: 1.0e-3, gravity: 9.81}\n"
       "cable:\n"
@@ -53,34 +62,10 @@ core::Model TowedFish(double speed, double length) {
       "  length: " + Num(length) + "\n"
       "  elements: 20\n"
       "  initial: static\n"
-      "  initial_velocity: [" + Num(speed) + ", 0, 0]\n"
-      "  start: {driven: {position: [0, 0, 3.5], velocity: [" + Num(speed) + ", 0, 0]}}\n"
+      "  initial_velocity: [" + v + ", 0, 0]\n"
+      "  start: " + start + "\n"
       "  end: {body: towfish, at: [1.65, 0, 0]}\n"
-      "bodies:\n"
-      "  towfish: {model: ../vehicles/towfish.yaml, position: [" +
-          Num(-length * std::cos(a)) + ", 0, " + Num(3.5 + length * std::sin(a)) + "]}\n"
-      "integrator: {scheme: generalized_alpha, rho_inf: 0.8, coupling: strong, "
-      "tolerance: 1.0e-8, max_iterations: 20}\n",
-      "vehicle_balance_core_test.yaml", kScenes, {});
-}
-
-// the towing vehicle (propeller, no thrust given) with the towfish behind it
-core::Model TowingVehicle(double speed, double length) {
-  const double a = 30.0 * M_PI / 180.0;
-  return scene::LoadSceneFromString(
-      "name: balance_towing\n"
-      "time: {step: 0.05, duration: 300, output_rate: 10}\n"
-      "environment: {water_density: 1025, dynamic_viscosity: 1.0e-3, gravity: 9.81}\n"
-      "cable:\n"
-      "  line_type: park_kim_tow_cable\n"
-      "  length: " + Num(length) + "\n"
-      "  elements: 20\n"
-      "  initial: static\n"
-      "  initial_velocity: [" + Num(speed) + ", 0, 0]\n"
-      "  start: {body: tow_vehicle, at: [0, 0, 0.2]}\n"
-      "  end: {body: towfish, at: [1.65, 0, 0]}\n"
-      "bodies:\n"
-      "  tow_vehicle: {model: ../vehicles/tow_vehicle.yaml, position: [0, 0, 3.5]}\n"
+      "bodies:\n" + tow_vehicle +
       "  towfish: {model: ../vehicles/towfish.yaml, position: [" +
           Num(-length * std::cos(a)) + ", 0, " + Num(3.5 + length * std::sin(a)) + "]}\n"
       "integrator: {scheme: generalized_alpha, rho_inf: 0.8, coupling: strong, "
@@ -158,7 +143,7 @@ TEST(VehicleBalanceCore, TowedFishStartsInSteadyTowAtThreeSpeedsAndLengths) {
   };
   for (const Case c : {Case{2.0, 100.0}, Case{3.0, 200.0}, Case{6.0, 300.0}}) {
     Tow start, end;
-    RunSteady(TowedFish(c.speed, c.length), false, &start, &end);
+    RunSteady(TowScene(c.speed, c.length, false), false, &start, &end);
     ExpectSteady(start, end,
                  "towed at " + Num(c.speed) + " m/s on " + Num(c.length) + " m");
   }
@@ -167,7 +152,7 @@ TEST(VehicleBalanceCore, TowedFishStartsInSteadyTowAtThreeSpeedsAndLengths) {
 TEST(VehicleBalanceCore, TowingVehicleIsGivenTheThrustThatHoldsTheSpeed) {
   constexpr double kSpeed = 4.0;  // [m/s]
   Tow start, end;
-  const core::Model model = TowingVehicle(kSpeed, 200.0);
+  const core::Model model = TowScene(kSpeed, 200.0, true);
   RunSteady(model, true, &start, &end);
   ExpectSteady(start, end, "behind the towing vehicle at 4 m/s on 200 m");
   std::printf("towing vehicle's speed at the end %.5f m/s\n", end.speed);
@@ -179,7 +164,7 @@ TEST(VehicleBalanceCore, ASpeedThePropellerCannotHoldIsRefusedNamingIt) {
   // 8 m/s on 600 m of the paper's cable takes about 4165 N x (8/6)^2 x 3 = 22 kN (Case 3's
   // thrust scaled by the drag's V^2 L): more than the propeller's 12 kN
   try {
-    const core::Simulation sim(TowingVehicle(8.0, 600.0));
+    const core::Simulation sim(TowScene(8.0, 600.0, true));
     FAIL() << "balanced: " << sim.initial_report();
   } catch (const core::SolverError& e) {
     const std::string what = e.what();
