@@ -30,26 +30,13 @@
 // /clicked_point and /initialpose and sends a clicked point: taken and ignored, no error status
 // names them (docs/foxglove.md "Publishing from Foxglove").
 // Exits 77 (ctest: skipped) when the node modules are missing: run `npm ci` in this folder.
-import { spawn } from "node:child_process";
 import { mkdirSync, readFileSync, rmSync } from "node:fs";
 import { join } from "node:path";
 
 import { check, failures, near, readCsv } from "../js_common/checks.mjs";
+import { children, loadModules, resolvePath, splitPath, start, stopAll } from "./client_common.mjs";
 
-let ws, wsProtocol, rosmsg, serialization;
-try {
-  ws = await import("ws");
-  wsProtocol = await import("@foxglove/ws-protocol");
-  rosmsg = await import("@foxglove/rosmsg");
-  serialization = await import("@foxglove/rosmsg2-serialization");
-} catch (e) {
-  console.error(`node modules not installed (run "npm ci" in tests/foxglove_js): ${e.message}`);
-  process.exit(77);
-}
-const WebSocket = ws.default ?? ws.WebSocket;
-const { FoxgloveClient } = wsProtocol.FoxgloveClient ? wsProtocol : wsProtocol.default; // CommonJS from ESM
-const { parse: parseMessageDefinition } = rosmsg;
-const { MessageReader, MessageWriter } = serialization;
+const { WebSocket, FoxgloveClient, parseMessageDefinition, MessageReader, MessageWriter } = await loadModules();
 
 const [simNode, bridgeExe, sourceDir, outDir, domainText, ...flags] = process.argv.slice(2);
 const inNode = flags.includes("in-node");
@@ -75,25 +62,6 @@ const kLengthRelTol = 1e-12;
 
 rmSync(outDir, { recursive: true, force: true });
 mkdirSync(outDir, { recursive: true });
-const children = [];
-function start(argv, name) {
-  const child = spawn(argv[0], argv.slice(1), { stdio: ["ignore", "pipe", "pipe"] });
-  child.out = "";
-  child.err = "";
-  child.stdout.on("data", (d) => (child.out += d));
-  child.stderr.on("data", (d) => (child.err += d));
-  child.exited = new Promise((resolve) => child.on("exit", (code, signal) => {
-    child.signal = signal;
-    resolve(code ?? 128);
-  }));
-  child.name = name;
-  children.push(child);
-  return child;
-}
-function stopAll() {
-  for (const c of children) if (c.exitCode === null) c.kill("SIGKILL");
-}
-process.on("exit", stopAll);
 const deadline = setTimeout(() => {
   console.error("FAIL: timed out");
   console.error(`received: ${[...byTopic.entries()].map(([t, v]) => `${t} ${v.length}`).join(", ")}; ` +
@@ -439,16 +407,9 @@ const layout = JSON.parse(readFileSync(join(sourceDir, "config/foxglove/towsim.j
 for (const [id, panel] of Object.entries(layout.configById)) {
   if (id.startsWith("Plot!")) {
     for (const { value } of panel.paths) {
-      const dot = value.indexOf(".");
-      const topic = value.slice(0, dot);
-      const message = (byTopic.get(topic) ?? []).at(-1)?.value;
-      let v = message;
-      for (const part of value.slice(dot + 1).split(".")) {
-        // an index counts from the end when negative (Foxglove's message path syntax)
-        const m = part.match(/^(\w+)(?:\[(-?\d+)\])?$/);
-        v = v?.[m[1]];
-        if (m[2] !== undefined) v = v?.at(Number(m[2]));
-      }
+      const { topic, fields } = splitPath(value);
+      // a negative index counts from the end (Foxglove's message path syntax)
+      const v = resolvePath((byTopic.get(topic) ?? []).at(-1)?.value, fields);
       check(typeof v === "number" && Number.isFinite(v), `layout ${id}: ${value} = ${v}`);
     }
   }

@@ -6,8 +6,9 @@
 // per-attachment rows. --info lists the topics; a damaged recording exits 2 naming the offset.
 // A sea scene's environment topic comes back as the node's environment.csv; the commands
 // towsim_record captured come back as commands.csv; a network's cables as their <cable>.csv.
-// The actuator_state topics come back as the node's actuators.csv.
-// DDS domains 91, 92, 134, 188, 194, 195, 198 and 216.
+// The actuator_state topics come back as the node's actuators.csv, and as the actuators.csv of
+// the same scene and script run offline.
+// DDS domains 91, 92, 134, 188, 194, 195, 198 and 216, and one automatic (DomainLease).
 #include <unistd.h>
 
 #include <cstdlib>
@@ -47,34 +48,52 @@ class ExportRoundTrip : public ::testing::Test {
   ~ExportRoundTrip() override { fs::remove_all(dir_); }
 
   // runs `sim_node` in fast mode with --csv and --record, every topic at the output rate
-  // (`scene` relative to the source tree, or absolute)
-  void RecordRun(const std::string& scene, int domain, double duration) {
-    Process node({TOWSIM_SIM_NODE,
-                  "--scene",
-                  scene.front() == '/' ? scene : std::string(TOWSIM_SOURCE_DIR) + "/" + scene,
-                  "--mode",
-                  "fast",
-                  "--domain",
-                  std::to_string(domain),
-                  "--duration",
-                  std::to_string(duration),
-                  "--csv",
-                  (dir_ / "node").string(),
-                  "--record",
-                  (dir_ / "run.mcap").string(),
-                  "--set",
-                  "publish.odom=10",
-                  "--set",
-                  "publish.cable_force=10",
-                  "--set",
-                  "publish.cable_state=10",
-                  "--set",
-                  "publish.status=10",
-                  "--set",
-                  "publish.sensors=10"},
-                 (dir_ / "node").string());
+  // (`scene` relative to the source tree, or absolute), `extra` flags after them
+  void RecordRun(const std::string& scene, int domain, double duration,
+                 const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args = {TOWSIM_SIM_NODE,
+                                     "--scene",
+                                     SceneFile(scene),
+                                     "--mode",
+                                     "fast",
+                                     "--domain",
+                                     std::to_string(domain),
+                                     "--duration",
+                                     std::to_string(duration),
+                                     "--csv",
+                                     (dir_ / "node").string(),
+                                     "--record",
+                                     (dir_ / "run.mcap").string(),
+                                     "--set",
+                                     "publish.odom=10",
+                                     "--set",
+                                     "publish.cable_force=10",
+                                     "--set",
+                                     "publish.cable_state=10",
+                                     "--set",
+                                     "publish.status=10",
+                                     "--set",
+                                     "publish.sensors=10"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Process node(args, (dir_ / "node").string());
     ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
     ASSERT_EQ(node.exit_code(), 0) << node.err();
+  }
+
+  // the same scene with `sim_node --mode offline` (no DDS), its CSV files in dir_/offline
+  void OfflineRun(const std::string& scene, double duration,
+                  const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args = {TOWSIM_SIM_NODE, "--scene",    SceneFile(scene),
+                                     "--mode",        "offline",    "--duration",
+                                     std::to_string(duration), "--csv", (dir_ / "offline").string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    Process node(args, (dir_ / "offline").string());
+    ASSERT_TRUE(node.Wait(kTimeout)) << node.command_line();
+    ASSERT_EQ(node.exit_code(), 0) << node.err();
+  }
+
+  static std::string SceneFile(const std::string& scene) {
+    return scene.front() == '/' ? scene : std::string(TOWSIM_SOURCE_DIR) + "/" + scene;
   }
 
   Process Export(std::vector<std::string> args, const std::string& log) {
@@ -192,6 +211,72 @@ TEST_F(ExportRoundTrip, TwoVehiclesRecordedAndExportedEqualsTheNodesCsv) {
   ASSERT_EQ(fish.size(), 101u);
   for (const auto& [stamp, source] : tow) EXPECT_EQ(source, stamp == 0 ? 0 : 1) << stamp;
   for (const auto& [stamp, source] : fish) EXPECT_EQ(source, 0) << stamp;
+}
+
+// the offline script run against the DDS run (docs/recording.md "Verified"): Case 1 with a
+// script that moves every actuator column (thrust, both vehicles' rudders and elevators, one
+// entry behind a `when` condition), run once by `sim_node --mode offline --csv` and once in
+// fast mode over DDS, recorded and exported: the offline actuators.csv is the export's byte for
+// byte. Without a controller the fast node's vehicles take the scene's script as the offline
+// run's do (docs/contract.md "4. Running modes"), the same step on the same state: the two runs
+// agree bit for bit, so to every printed digit; bodies.csv, cable.csv and forces.csv too. DDS
+// domain: automatic (DomainLease, 200-231).
+TEST_F(ExportRoundTrip, OfflineScriptRunsActuatorsCsvEqualsTheExportOfTheRecordedDdsRun) {
+  const towsim::testing::DomainLease lease;
+  constexpr double kDuration = 10.0;  // [s]
+  const std::vector<std::string> script = {
+      "--set",
+      "script=[{at: 0, body: tow_vehicle, thrust: 4165},"
+      " {at: 2, body: tow_vehicle, rudder_deg: 10},"
+      " {at: 3, body: towfish, elevator_deg: -5, rudder_deg: 4},"
+      " {at: 4, when: \"tow_vehicle.yaw_deg >= 1\", body: tow_vehicle, rudder_deg: -5,"
+      " elevator_deg: 3, thrust: 3000}]"};
+  RecordRun("config/scenes/case1_forward.yaml", lease.id(), kDuration, script);
+  // the same scene: the publish rates RecordRun sets are DDS keys, the offline run's too
+  std::vector<std::string> offline = {"--set", "publish.odom=10",         "--set",
+                                      "publish.cable_force=10", "--set", "publish.cable_state=10",
+                                      "--set", "publish.status=10",       "--set",
+                                      "publish.sensors=10"};
+  offline.insert(offline.end(), script.begin(), script.end());
+  OfflineRun("config/scenes/case1_forward.yaml", kDuration, offline);
+  Process exp = Export({(dir_ / "run.mcap").string(), "--csv", (dir_ / "exported").string()},
+                       "export");
+  ASSERT_TRUE(exp.Wait(kTimeout));
+  ASSERT_EQ(exp.exit_code(), 0) << exp.err();
+
+  const auto a = Lines((dir_ / "offline/actuators.csv").string());
+  const auto b = Lines((dir_ / "exported/actuators.csv").string());
+  ASSERT_EQ(a.size(), 1 + 2 * 101u) << "two vehicles at t = 0, 0.1, ..., 10";
+  ASSERT_EQ(b.size(), a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(b[i], a[i]) << "first difference at line " << i + 1;
+  }
+  EXPECT_EQ(ReadFile((dir_ / "offline/actuators.csv").string()),
+            ReadFile((dir_ / "exported/actuators.csv").string()));
+  // not a comparison of zeros: every command column of both vehicles moved (the fins' state
+  // follows them), and the conditional entry fired
+  std::map<std::string, std::vector<bool>> moved;  // body -> columns 2..7 ever non-zero
+  bool conditional = false;
+  for (std::size_t i = 1; i < a.size(); ++i) {
+    std::vector<std::string> f;
+    std::stringstream in(a[i]);
+    for (std::string x; std::getline(in, x, ',');) f.push_back(x);
+    ASSERT_EQ(f.size(), 9u) << a[i];
+    auto& m = moved.try_emplace(f[1], 6, false).first->second;
+    for (int c = 0; c < 6; ++c) m[c] = m[c] || std::stod(f[2 + c]) != 0.0;
+    conditional = conditional || (f[1] == "tow_vehicle" && f[2] == "3000");
+    EXPECT_EQ(f[8], "0") << "no failsafe: " << a[i];
+  }
+  EXPECT_EQ(moved["tow_vehicle"], std::vector<bool>(6, true));
+  // the towfish has no propeller: thrust command and thrust stay 0
+  EXPECT_EQ(moved["towfish"], (std::vector<bool>{false, true, true, false, true, true}));
+  EXPECT_TRUE(conditional) << "the entry behind `when` never fired";
+  // the whole run agrees, not the actuators only
+  for (const char* file : {"bodies.csv", "cable.csv", "forces.csv"}) {
+    EXPECT_EQ(ReadFile((dir_ / "offline" / file).string()),
+              ReadFile((dir_ / "exported" / file).string()))
+        << file;
+  }
 }
 
 // the commands a controller sent, recorded by towsim_record beside a lockstep node (Case 1,

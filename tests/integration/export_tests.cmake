@@ -1,5 +1,6 @@
 # towsim_export round trips: sim_node --record + --csv, then towsim_export --csv;
-# real processes over loopback DDS, domains 91, 92, 134, 188, 194, 195, 198 and 216. Included from tests/unit/mcap_tests.cmake.
+# real processes over loopback DDS, domains 91, 92, 134, 188, 194, 195, 198 and 216 and one
+# automatic (DomainLease, 200-231). Included from tests/unit/mcap_tests.cmake.
 set(_export_dir ${PROJECT_SOURCE_DIR}/tests/integration)
 add_executable(export_roundtrip_test ${_export_dir}/export_roundtrip_test.cc)
 target_link_libraries(export_roundtrip_test PRIVATE towsim::testing towsim::io GTest::gtest
