@@ -345,6 +345,24 @@ def main():
         lines.append(f"| `{name}` | {t:g} | " + " | ".join(cells) +
                      f" | {run.newton:.2f} | {run.wall:.2f} |")
     lines.append("")
+    # the ratios at a glance: one row per scene, track / tension per tolerance
+    lines.append("| ratio solver / discretisation (track / tension) | " +
+                 " | ".join(f"{t:g}" for t in tolerances) + " |")
+    lines.append("|---|" + "---|" * len(tolerances))
+    for scene in scenes:
+        cells = []
+        for name, t, run, solver, ratio, ok in rows:
+            if name != scene.name:
+                continue
+            if not run.ok:
+                cells.append(f"exit {run.code}")
+            elif ratio is None:
+                cells.append("-")
+            else:
+                cell = f"{ratio[0]:.2g} / {ratio[1]:.2g}"
+                cells.append(cell if ok else f"**{cell}**")
+        lines.append(f"| `{scene.name}` | " + " | ".join(cells) + " |")
+    lines.append("")
     ok_all = [t for t in tolerances if passing[t]]
     if ok_all:
         loosest = max(ok_all)
