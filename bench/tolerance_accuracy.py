@@ -34,9 +34,7 @@ iterations mean of sim_node's summary line and each run's wall time, then the lo
 at which every scene's ratio is <= --ratio (0.10) on both measures. A run that fails (exit != 0)
 is recorded in the table ("exit 3"), not fatal. Python 3, standard library only. sim_node:
 --sim-node, else DIR/sim_node/app/sim_node (--build, default build/ of this checkout).
-Network scenes (cables:) get their finer elements as one --set cables=<the scene's cables block
-with the element counts changed>, since sim_node's --set walks into named cables of a
-cables: map no further than the map itself.
+Network scenes (cables:) get their finer elements by --set cables.<name>.elements=N.
 """
 
 import argparse
@@ -126,16 +124,10 @@ class Scene:
         """--set arguments giving every cable factor times its elements"""
         if not self.network:
             return ["--set", f"cable.elements={self.cables[0][1] * factor}"]
-        block, name = [], None
-        for line in self._block("cables"):
-            m = re.match(r"^  ([A-Za-z_][A-Za-z0-9_]*):", line)
-            if m:
-                name = m.group(1)
-            m = re.match(r"^(    elements:\s*)(\d+)(.*)$", line)
-            if m and name:
-                line = f"{m.group(1)}{int(m.group(2)) * factor}{m.group(3)}"
-            block.append(line[2:] if line.startswith("  ") else line)
-        return ["--set", "cables=" + "\n".join(block)]
+        args = []
+        for name, n in self.cables:
+            args += ["--set", f"cables.{name}.elements={n * factor}"]
+        return args
 
     def top_cable_csv(self):
         return "cable.csv" if not self.network else f"{self.cables[0][0]}.csv"

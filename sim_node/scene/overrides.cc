@@ -38,6 +38,7 @@ void Assign(YAML::Node map, const std::string& key, const YAML::Node& value) {
   }
 }
 
+// comma-separated names of a map of named entries (bodies, cables), for error messages
 std::string BodyList(const YAML::Node& bodies) {
   std::string list;
   if (!bodies.IsMap()) return "none";
@@ -92,6 +93,17 @@ void ApplyOverrides(const std::vector<std::string>& overrides, YAML::Node root, 
           throw ConfigError(
               key, text, kSet,
               "no body named " + part + " in the scene (bodies: " + BodyList(node) + ")");
+        }
+      } else if (kind == MapKind::kCables) {
+        // cables.<name>.elements=40: the keys of a cable need the cable; a whole new cable may
+        // be given as a map (cables.<name>={...})
+        if (!IsValidName(part)) {
+          throw ConfigError(key, text, kSet, "cable name " + part + " " + kNameRule);
+        }
+        if (!last && !FindChild(node, part).IsDefined()) {
+          throw ConfigError(
+              key, text, kSet,
+              "no cable named " + part + " in the scene (cables: " + BodyList(node) + ")");
         }
       } else if (kind == MapKind::kLineTypes) {
         // a line type's keys may start a new type (its missing keys are then reported)

@@ -1359,6 +1359,44 @@ INSTANTIATE_TEST_SUITE_P(
                     "is required"}),
     [](const ::testing::TestParamInfo<BadOverride>& info) { return std::string(info.param.name); });
 
+// a network's cables by name (docs/command_line.md --set): cables.<name>.<key>
+TEST_F(SceneLoaderTest, OverrideOfANamedCable) {
+  const std::string two_part = kConfigDir + "/scenes/two_part_tow.yaml";
+  const core::Model base = LoadScene(two_part);
+  ASSERT_EQ(base.cables.size(), 2u);
+  const core::Model m = LoadScene(two_part, {"cables.tether.elements=17", "cables.main.length=450"});
+  int changed = 0;
+  for (size_t c = 0; c < m.cables.size(); ++c) {
+    const bool tether = m.cables[c].elements != base.cables[c].elements;
+    if (tether) {
+      EXPECT_EQ(m.cables[c].elements, 17);
+      ++changed;
+    }
+    if (m.cables[c].length != base.cables[c].length) {
+      EXPECT_DOUBLE_EQ(m.cables[c].length, 450.0);
+      ++changed;
+    }
+  }
+  EXPECT_EQ(changed, 2);
+  // an unknown cable is named with the scene's cables; a bad key with the cable's path
+  try {
+    LoadScene(two_part, {"cables.tow.elements=3"});
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("no cable named tow in the scene (cables: main, tether)"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    LoadScene(two_part, {"cables.main.lenght=3"});
+    FAIL() << "no ConfigError";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("cables.main: unknown key; did you mean length?"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(SceneLoaderTest, OverrideOfFileValueIsLocatedAtSet) {
   try {
     LoadScene(kCatenary, {"cable.elements=0"});
