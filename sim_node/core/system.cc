@@ -614,4 +614,13 @@ std::string System::DescribeDof(int i, const VectorXd& q) const {
   return s.str();
 }
 
+std::vector<int> System::VehicleEnds(int v) const {
+  std::vector<int> ends;
+  for (int end = 0; end < num_ends(); ++end) {
+    const CableEnd& e = End(end % 2, end / 2);
+    if (e.kind == EndKind::kVehicle && e.body == v) ends.push_back(end);
+  }
+  return ends;
+}
+
 }  // namespace towsim::core

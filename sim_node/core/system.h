@@ -124,6 +124,8 @@ class System {
   // cable ends: end k of cable c is end 2 c + k (0 start, 1 end) of the network; its
   // multipliers' offset and count
   int num_ends() const { return 2 * num_cables(); }
+  // the ends (2 c + k) that vehicle v holds, in network order (its attachments)
+  std::vector<int> VehicleEnds(int v) const;
   int EndLambda(int end, int c = 0) const {
     return cables_[c].lambda_offset + (end == 0 ? 0 : cables_[c].lambda_count[0]);
   }

@@ -54,10 +54,15 @@ class Balance {
     const Model& m = sys.model();
     min_length_ = std::numeric_limits<double>::infinity();
     for (const CableParams& c : m.cables) min_length_ = std::min(min_length_, c.length);
+    const int nv = static_cast<int>(m.vehicles.size());
+    towing_.assign(nv, false);
+    ends_.resize(nv);
     for (int v : held_) {
-      const bool tows = IsTowingVehicle(sys, v);
-      for (int u = tows ? kZ : kX; u <= kYaw; ++u) vars_.push_back({v, static_cast<Unknown>(u)});
-      if (tows) vars_.push_back({v, kThrustUnknown});
+      towing_[v] = IsTowingVehicle(sys, v);
+      ends_[v] = sys.VehicleEnds(v);
+      for (int u = towing_[v] ? kZ : kX; u <= kYaw; ++u)
+        vars_.push_back({v, static_cast<Unknown>(u)});
+      if (towing_[v]) vars_.push_back({v, kThrustUnknown});
     }
   }
 
@@ -81,15 +86,11 @@ class Balance {
   // every straight step leaves it, and Levenberg-Marquardt crawls).
   void SetPivots(const State& s) {
     pivot_.assign(sys_.model().vehicles.size(), Vec3::Zero());
-    for (int v : held_)
-      for (int end = 0; end < sys_.num_ends(); ++end) {
-        const int c = end / 2;
-        const CableEnd& e = sys_.End(end % 2, c);
-        if (e.kind != EndKind::kVehicle || e.body != v) continue;
-        const int far = end % 2 == 0 ? sys_.num_nodes(c) - 1 : 0;
-        pivot_[v] = s.q.segment<3>(sys_.CableDof(far, c));
-        break;
-      }
+    for (int v : held_) {
+      const int end = ends_[v].front(), c = end / 2;
+      const int far = end % 2 == 0 ? sys_.num_nodes(c) - 1 : 0;
+      pivot_[v] = s.q.segment<3>(sys_.CableDof(far, c));
+    }
   }
   // the range of vehicle v from its pivot [m]
   double Range(int v, const std::vector<VehiclePose>& poses) const {
@@ -106,7 +107,7 @@ class Balance {
         case kY: x[i] = std::atan2(d.y(), d.x()); break;
         case kZ:
           // a towing vehicle keeps x, y: its depth is its own
-          x[i] = IsTowingVehicle(sys_, v) ? poses[v].p.z() : std::atan2(d.z(), d.head<2>().norm());
+          x[i] = towing_[v] ? poses[v].p.z() : std::atan2(d.z(), d.head<2>().norm());
           break;
         case kRoll: x[i] = poses[v].rpy.x(); break;
         case kPitch: x[i] = poses[v].rpy.y(); break;
@@ -139,7 +140,7 @@ class Balance {
   // whether unknown i is an angle of a position (azimuth, elevation)
   bool PositionAngle(int i) const {
     const Unknown u = vars_[i].unknown;
-    return u == kY || (u == kZ && !IsTowingVehicle(sys_, vars_[i].vehicle));
+    return u == kY || (u == kZ && !towing_[vars_[i].vehicle]);
   }
 
   // the difference step of unknown i (about the poses `at`)
@@ -190,13 +191,11 @@ class Balance {
       const VehicleState& vs = s->vehicles[v];
       const Mat3 r_wb = vs.q_WB.toRotationMatrix();
       Vec3 force_B = Vec3::Zero(), moment_B = Vec3::Zero();
-      for (int end = 0; end < sys_.num_ends(); ++end) {
-        const CableEnd& e = sys_.End(end % 2, end / 2);
-        if (e.kind != EndKind::kVehicle || e.body != v) continue;
+      for (const int end : ends_[v]) {
         // the joint force on the vehicle is the end's multiplier (Eq. 29-30)
         const Vec3 f_B = r_wb.transpose() * s->lambda.segment<3>(sys_.EndLambda(end % 2, end / 2));
         force_B += f_B;
-        moment_B += e.at_B.cross(f_B);
+        moment_B += sys_.End(end % 2, end / 2).at_B.cross(f_B);
       }
       if (sys_.sea().has_seabed()) {
         const Vec6 w = SeabedContactWrench(p, sys_.sea(), vs);
@@ -251,7 +250,7 @@ class Balance {
   // the vehicle's command at the pose (a towing vehicle's thrust is the unknown's)
   VehicleCommand Command(int v, const VehiclePose& pose) const {
     VehicleCommand c = commands_[v];
-    if (IsTowingVehicle(sys_, v)) c.thrust = pose.thrust;
+    if (towing_[v]) c.thrust = pose.thrust;
     return c;
   }
   int solves() const { return solves_; }
@@ -272,10 +271,8 @@ class Balance {
       const Actuator law = kVehicleActuators[a].law(p);
       vs.actuator[a] = law.fitted ? law.Target(c.*kVehicleActuators[a].command) : 0.0;
     }
-    for (int end = 0; end < sys_.num_ends(); ++end) {
-      const CableEnd& e = sys_.End(end % 2, end / 2);
-      if (e.kind != EndKind::kVehicle || e.body != v) continue;
-      const Vec3 point = vs.p_W + r_wb * e.at_B;
+    for (const int end : ends_[v]) {
+      const Vec3 point = vs.p_W + r_wb * sys_.End(end % 2, end / 2).at_B;
       SupportMotion& sm = s->supports[end];
       sm = SupportMotion();
       sm.p0 = sm.p1 = point;
@@ -284,27 +281,17 @@ class Balance {
   }
 
  private:
-  static double* Slot(const Variable& var, VehiclePose* pose) {
-    switch (var.unknown) {
-      case kX: return &pose->p.x();
-      case kY: return &pose->p.y();
-      case kZ: return &pose->p.z();
-      case kRoll: return &pose->rpy.x();
-      case kPitch: return &pose->rpy.y();
-      case kYaw: return &pose->rpy.z();
-      default: return &pose->thrust;
-    }
-  }
-
   const System& sys_;
   Vec3 vf_;
   const std::vector<VehicleCommand>& commands_;
   std::vector<int> held_;
   std::vector<Variable> vars_;
+  std::vector<bool> towing_;            // per vehicle: IsTowingVehicle
+  std::vector<std::vector<int>> ends_;  // per vehicle: System::VehicleEnds
   std::vector<Vec3> pivot_;
   double min_length_ = 1.0;
   int solves_ = 0;
-  mutable std::vector<double> cable_force_;  // |cable force| at the first evaluation [N]
+  std::vector<double> cable_force_;  // |cable force| at the first evaluation [N]
 };
 
 // the worst balance left: "vehicle towfish: force [..] N, moment [..] N m"
@@ -327,13 +314,7 @@ std::string DescribeResidual(const System& sys, const std::vector<int>& held, co
 std::vector<int> HeldVehicles(const System& sys) {
   std::vector<int> held;
   for (int v = 0; v < static_cast<int>(sys.model().vehicles.size()); ++v)
-    for (int end = 0; end < sys.num_ends(); ++end) {
-      const CableEnd& e = sys.End(end % 2, end / 2);
-      if (e.kind == EndKind::kVehicle && e.body == v) {
-        held.push_back(v);
-        break;
-      }
-    }
+    if (!sys.VehicleEnds(v).empty()) held.push_back(v);
   return held;
 }
 

@@ -19,9 +19,8 @@ VehicleCoupling::VehicleCoupling(const System& system, Integrator* integrator, S
     first_[v] = static_cast<int>(attachments_.size());
     const VehicleParams& vp = model.vehicles[v].params;
     const Mat6 m = RigidBodyMassMatrix(vp) + vp.added_mass;
-    for (int end = 0; end < system_.num_ends(); ++end) {
+    for (const int end : system_.VehicleEnds(v)) {
       const CableEnd& e = system_.End(end % 2, end / 2);
-      if (e.kind != EndKind::kVehicle || e.body != v) continue;
       // G = J M^-1 J^T, J = [I, -S(r)]: the point's acceleration per unit force at the point
       // (point velocity v + omega x r = v - S(r) omega)
       Attachment at;
