@@ -19,8 +19,7 @@ FoldReport FindFold(const System& sys, const Eigen::VectorXd& q) {
       const Vec3 chord = rb - ra;
       // the middle slope times the rest length l: 3/2 c - l (r'_a + r'_b) / 4 (element 0 of
       // a winch's cable has the drum's rest length)
-      const double l = (c == 0 && e == 0 && sys.has_winch()) ? sys.drum_length()
-                                                             : sys.element_length(c);
+      const double l = sys.RestLength(e, c);
       const double len = chord.norm();
       const Vec3 dm = 1.5 * chord - 0.25 * l * (da + db);
       const double na = da.norm(), nb = db.norm();
@@ -53,8 +52,7 @@ double TotalTurning(const System& sys, const Eigen::VectorXd& q, int c) {
   double total = 0.0;
   for (int e = 0; e < sys.NumElements(c); ++e) {
     const int o = sys.CableDof(e, c);
-    const double l =
-        (c == 0 && e == 0 && sys.has_winch()) ? sys.drum_length() : sys.element_length(c);
+    const double l = sys.RestLength(e, c);
     const Vec3 da = q.segment<3>(o + 3), db = q.segment<3>(o + 9);
     const Vec3 dm = 1.5 * (q.segment<3>(o + 6) - q.segment<3>(o)) - 0.25 * l * (da + db);
     total += Angle(da, dm) + Angle(dm, db);

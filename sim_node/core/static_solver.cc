@@ -68,8 +68,7 @@ std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity,
     const double ea = sys.model().cables[c].axial_stiffness;
     for (int e = 0; e < sys.NumElements(c); ++e) {
       const int o = sys.CableDof(e, c);
-      const double l =
-          (c == 0 && e == 0 && sys.has_winch()) ? sys.drum_length() : sys.element_length(c);
+      const double l = sys.RestLength(e, c);
       const Vec3 ra = s.q.segment<3>(o), da = s.q.segment<3>(o + 3);
       const Vec3 rb = s.q.segment<3>(o + 6), db = s.q.segment<3>(o + 9);
       double stretched = 0.0;

@@ -110,6 +110,11 @@ class System {
   int total_array_nodes() const { return total_array_nodes_; }
   // the nominal element rest length cable.length / cable.elements [m]
   double element_length(int c = 0) const { return cables_[c].element.props().length; }
+  // element e's rest length on cable c: the drum element's (drum_length) for element 0 of a
+  // winched cable, else element_length
+  double RestLength(int e, int c = 0) const {
+    return e == 0 && has_winch(c) ? drum_length(c) : element_length(c);
+  }
   // the winches (docs/winch.md): the winched cables come first in Model::cables, so winch w
   // sits at the start of cable w, w < num_winches()
   int num_winches() const { return num_winches_; }

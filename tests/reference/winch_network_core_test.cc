@@ -55,8 +55,7 @@ double DrumLength(double L0, double a, const std::vector<SpeedEvent>& events, do
 double CableMass(const core::System& sys, int c) {
   double mass = 0.0;
   for (int e = 0; e < sys.NumElements(c); ++e) {
-    const core::AncfElement element = sys.DrumElement(
-        e == 0 ? sys.drum_length(c) : sys.element_length(c), c);
+    const core::AncfElement element = sys.DrumElement(sys.RestLength(e, c), c);
     const core::Mat12& m = element.mass();
     for (int i : {0, 6})
       for (int j : {0, 6}) mass += m(i, j);
@@ -121,6 +120,10 @@ TEST(WinchNetworkCore, TwoDrumsEachFollowTheirScriptAtOnce) {
       const core::System& sys = sim.system();
       const double rest = sys.drum_length(c) + (sys.num_nodes(c) - 2) * sys.element_length(c);
       ASSERT_NEAR(rest, sim.cable_length(c), 1e-12 * sim.cable_length(c)) << "cable " << c;
+      // the elements' rest lengths (RestLength: the drum element's first, on either cable)
+      double rest_sum = 0.0;
+      for (int e = 0; e < sys.NumElements(c); ++e) rest_sum += sys.RestLength(e, c);
+      ASSERT_NEAR(rest_sum, sim.cable_length(c), 1e-12 * sim.cable_length(c)) << "cable " << c;
       const double mass = model.cables[c].mass_per_length * sim.cable_length(c);
       worst_mass = std::max(worst_mass, std::abs(CableMass(sys, c) / mass - 1.0));
     }
