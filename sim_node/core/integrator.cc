@@ -4,6 +4,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/newton_convergence.h"
+
 namespace towsim::core {
 
 using Eigen::VectorXd;
@@ -35,6 +37,7 @@ Integrator::Integrator(const System& system, StepInputs* inputs)
       inputs_(inputs),
       ap_(AlphaParameters::FromSettings(system.model().integrator)),
       q_scale_(LengthScale(system.model())),
+      weight_scale_(WetWeightScale(system.model())),
       jac_(system.MakeMatrix()) {
   const int n = system_.num_q(), m = system_.num_lambda();
   r_.setZero(n);
@@ -99,6 +102,10 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   st.a = a_const + a_fac * a_hat;
   const JacobianCoefficients cf{1.0, p.gamma / (p.beta * h), a_fac / (p.beta * h2)};
   const double tol = settings.tolerance * q_scale_;
+  // the force bound: a fraction of the joint forces at the step's start (newton_convergence.h)
+  const double force_tol =
+      settings.force_tolerance * JointForceScale(system_, st.lambda, weight_scale_);
+  at.force_bound = force_tol;
   NewtonPoint& kept = st.newton;  // the kept matrix in jac_ (State::newton)
   // a kept matrix whose last measured rate exceeds kRefreshRate is replaced at the step's
   // first evaluation, which then costs no extra residual (see the header)
@@ -203,7 +210,13 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     // at most kMaxThetaAge steps ago
     const bool rate_known = refresh || measured || kept.theta_age <= rate_age_limit;
     const double theta = std::max(kept.theta, kMaxContraction);
-    const bool converged = rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
+    bool converged = rate_known && theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol;
+    // and the force residual the increment leaves, about theta |r_k| (newton_convergence.h);
+    // an increment within its bound with a residual above it takes another iteration
+    if (converged) {
+      at.force_residual = theta * ForceResidualNorm(system_, r_, &at.worst_force_dof);
+      converged = at.force_residual <= force_tol;
+    }
     if (converged) {
       at.ok = true;
       st.a_alpha = a_hat;
@@ -301,6 +314,15 @@ StepStatus Integrator::Step(State* s, double h, const State* guess) {
       << " s; last attempt: " << last_failure_.iterations << " iterations, residual "
       << last_failure_.residual << " N, largest at "
       << system_.DescribeDof(last_failure_.worst_dof, s->q);
+    // an attempt whose increments met their bound but whose forces did not (a stiff cable at a
+    // loose tolerance): say so, with the bound
+    if (last_failure_.force_residual > last_failure_.force_bound)
+      m << "; the increments met the tolerance but the force residual they left, "
+        << last_failure_.force_residual << " N (at "
+        << system_.DescribeDof(last_failure_.worst_force_dof, s->q)
+        << "), is above its bound " << last_failure_.force_bound
+        << " N (integrator.force_tolerance x the largest joint force: docs/physics.md, "
+           "\"Newton convergence\")";
     status.message = m.str();
   }
   return status;

@@ -126,6 +126,10 @@ class Integrator {
     int iterations = 0;
     double residual = 0.0;
     int worst_dof = 0;
+    // the last force test (newton_convergence.h): theta |r_k| in force units, its bound and
+    // where it was largest; 0 when no increment met its bound
+    double force_residual = 0.0, force_bound = 0.0;
+    int worst_force_dof = 0;
   };
   // full: a fresh Newton matrix at every iteration (classic Newton); else modified Newton
   Attempt Newton(State* state, double h, bool full, const State* guess);
@@ -136,6 +140,7 @@ class Integrator {
   StepInputs* inputs_;  // the step's inputs (step_inputs.h), shared with the vehicle coupling
   AlphaParameters ap_;
   double q_scale_;
+  double weight_scale_;  // W of the force bound (newton_convergence.h)
   NetworkMatrix jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
