@@ -8,10 +8,16 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 
+#include "core/newton_convergence.h"
+
 namespace towsim::core {
 
 VehicleCoupling::VehicleCoupling(const System& system, Integrator* integrator, StepInputs* inputs)
-    : system_(system), integrator_(integrator), sampler_(system), inputs_(inputs) {
+    : system_(system),
+      integrator_(integrator),
+      sampler_(system),
+      inputs_(inputs),
+      weight_scale_(WetWeightScale(system.model())) {
   const Model& model = system_.model();
   const int nv = static_cast<int>(model.vehicles.size());
   first_.assign(nv + 1, 0);
@@ -124,6 +130,10 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   for (const CableParams& c : model.cables) length = std::max(length, c.length);
   const double tol = model.integrator.tolerance * length;
   start_ = *state;
+  // the force bound on the joint-force residuals: the cables' Newton's (newton_convergence.h),
+  // a fraction of the largest joint force at the step's start
+  const double force_tol = model.integrator.force_tolerance *
+                           JointForceScale(system_, start_.lambda, weight_scale_);
   const double t0 = state->t;
 
   // joint forces at t_n, and the current guess for t_{n+1}, per attachment
@@ -243,10 +253,20 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     // converged when the force residuals move no attachment point by more than the tolerance
     // (the cable's end already sits at p1 + C r; its vehicle then takes its linear response
     // to r, below)
-    double moved = 0.0;
-    for (int a = 0; a < na; ++a)
+    // and the force residual left within the force bound (a heavy vehicle or a short step moves
+    // little under a large force error): the vehicles take r to first order (CorrectVehicle),
+    // so what is left is estimated as theta |r| with the cables' Newton's floor on theta
+    // (integrator.h, kMaxContraction; newton_convergence.h)
+    double moved = 0.0, force = 0.0;
+    for (int a = 0; a < na; ++a) {
       moved = std::max(moved, moved_by_residual(a).lpNorm<Eigen::Infinity>());
-    if (moved <= tol) {
+      force = std::max(force, residual[a].lpNorm<Eigen::Infinity>());
+    }
+    force *= Integrator::kMaxContraction;
+    last_force_residual_ = force;
+    last_force_bound_ = force_tol;
+    const bool forces_met = force <= force_tol;
+    if (moved <= tol && forces_met) {
       for (int a = 0; a < na; ++a) {
         const int v = attachments_[a].vehicle, end = attachments_[a].end;
         CorrectVehicle(a, residual[a], h, &state->vehicles[v]);
@@ -279,7 +299,9 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   status.code = StepStatus::kNotConverged;
   std::ostringstream m;
   m << "vehicle-cable coupling did not converge in " << max_iterations
-    << " iterations in the step from t = " << t0 << " s (h = " << h << " s)";
+    << " iterations in the step from t = " << t0 << " s (h = " << h << " s); last joint-force "
+    << "residual " << last_force_residual_ << " N (bound " << last_force_bound_
+    << " N, integrator.force_tolerance x the largest joint force)";
   status.message = m.str();
   return status;
 }

@@ -102,6 +102,9 @@ class VehicleCoupling {
   int previous_pass_substeps_ = 0;
   std::vector<VehicleState> vehicles_;
   std::vector<Vec3> f0_, f1_, residual_;  // per attachment
+  double weight_scale_;                    // W of the force bound (newton_convergence.h)
+  // the last pass's largest joint-force residual and its bound [N], for the failure message
+  double last_force_residual_ = 0.0, last_force_bound_ = 0.0;
   std::vector<Mat3> point_compliance_;    // per attachment
   std::vector<PointLoad> loads_;          // per attachment
   std::vector<VehicleInertia> inertia_;   // each vehicle's, factored once (vehicle_model.h)
