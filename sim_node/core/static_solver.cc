@@ -137,10 +137,11 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     const double norm = r.lpNorm<Eigen::Infinity>();
     res.residual = norm;
     if (!std::isfinite(norm) || !phi.allFinite()) break;
-    if (norm <= f_tol && phi.lpNorm<Eigen::Infinity>() <= tol * q_scale) {
-      res.ok = true;
-      return res;
-    }
+    // converged: the residual within the force bound and the constraints within the length
+    // bound, and the increment this residual asks for within the length bound too (below: a
+    // soft direction, e.g. a slack span, can hold a small residual far from equilibrium);
+    // accepted at the current iterate
+    const bool residual_met = norm <= f_tol && phi.lpNorm<Eigen::Infinity>() <= tol * q_scale;
     // switched evolution relaxation for the next iteration
     if (prev_norm > 0.0) delta *= std::clamp(prev_norm / norm, 0.2, 100.0);
     prev_norm = norm;
@@ -152,6 +153,10 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
       continue;
     }
     sys.FromBlocks(rhs, &dq, &dl);
+    if (residual_met && dq.lpNorm<Eigen::Infinity>() <= tol * q_scale) {
+      res.ok = true;
+      return res;
+    }
     // limit the step to a tenth of the cable length per iteration
     const double step = dq.lpNorm<Eigen::Infinity>();
     const double limit = 0.1 * q_scale;
