@@ -50,6 +50,7 @@ VehicleCoupling::VehicleCoupling(const System& system, Integrator* integrator, S
   f1_.resize(na);
   residual_.resize(na);
   point_compliance_.assign(na, Mat3::Zero());
+  end_stiffness_.assign(na, 0.0);
   loads_.resize(na);
   for (const Vehicle& v : model.vehicles) inertia_.emplace_back(v.params);
 }
@@ -134,6 +135,13 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   // a fraction of the largest joint force at the step's start
   const double force_tol = model.integrator.force_tolerance *
                            JointForceScale(system_, start_.lambda, weight_scale_);
+  // each attachment's end element's axial stiffness EA / l_e (a drum element's length is the
+  // drum's now)
+  for (int a = 0; a < na; ++a) {
+    const int c = attachments_[a].end / 2;
+    const int e = attachments_[a].end % 2 == 0 ? 0 : system_.NumElements(c) - 1;
+    end_stiffness_[a] = model.cables[c].axial_stiffness / system_.RestLength(e, c);
+  }
   const double t0 = state->t;
 
   // joint forces at t_n, and the current guess for t_{n+1}, per attachment
@@ -279,14 +287,22 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     // response put it, p1 + C r: within the tolerance of where it went, converged
     for (int a = 0; a < na; ++a) f1[a] += residual[a];
     advance_vehicles();
-    double mismatch = 0.0;
+    // and the force that mismatch leaves: the end element answers a displacement d of its
+    // support with up to EA d / l_e (its axial stiffness; newton_convergence.h), within the
+    // force bound
+    double mismatch = 0.0, mismatch_force = 0.0;
     for (int a = 0; a < na; ++a) {
       const Vec3 p1 = AttachmentPoint(vehicles[attachments_[a].vehicle], a);
       const SupportMotion& sm = state->supports[attachments_[a].end];
-      mismatch = std::max(mismatch,
-                          (p1 - (sm.p1 + sm.compliance * residual[a])).lpNorm<Eigen::Infinity>());
+      const double d = (p1 - (sm.p1 + sm.compliance * residual[a])).lpNorm<Eigen::Infinity>();
+      mismatch = std::max(mismatch, d);
+      mismatch_force = std::max(mismatch_force, end_stiffness_[a] * d);
     }
-    if (mismatch <= tol) {
+    if (mismatch_force > force_tol) {
+      last_force_residual_ = mismatch_force;
+      last_force_bound_ = force_tol;
+    }
+    if (mismatch <= tol && mismatch_force <= force_tol) {
       state->vehicles = vehicles;
       for (int a = 0; a < na; ++a) {
         const int end = attachments_[a].end;

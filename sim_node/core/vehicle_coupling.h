@@ -106,6 +106,7 @@ class VehicleCoupling {
   // the last pass's largest joint-force residual and its bound [N], for the failure message
   double last_force_residual_ = 0.0, last_force_bound_ = 0.0;
   std::vector<Mat3> point_compliance_;    // per attachment
+  std::vector<double> end_stiffness_;     // per attachment: its end element's EA / l_e [N/m]
   std::vector<PointLoad> loads_;          // per attachment
   std::vector<VehicleInertia> inertia_;   // each vehicle's, factored once (vehicle_model.h)
 };
