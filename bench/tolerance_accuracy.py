@@ -4,7 +4,7 @@
     /usr/bin/python3 bench/tolerance_accuracy.py [--build DIR] [--sim-node PATH]
         [--out DIR] [--table FILE] [--scenes a,b,...] [--duration S]
         [--tolerances 1e-4,1e-5,...] [--truth 1e-12] [--factor 4] [--ref-limit S]
-        [--ratio 0.10]
+        [--ratio 0.10] [--set KEY=VALUE ...]
 
 For each scene of config/scenes/*.yaml (or --scenes), over the first --duration seconds (default
 60, or the scene's own duration if shorter), offline (sim_node --mode offline --csv DIR):
@@ -145,9 +145,11 @@ class Run:
         return self.code == 0
 
 
-def run_sim(sim_node, scene, out_dir, duration, tolerance, factor, log):
+def run_sim(sim_node, scene, out_dir, duration, tolerance, factor, log, extra=()):
     args = [sim_node, "--mode", "offline", "--scene", scene.path, "--duration", f"{duration:g}",
             "--csv", out_dir, "--set", f"integrator.tolerance={tolerance:g}"]
+    for setting in extra:
+        args += ["--set", setting]
     if factor != 1:
         args += ["--set", f"time.step={scene.step / factor:.12g}"] + scene.element_sets(factor)
     os.makedirs(out_dir, exist_ok=True)
@@ -238,6 +240,9 @@ def main():
     ap.add_argument("--factor", type=int, default=4, help="reference: factor x elements, h/factor")
     ap.add_argument("--ref-limit", type=float, default=120.0,
                     help="wall seconds above which the reference falls back to 2x / h/2")
+    ap.add_argument("--set", action="append", metavar="KEY=VALUE",
+                    help="a scene override for the runs at each tolerance (not the truth or the "
+                         "reference), e.g. integrator.force_tolerance=1e-3; repeatable")
     ap.add_argument("--ratio", type=float, default=0.10, help="largest solver / discretisation")
     a = ap.parse_args()
 
@@ -288,7 +293,8 @@ def main():
                         disc, truth, ref])
         loosest = None
         for t in tolerances:
-            run = run_sim(sim_node, scene, os.path.join(out, f"tol{t:g}"), duration, t, 1, log)
+            run = run_sim(sim_node, scene, os.path.join(out, f"tol{t:g}"), duration, t, 1, log,
+                          a.set or ())
             solver = ratio = None
             ok = False
             if run.ok and truth.ok:
@@ -305,7 +311,8 @@ def main():
 
     lines = []
     lines.append(f"sim_node: {sim_node}; truth and reference at tolerance {a.truth:g}; "
-                 f"ratio limit {a.ratio:g}")
+                 f"ratio limit {a.ratio:g}" +
+                 (f"; runs at each tolerance with {', '.join(a.set)}" if a.set else ""))
     lines.append("")
     lines.append("| scene | duration [s] | discretisation | reference | track [m] | tension "
                  "| Newton/step truth, ref | wall [s] truth, ref | loosest T with both ratios "
