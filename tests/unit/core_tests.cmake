@@ -3,6 +3,7 @@ towsim_add_test(hydrodynamics_test LABEL unit SOURCES hydrodynamics_test.cc LIBS
 towsim_add_test(block_tridiagonal_test LABEL unit SOURCES block_tridiagonal_test.cc LIBS towsim::core)
 towsim_add_test(system_test LABEL unit SOURCES system_test.cc LIBS towsim::core)
 towsim_add_test(integrator_test LABEL unit SOURCES integrator_test.cc LIBS towsim::core)
+towsim_add_test(newton_convergence_test LABEL unit SOURCES newton_convergence_test.cc LIBS towsim::core)
 towsim_add_test(step_sampler_test LABEL unit SOURCES step_sampler_test.cc LIBS towsim::core)
 towsim_add_test(runge_kutta_test LABEL unit SOURCES runge_kutta_test.cc LIBS towsim::core)
 towsim_add_test(vehicle_coupling_test LABEL unit SOURCES vehicle_coupling_test.cc LIBS towsim::core)
