@@ -61,7 +61,7 @@ core::IntegratorSettings ReadIntegrator(const Field& field) {
   }
   s.tolerance = integrator.Number("tolerance", Range::LeftOpen(0.0, 1e-2), s.tolerance);
   s.force_tolerance =
-      integrator.Number("force_tolerance", Range::LeftOpen(0.0, 1.0), s.force_tolerance);
+      integrator.Number("force_tolerance", Range::Open(0.0, 1.0), s.force_tolerance);
   s.max_iterations = integrator.Integer("max_iterations", Range::Closed(1, 1000), s.max_iterations);
   s.max_substep_level =
       integrator.Integer("max_substep_level", Range::Closed(0, 20), s.max_substep_level);

@@ -300,6 +300,10 @@ INSTANTIATE_TEST_SUITE_P(
                    "must be <= 1", "t.yaml:15"},
         BrokenCase{"tolerance_too_loose", Edit("rho_inf: 0.8", "tolerance: 0.1"),
                    "integrator.tolerance", "must be <= 0.01", ""},
+        BrokenCase{"force_tolerance_zero", Edit("rho_inf: 0.8", "force_tolerance: 0"),
+                   "integrator.force_tolerance", "must be > 0", ""},
+        BrokenCase{"force_tolerance_one", Edit("rho_inf: 0.8", "force_tolerance: 1"),
+                   "integrator.force_tolerance", "must be < 1", ""},
         BrokenCase{"step_longer_than_duration", Edit("step: 0.01", "step: 2"), "time.step",
                    "must be <= time.duration (1)", ""},
         // non-finite numbers
@@ -1279,6 +1283,7 @@ TEST_F(SceneLoaderTest, SteadyTowScene) {
   EXPECT_EQ(m.integrator.rho_inf, 0.8);
   EXPECT_EQ(m.integrator.coupling, core::Coupling::kStrong);
   EXPECT_EQ(m.integrator.tolerance, 1e-8);
+  EXPECT_EQ(m.integrator.force_tolerance, 1e-2);  // not in the scene: the default
   EXPECT_EQ(m.integrator.max_iterations, 20);
 }
 
