@@ -1282,8 +1282,8 @@ TEST_F(SceneLoaderTest, SteadyTowScene) {
   EXPECT_EQ(m.integrator.scheme, core::Scheme::kGeneralizedAlpha);
   EXPECT_EQ(m.integrator.rho_inf, 0.8);
   EXPECT_EQ(m.integrator.coupling, core::Coupling::kStrong);
-  EXPECT_EQ(m.integrator.tolerance, 1e-8);
-  EXPECT_EQ(m.integrator.force_tolerance, 1e-2);  // not in the scene: the default
+  EXPECT_EQ(m.integrator.tolerance, 1e-7);
+  EXPECT_EQ(m.integrator.force_tolerance, 3e-4);
   EXPECT_EQ(m.integrator.max_iterations, 20);
 }
 
