@@ -141,6 +141,8 @@ class Integrator {
   AlphaParameters ap_;
   double q_scale_;
   double weight_scale_;  // W of the force bound (newton_convergence.h)
+  // every element at least 1 m long: the force norm is at most |r|_inf (newton_convergence.h)
+  bool slopes_at_most_inf_;
   NetworkMatrix jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts

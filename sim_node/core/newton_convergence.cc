@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/system.h"
 
@@ -26,13 +27,33 @@ double JointForceScale(const System& system, const Eigen::VectorXd& lambda, doub
   return f;
 }
 
+double ShortestElement(const System& system) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < system.num_cables(); ++c)
+    shortest = std::min(shortest, system.element_length(c));
+  return shortest;
+}
+
 double ForceResidualNorm(const System& system, const Eigen::VectorXd& residual, int* worst_row) {
+  // the nodes of a cable are consecutive 6-blocks [r, r']: two strided 3 x n views
+  using Rows = Eigen::Map<const Eigen::Matrix<double, 3, Eigen::Dynamic>, 0, Eigen::OuterStride<6>>;
   double norm = 0.0;
-  int worst = 0;
+  for (int b = 0; b < system.num_spheres(); ++b)
+    norm = std::max(norm, residual.segment<3>(system.SphereDof(b)).lpNorm<Eigen::Infinity>());
+  for (int c = 0; c < system.num_cables(); ++c) {
+    const int n = system.num_nodes(c);
+    const double* first = residual.data() + system.CableDof(0, c);
+    norm = std::max(norm, Rows(first, 3, n).cwiseAbs().maxCoeff());
+    norm = std::max(norm, Rows(first + 3, 3, n).cwiseAbs().maxCoeff() / system.element_length(c));
+  }
+  if (!worst_row) return norm;
+  // the row that attains it (for diagnostics only)
+  *worst_row = 0;
+  double best = -1.0;
   auto take = [&](int row, double value) {
-    if (value > norm) {
-      norm = value;
-      worst = row;
+    if (value > best) {
+      best = value;
+      *worst_row = row;
     }
   };
   for (int b = 0; b < system.num_spheres(); ++b)
@@ -48,7 +69,6 @@ double ForceResidualNorm(const System& system, const Eigen::VectorXd& residual, 
       for (int i = 3; i < 6; ++i) take(o + i, std::abs(residual[o + i]) * inv_le);
     }
   }
-  if (worst_row) *worst_row = worst;
   return norm;
 }
 

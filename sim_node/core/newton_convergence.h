@@ -36,6 +36,10 @@ constexpr double kMinForceScale = 1.0;  // [N]
 // `weight_scale`
 double JointForceScale(const System& system, const Eigen::VectorXd& lambda, double weight_scale);
 
+// the shortest element length l_e of any cable [m] (the nominal one, which the slope rows are
+// divided by); |r|_F <= |r|_inf when it is at least 1 m
+double ShortestElement(const System& system);
+
 // |r|_F (above); *worst_row, if given, receives the row that attains it
 double ForceResidualNorm(const System& system, const Eigen::VectorXd& residual,
                          int* worst_row = nullptr);
