@@ -66,8 +66,11 @@ char* FormatCsvNumber(double x, char* out) {
     ++e;
   }
   if (n < 100000000u) return Exact(x, out);  // not reached: y in [1e8, 1e9) after the guess
-  char digits[kDigits];  // two at a time from the back, the odd one first
-  for (int i = kDigits - 1; i > 0; i -= 2) {
+  // the digits, then room so that every copy below has a fixed size (inlined moves, not a
+  // call): a copy may carry digits beyond the ones kept, which the next write or the end
+  // pointer leaves out (at most 1 + 2 + 3 + 9 = 15 or 1 + 9 + 1 + 8 = 19 characters written)
+  char digits[2 * kDigits] = {};
+  for (int i = kDigits - 1; i > 0; i -= 2) {  // two at a time from the back, the odd one last
     std::memcpy(digits + i - 1, kTwoDigits + 2 * (n % 100), 2);
     n /= 100;
   }
@@ -79,30 +82,28 @@ char* FormatCsvNumber(double x, char* out) {
     *out++ = digits[0];
     if (count > 1) {
       *out++ = '.';
-      std::memcpy(out, digits + 1, count - 1);
+      std::memcpy(out, digits + 1, kDigits - 1);
       out += count - 1;
     }
     *out++ = 'e';
     *out++ = e < 0 ? '-' : '+';
     const int m = e < 0 ? -e : e;  // <= 30 here
-    *out++ = static_cast<char>('0' + m / 10);
-    *out++ = static_cast<char>('0' + m % 10);
-    return out;
+    std::memcpy(out, kTwoDigits + 2 * m, 2);
+    return out + 2;
   }
   if (e >= 0) {  // ddd.ddd: e + 1 digits before the point
-    std::memcpy(out, digits, e + 1);
+    std::memcpy(out, digits, kDigits);
     out += e + 1;
     if (count > e + 1) {
       *out++ = '.';
-      std::memcpy(out, digits + e + 1, count - e - 1);
+      std::memcpy(out, digits + e + 1, kDigits - 1);
       out += count - e - 1;
     }
     return out;
   }
-  *out++ = '0';  // 0.000ddd: -e - 1 zeros after the point
-  *out++ = '.';
-  for (int i = 0; i < -e - 1; ++i) *out++ = '0';
-  std::memcpy(out, digits, count);
+  std::memcpy(out, "0.000", 5);  // 0.000ddd: -e - 1 zeros after the point
+  out += 2 - e - 1;
+  std::memcpy(out, digits, kDigits);
   return out + count;
 }
 

@@ -21,43 +21,41 @@ bool IsHeldSupport(const core::CableEnd& end) {
   return end.kind == core::EndKind::kFixed || end.kind == core::EndKind::kDriven;
 }
 
-// one row of a CSV file, appended to `line` (a row built alone, or a file's pending rows):
-// fields with their separating commas, numbers as "%.9g" (io/csv_number.h)
+// one row of a CSV file, appended to `rows` (a row built alone, or a file's pending rows):
+// fields with their separating commas, numbers as "%.9g" formatted in place (io/csv_number.h)
 class Row {
  public:
-  explicit Row(std::string* line) : line_(line), start_(line->size()) {}
+  explicit Row(TextBuffer* rows) : rows_(rows), start_(rows->size()) {}
   Row& Number(double x) {
-    Comma();
-    AppendCsvNumber(x, line_);
+    char* p = rows_->Reserve(kCsvNumberMaxChars + 1);
+    if (rows_->size() > start_) *p++ = ',';
+    rows_->Commit(FormatCsvNumber(x, p));
     return *this;
   }
   template <class Int>  // long, unsigned long long: in decimal
   Row& Integer(Int n) {
-    Comma();
-    char text[24];
-    const std::to_chars_result r = std::to_chars(text, text + sizeof text, n);
-    line_->append(text, r.ptr - text);
+    constexpr int kMaxChars = 24;
+    char* p = rows_->Reserve(kMaxChars + 1);
+    if (rows_->size() > start_) *p++ = ',';
+    rows_->Commit(std::to_chars(p, p + kMaxChars, n).ptr);
     return *this;
   }
   Row& Text(const std::string& text) {
-    Comma();
-    line_->append(text);
+    if (rows_->size() > start_) rows_->Push(',');
+    rows_->Append(text.data(), text.size());
     return *this;
   }
   // ends the row with its line break
-  void End() { line_->push_back('\n'); }
-  // ends the row and writes `line` on `f` (errors: the caller's check)
+  void End() { rows_->Push('\n'); }
+  // ends the row and writes the rows on `f` (errors: the caller's check)
   void WriteTo(std::FILE* f) {
     End();
-    std::fwrite(line_->data(), 1, line_->size(), f);
+    std::fwrite(rows_->data(), 1, rows_->size(), f);
   }
 
  private:
-  void Comma() {
-    if (line_->size() > start_) line_->push_back(',');
-  }
-  std::string* line_;
-  size_t start_;  // where this row begins in *line_
+  TextBuffer* rows_;
+  size_t start_;  // where this row begins in *rows_
 };
 
 }  // namespace
@@ -79,7 +77,7 @@ std::string CsvField(const std::string& name) {
 namespace {
 
 // the rows of WriteEnvironmentRow and WriteActuatorRow, appended to `rows`
-void AppendEnvironmentRow(std::string* rows, double t, const std::string& body,
+void AppendEnvironmentRow(TextBuffer* rows, double t, const std::string& body,
                           double wave_elevation, double altitude, double depth, double u,
                           double v, double w) {
   Row row(rows);
@@ -93,7 +91,7 @@ void AppendEnvironmentRow(std::string* rows, double t, const std::string& body,
   row.Number(depth).Number(u).Number(v).Number(w).End();
 }
 
-void AppendActuatorRow(std::string* rows, double t, const std::string& body,
+void AppendActuatorRow(TextBuffer* rows, double t, const std::string& body,
                        const core::VehicleCommand& command, const core::VehicleState& state,
                        bool failsafe) {
   Row(rows)
@@ -113,7 +111,7 @@ void AppendActuatorRow(std::string* rows, double t, const std::string& body,
 
 void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
                          double altitude, double depth, double u, double v, double w) {
-  std::string line;
+  TextBuffer line;
   AppendEnvironmentRow(&line, t, body, wave_elevation, altitude, depth, u, v, w);
   std::fwrite(line.data(), 1, line.size(), f);
 }
@@ -121,14 +119,14 @@ void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double
 void WriteActuatorRow(std::FILE* f, double t, const std::string& body,
                       const core::VehicleCommand& command, const core::VehicleState& state,
                       bool failsafe) {
-  std::string line;
+  TextBuffer line;
   AppendActuatorRow(&line, t, body, command, state, failsafe);
   std::fwrite(line.data(), 1, line.size(), f);
 }
 
 void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned long long step,
                      double thrust, double rudder, double elevator) {
-  std::string line;
+  TextBuffer line;
   Row(&line)
       .Number(t)
       .Text(CsvField(body))
@@ -178,7 +176,8 @@ CsvWriter::~CsvWriter() {
   // the rows not yet written, then close, ignoring errors (Close reports them)
   for (File* file : Files()) {
     if (file->f == nullptr) continue;
-    std::fwrite(file->pending.data(), 1, file->pending.size(), file->f);
+    if (!file->pending.empty())
+      std::fwrite(file->pending.data(), 1, file->pending.size(), file->f);
     std::fclose(file->f);
   }
 }
@@ -204,7 +203,7 @@ void CsvWriter::Open(File& file, const char* name, const char* header) {
 void CsvWriter::Flush(File& file) {
   if (file.f == nullptr) return;
   const size_t size = file.pending.size();
-  const bool ok = std::fwrite(file.pending.data(), 1, size, file.f) == size &&
+  const bool ok = (size == 0 || std::fwrite(file.pending.data(), 1, size, file.f) == size) &&
                   std::fflush(file.f) == 0 && !std::ferror(file.f);
   file.pending.clear();  // written, or lost with the error that ends the run
   if (!ok) throw OutputError("writing '" + file.path + "' failed: " + std::strerror(errno));
@@ -222,6 +221,14 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   if (bodies_.f == nullptr) throw std::runtime_error("CsvWriter::Write after Close");
   const core::Model& model = sim.model();
   const double t = sim.time();
+  if (body_fields_.size() != static_cast<size_t>(sim.num_bodies()) ||
+      support_fields_.size() != 2 * model.cables.size()) {
+    body_fields_.clear();
+    for (int b = 0; b < sim.num_bodies(); ++b) body_fields_.push_back(CsvField(sim.body_name(b)));
+    support_fields_.clear();
+    for (const core::CableParams& cable : model.cables)
+      for (const char* end : {".start", ".end"}) support_fields_.push_back(CsvField(cable.name + end));
+  }
 
   // bodies (spheres, then vehicles): origin in W, ZYX Euler angles of q_WB, body-frame twist
   for (int b = 0; b < sim.num_bodies(); ++b) {
@@ -229,7 +236,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
     const core::Vec6 nu = sim.body_twist(b);
     Row row(&bodies_.pending);
-    row.Number(t).Text(CsvField(sim.body_name(b)));
+    row.Number(t).Text(body_fields_[b]);
     for (int k = 0; k < 3; ++k) row.Number(p_WB(k));
     for (int k = 0; k < 3; ++k) row.Number(rpy(k));
     for (int k = 0; k < 6; ++k) row.Number(nu(k));
@@ -237,7 +244,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   }
 
   for (int c = 0; c < sim.num_cables(); ++c) {
-    std::string* rows = c == 0 ? &cable_.pending : &more_cables_[c - 1].pending;
+    TextBuffer* rows = c == 0 ? &cable_.pending : &more_cables_[c - 1].pending;
     for (int i = 0; i < sim.num_nodes(c); ++i) {
       const core::Vec3 r = sim.node_position(i, c);
       Row(rows)
@@ -256,13 +263,12 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
     core::Vec3 f, m;
     sim.BodyCableWrench(b, &f, &m);
     Row row(&forces_.pending);
-    row.Number(t).Text(CsvField(sim.body_name(b)));
+    row.Number(t).Text(body_fields_[b]);
     for (int k = 0; k < 3; ++k) row.Number(f(k));
     for (int k = 0; k < 3; ++k) row.Number(m(k));
     row.End();
     WriteAttachments(sim, b);
   }
-  static const char* const kEndNames[2] = {"start", "end"};
   for (int c = 0; c < sim.num_cables(); ++c) {
     const core::CableParams& cable = model.cables[c];
     const core::CableEnd* ends[2] = {&cable.start, &cable.end};
@@ -271,7 +277,7 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
       const core::Vec3 f = sim.end_force(e, c);
       Row(&forces_.pending)
           .Number(t)
-          .Text(CsvField(cable.name + "." + kEndNames[e]))
+          .Text(support_fields_[2 * c + e])
           .Number(f.x())
           .Number(f.y())
           .Number(f.z())

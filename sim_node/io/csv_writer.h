@@ -82,6 +82,7 @@
 
 #include "core/simulation.h"
 #include "io/csv_number.h"
+#include "io/text_buffer.h"
 
 namespace towsim::io {
 
@@ -167,7 +168,7 @@ class CsvWriter {
   struct File {
     std::string path;
     std::FILE* f = nullptr;
-    std::string pending;  // whole rows not yet written
+    TextBuffer pending;  // whole rows not yet written
   };
   void Open(File& file, const char* name, const char* header);
   std::vector<File*> Files();  // every file, open or not
@@ -190,6 +191,10 @@ class CsvWriter {
   File environment_;  // f == nullptr: not written (a calm scene)
   std::vector<File> winch_files_;  // one per winch (none: no winch)
   File actuators_;    // f == nullptr: not written (no vehicles)
+  // the bodies' names as CSV fields (CsvField), from the first Write: a writer serves one
+  // simulation, whose bodies do not change
+  std::vector<std::string> body_fields_;
+  std::vector<std::string> support_fields_;  // "<cable>.start", "<cable>.end" per cable
   double flush_period_ = kFlushPeriod;
   bool flushed_ = false;  // a Write has been flushed
   std::chrono::steady_clock::time_point last_flush_;
