@@ -127,8 +127,10 @@ class CsvWriter {
  public:
   // wall time [s] after which a Write passes its rows to the operating system (above)
   static constexpr double kFlushPeriod = 0.25;
-  // rows of the node and force files waiting [bytes] that are written whatever the time
-  static constexpr size_t kMaxPendingBytes = size_t{1} << 20;
+  // rows of the node and force files waiting [bytes] that are written whatever the time:
+  // small enough that the buffers, reused after each write, stay in the cache and do not
+  // grow with the run (a buffer of the whole run's rows cost a page fault per 4 kB)
+  static constexpr size_t kMaxPendingBytes = size_t{64} << 10;
 
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
   // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has a winch;
