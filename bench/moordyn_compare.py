@@ -33,8 +33,10 @@ stable = the driver ends, the state finite, the last 20 s steady to 1e-6 L and 1
 final state that of a run at a quarter of the transit time to the same tolerances);
 reference 400 segments at dtM = 0.2 s / (8 n_100) (0.55 of its transit time), checked against
 200 segments at that dtM (space) and 200 segments at twice it (time).
-towsim: a grid of elements x steps (GA 0.8 as the scene); for each MoorDyn row the cheapest
-grid run (CPU time, min of 3) with an error at most MoorDyn's (for the impulse error only the
+towsim: a grid of elements x steps x Newton tolerances (GA 0.8 as the scene; the scene's
+integrator.tolerance 1e-8 and the looser 1e-6 and 1e-5 a user may choose, the errors measured
+the same way against the same reference); for each MoorDyn row the cheapest grid run (CPU
+time, min of 3) with an error at most MoorDyn's (for the impulse error only the
 steps that write every 0.2 s, as the driver does, so that both maxima are over the same
 times). Each pair is then timed as whole processes by hyperfine (-N, --warmup 1, --runs R),
 ROUNDS times, the order swapped every round; the ratio of the means per round (wall time, and
@@ -45,6 +47,7 @@ import csv
 import json
 import math
 import os
+import shlex
 import statistics
 import subprocess
 import sys
@@ -81,6 +84,9 @@ SETTLE_TENSION = 1e-5    # relative
 
 TOWSIM_ELEMENTS = (4, 5, 6, 8, 10, 12, 16, 20, 24, 32, 40)
 TOWSIM_STEPS = (0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.025)
+# integrator.tolerance (docs/scene_format.md): the scene's, and two looser a user may choose
+TOWSIM_TOLERANCES = (1e-8, 1e-6, 1e-5)
+SCENE_TOLERANCE = 1e-8
 TOWSIM_REF = (80, 0.0125)
 MOORDYN_SEGMENTS = (20, 50, 100)
 MOORDYN_REF_SEGMENTS = 400
@@ -248,20 +254,22 @@ class Towsim:
     def __init__(self, sim_node, work):
         self.sim_node, self.work = sim_node, work
 
-    def command(self, elements, h):
-        out = os.path.join(self.work, f"ts_{elements}_{h:g}")
+    def command(self, elements, h, tol=SCENE_TOLERANCE):
+        out = os.path.join(self.work, f"ts_{elements}_{h:g}_{tol:g}")
         argv = [self.sim_node, "--scene", SCENE, "--mode", "offline",
                 "--set", f"cable.elements={elements}", "--set", f"time.step={h:g}",
                 "--set", f"time.output_rate={1.0 / OUTPUT_INTERVAL:g}",
                 "--set", "cable.initial_velocity=[0,0,0]",
                 "--set", "bodies.towfish.velocity=[0,0,0]",
                 "--set", f"cable.drag={{normal: {C_DN:g}, tangential: {C_DT:g}}}", "--csv", out]
+        if tol != SCENE_TOLERANCE:
+            argv[-2:-2] = ["--set", f"integrator.tolerance={tol:g}"]
         return argv, out
 
-    def run(self, elements, h):
+    def run(self, elements, h, tol=SCENE_TOLERANCE):
         """The run, or None when it fails or its summary reports a strain beyond 20 %
         (docs/scene_format.md: a transient no cable survives, seen at h >= 0.4 s)."""
-        argv, out = self.command(elements, h)
+        argv, out = self.command(elements, h, tol)
         done = subprocess.run(argv, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
         if done.returncode != 0 or "max cable strain" in done.stdout:
             return None
@@ -295,12 +303,14 @@ def hyperfine_pair(cmd_a, cmd_b, runs, rounds, work, tag):
     for k in range(rounds):
         order = [cmd_a, cmd_b] if k % 2 == 0 else [cmd_b, cmd_a]
         out = os.path.join(work, f"hyperfine_{tag}_{k}.json")
+        # quoted: hyperfine -N splits a command into words as a shell would (the drag's
+        # "{normal: ..., tangential: ...}" is one argument)
         subprocess.run(["hyperfine", "-N", "--warmup", "1", "--runs", str(runs), "--style",
-                        "none", "--export-json", out] + [" ".join(c) for c in order],
+                        "none", "--export-json", out] + [shlex.join(c) for c in order],
                        check=True, stdout=subprocess.DEVNULL)
         with open(out) as f:
             res = {r["command"]: r for r in json.load(f)["results"]}
-        a, b = res[" ".join(cmd_a)], res[" ".join(cmd_b)]
+        a, b = res[shlex.join(cmd_a)], res[shlex.join(cmd_b)]
         means_a.append(a["mean"])
         means_b.append(b["mean"])
         ratios.append(a["mean"] / b["mean"])
@@ -383,16 +393,18 @@ def main():
     grid = {}
     for e in TOWSIM_ELEMENTS:
         for h in TOWSIM_STEPS:
-            run = towsim.run(e, h)
-            if run is None or not run.settled():
-                continue
-            cost = cpu_seconds(towsim.command(e, h)[0])
-            grid[(False, e, h)] = (run.steady_error(ts_ref)[0], cost)
-            if same_samples(h):
-                grid[(True, e, h)] = (run.track_error(ts_ref), cost)
+            for tol in TOWSIM_TOLERANCES:
+                run = towsim.run(e, h, tol)
+                if run is None or not run.settled():
+                    continue
+                cost = cpu_seconds(towsim.command(e, h, tol)[0])
+                grid[(False, e, h, tol)] = (run.steady_error(ts_ref)[0], cost)
+                if same_samples(h):
+                    grid[(True, e, h, tol)] = (run.track_error(ts_ref), cost)
 
     def cheapest(imp, limit):
-        ok = [(cost, e, h, err) for (i, e, h), (err, cost) in grid.items() if i == imp and err <= limit]
+        ok = [(cost, e, h, tol, err) for (i, e, h, tol), (err, cost) in grid.items()
+              if i == imp and err <= limit]
         return min(ok) if ok else None
 
     table, timings = [], {}
@@ -405,20 +417,20 @@ def main():
             if pick is None:
                 print(f"no towsim grid run beats MoorDyn {s} segments ({'impulse' if imp else 'steady'})")
                 continue
-            _, e, h, ts_err = pick
-            ts_tension = towsim.run(e, h).steady_error(ts_ref)[1]
+            _, e, h, tol, ts_err = pick
+            ts_tension = towsim.run(e, h, tol).steady_error(ts_ref)[1]
             md_cmd = md.command(s, n)
-            ts_cmd = towsim.command(e, h)[0]
-            print(f"timing MoorDyn {s} segments against towsim {e} elements, h {h:g} s "
-                  f"({'impulse' if imp else 'steady'})", flush=True)
-            if (s, e, h) not in timings:
-                timings[(s, e, h)] = hyperfine_pair(md_cmd, ts_cmd, a.runs, a.rounds, a.work,
-                                                    f"{s}_{e}_{h:g}")
-            t_md, t_ts, ratios, cpu_ratios = timings[(s, e, h)]
+            ts_cmd = towsim.command(e, h, tol)[0]
+            print(f"timing MoorDyn {s} segments against towsim {e} elements, h {h:g} s, "
+                  f"tolerance {tol:g} ({'impulse' if imp else 'steady'})", flush=True)
+            if (s, e, h, tol) not in timings:
+                timings[(s, e, h, tol)] = hyperfine_pair(md_cmd, ts_cmd, a.runs, a.rounds,
+                                                         a.work, f"{s}_{e}_{h:g}_{tol:g}")
+            t_md, t_ts, ratios, cpu_ratios = timings[(s, e, h, tol)]
             table.append({"case": "impulse" if imp else "steady", "segments": s,
                           "dtM": OUTPUT_INTERVAL / n, "md_error": err,
                           "md_tension_error": tension_err, "md_time": t_md, "elements": e,
-                          "h": h, "ts_error": ts_err, "ts_tension_error": ts_tension,
+                          "h": h, "tolerance": tol, "ts_error": ts_err, "ts_tension_error": ts_tension,
                           "ts_time": t_ts, "ratio_mean": statistics.fmean(ratios),
                           "ratio_min": min(ratios), "ratio_max": max(ratios),
                           "cpu_ratio_mean": statistics.fmean(cpu_ratios),
@@ -431,19 +443,20 @@ def main():
         w.writerows(table)
     with open(os.path.splitext(a.out)[0] + "_grid.csv", "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["case", "elements", "h", "error", "cpu_s"])
-        for (imp, e, h), (err, cost) in sorted(grid.items()):
-            w.writerow(["impulse" if imp else "steady", e, h, f"{err:.4g}", f"{cost:.4f}"])
+        w.writerow(["case", "elements", "h", "tolerance", "error", "cpu_s"])
+        for (imp, e, h, tol), (err, cost) in sorted(grid.items()):
+            w.writerow(["impulse" if imp else "steady", e, h, f"{tol:g}", f"{err:.4g}",
+                        f"{cost:.4f}"])
     print(f"\n{a.rounds} rounds x {a.runs} runs per command (hyperfine -N --warmup 1), ratio "
           f"= MoorDyn mean / towsim mean per round (wall; CPU = user + system): mean [min, max]")
     print("| case | MoorDyn segments | dtM [s] | MoorDyn error (% L) | tension err (%) | MoorDyn "
-          "time [s] | towsim el. / h [s] | towsim error (% L) | tension err (%) | towsim time [s] "
+          "time [s] | towsim el. / h [s] / tol. | towsim error (% L) | tension err (%) | towsim time [s] "
           "| ratio (wall) | ratio (CPU) |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for t in table:
         print(f"| {t['case']} | {t['segments']} | {t['dtM']:.4g} | {100 * t['md_error']:.3g} | "
               f"{100 * t['md_tension_error']:.3g} | {t['md_time']:.3f} | {t['elements']} / "
-              f"{t['h']:g} | {100 * t['ts_error']:.3g} | {100 * t['ts_tension_error']:.3g} | "
+              f"{t['h']:g} / {t['tolerance']:g} | {100 * t['ts_error']:.3g} | {100 * t['ts_tension_error']:.3g} | "
               f"{t['ts_time']:.3f} | {t['ratio_mean']:.1f}x [{t['ratio_min']:.1f}, "
               f"{t['ratio_max']:.1f}] | {t['cpu_ratio_mean']:.1f}x [{t['cpu_ratio_min']:.1f}, "
               f"{t['cpu_ratio_max']:.1f}] |")

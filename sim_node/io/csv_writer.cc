@@ -2,6 +2,7 @@
 
 #include <cerrno>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -20,51 +21,44 @@ bool IsHeldSupport(const core::CableEnd& end) {
   return end.kind == core::EndKind::kFixed || end.kind == core::EndKind::kDriven;
 }
 
-// one row of a CSV file, built in memory and written in one call: fields appended with their
-// separating commas, numbers as "%.9g"
+// one row of a CSV file, appended to `rows` (a row built alone, or a file's pending rows):
+// fields with their separating commas, numbers as "%.9g" formatted in place (io/csv_number.h)
 class Row {
  public:
-  explicit Row(std::string* line) : line_(line) { line_->clear(); }
+  explicit Row(TextBuffer* rows) : rows_(rows), start_(rows->size()) {}
   Row& Number(double x) {
-    Comma();
-    AppendCsvNumber(x, line_);
+    char* p = rows_->Reserve(kCsvNumberMaxChars + 1);
+    if (rows_->size() > start_) *p++ = ',';
+    rows_->Commit(FormatCsvNumber(x, p));
     return *this;
   }
   template <class Int>  // long, unsigned long long: in decimal
   Row& Integer(Int n) {
-    Comma();
-    char text[24];
-    const std::to_chars_result r = std::to_chars(text, text + sizeof text, n);
-    line_->append(text, r.ptr);
+    constexpr int kMaxChars = 24;
+    char* p = rows_->Reserve(kMaxChars + 1);
+    if (rows_->size() > start_) *p++ = ',';
+    rows_->Commit(std::to_chars(p, p + kMaxChars, n).ptr);
     return *this;
   }
   Row& Text(const std::string& text) {
-    Comma();
-    line_->append(text);
+    if (rows_->size() > start_) rows_->Push(',');
+    rows_->Append(text.data(), text.size());
     return *this;
   }
-  // the row and its line break, on `f` (errors: CsvWriter::Check)
+  // ends the row with its line break
+  void End() { rows_->Push('\n'); }
+  // ends the row and writes the rows on `f` (errors: the caller's check)
   void WriteTo(std::FILE* f) {
-    line_->push_back('\n');
-    std::fwrite(line_->data(), 1, line_->size(), f);
+    End();
+    std::fwrite(rows_->data(), 1, rows_->size(), f);
   }
 
  private:
-  void Comma() {
-    if (!line_->empty()) line_->push_back(',');
-  }
-  std::string* line_;
+  TextBuffer* rows_;
+  size_t start_;  // where this row begins in *rows_
 };
 
 }  // namespace
-
-void AppendCsvNumber(double x, std::string* line) {
-  // 9 significant digits need at most 16 characters ("-1.23456789e-308"); nan and inf fit too
-  char text[32];
-  const std::to_chars_result r =
-      std::to_chars(text, text + sizeof text, x, std::chars_format::general, 9);
-  line->append(text, r.ptr);
-}
 
 bool HasSea(const core::Environment& env) {
   return !env.waves.empty() || !env.current.IsZero() || env.seabed.present();
@@ -80,10 +74,13 @@ std::string CsvField(const std::string& name) {
   return quoted + "\"";
 }
 
-void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
-                         double altitude, double depth, double u, double v, double w) {
-  std::string line;
-  Row row(&line);
+namespace {
+
+// the rows of WriteEnvironmentRow and WriteActuatorRow, appended to `rows`
+void AppendEnvironmentRow(TextBuffer* rows, double t, const std::string& body,
+                          double wave_elevation, double altitude, double depth, double u,
+                          double v, double w) {
+  Row row(rows);
   row.Number(t).Text(CsvField(body)).Number(wave_elevation);
   // no seabed: the altitude is NaN, written as an empty field (the files never hold NaN)
   if (std::isnan(altitude)) {
@@ -91,14 +88,13 @@ void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double
   } else {
     row.Number(altitude);
   }
-  row.Number(depth).Number(u).Number(v).Number(w).WriteTo(f);
+  row.Number(depth).Number(u).Number(v).Number(w).End();
 }
 
-void WriteActuatorRow(std::FILE* f, double t, const std::string& body,
-                      const core::VehicleCommand& command, const core::VehicleState& state,
-                      bool failsafe) {
-  std::string line;
-  Row(&line)
+void AppendActuatorRow(TextBuffer* rows, double t, const std::string& body,
+                       const core::VehicleCommand& command, const core::VehicleState& state,
+                       bool failsafe) {
+  Row(rows)
       .Number(t)
       .Text(CsvField(body))
       .Number(command.thrust)
@@ -108,12 +104,29 @@ void WriteActuatorRow(std::FILE* f, double t, const std::string& body,
       .Number(state.actuator[core::kRudder])
       .Number(state.actuator[core::kElevator])
       .Integer(failsafe ? 1 : 0)
-      .WriteTo(f);
+      .End();
+}
+
+}  // namespace
+
+void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
+                         double altitude, double depth, double u, double v, double w) {
+  TextBuffer line;
+  AppendEnvironmentRow(&line, t, body, wave_elevation, altitude, depth, u, v, w);
+  std::fwrite(line.data(), 1, line.size(), f);
+}
+
+void WriteActuatorRow(std::FILE* f, double t, const std::string& body,
+                      const core::VehicleCommand& command, const core::VehicleState& state,
+                      bool failsafe) {
+  TextBuffer line;
+  AppendActuatorRow(&line, t, body, command, state, failsafe);
+  std::fwrite(line.data(), 1, line.size(), f);
 }
 
 void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned long long step,
                      double thrust, double rudder, double elevator) {
-  std::string line;
+  TextBuffer line;
   Row(&line)
       .Number(t)
       .Text(CsvField(body))
@@ -126,8 +139,8 @@ void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned l
 
 CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles,
                      const std::vector<std::string>& cables,
-                     const std::vector<std::string>& winches)
-    : dir_(dir), winch_(winch) {
+                     const std::vector<std::string>& winches, double flush_period)
+    : dir_(dir), winch_(winch), flush_period_(flush_period) {
   std::error_code ec;
   std::filesystem::create_directories(dir_, ec);
   if (ec) {
@@ -151,32 +164,29 @@ CsvWriter::CsvWriter(const std::string& dir, bool sea, bool winch, bool vehicles
     }
     if (vehicles) Open(actuators_, "actuators.csv", kCsvActuatorsHeader);
   } catch (...) {
-    for (File* file :
-         {&bodies_, &cable_, &forces_, &status_, &environment_, &actuators_}) {
+    for (File* file : Files()) {
       if (file->f != nullptr) std::fclose(file->f);
       file->f = nullptr;
-    }
-    for (File& file : winch_files_) {
-      if (file.f != nullptr) std::fclose(file.f);
-      file.f = nullptr;
-    }
-    for (File& file : more_cables_) {
-      if (file.f != nullptr) std::fclose(file.f);
-      file.f = nullptr;
     }
     throw;
   }
 }
 
 CsvWriter::~CsvWriter() {
-  for (File* file :
-       {&bodies_, &cable_, &forces_, &status_, &environment_, &actuators_}) {
-    if (file->f != nullptr) std::fclose(file->f);
+  // the rows not yet written, then close, ignoring errors (Close reports them)
+  for (File* file : Files()) {
+    if (file->f == nullptr) continue;
+    if (!file->pending.empty())
+      std::fwrite(file->pending.data(), 1, file->pending.size(), file->f);
+    std::fclose(file->f);
   }
-  for (File& file : more_cables_)
-    if (file.f != nullptr) std::fclose(file.f);
-  for (File& file : winch_files_)
-    if (file.f != nullptr) std::fclose(file.f);
+}
+
+std::vector<CsvWriter::File*> CsvWriter::Files() {
+  std::vector<File*> files = {&bodies_, &cable_, &forces_, &status_, &environment_, &actuators_};
+  for (File& file : more_cables_) files.push_back(&file);
+  for (File& file : winch_files_) files.push_back(&file);
+  return files;
 }
 
 void CsvWriter::Open(File& file, const char* name, const char* header) {
@@ -187,13 +197,22 @@ void CsvWriter::Open(File& file, const char* name, const char* header) {
                              "' for writing: " + std::strerror(errno));
   }
   std::fprintf(file.f, "%s\n", header);
-  Check(file);
+  Flush(file);
 }
 
-void CsvWriter::Check(const File& file) const {
-  if (std::fflush(file.f) != 0 || std::ferror(file.f)) {
-    throw OutputError("writing '" + file.path + "' failed: " + std::strerror(errno));
-  }
+void CsvWriter::Flush(File& file) {
+  if (file.f == nullptr) return;
+  const size_t size = file.pending.size();
+  const bool ok = (size == 0 || std::fwrite(file.pending.data(), 1, size, file.f) == size) &&
+                  std::fflush(file.f) == 0 && !std::ferror(file.f);
+  file.pending.clear();  // written, or lost with the error that ends the run
+  if (!ok) throw OutputError("writing '" + file.path + "' failed: " + std::strerror(errno));
+}
+
+void CsvWriter::FlushAll() {
+  for (File* file : Files()) Flush(*file);
+  last_flush_ = std::chrono::steady_clock::now();
+  flushed_ = true;
 }
 
 void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us,
@@ -202,33 +221,40 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   if (bodies_.f == nullptr) throw std::runtime_error("CsvWriter::Write after Close");
   const core::Model& model = sim.model();
   const double t = sim.time();
+  if (body_fields_.size() != static_cast<size_t>(sim.num_bodies()) ||
+      support_fields_.size() != 2 * model.cables.size()) {
+    body_fields_.clear();
+    for (int b = 0; b < sim.num_bodies(); ++b) body_fields_.push_back(CsvField(sim.body_name(b)));
+    support_fields_.clear();
+    for (const core::CableParams& cable : model.cables)
+      for (const char* end : {".start", ".end"}) support_fields_.push_back(CsvField(cable.name + end));
+  }
 
-  std::string line;  // one row, reused
   // bodies (spheres, then vehicles): origin in W, ZYX Euler angles of q_WB, body-frame twist
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const core::Vec3 p_WB = sim.body_position(b);
     const core::Vec3 rpy = core::EulerZYX(sim.body_attitude(b));
     const core::Vec6 nu = sim.body_twist(b);
-    Row row(&line);
-    row.Number(t).Text(CsvField(sim.body_name(b)));
+    Row row(&bodies_.pending);
+    row.Number(t).Text(body_fields_[b]);
     for (int k = 0; k < 3; ++k) row.Number(p_WB(k));
     for (int k = 0; k < 3; ++k) row.Number(rpy(k));
     for (int k = 0; k < 6; ++k) row.Number(nu(k));
-    row.WriteTo(bodies_.f);
+    row.End();
   }
 
   for (int c = 0; c < sim.num_cables(); ++c) {
-    std::FILE* f = c == 0 ? cable_.f : more_cables_[c - 1].f;
+    TextBuffer* rows = c == 0 ? &cable_.pending : &more_cables_[c - 1].pending;
     for (int i = 0; i < sim.num_nodes(c); ++i) {
       const core::Vec3 r = sim.node_position(i, c);
-      Row(&line)
+      Row(rows)
           .Number(t)
           .Integer(i)
           .Number(r.x())
           .Number(r.y())
           .Number(r.z())
           .Number(sim.NodeTension(i, c))
-          .WriteTo(f);
+          .End();
     }
   }
 
@@ -236,49 +262,46 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
   for (int b = 0; b < sim.num_bodies(); ++b) {
     core::Vec3 f, m;
     sim.BodyCableWrench(b, &f, &m);
-    Row row(&line);
-    row.Number(t).Text(CsvField(sim.body_name(b)));
+    Row row(&forces_.pending);
+    row.Number(t).Text(body_fields_[b]);
     for (int k = 0; k < 3; ++k) row.Number(f(k));
     for (int k = 0; k < 3; ++k) row.Number(m(k));
-    row.WriteTo(forces_.f);
-    WriteAttachments(sim, b, &line);
+    row.End();
+    WriteAttachments(sim, b);
   }
-  static const char* const kEndNames[2] = {"start", "end"};
   for (int c = 0; c < sim.num_cables(); ++c) {
     const core::CableParams& cable = model.cables[c];
     const core::CableEnd* ends[2] = {&cable.start, &cable.end};
     for (int e = 0; e < 2; ++e) {
       if (!IsHeldSupport(*ends[e])) continue;
       const core::Vec3 f = sim.end_force(e, c);
-      Row(&line)
+      Row(&forces_.pending)
           .Number(t)
-          .Text(CsvField(cable.name + "." + kEndNames[e]))
+          .Text(support_fields_[2 * c + e])
           .Number(f.x())
           .Number(f.y())
           .Number(f.z())
           .Text("0,0,0")
-          .WriteTo(forces_.f);
+          .End();
     }
   }
 
-  Row row(&line);
+  Row row(&status_.pending);
   row.Number(t)
       .Integer(sim.step_count())
       .Integer(status.iterations)
       .Number(status.residual)
       .Integer(wall_us);
   row.Number(sim.cable_length());
-  row.WriteTo(status_.f);
+  row.End();
 
-  for (const File* file : {&bodies_, &cable_, &forces_, &status_}) Check(*file);
-  for (const File& file : more_cables_) Check(file);
   if (environment_.f != nullptr) WriteEnvironment(sim);
   for (size_t w = 0; w < winch_files_.size(); ++w) {
     // winch w on cable w (core/model.h); its command appended (the header's order)
     const int c = static_cast<int>(w);
     const core::WinchCommand& command = sim.winch_command(c);
     const bool in_failsafe = w < winch_failsafe.size() && winch_failsafe[w];
-    Row(&line)
+    Row(&winch_files_[w].pending)
         .Number(t)
         .Number(sim.cable_length(c))
         .Number(sim.winch_speed(c))
@@ -287,13 +310,27 @@ void CsvWriter::Write(const core::Simulation& sim, const core::StepStatus& statu
         .Integer(command.mode == core::WinchCommand::Mode::kLength ? 1 : 0)
         .Number(command.value)
         .Integer(in_failsafe ? 1 : 0)
-        .WriteTo(winch_files_[w].f);
-    Check(winch_files_[w]);
+        .End();
   }
   if (actuators_.f != nullptr) WriteActuators(sim, failsafe);
+
+  // to the operating system in whole row sets: the first at once, then when flush_period of
+  // wall time has passed or kMaxPendingBytes are waiting (csv_writer.h)
+  if (!flushed_ || PendingBytes() >= kMaxPendingBytes ||
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_flush_).count() >=
+          flush_period_) {
+    FlushAll();
+  }
 }
 
-void CsvWriter::WriteAttachments(const core::Simulation& sim, int b, std::string* line) {
+size_t CsvWriter::PendingBytes() const {
+  // the files that grow with the cable: the nodes' and the forces' (a row per end)
+  size_t bytes = cable_.pending.size() + forces_.pending.size();
+  for (const File& file : more_cables_) bytes += file.pending.size();
+  return bytes;
+}
+
+void CsvWriter::WriteAttachments(const core::Simulation& sim, int b) {
   // a body held by two or more cable ends: each end's own force and moment (body frame)
   static const char* const kEndNames[2] = {"start", "end"};
   int held = 0;
@@ -308,12 +345,12 @@ void CsvWriter::WriteAttachments(const core::Simulation& sim, int b, std::string
       const core::Vec3 m = !sim.body_is_sphere(b)
                                ? core::Vec3(sim.system().End(e, c).at_B.cross(f))
                                : core::Vec3::Zero();
-      Row row(line);
+      Row row(&forces_.pending);
       row.Number(sim.time()).Text(
           CsvField(sim.body_name(b) + "." + sim.cable_name(c) + "." + kEndNames[e]));
       for (int k = 0; k < 3; ++k) row.Number(f(k));
       for (int k = 0; k < 3; ++k) row.Number(m(k));
-      row.WriteTo(forces_.f);
+      row.End();
     }
 }
 
@@ -321,29 +358,28 @@ void CsvWriter::WriteActuators(const core::Simulation& sim, const std::vector<bo
   const double t = sim.time();
   for (int v = 0; v < sim.num_vehicles(); ++v) {
     const bool in_failsafe = v < static_cast<int>(failsafe.size()) && failsafe[v];
-    WriteActuatorRow(actuators_.f, t, sim.body_name(sim.num_spheres() + v), sim.vehicle_command(v),
-                     sim.vehicle_state(v), in_failsafe);
+    AppendActuatorRow(&actuators_.pending, t, sim.body_name(sim.num_spheres() + v),
+                      sim.vehicle_command(v), sim.vehicle_state(v), in_failsafe);
   }
-  Check(actuators_);
 }
 
 void CsvWriter::WriteEnvironment(const core::Simulation& sim) {
   const double t = sim.time();
   for (int b = 0; b < sim.num_bodies(); ++b) {
     const core::Vec3 u = sim.WaterVelocityAt(b);
-    WriteEnvironmentRow(environment_.f, t, sim.body_name(b), sim.SurfaceElevationAt(b),
-                        sim.BodyAltitude(b), sim.BodyDepth(b), u.x(), u.y(), u.z());
+    AppendEnvironmentRow(&environment_.pending, t, sim.body_name(b), sim.SurfaceElevationAt(b),
+                         sim.BodyAltitude(b), sim.BodyDepth(b), u.x(), u.y(), u.z());
   }
-  Check(environment_);
 }
 
 void CsvWriter::Close() {
   std::string error;
-  std::vector<File*> files = {&bodies_,     &cable_, &forces_, &status_,
-                              &environment_, &actuators_};
-  for (File& file : more_cables_) files.push_back(&file);
-  for (File& file : winch_files_) files.push_back(&file);
-  for (File* file : files) {
+  try {
+    FlushAll();
+  } catch (const OutputError& e) {
+    error = e.what();
+  }
+  for (File* file : Files()) {
     if (file->f == nullptr) continue;
     if (std::fclose(file->f) != 0 && error.empty()) {
       error = "closing '" + file->path + "' failed: " + std::strerror(errno);

@@ -66,14 +66,23 @@
 // (u, v, w) is the world velocity and the moment is 0.
 //
 // Numbers are written with 9 significant digits, exactly as printf's "%.9g" writes them
-// (AppendCsvNumber). Every Write() is flushed to the operating system, so the files survive
-// Ctrl-C or a kill of the process.
+// (io/csv_number.h). Rows are kept in memory and written to the operating system in whole
+// row sets: the first Write's at once, then whenever flush_period of wall time (kFlushPeriod,
+// 0.25 s) has passed since the last write or kMaxPendingBytes wait, and at Close (a signal
+// stops sim_node at a step boundary and closes the files). So the files hold only complete
+// rows at every moment, and a process killed outright (SIGKILL) loses at most the rows of its
+// last flush_period; a short offline run is written in a few system calls instead of one per
+// file and row set (docs/command_line.md, "Output files"; docs/benchmarks.md, "Against
+// MoorDyn").
 
+#include <chrono>
 #include <cstdio>
 #include <string>
 #include <vector>
 
 #include "core/simulation.h"
+#include "io/csv_number.h"
+#include "io/text_buffer.h"
 
 namespace towsim::io {
 
@@ -99,11 +108,6 @@ bool HasSea(const core::Environment& env);
 // a name as a CSV field: quoted (RFC 4180) only if it holds a comma, quote or line break
 std::string CsvField(const std::string& name);
 
-// appends `x` to `line` as printf's "%.9g" writes it (9 significant digits, the shorter of
-// fixed and exponent form, trailing zeros dropped), by std::to_chars, which the standard
-// defines as printf in the "C" locale: the same bytes for a third of the instructions
-// (docs/benchmarks.md, "Start-up")
-void AppendCsvNumber(double x, std::string* line);
 // one environment.csv row (header kCsvEnvironmentHeader) at time t [s] for `body`: the altitude
 // NaN (no seabed) as an empty field; for CsvWriter and towsim_export, so that both print alike
 void WriteEnvironmentRow(std::FILE* f, double t, const std::string& body, double wave_elevation,
@@ -121,17 +125,26 @@ void WriteCommandRow(std::FILE* f, double t, const std::string& body, unsigned l
 
 class CsvWriter {
  public:
+  // wall time [s] after which a Write passes its rows to the operating system (above)
+  static constexpr double kFlushPeriod = 0.25;
+  // rows of the node and force files waiting [bytes] that are written whatever the time:
+  // small enough that the buffers, reused after each write, stay in the cache and do not
+  // grow with the run (a buffer of the whole run's rows cost a page fault per 4 kB)
+  static constexpr size_t kMaxPendingBytes = size_t{64} << 10;
+
   // creates `dir` (and its parents) if needed, truncates the four files (and environment.csv
   // when `sea`, i.e. HasSea of the scene; winch.csv when `winch`, the scene has a winch;
   // actuators.csv when `vehicles`, the scene has vehicles) and writes their headers; throws
   // std::runtime_error naming the path if a file cannot be opened
   // `cables`: the cables' names (Model::cables order), one <name>.csv each; `winches`: the
-  // winches' names (winch w on cable w), one <name>.csv each (empty with `winch`: {"winch"})
+  // winches' names (winch w on cable w), one <name>.csv each (empty with `winch`: {"winch"});
+  // `flush_period`: see kFlushPeriod (0: every Write is written at once)
   explicit CsvWriter(const std::string& dir, bool sea = false, bool winch = false,
                      bool vehicles = false,
                      const std::vector<std::string>& cables = {"cable"},
-                     const std::vector<std::string>& winches = {});
-  ~CsvWriter();  // closes, ignoring errors
+                     const std::vector<std::string>& winches = {},
+                     double flush_period = kFlushPeriod);
+  ~CsvWriter();  // writes the rows still held and closes, ignoring errors
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
 
@@ -140,14 +153,15 @@ class CsvWriter {
   // environment.csv when it is written, one per vehicle in actuators.csv). `status` is the
   // status of the step that produced the state (a default StepStatus at t = 0), `wall_us` its
   // wall time; `failsafe[v]` whether vehicle v was in failsafe during that step (a vehicle
-  // beyond its size: not; offline: empty), `winch_failsafe[w]` the same for winch w. Throws
-  // std::runtime_error if writing fails (e.g. disk full).
+  // beyond its size: not; offline: empty), `winch_failsafe[w]` the same for winch w. The rows
+  // reach the files when the writer flushes (above). Throws std::runtime_error if writing
+  // fails (e.g. disk full), at the flush that fails.
   void Write(const core::Simulation& sim, const core::StepStatus& status, long wall_us,
              const std::vector<bool>& failsafe = {},
              const std::vector<bool>& winch_failsafe = {});
 
-  // flushes and closes the files; further Write() calls throw. Throws std::runtime_error if
-  // the final flush fails.
+  // writes the rows still held, flushes and closes the files; further Write() calls throw.
+  // Throws std::runtime_error if the final flush fails.
   void Close();
 
   const std::string& dir() const { return dir_; }
@@ -156,11 +170,16 @@ class CsvWriter {
   struct File {
     std::string path;
     std::FILE* f = nullptr;
+    TextBuffer pending;  // whole rows not yet written
   };
   void Open(File& file, const char* name, const char* header);
+  std::vector<File*> Files();  // every file, open or not
+  // writes and flushes the file's pending rows; throws OutputError naming it on failure
+  void Flush(File& file);
+  void FlushAll();
+  size_t PendingBytes() const;
   // forces.csv's per-attachment rows of body b (Write)
-  void WriteAttachments(const core::Simulation& sim, int b, std::string* line);
-  void Check(const File& file) const;
+  void WriteAttachments(const core::Simulation& sim, int b);
   void WriteEnvironment(const core::Simulation& sim);
   void WriteActuators(const core::Simulation& sim, const std::vector<bool>& failsafe);
 
@@ -174,6 +193,13 @@ class CsvWriter {
   File environment_;  // f == nullptr: not written (a calm scene)
   std::vector<File> winch_files_;  // one per winch (none: no winch)
   File actuators_;    // f == nullptr: not written (no vehicles)
+  // the bodies' names as CSV fields (CsvField), from the first Write: a writer serves one
+  // simulation, whose bodies do not change
+  std::vector<std::string> body_fields_;
+  std::vector<std::string> support_fields_;  // "<cable>.start", "<cable>.end" per cable
+  double flush_period_ = kFlushPeriod;
+  bool flushed_ = false;  // a Write has been flushed
+  std::chrono::steady_clock::time_point last_flush_;
 };
 
 }  // namespace towsim::io

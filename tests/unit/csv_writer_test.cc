@@ -387,6 +387,57 @@ TEST(CsvWriterTest, RowsAreOnDiskBeforeClose) {
   EXPECT_THROW(csv.Write(sim, core::StepStatus{}, 0), std::runtime_error);
 }
 
+// Rows are written in whole row sets (csv_writer.h): the first Write's at once, the next ones
+// when the flush period has passed, or at Close; never part of a row. A period of 0 writes
+// every Write at once.
+TEST(CsvWriterTest, RowsReachTheFilesInWholeRowSets) {
+  TempDir tmp;
+  const core::Model model = TinyModel();
+  core::Simulation sim(model);
+  std::string header;
+  {
+    CsvWriter held(tmp.path().string(), false, false, false, {"cable"}, {}, 1e9);  // no period
+    held.Write(sim, core::StepStatus{}, 0);
+    EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), 1u);
+    held.Write(sim, core::StepStatus{}, 0);
+    // held: the files still end with the first row set's line break
+    EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), 1u);
+    EXPECT_EQ(ReadCsv(tmp.path() / "cable.csv", &header).size(), 3u);
+    EXPECT_EQ(FileText(tmp.path() / "cable.csv").back(), '\n');
+    held.Close();
+    EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), 2u);
+    EXPECT_EQ(ReadCsv(tmp.path() / "cable.csv", &header).size(), 6u);
+  }
+  {
+    CsvWriter each(tmp.path().string(), false, false, false, {"cable"}, {}, 0.0);
+    for (size_t k = 1; k <= 3; ++k) {
+      each.Write(sim, core::StepStatus{}, 0);
+      EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), k);
+    }
+  }
+  {
+    // without a period the rows waiting are written once they pass kMaxPendingBytes
+    CsvWriter held(tmp.path().string(), false, false, false, {"cable"}, {}, 1e9);
+    held.Write(sim, core::StepStatus{}, 0);
+    const size_t row_set = fs::file_size(tmp.path() / "cable.csv") +
+                           fs::file_size(tmp.path() / "forces.csv") -
+                           std::strlen(kCableHeader) - std::strlen(kForcesHeader) - 2;
+    const size_t writes = CsvWriter::kMaxPendingBytes / row_set + 2;
+    for (size_t k = 1; k < writes; ++k) held.Write(sim, core::StepStatus{}, 0);
+    EXPECT_GT(ReadCsv(tmp.path() / "status.csv", &header).size(), 1u);
+    EXPECT_EQ(FileText(tmp.path() / "status.csv").back(), '\n');
+    held.Close();
+    EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), writes);
+  }
+  {
+    // the destructor writes what it holds, as Close does
+    CsvWriter held(tmp.path().string(), false, false, false, {"cable"}, {}, 1e9);
+    held.Write(sim, core::StepStatus{}, 0);
+    held.Write(sim, core::StepStatus{}, 0);
+  }
+  EXPECT_EQ(ReadCsv(tmp.path() / "status.csv", &header).size(), 2u);
+}
+
 TEST(CsvWriterTest, UncreatableDirectoryThrowsNamingIt) {
   TempDir tmp;
   const fs::path file = tmp.path() / "a_file";
@@ -524,6 +575,44 @@ TEST(AppendCsvNumber, SameBytesAsPrintf) {
     check(x);
     const double y = std::pow(10.0, exponent(random)) * ((random() & 1) ? 1.0 : -1.0);
     check(y);
+  }
+}
+
+// The fast path of FormatCsvNumber (1e-14 <= |x| < 1e30) where it could go wrong, against
+// snprintf's "%.9g": 10-digit ties (m + 1/2) 10^j and their neighbours (the exact value on
+// the tie, just below and just above it), 9-digit values and their neighbours, the decades
+// 10^j and the carries 999999999.5 10^j with their neighbours, and the output's own kind of
+// values (multiples of the step and output interval, integers).
+TEST(AppendCsvNumber, SameBytesAsPrintfAtTiesAndDecades) {
+  auto same = [](double x) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.9g", x);
+    std::string line;
+    AppendCsvNumber(x, &line);
+    return line == text;
+  };
+  auto check = [&](double x) {
+    for (double y : {x, std::nextafter(x, 0.0), std::nextafter(x, 1e300), -x}) {
+      ASSERT_TRUE(same(y)) << std::hexfloat << y;
+    }
+  };
+  std::mt19937_64 random(20261203);  // seeded: the same numbers every run
+  for (int i = 0; i < 100000; ++i) {
+    const int64_t m = 100000000 + static_cast<int64_t>(random() % 900000000);
+    const int j = static_cast<int>(random() % 46) - 15;  // 10^-15 ... 10^30
+    check((static_cast<double>(m) + 0.5) * std::pow(10.0, j - 9));
+    check(static_cast<double>(m) * std::pow(10.0, j - 8));
+  }
+  for (int j = -16; j <= 32; ++j) {
+    check(std::pow(10.0, j));
+    check(999999999.5 * std::pow(10.0, j - 9));
+    check(99999999.95 * std::pow(10.0, j - 8));
+  }
+  for (int i = 0; i < 100000; ++i) {
+    check(i * 0.2);
+    check(i * 0.05);
+    check(i * 0.0125);
+    check(static_cast<double>(i));
   }
 }
 
