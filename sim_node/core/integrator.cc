@@ -20,23 +20,12 @@ AlphaParameters AlphaParameters::FromSettings(const IntegratorSettings& s) {
   return p;
 }
 
-namespace {
-
-// the position scale of the increment test: the longest cable, at least 1 m
-double LengthScale(const Model& m) {
-  double l = 1.0;
-  for (const CableParams& c : m.cables) l = std::max(l, c.length);
-  return l;
-}
-
-}  // namespace
-
 Integrator::Integrator(const System& system, StepInputs* inputs)
     : system_(system),
       sampler_(system),
       inputs_(inputs),
       ap_(AlphaParameters::FromSettings(system.model().integrator)),
-      q_scale_(LengthScale(system.model())),
+      q_scale_(IncrementScale(system.model())),
       weight_scale_(WetWeightScale(system.model())),
       slopes_at_most_inf_(ShortestElement(system) >= 1.0),
       jac_(system.MakeMatrix()) {

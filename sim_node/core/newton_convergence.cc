@@ -8,15 +8,23 @@
 
 namespace towsim::core {
 
-double WetWeightScale(const Model& model) {
+double IncrementScale(const Model& model) {
+  double l = 1.0;
+  for (const CableParams& c : model.cables) l = std::max(l, c.length);
+  return l;
+}
+
+double WetWeight(const Model& model) {
   const Environment& env = model.environment;
   double w = 0.0;
   for (const CableParams& c : model.cables)
     w += std::abs(c.mass_per_length - env.water_density * c.area()) * env.gravity * c.length;
   for (const SphereBody& b : model.spheres)
     w += std::abs(b.mass - env.water_density * b.volume) * env.gravity;
-  return std::max(w, kMinForceScale);
+  return w;
 }
+
+double WetWeightScale(const Model& model) { return std::max(WetWeight(model), kMinForceScale); }
 
 double JointForceScale(const System& system, const Eigen::VectorXd& lambda, double weight_scale) {
   double f = weight_scale;

@@ -28,7 +28,12 @@ namespace towsim::core {
 
 class System;
 
-// W: the scene's wet weight (above), at least kMinForceScale
+// max(1 m, L), L the longest cable: the increment bound is tolerance x this
+double IncrementScale(const Model& model);
+
+// the scene's wet weight, sum over the cables of |m - rho A| g L and over the bodies of
+// |m - rho V| g [N]; W (above) is it, at least kMinForceScale
+double WetWeight(const Model& model);
 double WetWeightScale(const Model& model);
 constexpr double kMinForceScale = 1.0;  // [N]
 

@@ -8,6 +8,7 @@
 #include "core/fold_check.h"
 #include "core/gauss_quadrature.h"
 #include "core/initial_shape.h"
+#include "core/newton_convergence.h"
 
 namespace towsim::core {
 
@@ -26,18 +27,16 @@ double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, cons
       const FlowSample flow = sys.sea().Current(s.q.segment<3>(sys.CableDof(i, k)), s.t);
       rel = std::max(rel, RelativeVelocity(frame_velocity, flow).norm());
     }
-  double f = 0.0;
+  double f = WetWeight(m);  // newton_convergence.h
   for (const CableParams& c : m.cables) {
-    f += std::abs(c.mass_per_length - env.water_density * c.area()) * env.gravity * c.length;
     // C_n: the line type's, or about Choo & Casarella's (1.1-1.2)
     const double c_n = c.drag.kind == CableDragLaw::kConstant ? c.drag.normal : 1.2;
     f += 0.5 * env.water_density * c.diameter * c_n * rel * rel * c.length;
   }
   for (const SphereBody& b : m.spheres)
-    f += std::abs(b.mass - env.water_density * b.volume) * env.gravity +
-         0.5 * env.water_density * b.drag_coefficient * rel * rel * std::pow(b.volume, 2.0 / 3.0) *
-             1.21;
-  return std::max(f, 1.0);
+    f += 0.5 * env.water_density * b.drag_coefficient * rel * rel * std::pow(b.volume, 2.0 / 3.0) *
+         1.21;
+  return std::max(f, kMinForceScale);
 }
 
 // why the converged shape at *s is not a cable's (fold_check.h, the tension bound of
@@ -101,8 +100,7 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
   const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
-  double q_scale = 1.0;
-  for (const CableParams& c : sys.model().cables) q_scale = std::max(q_scale, c.length);
+  const double q_scale = IncrementScale(sys.model());
   s->v.setZero(n);
   for (int k = 0; k < sys.num_cables(); ++k)
     for (int i = 0; i < sys.num_nodes(k); ++i)

@@ -127,9 +127,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   const int na = num_attachments();
   const bool strong = model.integrator.coupling == Coupling::kStrong;
   const int max_iterations = strong ? model.integrator.max_coupling_iterations : 1;
-  double length = 1.0;
-  for (const CableParams& c : model.cables) length = std::max(length, c.length);
-  const double tol = model.integrator.tolerance * length;
+  const double tol = model.integrator.tolerance * IncrementScale(model);
   start_ = *state;
   // the force bound on the joint-force residuals: the cables' Newton's (newton_convergence.h),
   // a fraction of the largest joint force at the step's start
