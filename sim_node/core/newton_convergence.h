@@ -17,9 +17,9 @@
 // error larger than the tension itself: steady_tow with E x100 at tolerance 1e-4 accepted such
 // iterates step after step and ended with exit 0, its towfish 12.6 m deep against 25.25 m and
 // strains of 35 %. The force bound holds the force error to a fraction of the forces the
-// system carries, whatever the stiffness: the same run with it ends within 2.4e-5 of the
-// converged depth in 1.70 Newton iterations a step (docs/benchmarks.md, "Newton tolerance
-// against discretisation error", has the measurements and the choice of the default).
+// system carries, whatever the stiffness: the same run with it (the default bound) ends within
+// 2e-7 m of the converged run (docs/benchmarks.md, "Newton tolerance against discretisation
+// error", has the measurements and the choice of the defaults).
 #include <Eigen/Core>
 
 #include "core/model.h"
