@@ -132,7 +132,8 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
           f_r = true;
         }
       }
-      if (contact) {
+      // (a point above the bed has no contact: tested here before the load is built)
+      if (contact && fields.r(2, g) > sea.SeabedDepth(fields.r(0, g), fields.r(1, g))) {
         // the seabed (seabed_contact.h): contact width = the cable's diameter; df/dr, df/dr_dot
         const ContactLoad cl = SeabedContactLoad(sea, ctx.diameter, fields.r.col(g),
                                                  fields.v.col(g), a, kWithJacobian);

@@ -95,6 +95,7 @@ class EnvironmentField {
   // the water (mostly -z) and the contact parameters (seabed_contact.h gives their meaning)
   double SeabedDepth(double x, double y) const { return env_.seabed.Depth(x, y); }
   Vec3 SeabedNormal(double x, double y) const { return env_.seabed.Normal(x, y); }
+  double SeabedShallowest() const { return env_.seabed.Shallowest(); }
   // range from `origin` along the unit `direction` to the bed, at most max_range [m]
   // (Seabed::RayRange: +inf no return, also without a seabed; -inf origin below the bed)
   double SeabedRayRange(const Vec3& origin, const Vec3& direction, double max_range) const {

@@ -144,6 +144,21 @@ double Seabed::Depth(double x, double y) const {
   }
 }
 
+double Seabed::Shallowest() const {
+  switch (kind_) {
+    case Kind::kNone:
+      return std::numeric_limits<double>::infinity();
+    case Kind::kFlat:
+      return depth_;
+    case Kind::kPlane:
+      // a level plane is flat; a sloping one reaches every depth
+      return slope_ == 0.0 ? depth_ : -std::numeric_limits<double>::infinity();
+    case Kind::kGrid:
+      return d_min_;  // bilinear patches and their constant extension stay within the nodes'
+  }
+  return -std::numeric_limits<double>::infinity();
+}
+
 Seabed::Vec3 Seabed::Normal(double x, double y) const {
   if (kind_ == Kind::kNone || kind_ == Kind::kFlat) return -Vec3::UnitZ();
   // n = (d_x, d_y, -1) / sqrt(1 + d_x^2 + d_y^2)

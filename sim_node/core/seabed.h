@@ -88,6 +88,9 @@ class Seabed {
   double RayRange(const Vec3& origin, const Vec3& direction, double max_range) const;
   // depth for the waves' dispersion relation (see above)
   double WaveDepth() const;
+  // a depth no point of the bed is shallower than [m]: flat d_0, grid min d_ij, +infinity
+  // without a seabed, -infinity for a plane (it rises without bound)
+  double Shallowest() const;
 
   const SeabedContact& contact() const { return contact_; }
   void set_contact(const SeabedContact& contact) { contact_ = contact; }

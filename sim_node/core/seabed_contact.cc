@@ -13,6 +13,9 @@ ContactLoad SeabedContactLoad(const EnvironmentField& sea, double width, const V
                               const Vec3& v, const Vec3& a, bool jacobians) {
   ContactLoad out;
   const double d = sea.SeabedDepth(r.x(), r.y());
+  // above the bed (z <= d) the penetration (z - d) |n_z| below is not positive: no contact,
+  // known before the normal is computed
+  if (!(r.z() > d)) return out;
   const Vec3 n = sea.SeabedNormal(r.x(), r.y());
   const double nz = std::abs(n.z());
   const double delta = (r.z() - d) * nz;

@@ -16,6 +16,12 @@ using Eigen::VectorXd;
 
 namespace {
 
+// the pseudo time step squared above which the iteration is plain Newton [s^2]
+constexpr double kPlainNewton = 1e13;
+// plain Newton iterations a warm start may take (quadratic convergence from a nearby root
+// takes 2-4) before the solve starts again from the pseudo-transient's first step
+constexpr int kWarmIterations = 8;
+
 // force scale for the convergence test: weight of cable and spheres plus a drag scale on the
 // largest speed relative to the water at the initial node positions
 double ForceScale(const System& sys, const Eigen::Vector3d& frame_velocity, const State& s) {
@@ -94,9 +100,12 @@ std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity,
 }
 
 // one pseudo-transient Newton solve from *s; slope_limit bounds the change of every slope
-// component per iteration (infinite: no bound)
+// component per iteration (infinite: no bound). `warm`: *s is an equilibrium of nearby
+// supports, its multipliers kept: plain Newton from the first iteration, at most
+// kWarmIterations of them, the residual falling in each (else not ok, res.message empty)
 StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                   const std::function<bool()>& stop, double slope_limit, double tol) {
+                   const std::function<bool()>& stop, double slope_limit, double tol,
+                   bool warm = false) {
   StaticResult res;
   const int n = sys.num_q(), m = sys.num_lambda();
   const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
@@ -107,7 +116,7 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
       s->v.segment<3>(sys.CableDof(i, k)) = frame_velocity;
   for (int b = 0; b < sys.num_spheres(); ++b) s->v.segment<3>(sys.SphereDof(b)) = frame_velocity;
   s->a.setZero(n);
-  s->lambda.setZero(m);
+  if (!warm || s->lambda.size() != m) s->lambda.setZero(m);
 
   NetworkMatrix jac = sys.MakeMatrix();
   // calm water (no wave samples), the supports as the state holds them and the drum element
@@ -121,9 +130,10 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
   }
   VectorXd r, phi, rhs, dq, dl;
   constexpr int kMaxIterations = 2000;
-  double delta = 1.0e-2;  // pseudo time step squared [s^2]
+  double delta = warm ? kPlainNewton : 1.0e-2;  // pseudo time step squared [s^2]
   double prev_norm = -1.0;
-  for (int it = 1; it <= kMaxIterations; ++it) {
+  double prev_step = std::numeric_limits<double>::infinity();  // |dq| of the last iteration
+  for (int it = 1; it <= (warm ? kWarmIterations : kMaxIterations); ++it) {
     if (stop && stop()) {
       res.stopped = true;
       return res;
@@ -145,6 +155,7 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     prev_norm = norm;
     sys.ToBlocks(-r, -phi, &rhs);
     if (!jac.Solve(&rhs)) {
+      if (warm) return res;
       // singular (e.g. a slack cable without bending): damp harder
       delta = std::min(delta, 1e6) * 0.01;
       prev_norm = -1.0;
@@ -157,6 +168,11 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     }
     // limit the step to a tenth of the cable length per iteration
     const double step = dq.lpNorm<Eigen::Infinity>();
+    // plain Newton near a root shrinks its increment at every iteration (the first is the
+    // supports' move: the residual alone does not see a moved support); one that does not is
+    // not near enough (the caller solves again from the start)
+    if (warm && !(step < prev_step)) return res;
+    prev_step = step;
     const double limit = 0.1 * q_scale;
     double scale = step > limit ? limit / step : 1.0;
     if (std::isfinite(slope_limit)) {
@@ -171,6 +187,7 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     s->lambda += scale * dl;
     if (!s->q.allFinite()) break;
   }
+  if (warm) return res;
   std::ostringstream msg;
   int worst = 0;
   if (r.size()) r.cwiseAbs().maxCoeff(&worst);
@@ -184,11 +201,22 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
 }  // namespace
 
 StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                         const std::function<bool()>& stop, double tolerance) {
+                         const std::function<bool()>& stop, double tolerance, StaticStart start) {
   const State guess = *s;
   const double tol = tolerance > 0.0 ? tolerance : sys.model().integrator.tolerance;
+  int warm_iterations = 0;
+  if (start == StaticStart::kNearEquilibrium) {
+    // plain Newton from the nearby equilibrium; its shape checked like any other
+    StaticResult warm =
+        Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity(), tol, true);
+    warm.attempts = 1;
+    if (warm.stopped || (warm.ok && CheckShape(sys, frame_velocity, *s).empty())) return warm;
+    *s = guess;
+    warm_iterations = warm.iterations;
+  }
   StaticResult first =
       Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity(), tol);
+  first.iterations += warm_iterations;
   first.attempts = 1;
   if (first.stopped) return first;
   std::string why = first.ok ? CheckShape(sys, frame_velocity, *s) : first.message;

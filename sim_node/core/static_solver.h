@@ -47,12 +47,24 @@ constexpr double kMaxStaticTurning = 1.75 * 3.14159265358979323846;
 // largest change of a slope component r' per Newton iteration of the second attempt [-]
 constexpr double kMaxSlopeStep = 0.2;
 
+// where a solve starts (SolveStatic)
+enum class StaticStart {
+  // from the guess's positions: multipliers zero, pseudo-transient continuation from a small
+  // pseudo time step (far from equilibrium it is damped implicit dynamics)
+  kGuess,
+  // *state is the equilibrium of supports near the new ones (its q and lambda): plain Newton
+  // from it, converging quadratically in a few iterations; if the residual does not fall at
+  // every iteration, or the shape fails its check, the solve starts again as from kGuess
+  kNearEquilibrium,
+};
+
 // *state holds the initial guess (q) and is overwritten with the equilibrium, v = V_f on every
 // node position and body, lambda the support reactions. `stop` (if set) is asked before every
 // iteration; true ends the solve (the caller's stop request: the core has no signals).
 // `tolerance` (relative, of the force scale and the cable length) overrides
 // integrator.tolerance when positive (the vehicles' balance differences solves and asks more).
 StaticResult SolveStatic(const System& system, const Eigen::Vector3d& frame_velocity, State* state,
-                         const std::function<bool()>& stop = {}, double tolerance = 0.0);
+                         const std::function<bool()>& stop = {}, double tolerance = 0.0,
+                         StaticStart start = StaticStart::kGuess);
 
 }  // namespace towsim::core

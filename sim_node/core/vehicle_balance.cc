@@ -170,15 +170,17 @@ class Balance {
     *dx *= f;
   }
 
-  // The vehicles at `poses`, the cables solved against them (s in: the guess; out: the
-  // equilibrium), and the vehicles' residuals r (6 per held vehicle: (M_RB + M_A) nu_dot).
-  // False if the cables' static solve fails (its message in *why).
+  // The vehicles at `poses`, the cables solved against them (s in: the guess, `warm` when it
+  // is the equilibrium at nearby poses; out: the equilibrium), and the vehicles' residuals r
+  // (6 per held vehicle: (M_RB + M_A) nu_dot). False if the cables' static solve fails (its
+  // message in *why).
   bool Evaluate(const std::vector<VehiclePose>& poses, State* s, VectorXd* r, std::string* why,
-                const std::function<bool()>& stop, bool* stopped) {
+                const std::function<bool()>& stop, bool* stopped, bool warm) {
     const Model& m = sys_.model();
     for (int v : held_) Place(v, poses[v], s);
     ++solves_;
-    const StaticResult res = SolveStatic(sys_, vf_, s, stop, kCableTolerance);
+    const StaticResult res = SolveStatic(sys_, vf_, s, stop, kCableTolerance,
+                                         warm ? StaticStart::kNearEquilibrium : StaticStart::kGuess);
     if (res.stopped) *stopped = true;
     if (!res.ok) {
       *why = res.message;
@@ -346,7 +348,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
     res.message = message;
     return res;
   };
-  if (!b.Evaluate(poses, s, &r, &why, stop, &stopped))
+  if (!b.Evaluate(poses, s, &r, &why, stop, &stopped, false))
     return finish(false, "the cables' static solve with the vehicles where the scene puts them "
                          "failed: " + why);
   w = b.Weigh(r);
@@ -396,7 +398,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
       trial = poses;
       b.Unpack(xi, &trial);
       work = base;
-      if (!b.Evaluate(trial, &work, &r_try, &why, stop, &stopped))
+      if (!b.Evaluate(trial, &work, &r_try, &why, stop, &stopped, true))
         return finish(false, "the cables' static solve failed while balancing: " + why);
       jac.col(i) = (b.Weigh(r_try) - w) / h;
     }
@@ -420,7 +422,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
       trial = poses;
       b.Unpack(x + dx, &trial);
       work = base;
-      if (b.Evaluate(trial, &work, &r_try, &why, stop, &stopped)) {
+      if (b.Evaluate(trial, &work, &r_try, &why, stop, &stopped, true)) {
         w_try = b.Weigh(r_try);
         if (w_try.squaredNorm() < w.squaredNorm()) {
           x += dx;

@@ -302,11 +302,17 @@ Vec6 SeabedContactWrench(const VehicleParams& p, const EnvironmentField& sea,
                          const VehicleState& s) {
   Vec6 tau = Vec6::Zero();
   if (!sea.has_seabed()) return tau;
+  // no contact point reaches deeper than the origin's depth plus its distance from O: a hull
+  // above the shallowest bed touches nothing (the margin covers the rounding of x_W below)
+  double reach = 0.5 * p.length;
+  for (const LiftingSurface& surf : p.surfaces) reach = std::max(reach, surf.position_B.norm());
+  if (s.p_W.z() + 1.001 * reach + 1e-6 < sea.SeabedShallowest()) return tau;
   const Mat3 r_wb = s.q_WB.normalized().toRotationMatrix();
   const Vec3 v_o = s.nu.head<3>(), omega = s.nu.tail<3>();
   const double area = p.length > 0.0 ? p.volume / p.length : 0.0;  // one hull section
   auto contact = [&](const Vec3& r_B) {
     const Vec3 x_W = s.p_W + r_wb * r_B;
+    if (!(x_W.z() > sea.SeabedDepth(x_W.x(), x_W.y()))) return;  // above the bed
     const Vec3 v_W = r_wb * (v_o + omega.cross(r_B));
     const ContactLoad c = SeabedContactLoad(sea, area, x_W, v_W, Vec3::Zero(), false);
     if (!c.active) return;

@@ -14,7 +14,9 @@
 //   - released slack (initial: straight over a shorter span, laid out with the catenary's sag)
 //     settling onto a flat seabed and hanging free, against the grounded and the free elastic
 //     catenaries;
-//   - FindFold on hand-made folded states.
+//   - FindFold on hand-made folded states;
+//   - a start from a nearby equilibrium (StaticStart::kNearEquilibrium): a few plain Newton
+//     iterations, the same answer as the start from the guess; a far move starts again.
 
 #include <cmath>
 #include <cstdio>
@@ -27,6 +29,9 @@
 #include "core/model.h"
 #include "core/simulation.h"
 #include "core/state.h"
+#include "core/static_solver.h"
+#include "core/initial_shape.h"
+#include "core/system.h"
 #include "elastic_catenary.h"
 #include "grounded_catenary.h"
 #include "scene/scene_loader.h"
@@ -244,6 +249,67 @@ TEST(StaticSolveCore, FindFoldNamesTheFoldedElement) {
   EXPECT_EQ(f.element, 6);
   constexpr double kExact = 1e-12;  // |r'| - 1 of a slope set to 0.7
   EXPECT_NEAR(f.strain, -0.3, kExact);
+}
+
+// ---------------------------------------------------------------------------------------------
+// a start from a nearby equilibrium (StaticStart::kNearEquilibrium, what the vehicles' balance
+// uses for its difference and trial solves): the catenary's right support moved by `shift`
+// from its equilibrium, solved warm and cold; both answers are equilibria of the same problem
+// to the solver's tolerance
+struct WarmAndCold {
+  core::StaticResult warm, cold;
+  double difference = 0.0;  // max |q_warm - q_cold| [m, slopes -]
+};
+
+WarmAndCold MoveTheSupport(double shift, double tolerance) {
+  const core::Model m0 = scene::LoadScene(kCatenary, {});
+  const core::System s0(m0);
+  core::State e0;
+  core::BuildInitialState(s0, &e0);
+  EXPECT_TRUE(core::SolveStatic(s0, Vec3::Zero(), &e0, {}, tolerance).ok);
+  const core::Model m1 =
+      scene::LoadScene(kCatenary, {"cable.end.fixed=[" + std::to_string(150.0 + shift) + ", 0, 10]"});
+  const core::System s1(m1);
+  WarmAndCold out;
+  core::State warm = e0;
+  out.warm = core::SolveStatic(s1, Vec3::Zero(), &warm, {}, tolerance,
+                               core::StaticStart::kNearEquilibrium);
+  core::State cold;
+  core::BuildInitialState(s1, &cold);
+  out.cold = core::SolveStatic(s1, Vec3::Zero(), &cold, {}, tolerance);
+  out.difference = (warm.q - cold.q).lpNorm<Eigen::Infinity>();
+  return out;
+}
+
+TEST(StaticSolveCore, ANearbyEquilibriumStartTakesAFewNewtonIterations) {
+  // the balance's tolerance (vehicle_balance.cc): its increments are 1e-10 of the length scale
+  // (200 m: 2e-8 m); two solves converged to it agree within a few of them
+  constexpr double kTolerance = 1e-10;
+  constexpr double kAgree = 10.0 * kTolerance * 200.0;
+  for (const double shift : {1e-4, 1e-2, 0.5}) {
+    const WarmAndCold r = MoveTheSupport(shift, kTolerance);
+    std::printf("support moved %g m: warm %d iterations, cold %d, |q_warm - q_cold| %.2e\n",
+                shift, r.warm.iterations, r.cold.iterations, r.difference);
+    ASSERT_TRUE(r.warm.ok) << r.warm.message;
+    ASSERT_TRUE(r.cold.ok) << r.cold.message;
+    // plain Newton from the old equilibrium: quadratic convergence, no continuation
+    EXPECT_LE(r.warm.iterations, 4) << shift;
+    EXPECT_LT(r.warm.iterations, r.cold.iterations) << shift;
+    EXPECT_LE(r.difference, kAgree) << shift;
+  }
+}
+
+TEST(StaticSolveCore, AFarMoveFromANearbyEquilibriumStartsAgainAndGivesTheSameAnswer) {
+  // the span 150 m -> 110 m: the sag deepens by tens of metres; plain Newton from the old
+  // shape does not shrink its increments at once, so the solve starts again (pseudo-transient
+  // continuation from the old shape) and must still find the same equilibrium
+  constexpr double kTolerance = 1e-10;
+  const WarmAndCold r = MoveTheSupport(-40.0, kTolerance);
+  std::printf("support moved -40 m: warm %d iterations, cold %d, |q_warm - q_cold| %.2e\n",
+              r.warm.iterations, r.cold.iterations, r.difference);
+  ASSERT_TRUE(r.warm.ok) << r.warm.message;
+  EXPECT_GT(r.warm.iterations, 4);  // the quick path was left (measured: 62 iterations in all)
+  EXPECT_LE(r.difference, 10.0 * kTolerance * 200.0);
 }
 
 }  // namespace

@@ -8,7 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include "core/constants.h"
 #include "core/environment_field.h"
+#include "core/vehicle_model.h"
 
 namespace towsim::core {
 namespace {
@@ -93,6 +95,57 @@ TEST(SeabedContact, JacobiansMatchFiniteDifferences) {
   EXPECT_LT((c.df_dr - dr).norm(), kJacRelTol * dr.norm());
   EXPECT_LT((c.df_dv - dv).norm(), kJacRelTol * dv.norm());
   EXPECT_LT((c.df_da - da).norm(), kJacRelTol * (da.norm() + 1.0));
+}
+
+// A hull's contact wrench (SeabedContactWrench): the sum over its contact points of the point
+// loads, against that sum built here point by point; a hull whose origin lies above the bed
+// by less than its reach can touch it (pitched nose down), one beyond its reach cannot
+TEST(SeabedContact, HullWrenchIsTheSumOverItsContactPoints) {
+  const EnvironmentField sea = Bed(0.3, 0.3);
+  VehicleParams p;
+  p.length = 3.3;
+  p.volume = 0.5;
+  LiftingSurface fin;
+  fin.position_B = Vec3(-1.4, 0.0, 0.6);  // a lower fin, 1.52 m from O: within L/2 = 1.65 m
+  p.surfaces.push_back(fin);
+  const double area = p.volume / p.length;
+  // the sum the wrench is defined as, at a pose
+  auto by_hand = [&](const VehicleState& s) {
+    const Mat3 r = s.q_WB.toRotationMatrix();
+    Eigen::Matrix<double, 6, 1> tau = Eigen::Matrix<double, 6, 1>::Zero();
+    for (const Vec3& r_b : {Vec3(0.5 * p.length, 0, 0), Vec3(-0.5 * p.length, 0, 0),
+                            fin.position_B}) {
+      const Vec3 v_w = r * (s.nu.head<3>() + Vec3(s.nu.tail<3>()).cross(r_b));
+      const ContactLoad c =
+          SeabedContactLoad(sea, area, s.p_W + r * r_b, v_w, Vec3::Zero(), false);
+      if (!c.active) continue;
+      const Vec3 f_b = r.transpose() * c.f;
+      tau.head<3>() += f_b;
+      tau.tail<3>() += r_b.cross(f_b);
+    }
+    return tau;
+  };
+  constexpr double kExact = 1e-12;  // relative: the same operations in another order
+  VehicleState s;
+  s.nu << 0.5, 0.1, 0.05, 0.0, 0.02, 0.0;
+  // nose down 30 deg, the origin 0.8 m above the bed: the nose (0.825 m below O) touches
+  s.p_W = Vec3(3.0, -2.0, 50.0 - 0.8);
+  s.q_WB = QuaternionFromEulerZYX(Vec3(0.0, -30.0 * kPi / 180.0, 0.2));
+  const auto touching = SeabedContactWrench(p, sea, s);
+  EXPECT_GT(touching.head<3>().norm(), 0.0);
+  EXPECT_LE((touching - by_hand(s)).norm(), kExact * by_hand(s).norm());
+  // level 1.6 m above: the fin hangs 0.6 m below O, nothing touches; and beyond the reach
+  for (const double above : {1.6, 1.66, 10.0}) {
+    s.p_W.z() = 50.0 - above;
+    s.q_WB = QuaternionFromEulerZYX(Vec3(0.0, 0.0, 0.2));
+    EXPECT_EQ(SeabedContactWrench(p, sea, s), by_hand(s)) << above;
+    EXPECT_EQ(by_hand(s).norm(), 0.0) << above;
+  }
+  // the fin below the bed with the origin above it: level, 0.5 m above (the fin 0.1 m in)
+  s.p_W.z() = 50.0 - 0.5;
+  const auto fin_in = SeabedContactWrench(p, sea, s);
+  EXPECT_GT(fin_in.head<3>().norm(), 0.0);
+  EXPECT_LE((fin_in - by_hand(s)).norm(), kExact * by_hand(s).norm());
 }
 
 }  // namespace

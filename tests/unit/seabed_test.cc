@@ -1,5 +1,6 @@
 #include "core/seabed.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -79,6 +80,32 @@ TEST(Seabed, BilinearGridIsExactOnAPlane) {
   EXPECT_NEAR(s.Depth(-300.0, -90.0), plane(-100.0, -50.0), kTol);
   const Vec3 n_out = s.Normal(500.0, 0.0);
   EXPECT_LT((n_out - Vec3(0.0, -0.05, -1.0).normalized()).norm(), kTol);
+}
+
+// Shallowest bounds the depth from above everywhere (the vehicles' contact skips a hull above
+// it): exact for flat beds and grids, open for a sloping plane
+TEST(Seabed, ShallowestIsAtMostTheDepthEverywhere) {
+  EXPECT_EQ(Seabed().Shallowest(), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(Seabed::Flat(60.0).Shallowest(), 60.0);
+  EXPECT_EQ(Seabed::Plane(40.0, 0.0, 0.3).Shallowest(), 40.0);
+  EXPECT_EQ(Seabed::Plane(40.0, 5.0 * kPi / 180.0, 0.3).Shallowest(),
+            -std::numeric_limits<double>::infinity());
+  const std::vector<double> x = {-100.0, -20.0, 0.0, 35.0, 200.0};
+  const std::vector<double> y = {-50.0, 10.0, 80.0};
+  std::vector<double> d;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> ud(20.0, 90.0);
+  for (size_t i = 0; i < x.size() * y.size(); ++i) d.push_back(ud(rng));
+  const Seabed g = Seabed::Grid(x, y, d);
+  const double lo = *std::min_element(d.begin(), d.end());
+  EXPECT_EQ(g.Shallowest(), lo);
+  // inside and outside the grid (the constant extension): never shallower than the bound, and
+  // the bound is attained at its node
+  std::uniform_real_distribution<double> ux(-300.0, 400.0), uy(-150.0, 180.0);
+  for (int i = 0; i < 2000; ++i) {
+    const double px = ux(rng), py = uy(rng);
+    EXPECT_GE(g.Depth(px, py), lo) << px << ", " << py;
+  }
 }
 
 // a curved bed: the normal from the bilinear patch against central differences of Depth
