@@ -5,8 +5,9 @@
 // this is the steady towed configuration, with fixed ends the classic mooring statics. Newton
 // with pseudo-transient continuation (Kelley & Keyes 1998): the iteration matrix is
 // K + M_eff / delta, delta grown by switched evolution relaxation (delta_{k+1} = delta_k
-// |R_{k-1}| / |R_k|), so far from equilibrium it is damped implicit dynamics and near it plain
-// Newton with quadratic convergence. Exact to the solver tolerance, no dynamic relaxation.
+// |R_{k-1}| / |R_k|, and by at least kMinGrowth while |R| does not rise: static_solver.cc), so
+// far from equilibrium it is damped implicit dynamics and near it plain Newton with quadratic
+// convergence. Exact to the solver tolerance, no dynamic relaxation.
 //
 // A converged shape is accepted only if it is a cable's (docs/physics.md "Initial shapes"): no
 // folded element (fold_check.h), no loop (its tangent turns by at most kMaxStaticTurning in

@@ -252,6 +252,81 @@ TEST(StaticSolveCore, FindFoldNamesTheFoldedElement) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// a towed sphere hanging straight below its tow point (as steady_tow and winch_payout place it)
+// has to swing back tens of metres to its towed position: the pseudo-transient solve gets
+// there in 34-135 iterations (its pseudo time step grows while the residual does not rise,
+// static_solver.cc kMinGrowth), to the towed-cable integration's answer. By switched evolution
+// relaxation alone (kMinGrowth = 1, measured) the 2 m/s case is not found in 2 x 2000
+// iterations and winch_payout's start took 634
+TEST(StaticSolveCore, ASphereSwingsBackToItsTowedPositionWhereContinuationAloneStalls) {
+  constexpr double kStaticRelTol = 1e-3;  // as SteadyTowOneAnswerAtEveryElementCount, 20 elements
+  constexpr int kMostIterations = 200;  // measured 135 at 2 m/s
+  for (const double speed : {2.0, 3.0, 6.0}) {
+    const std::string v = std::to_string(speed);
+    const core::Model m = scene::LoadScene(
+        kSteadyTow, {"cable.initial=static", "cable.initial_velocity=[" + v + ", 0, 0]",
+                     "cable.start.driven.velocity=[" + v + ", 0, 0]"});
+    const TowedCableSolution ref = SolveTowedCableSteady(SteadyTowProblem(m));
+    const core::System sys(m);
+    core::State s;
+    core::BuildInitialState(sys, &s);
+    const core::StaticResult r = core::SolveStatic(sys, Vec3(speed, 0, 0), &s);
+    ASSERT_TRUE(r.ok) << r.message;
+    const int end = sys.CableDof(sys.num_nodes(0) - 1, 0);
+    const Vec3 top = m.cables[0].start.position, fish = s.q.segment<3>(end);
+    const double layback = top.x() - fish.x(), depth = fish.z() - top.z();
+    std::printf("sphere towed at %.0f m/s from below its tow point: %d iterations, layback "
+                "%.3f m (%+.2e), depth %.3f m (%+.2e)\n",
+                speed, r.iterations, layback, layback / ref.layback - 1, depth,
+                depth / ref.depth - 1);
+    EXPECT_LE(r.iterations, kMostIterations) << speed;
+    EXPECT_NEAR(layback, ref.layback, kStaticRelTol * ref.layback) << speed;
+    EXPECT_NEAR(depth, ref.depth, kStaticRelTol * ref.depth) << speed;
+  }
+}
+
+// without the cable's drag (gravity and buoyancy only) the towed line is straight: its wet
+// weight is far below the sphere's drag and weight, and a cable without transverse loads but
+// its own weight is the catenary those loads set. Before kMinGrowth this had no equilibrium
+// found (2000 iterations, residual 430 N at the towfish, docs/benchmarks.md)
+TEST(StaticSolveCore, ATowWithoutCableDragIsFound) {
+  const core::Model m = scene::LoadScene(
+      kSteadyTow, {"cable.initial=static", "cable.loads=[gravity, buoyancy, added_mass, bending]"});
+  const core::System sys(m);
+  core::State s;
+  core::BuildInitialState(sys, &s);
+  const core::StaticResult r = core::SolveStatic(sys, Vec3(6, 0, 0), &s);
+  ASSERT_TRUE(r.ok) << r.message;
+  std::printf("steady tow without cable drag: %d iterations\n", r.iterations);
+  // the sag under the cable's own wet weight: the largest distance of a node from the chord
+  // of the tow point and the sphere is the parabola's w_perp L^2 / (8 T) for a line at tension
+  // T >> w L, w_perp the weight per length across the chord, T between the end forces
+  const int n = sys.num_nodes(0);
+  const Vec3 a = s.q.segment<3>(sys.CableDof(0, 0)), b = s.q.segment<3>(sys.CableDof(n - 1, 0));
+  const Vec3 u = (b - a).normalized();
+  const core::CableParams& c = m.cables[0];
+  const double w =
+      (c.mass_per_length - m.environment.water_density * c.area()) * m.environment.gravity;
+  const double w_perp = w * (Vec3::UnitZ() - u.z() * u).norm();
+  const double t0 = s.lambda.segment<3>(sys.EndLambda(0, 0)).norm();
+  const double t1 = s.lambda.segment<3>(sys.EndLambda(1, 0)).norm();
+  const double l2 = c.length * c.length;
+  const double sag_lo = w_perp * l2 / (8.0 * std::max(t0, t1));
+  const double sag_hi = w_perp * l2 / (8.0 * std::min(t0, t1));
+  double worst = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = s.q.segment<3>(sys.CableDof(i, 0)) - a;
+    worst = std::max(worst, (p - p.dot(u) * u).norm());
+  }
+  std::printf("  largest distance from the chord %.3f m, the parabola's sag %.3f-%.3f m\n", worst,
+              sag_lo, sag_hi);
+  // 2 %: the parabola's small-sag approximation and the nodes' spacing (10 m) about the
+  // deepest point
+  EXPECT_GE(worst, 0.98 * sag_lo);
+  EXPECT_LE(worst, 1.02 * sag_hi);
+}
+
+// ---------------------------------------------------------------------------------------------
 // a start from a nearby equilibrium (StaticStart::kNearEquilibrium, what the vehicles' balance
 // uses for its difference and trial solves): the catenary's right support moved by `shift`
 // from its equilibrium, solved warm and cold; both answers are equilibria of the same problem
