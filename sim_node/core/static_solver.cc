@@ -110,7 +110,7 @@ std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity,
 // one pseudo-transient Newton solve from *s; slope_limit bounds the change of every slope
 // component per iteration (infinite: no bound). `warm`: *s is an equilibrium of nearby
 // supports, its multipliers kept: plain Newton from the first iteration, at most
-// kWarmIterations of them, the residual falling in each (else not ok, res.message empty)
+// kWarmIterations of them, the increment shrinking in each (else not ok, res.message empty)
 StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
                    const std::function<bool()>& stop, double slope_limit, double tol,
                    bool warm = false) {

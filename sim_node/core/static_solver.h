@@ -54,8 +54,9 @@ enum class StaticStart {
   // pseudo time step (far from equilibrium it is damped implicit dynamics)
   kGuess,
   // *state is the equilibrium of supports near the new ones (its q and lambda): plain Newton
-  // from it, converging quadratically in a few iterations; if the residual does not fall at
-  // every iteration, or the shape fails its check, the solve starts again as from kGuess
+  // from it, converging quadratically in a few iterations; if its increment does not shrink
+  // at every iteration, or the shape fails its check, the solve starts again as from kGuess
+  // (from the same positions)
   kNearEquilibrium,
 };
 
