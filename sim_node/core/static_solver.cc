@@ -26,6 +26,10 @@ constexpr double kPlainNewton = 1e13;
 // delta geometrically meanwhile reaches plain Newton in tens of iterations (winch_payout's
 // start-up: 345 M -> 36 M instructions), and a residual that then rises shrinks it again
 constexpr double kMinGrowth = 1.5;
+// a chord iteration (SolveChord) ends at this measured contraction rate, or after this many
+// iterations: a small move of the supports contracts at ~1e-3 and needs 2-3
+constexpr double kChordMaxRate = 0.5;
+constexpr int kChordIterations = 8;
 // plain Newton iterations a warm start may take (quadratic convergence from a nearby root
 // takes 2-4) before the solve starts again from the pseudo-transient's first step
 constexpr int kWarmIterations = 8;
@@ -111,31 +115,89 @@ std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity,
 // component per iteration (infinite: no bound). `warm`: *s is an equilibrium of nearby
 // supports, its multipliers kept: plain Newton from the first iteration, at most
 // kWarmIterations of them, the increment shrinking in each (else not ok, res.message empty)
-StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                   const std::function<bool()>& stop, double slope_limit, double tol,
-                   bool warm = false) {
-  StaticResult res;
-  const int n = sys.num_q(), m = sys.num_lambda();
-  const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
-  const double q_scale = IncrementScale(sys.model());
+// the frame's velocity on every node position and body, no acceleration (the static state's
+// v and a)
+void SetFrameMotion(const System& sys, const Eigen::Vector3d& frame_velocity, State* s) {
+  const int n = sys.num_q();
   s->v.setZero(n);
   for (int k = 0; k < sys.num_cables(); ++k)
     for (int i = 0; i < sys.num_nodes(k); ++i)
       s->v.segment<3>(sys.CableDof(i, k)) = frame_velocity;
   for (int b = 0; b < sys.num_spheres(); ++b) s->v.segment<3>(sys.SphereDof(b)) = frame_velocity;
   s->a.setZero(n);
+}
+
+// the inputs of a static evaluation: calm water (no wave samples), the supports as the state
+// holds them and the drum element at its rest length now (held: no rate)
+StepInputs StaticInputs(const System& sys, const State& s) {
+  StepInputs inputs;
+  inputs.supports = s.supports;
+  inputs.drums.resize(sys.num_winches());
+  for (int w = 0; w < sys.num_winches(); ++w) {
+    inputs.drums[w].t0 = s.t;
+    inputs.drums[w].length = sys.drum_length(w);
+  }
+  return inputs;
+}
+
+// a chord iteration from the nearby equilibrium in *s (its multipliers kept) with the factors
+// of a Newton matrix formed near it: residuals only, x_{k+1} = x_k - A^-1 [R; Phi](x_k). It
+// contracts at a rate theta = |dq_{k+1}| / |dq_k| (small for a small move of the supports);
+// the distance to the root is about |dq| / (1 - theta), so it is accepted at the current
+// iterate when the residual is met and |dq| / (1 - theta) is within the increment bound, theta
+// taken as kChordMaxRate until measured. A rate above kChordMaxRate, or kChordIterations
+// without convergence, end it (not ok: the caller solves with fresh matrices)
+StaticResult SolveChord(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
+                        NetworkMatrix* chord, double tol) {
+  StaticResult res;
+  const int m = sys.num_lambda();
+  if (s->lambda.size() != m) return res;
+  const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
+  const double q_scale = IncrementScale(sys.model());
+  SetFrameMotion(sys, frame_velocity, s);
+  const StepInputs inputs = StaticInputs(sys, *s);
+  const JacobianCoefficients cf{1.0, 0.0, 0.0};
+  VectorXd r, phi, rhs, dq, dl;
+  double prev_step = 0.0, theta = kChordMaxRate;
+  for (int it = 1; it <= kChordIterations; ++it) {
+    res.iterations = it;
+    sys.Evaluate({s->q, s->v, s->a, s->lambda, s->t}, inputs, {1.0, cf}, {&r, &phi, nullptr});
+    const double norm = r.lpNorm<Eigen::Infinity>();
+    res.residual = norm;
+    if (!std::isfinite(norm) || !phi.allFinite()) return res;
+    const bool residual_met = norm <= f_tol && phi.lpNorm<Eigen::Infinity>() <= tol * q_scale;
+    sys.ToBlocks(-r, -phi, &rhs);
+    if (!chord->SolveFactored(&rhs)) return res;
+    sys.FromBlocks(rhs, &dq, &dl);
+    const double step = dq.lpNorm<Eigen::Infinity>();
+    if (it > 1) {
+      theta = step / prev_step;
+      if (!(theta < kChordMaxRate)) return res;
+    }
+    if (residual_met && step / (1.0 - theta) <= tol * q_scale) {
+      res.ok = true;
+      return res;
+    }
+    if (!(step <= 0.1 * q_scale)) return res;  // a move this far is no chord's
+    s->q += dq;
+    s->lambda += dl;
+    prev_step = step;
+  }
+  return res;
+}
+
+StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
+                   const std::function<bool()>& stop, double slope_limit, double tol,
+                   bool warm = false, StaticFactors* factors_out = nullptr) {
+  StaticResult res;
+  const int m = sys.num_lambda();
+  const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
+  const double q_scale = IncrementScale(sys.model());
+  SetFrameMotion(sys, frame_velocity, s);
   if (!warm || s->lambda.size() != m) s->lambda.setZero(m);
 
   NetworkMatrix jac = sys.MakeMatrix();
-  // calm water (no wave samples), the supports as the state holds them and the drum element
-  // at its rest length now (held: no rate)
-  StepInputs inputs;
-  inputs.supports = s->supports;
-  inputs.drums.resize(sys.num_winches());
-  for (int w = 0; w < sys.num_winches(); ++w) {
-    inputs.drums[w].t0 = s->t;
-    inputs.drums[w].length = sys.drum_length(w);
-  }
+  const StepInputs inputs = StaticInputs(sys, *s);
   VectorXd r, phi, rhs, dq, dl;
   constexpr int kMaxIterations = 2000;
   double delta = warm ? kPlainNewton : 1.0e-2;  // pseudo time step squared [s^2]
@@ -177,6 +239,11 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     sys.FromBlocks(rhs, &dq, &dl);
     if (residual_met && dq.lpNorm<Eigen::Infinity>() <= tol * q_scale) {
       res.ok = true;
+      if (factors_out) {
+        // the factors of the last matrix, formed at this iterate: a chord for nearby solves
+        std::swap(factors_out->matrix, jac);
+        factors_out->valid = true;
+      }
       return res;
     }
     // limit the step to a tenth of the cable length per iteration
@@ -214,21 +281,34 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
 }  // namespace
 
 StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
-                         const std::function<bool()>& stop, double tolerance, StaticStart start) {
+                         const std::function<bool()>& stop, double tolerance, StaticStart start,
+                         StaticFactors* chord, StaticFactors* factors_out) {
   const State guess = *s;
   const double tol = tolerance > 0.0 ? tolerance : sys.model().integrator.tolerance;
+  if (factors_out && factors_out != chord) factors_out->valid = false;
+  constexpr double kNoSlopeLimit = std::numeric_limits<double>::infinity();
   int warm_iterations = 0;
   if (start == StaticStart::kNearEquilibrium) {
-    // plain Newton from the nearby equilibrium; its shape checked like any other
-    StaticResult warm =
-        Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity(), tol, true);
+    // the chord with the nearby equilibrium's factors, then plain Newton from it; each shape
+    // checked like any other
+    if (chord && chord->valid) {
+      StaticResult c = SolveChord(sys, frame_velocity, s, &chord->matrix, tol);
+      c.attempts = 1;
+      if (c.ok && CheckShape(sys, frame_velocity, *s).empty()) {
+        if (factors_out && factors_out != chord) *factors_out = *chord;
+        return c;
+      }
+      *s = guess;
+      warm_iterations = c.iterations;
+    }
+    StaticResult warm = Solve(sys, frame_velocity, s, stop, kNoSlopeLimit, tol, true, factors_out);
     warm.attempts = 1;
+    warm.iterations += warm_iterations;
     if (warm.stopped || (warm.ok && CheckShape(sys, frame_velocity, *s).empty())) return warm;
     *s = guess;
     warm_iterations = warm.iterations;
   }
-  StaticResult first =
-      Solve(sys, frame_velocity, s, stop, std::numeric_limits<double>::infinity(), tol);
+  StaticResult first = Solve(sys, frame_velocity, s, stop, kNoSlopeLimit, tol, false, factors_out);
   first.iterations += warm_iterations;
   first.attempts = 1;
   if (first.stopped) return first;
@@ -238,7 +318,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   // slopes limited per iteration
   *s = guess;
   for (int c = 0; c < sys.num_cables(); ++c) LayOutCatenary(sys, c, s);
-  StaticResult second = Solve(sys, frame_velocity, s, stop, kMaxSlopeStep, tol);
+  StaticResult second = Solve(sys, frame_velocity, s, stop, kMaxSlopeStep, tol, false, factors_out);
   second.attempts = 2;
   second.iterations += first.iterations;
   second.rejected = (first.ok ? "converged to a shape that is not a cable's: " : "") + why;

@@ -23,6 +23,7 @@
 #include <functional>
 #include <string>
 
+#include "core/network_matrix.h"
 #include "core/state.h"
 #include "core/system.h"
 
@@ -60,13 +61,25 @@ enum class StaticStart {
   kNearEquilibrium,
 };
 
+// the factors of the Newton matrix a solve formed at its last iterate (the equilibrium): a
+// chord for solves from nearby equilibria (SolveStatic's `chord`)
+struct StaticFactors {
+  NetworkMatrix matrix;
+  bool valid = false;
+};
+
 // *state holds the initial guess (q) and is overwritten with the equilibrium, v = V_f on every
 // node position and body, lambda the support reactions. `stop` (if set) is asked before every
 // iteration; true ends the solve (the caller's stop request: the core has no signals).
 // `tolerance` (relative, of the force scale and the cable length) overrides
 // integrator.tolerance when positive (the vehicles' balance differences solves and asks more).
+// With kNearEquilibrium and valid `chord` factors (formed at that nearby equilibrium), the
+// first attempt is a chord iteration with them (residuals only, 2-3 for a small move), then
+// plain Newton, then the start from the guess. `factors_out` (if set) receives the factors at
+// the equilibrium found (a chord's: a copy of `chord`); valid false if none.
 StaticResult SolveStatic(const System& system, const Eigen::Vector3d& frame_velocity, State* state,
                          const std::function<bool()>& stop = {}, double tolerance = 0.0,
-                         StaticStart start = StaticStart::kGuess);
+                         StaticStart start = StaticStart::kGuess, StaticFactors* chord = nullptr,
+                         StaticFactors* factors_out = nullptr);
 
 }  // namespace towsim::core

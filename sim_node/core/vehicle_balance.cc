@@ -170,17 +170,19 @@ class Balance {
     *dx *= f;
   }
 
-  // The vehicles at `poses`, the cables solved against them (s in: the guess, `warm` when it
-  // is the equilibrium at nearby poses; out: the equilibrium), and the vehicles' residuals r
-  // (6 per held vehicle: (M_RB + M_A) nu_dot). False if the cables' static solve fails (its
-  // message in *why).
+  // The vehicles at `poses`, the cables solved against them (s in: the guess, or with `chord`
+  // the equilibrium at nearby poses and its Newton matrix's factors; out: the equilibrium,
+  // its factors into *factors if set), and the vehicles' residuals r (6 per held vehicle:
+  // (M_RB + M_A) nu_dot). False if the cables' static solve fails (its message in *why).
   bool Evaluate(const std::vector<VehiclePose>& poses, State* s, VectorXd* r, std::string* why,
-                const std::function<bool()>& stop, bool* stopped, bool warm) {
+                const std::function<bool()>& stop, bool* stopped, StaticFactors* chord,
+                StaticFactors* factors) {
     const Model& m = sys_.model();
     for (int v : held_) Place(v, poses[v], s);
     ++solves_;
-    const StaticResult res = SolveStatic(sys_, vf_, s, stop, kCableTolerance,
-                                         warm ? StaticStart::kNearEquilibrium : StaticStart::kGuess);
+    const StaticResult res =
+        SolveStatic(sys_, vf_, s, stop, kCableTolerance,
+                    chord ? StaticStart::kNearEquilibrium : StaticStart::kGuess, chord, factors);
     if (res.stopped) *stopped = true;
     if (!res.ok) {
       *why = res.message;
@@ -348,7 +350,10 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
     res.message = message;
     return res;
   };
-  if (!b.Evaluate(poses, s, &r, &why, stop, &stopped, false))
+  // the factors of the Newton matrix at the current equilibrium (the chord of the solves from
+  // it) and at a trial's
+  StaticFactors base_factors, trial_factors;
+  if (!b.Evaluate(poses, s, &r, &why, stop, &stopped, nullptr, &base_factors))
     return finish(false, "the cables' static solve with the vehicles where the scene puts them "
                          "failed: " + why);
   w = b.Weigh(r);
@@ -398,7 +403,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
       trial = poses;
       b.Unpack(xi, &trial);
       work = base;
-      if (!b.Evaluate(trial, &work, &r_try, &why, stop, &stopped, true))
+      if (!b.Evaluate(trial, &work, &r_try, &why, stop, &stopped, &base_factors, nullptr))
         return finish(false, "the cables' static solve failed while balancing: " + why);
       jac.col(i) = (b.Weigh(r_try) - w) / h;
     }
@@ -422,12 +427,13 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
       trial = poses;
       b.Unpack(x + dx, &trial);
       work = base;
-      if (b.Evaluate(trial, &work, &r_try, &why, stop, &stopped, true)) {
+      if (b.Evaluate(trial, &work, &r_try, &why, stop, &stopped, &base_factors, &trial_factors)) {
         w_try = b.Weigh(r_try);
         if (w_try.squaredNorm() < w.squaredNorm()) {
           x += dx;
           poses = trial;
           base = work;
+          std::swap(base_factors, trial_factors);
           r = r_try;
           w = w_try;
           mu = std::max(mu / 3.0, 1e-9);

@@ -332,8 +332,9 @@ TEST(StaticSolveCore, ATowWithoutCableDragIsFound) {
 // from its equilibrium, solved warm and cold; both answers are equilibria of the same problem
 // to the solver's tolerance
 struct WarmAndCold {
-  core::StaticResult warm, cold;
-  double difference = 0.0;  // max |q_warm - q_cold| [m, slopes -]
+  core::StaticResult warm, cold, chord;
+  double difference = 0.0;        // max |q_warm - q_cold| [m, slopes -]
+  double chord_difference = 0.0;  // max |q_chord - q_cold|
 };
 
 WarmAndCold MoveTheSupport(double shift, double tolerance) {
@@ -341,7 +342,11 @@ WarmAndCold MoveTheSupport(double shift, double tolerance) {
   const core::System s0(m0);
   core::State e0;
   core::BuildInitialState(s0, &e0);
-  EXPECT_TRUE(core::SolveStatic(s0, Vec3::Zero(), &e0, {}, tolerance).ok);
+  core::StaticFactors factors;  // the Newton matrix at e0
+  EXPECT_TRUE(core::SolveStatic(s0, Vec3::Zero(), &e0, {}, tolerance, core::StaticStart::kGuess,
+                                nullptr, &factors)
+                  .ok);
+  EXPECT_TRUE(factors.valid);
   const core::Model m1 =
       scene::LoadScene(kCatenary, {"cable.end.fixed=[" + std::to_string(150.0 + shift) + ", 0, 10]"});
   const core::System s1(m1);
@@ -349,10 +354,14 @@ WarmAndCold MoveTheSupport(double shift, double tolerance) {
   core::State warm = e0;
   out.warm = core::SolveStatic(s1, Vec3::Zero(), &warm, {}, tolerance,
                                core::StaticStart::kNearEquilibrium);
+  core::State with_chord = e0;
+  out.chord = core::SolveStatic(s1, Vec3::Zero(), &with_chord, {}, tolerance,
+                                core::StaticStart::kNearEquilibrium, &factors);
   core::State cold;
   core::BuildInitialState(s1, &cold);
   out.cold = core::SolveStatic(s1, Vec3::Zero(), &cold, {}, tolerance);
   out.difference = (warm.q - cold.q).lpNorm<Eigen::Infinity>();
+  out.chord_difference = (with_chord.q - cold.q).lpNorm<Eigen::Infinity>();
   return out;
 }
 
@@ -363,14 +372,20 @@ TEST(StaticSolveCore, ANearbyEquilibriumStartTakesAFewNewtonIterations) {
   constexpr double kAgree = 10.0 * kTolerance * 200.0;
   for (const double shift : {1e-4, 1e-2, 0.5}) {
     const WarmAndCold r = MoveTheSupport(shift, kTolerance);
-    std::printf("support moved %g m: warm %d iterations, cold %d, |q_warm - q_cold| %.2e\n",
-                shift, r.warm.iterations, r.cold.iterations, r.difference);
+    std::printf("support moved %g m: warm %d iterations, with the old factors %d, cold %d, "
+                "|q_warm - q_cold| %.2e, |q_chord - q_cold| %.2e\n",
+                shift, r.warm.iterations, r.chord.iterations, r.cold.iterations, r.difference,
+                r.chord_difference);
     ASSERT_TRUE(r.warm.ok) << r.warm.message;
+    ASSERT_TRUE(r.chord.ok) << r.chord.message;
     ASSERT_TRUE(r.cold.ok) << r.cold.message;
     // plain Newton from the old equilibrium: quadratic convergence, no continuation
     EXPECT_LE(r.warm.iterations, 4) << shift;
     EXPECT_LT(r.warm.iterations, r.cold.iterations) << shift;
     EXPECT_LE(r.difference, kAgree) << shift;
+    // the old equilibrium's factors (a chord, residuals only): a few iterations as well
+    EXPECT_LE(r.chord.iterations, 8) << shift;  // measured 3, 4, 7 (residuals only)
+    EXPECT_LE(r.chord_difference, kAgree) << shift;
   }
 }
 
@@ -384,6 +399,8 @@ TEST(StaticSolveCore, AFarMoveFromANearbyEquilibriumStartsAgainAndGivesTheSameAn
               r.warm.iterations, r.cold.iterations, r.difference);
   ASSERT_TRUE(r.warm.ok) << r.warm.message;
   EXPECT_GT(r.warm.iterations, 4);  // the quick path was left (measured: 62 iterations in all)
+  ASSERT_TRUE(r.chord.ok) << r.chord.message;
+  EXPECT_LE(r.chord_difference, 10.0 * kTolerance * 200.0);
   EXPECT_LE(r.difference, 10.0 * kTolerance * 200.0);
 }
 
