@@ -285,7 +285,12 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
                          StaticFactors* chord, StaticFactors* factors_out) {
   const State guess = *s;
   const double tol = tolerance > 0.0 ? tolerance : sys.model().integrator.tolerance;
-  if (factors_out && factors_out != chord) factors_out->valid = false;
+  // factors only from a solve that ends with an accepted equilibrium
+  auto without_factors = [&](StaticResult r) {
+    if (factors_out && factors_out != chord) factors_out->valid = false;
+    return r;
+  };
+  without_factors({});
   constexpr double kNoSlopeLimit = std::numeric_limits<double>::infinity();
   int warm_iterations = 0;
   if (start == StaticStart::kNearEquilibrium) {
@@ -304,14 +309,15 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
     StaticResult warm = Solve(sys, frame_velocity, s, stop, kNoSlopeLimit, tol, true, factors_out);
     warm.attempts = 1;
     warm.iterations += warm_iterations;
-    if (warm.stopped || (warm.ok && CheckShape(sys, frame_velocity, *s).empty())) return warm;
+    if (warm.stopped) return without_factors(warm);
+    if (warm.ok && CheckShape(sys, frame_velocity, *s).empty()) return warm;
     *s = guess;
     warm_iterations = warm.iterations;
   }
   StaticResult first = Solve(sys, frame_velocity, s, stop, kNoSlopeLimit, tol, false, factors_out);
   first.iterations += warm_iterations;
   first.attempts = 1;
-  if (first.stopped) return first;
+  if (first.stopped) return without_factors(first);
   std::string why = first.ok ? CheckShape(sys, frame_velocity, *s) : first.message;
   if (first.ok && why.empty()) return first;
   // the second attempt: the slack-free catenary guess for every cable with two known ends,
@@ -322,7 +328,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
   second.attempts = 2;
   second.iterations += first.iterations;
   second.rejected = (first.ok ? "converged to a shape that is not a cable's: " : "") + why;
-  if (second.stopped) return second;
+  if (second.stopped) return without_factors(second);
   const std::string why2 = second.ok ? CheckShape(sys, frame_velocity, *s) : second.message;
   if (second.ok && why2.empty()) return second;
   second.ok = false;
@@ -332,7 +338,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
                         ? "converged to a shape that is not a cable's: " + why2
                         : why2) +
                    " (docs/physics.md, \"Initial shapes\")";
-  return second;
+  return without_factors(second);
 }
 
 }  // namespace towsim::core
