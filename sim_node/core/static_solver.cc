@@ -111,10 +111,6 @@ std::string CheckShape(const System& sys, const Eigen::Vector3d& frame_velocity,
   return {};
 }
 
-// one pseudo-transient Newton solve from *s; slope_limit bounds the change of every slope
-// component per iteration (infinite: no bound). `warm`: *s is an equilibrium of nearby
-// supports, its multipliers kept: plain Newton from the first iteration, at most
-// kWarmIterations of them, the increment shrinking in each (else not ok, res.message empty)
 // the frame's velocity on every node position and body, no acceleration (the static state's
 // v and a)
 void SetFrameMotion(const System& sys, const Eigen::Vector3d& frame_velocity, State* s) {
@@ -186,6 +182,11 @@ StaticResult SolveChord(const System& sys, const Eigen::Vector3d& frame_velocity
   return res;
 }
 
+// one pseudo-transient Newton solve from *s; slope_limit bounds the change of every slope
+// component per iteration (infinite: no bound). `warm`: *s is an equilibrium of nearby
+// supports, its multipliers kept: plain Newton from the first iteration, at most
+// kWarmIterations of them, the increment shrinking in each (else not ok, res.message empty).
+// A converged solve leaves its last matrix's factors in *factors_out (if set)
 StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, State* s,
                    const std::function<bool()>& stop, double slope_limit, double tol,
                    bool warm = false, StaticFactors* factors_out = nullptr) {
@@ -290,7 +291,7 @@ StaticResult SolveStatic(const System& sys, const Eigen::Vector3d& frame_velocit
     if (factors_out && factors_out != chord) factors_out->valid = false;
     return r;
   };
-  without_factors({});
+  if (factors_out && factors_out != chord) factors_out->valid = false;
   constexpr double kNoSlopeLimit = std::numeric_limits<double>::infinity();
   int warm_iterations = 0;
   if (start == StaticStart::kNearEquilibrium) {
