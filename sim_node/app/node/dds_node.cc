@@ -451,8 +451,10 @@ bool DdsNode::WaitLockstep(int64_t step) {
         for (int v = 0; v < arbiter.size(); ++v) {
           never_heard = never_heard && !(arbiter.failsafe(v) && arbiter.commanded(v));
         }
-        NoteFailsafe(LockstepTimeoutFailure(FailsafeEntries(arbiter), n_.sim->time(), step_, waited,
-                                            limit, never_heard));
+        // the bound waited out, not the clock's reading just past it (which a late wake-up
+        // makes 0.501 s for a 0.5 s limit): the message is the rule that was broken
+        NoteFailsafe(LockstepTimeoutFailure(FailsafeEntries(arbiter), n_.sim->time(), step_,
+                                            start_over ? start_limit : limit, limit, never_heard));
         PublishStatus(RunningState());
         if (arbiter.ReadyFor(step)) return true;
       }

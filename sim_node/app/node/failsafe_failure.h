@@ -27,9 +27,9 @@ std::string FailsafeEntries(const dds::CommandArbiter& arbiter);
 std::string FailsafeFailure(const std::string& entries, double t, uint64_t step,
                             const std::string& why);
 
-// lockstep waited `waited` wall seconds for the commands of `step` (state at t) and gave up;
-// `limit`: --lockstep-timeout [s]; `never_heard`: the entries never sent a command (the
-// longer start-up limit)
+// lockstep waited out `waited` wall seconds (the bound it gave up at: --lockstep-timeout, or
+// the longer start-up limit) for the commands of `step` (state at t); `limit`:
+// --lockstep-timeout [s]; `never_heard`: the entries never sent a command (the start-up limit)
 std::string LockstepTimeoutFailure(const std::string& entries, double t, uint64_t step,
                                    double waited, double limit, bool never_heard);
 
