@@ -10,6 +10,7 @@
 // not the small-deflection form of Eq. 12-13. Forces are exact gradients of U and the tangent is
 // the exact Hessian (tests check both against finite differences).
 
+#include <algorithm>
 #include <array>
 
 #include <Eigen/Core>
@@ -119,6 +120,14 @@ class AncfElement {
   Eigen::Matrix<double, 1, 5> wdx_;
   std::array<ShapeAtPoint, 2> ends_;
 };
+
+// An upper bound of the depth z over the element (of length l, coordinates e): the cubic Hermite
+// segment is the Bezier curve with the control points r_0, r_0 + l/3 r'_0, r_1 - l/3 r'_1, r_1,
+// which lies in their convex hull
+inline double DeepestBound(const Vec12& e, double l) {
+  const double third = l / 3.0;
+  return std::max(std::max(e(2), e(2) + third * e(5)), std::max(e(8) - third * e(11), e(8)));
+}
 
 // r, r', r'' at a point from element coordinates
 inline Eigen::Vector3d Interpolate(const std::array<double, 4>& w, const Vec12& e) {

@@ -1,5 +1,7 @@
 #include "core/cable_loads.h"
 
+#include <cmath>
+
 #include "core/cable_drag.h"
 #include "core/seabed_contact.h"
 
@@ -15,18 +17,19 @@ Vec12 UniformLoad(const Vec3& f, double l) {
 
 namespace {
 
-// the water at Gauss point p of a sea that varies in space or time, at r_p and t: the current
+// the water at Gauss point g of a sea that varies in space or time, at r_p and t: the current
 // there (and its shear dU/dz where asked) and the waves interpolated from the nodes
-FlowSample FlowAt(const EnvironmentField& sea, const ShapeAtPoint& p, const Vec3& r_p, double t,
-                  const ElementWaves* waves, Vec3* shear) {
+[[gnu::always_inline]] inline FlowSample FlowAt(const EnvironmentField& sea, int g,
+                                                const Vec3& r_p, double t,
+                                                const GaussWaves* waves, Vec3* shear) {
   FlowSample f;
   if (sea.steady_uniform_current())
     f.velocity = sea.uniform_current();  // waves only: no look-up per point
   else
     f = sea.Current(r_p, t, shear);
   if (waves) {
-    f.velocity += Interpolate(p.n, waves->velocity);
-    f.acceleration += Interpolate(p.n, waves->acceleration);
+    f.velocity += waves->velocity[g];
+    f.acceleration += waves->acceleration[g];
   }
   return f;
 }
@@ -41,8 +44,8 @@ FlowSample FlowAt(const EnvironmentField& sea, const ShapeAtPoint& p, const Vec3
 // what it did before they existed)
 template <bool kSea, bool kWithJacobian>
 Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const EnvironmentField& sea,
-               double t, const ElementWaves* waves, const GaussFields& fields, double scale,
-               ElementLoadJacobians* jac) {
+               double t, const GaussWaves* waves, const GaussFields& fields, double scale,
+               ElementLoadJacobians* jac, bool bed_in_reach) {
   const double l = element.props().length;
   Vec12 r = -scale * UniformLoad(ctx.weight_per_length, l);
   if constexpr (kWithJacobian) {
@@ -56,7 +59,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
   // water that moves differently from point to point or in time: sampled per Gauss point
   const bool local_flow = kSea && !sea.uniform();
   const bool fluid_inertia = local_flow && ctx.fluid_inertia_per_length > 0.0;
-  const bool contact = kSea && sea.has_seabed();
+  const bool contact = kSea && bed_in_reach && sea.has_seabed();
   if (!ctx.drag && !added && !added_t && !fluid_inertia && !contact) return r;
   Mat35 f_w;        // the load per unit length at each point, weighted
   FlowSample flow;  // the same at every point without local flow
@@ -68,7 +71,7 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
     const Vec3 a = fields.r_x.col(g);
     Vec3 shear = Vec3::Zero();  // dU/dz of a sheared current (with the Jacobians)
     if (local_flow)
-      flow = FlowAt(sea, p, at_r ? Vec3(fields.r.col(g)) : Vec3(), t, waves,
+      flow = FlowAt(sea, g, at_r ? Vec3(fields.r.col(g)) : Vec3(), t, waves,
                     kWithJacobian ? &shear : nullptr);
     Vec3 f = Vec3::Zero();  // load per unit length, enters R with a minus sign
     Mat3 f_a, f_v, m_pt;    // df/da, df/dr_dot, the added mass per length at this point
@@ -186,35 +189,70 @@ Vec12 Residual(const AncfElement& element, const CableLoadContext& ctx, const En
 
 }  // namespace
 
+ElementWaves NodeWaves(const WaveSample& start, const WaveSample& end) {
+  // [w, dw/dx] at the two nodes, in the layout of e
+  ElementWaves w;
+  int k = 0;
+  for (const WaveSample* s : {&start, &end}) {
+    w.velocity.segment<3>(6 * k) = s->velocity;
+    w.velocity.segment<3>(6 * k + 3) = s->d_velocity;
+    w.acceleration.segment<3>(6 * k) = s->acceleration;
+    w.acceleration.segment<3>(6 * k + 3) = s->d_acceleration;
+    ++k;
+  }
+  return w;
+}
+
+GaussWaves WavesAtGaussPoints(const AncfElement& element, const ElementWaves& waves) {
+  GaussWaves g;
+  for (int i = 0; i < 5; ++i) {
+    const ShapeAtPoint& p = element.points()[i];
+    g.velocity[i] = Interpolate(p.n, waves.velocity);
+    g.acceleration[i] = Interpolate(p.n, waves.acceleration);
+  }
+  return g;
+}
+
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
                           const EnvironmentField& sea, double t, const ElementWaves* waves,
                           const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,
                           ElementLoadJacobians* jac) {
+  const bool bed_in_reach = !ClearOfSeabed(sea, e, element.props().length);
   GaussFields fields;
-  element.InterpolateFields(e, e_dot, e_ddot, LoadFields(ctx, sea), &fields);
-  return ElementLoadResidual(element, ctx, sea, t, waves, fields, scale, jac);
+  element.InterpolateFields(e, e_dot, e_ddot, LoadFields(ctx, sea, bed_in_reach), &fields);
+  GaussWaves at_points;
+  if (waves) at_points = WavesAtGaussPoints(element, *waves);
+  return ElementLoadResidual(element, ctx, sea, t, waves ? &at_points : nullptr, fields, scale,
+                             jac, bed_in_reach);
 }
 
-unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea) {
+bool ClearOfSeabed(const EnvironmentField& sea, const Vec12& e, double l) {
+  if (!sea.has_seabed()) return false;
+  const double deepest = DeepestBound(e, l);
+  return deepest + 1e-9 * (std::abs(deepest) + l) < sea.SeabedShallowest();
+}
+
+unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea, bool bed_in_reach) {
   unsigned f = 0;
   if (ctx.drag) f |= kFieldVelocity;
   if (ctx.added_mass_per_length > 0.0 || ctx.tangential_added_mass_per_length > 0.0)
     f |= kFieldAcceleration;
   if (!sea.uniform() && !sea.steady_uniform_current()) f |= kFieldPosition;  // the current at r
-  if (sea.has_seabed()) f |= kFieldPosition | kFieldVelocity;
+  if (sea.has_seabed() && bed_in_reach) f |= kFieldPosition | kFieldVelocity;
   return f;
 }
 
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
-                          const EnvironmentField& sea, double t, const ElementWaves* waves,
-                          const GaussFields& fields, double scale, ElementLoadJacobians* jac) {
+                          const EnvironmentField& sea, double t, const GaussWaves* waves,
+                          const GaussFields& fields, double scale, ElementLoadJacobians* jac,
+                          bool bed_in_reach) {
   const bool sea_code =
       !sea.uniform() || sea.has_seabed() || ctx.tangential_added_mass_per_length > 0.0;
   if (jac)
-    return sea_code ? Residual<true, true>(element, ctx, sea, t, waves, fields, scale, jac)
-                    : Residual<false, true>(element, ctx, sea, t, waves, fields, scale, jac);
-  return sea_code ? Residual<true, false>(element, ctx, sea, t, waves, fields, scale, nullptr)
-                  : Residual<false, false>(element, ctx, sea, t, waves, fields, scale, nullptr);
+    return sea_code ? Residual<true, true>(element, ctx, sea, t, waves, fields, scale, jac, bed_in_reach)
+                    : Residual<false, true>(element, ctx, sea, t, waves, fields, scale, jac, bed_in_reach);
+  return sea_code ? Residual<true, false>(element, ctx, sea, t, waves, fields, scale, nullptr, bed_in_reach)
+                  : Residual<false, false>(element, ctx, sea, t, waves, fields, scale, nullptr, bed_in_reach);
 }
 
 }  // namespace towsim::core

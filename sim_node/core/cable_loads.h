@@ -25,6 +25,8 @@
 // (ElementWaves; environment_field.h says why). Loads are per unit unstretched length x; the
 // element length comes from the element (it may differ between elements).
 
+#include <array>
+
 #include <Eigen/Core>
 
 #include "core/ancf_element.h"
@@ -51,6 +53,16 @@ struct ElementWaves {
   Vec12 velocity = Vec12::Zero();
   Vec12 acceleration = Vec12::Zero();
 };
+// ... from the samples at its two nodes
+ElementWaves NodeWaves(const WaveSample& start, const WaveSample& end);
+
+// The waves at an element's five Gauss points, Interpolate(point.n, ...) of its ElementWaves:
+// the node samples are held over a step (environment_field.h), so these are formed once per
+// step (StepSampler::SampleWaves), not at every Newton evaluation
+struct GaussWaves {
+  std::array<Vec3, 5> velocity, acceleration;
+};
+GaussWaves WavesAtGaussPoints(const AncfElement& element, const ElementWaves& waves);
 
 struct ElementLoadJacobians {
   Mat12 added_mass;  // M_a (12 x 12)
@@ -59,17 +71,26 @@ struct ElementLoadJacobians {
 };
 
 // Generalized load residual of one element at time t in the sea `sea`, with the waves at its
-// nodes (nullptr: none), from the element's fields at its Gauss points (AncfElement::
+// Gauss points (nullptr: none), from the element's fields there (AncfElement::
 // InterpolateFields with LoadFields(ctx, sea); interpolated once per element for this and the
 // internal force); `scale` multiplies weight and drag (static load continuation). Jacobians
 // are filled when jac != nullptr; the residual is the same to the bit with or without them
-// (one load law, cable_loads.cc).
+// (one load law, cable_loads.cc). `bed_in_reach` false: the caller knows that no point of the
+// element reaches the shallowest seabed (ClearOfSeabed), so no contact is looked for (and r
+// need not be among the fields).
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
-                          const EnvironmentField& sea, double t, const ElementWaves* waves,
-                          const GaussFields& fields, double scale, ElementLoadJacobians* jac);
-// the fields ElementLoadResidual reads at the Gauss points besides r' (GaussFields: kField*)
-unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea);
-// the same from the element coordinates (the fields interpolated here)
+                          const EnvironmentField& sea, double t, const GaussWaves* waves,
+                          const GaussFields& fields, double scale, ElementLoadJacobians* jac,
+                          bool bed_in_reach = true);
+// the fields ElementLoadResidual reads at the Gauss points besides r' (GaussFields: kField*),
+// for an element that may reach the seabed (bed_in_reach) or not
+unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea,
+                    bool bed_in_reach = true);
+// no point of the element (coordinates e, length l) reaches the shallowest seabed: its
+// DeepestBound is above it, by a margin that covers the rounding of r at the Gauss points
+// (false without a seabed: there is nothing to reach)
+bool ClearOfSeabed(const EnvironmentField& sea, const Vec12& e, double l);
+// the same from the element coordinates and the waves at its nodes (both interpolated here)
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
                           const EnvironmentField& sea, double t, const ElementWaves* waves,
                           const Vec12& e, const Vec12& e_dot, const Vec12& e_ddot, double scale,

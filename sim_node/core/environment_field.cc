@@ -27,8 +27,12 @@ namespace {
 constexpr double kDecayCutoff = 1e-9;
 
 // packet i of a component array (WavePackets)
-[[gnu::always_inline]] inline WavePack P(const std::vector<double>& v, size_t i) {
-  return LoadPack4(v.data() + kWaveLanes * i);
+[[gnu::always_inline]] inline WavePack P(const std::vector<float>& v, size_t i) {
+  return LoadPackF8(v.data() + kWaveLanes * i);
+}
+// half j (0, 1) of packet i of a double array, four lanes
+[[gnu::always_inline]] inline Pack4 H(const std::vector<double>& v, size_t i, int j) {
+  return LoadPack4(v.data() + kWaveLanes * i + 4 * j);
 }
 
 // a point's sums over the components, before the ramp and the resolution along b
@@ -55,6 +59,20 @@ struct PointArgs {
   size_t packets;
 };
 
+// the phases th = k s - w t + f of packet i, formed and reduced to [-pi, pi] in double, then
+// rounded to float (s = x cos b + y sin b along a long-crested sea's direction, else
+// kx x + ky y per component)
+template <bool kLongCrested>
+[[gnu::always_inline]] inline WavePack Phases(const WavePackets& s, size_t i, const PointArgs& a) {
+  Pack4 th[2];
+  for (int j = 0; j < 2; ++j) {
+    const Pack4 space = kLongCrested ? H(s.phase_k, i, j) * a.along
+                                     : H(s.phase_kx, i, j) * a.x + H(s.phase_ky, i, j) * a.y;
+    th[j] = ReduceTwoPi(space + (H(s.phase, i, j) - H(s.omega, i, j) * a.t));
+  }
+  return ToFloat8(th[0], th[1]);
+}
+
 // the sums of SumWaves over the first a.packets packets (environment_field.h); always
 // inlined into the two targets below, so that each compiles it for its own instruction set
 template <bool kDerivative, bool kLongCrested, bool kDeep>
@@ -66,21 +84,25 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
   WavePack d_sc = zero, d_cs = zero, d2_ss = zero, d2_cc = zero, h_cc = zero, h_ss = zero;
   WavePack pxx = zero, pxy = zero, pyy = zero, qx = zero, qy = zero, pp = zero;
   WavePack dpxx = zero, dpxy = zero, dpyy = zero, dqx = zero, dqy = zero, dpp = zero;
+  const float ze = static_cast<float>(a.ze), dze = static_cast<float>(a.dze);
+  const float dx = static_cast<float>(a.dx), dy = static_cast<float>(a.dy);
   for (size_t i = 0; i < a.packets; ++i) {
     const WavePack k = P(s.k, i);
     // C = cosh k(zeta + h) / sinh kh, S = sinh k(zeta + h) / sinh kh (deep: C = S = E):
     // E = e^{k zeta}, F = q / E, C = (E + F) / (1 - q), S = (E - F) / (1 - q)
-    const WavePack e = ExpNonPositive(k * a.ze);
+    WavePack y = k * ze;
+    // finite depth: kept above float's underflow, so that F = q / E stays finite (where
+    // k zeta < -87, kh > 40 and q = 0: F = 0)
+    if (!kDeep) y = y < -87.0f ? WavePack{} - 87.0f : y;
+    const WavePack e = ExpNonPositiveF(y);
     WavePack cc = e, ss = e;
     if (!kDeep) {
       const WavePack f = P(s.q, i) / e;
       const WavePack inv = P(s.inv_1mq, i);
       cc = (e + f) * inv, ss = (e - f) * inv;
     }
-    const WavePack th = (kLongCrested ? k * a.along : P(s.kx, i) * a.x + P(s.ky, i) * a.y) +
-                        (P(s.phase, i) - P(s.omega, i) * a.t);
     WavePack sn, c;
-    SinCos(th, &sn, &c);
+    SinCosF(Phases<kLongCrested>(s, i, a), &sn, &c);
     eta += P(s.a, i) * c;
     const WavePack aw = P(s.a_omega, i), aw2 = P(s.a_omega2, i);
     // u_h = a w C cos th, u_up = a w S sin th; du/dt: th_t = -w
@@ -116,15 +138,15 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
     qx += gq * cb, qy += gq * sb, pp += gp;
     if (!kDerivative) continue;
     // along d: dth/ds = kx dx + ky dy, dzeta/ds = -dz; dC/dzeta = k S, dS/dzeta = k C
-    const WavePack g = P(s.kx, i) * a.dx + P(s.ky, i) * a.dy;
+    const WavePack g = P(s.kx, i) * dx + P(s.ky, i) * dy;
     // dP/ds = a w k (k S sin th dzeta/ds + C cos th dth/ds), dQ/ds = a w k (k C cos th dzeta/ds
     // - S sin th dth/ds)
-    const WavePack dgp = awk * (k * ss_sn * a.dze + cc_c * g);
-    const WavePack dgq = awk * (k * cc_c * a.dze - ss_sn * g);
+    const WavePack dgp = awk * (k * ss_sn * dze + cc_c * g);
+    const WavePack dgq = awk * (k * cc_c * dze - ss_sn * g);
     const WavePack dgpc = dgp * cb, dgps = dgp * sb;
     dpxx += dgpc * cb, dpxy += dgpc * sb, dpyy += dgps * sb;
     dqx += dgq * cb, dqy += dgq * sb, dpp += dgp;
-    const WavePack dcc = k * ss * a.dze, dss = k * cc * a.dze;
+    const WavePack dcc = k * ss * dze, dss = k * cc * dze;
     const WavePack duh = aw * (dcc * c - cc * sn * g), dah = aw2 * (dcc * sn + cc * c * g);
     duu += aw * (dss * sn + ss * c * g);
     dau -= aw2 * (dss * c - ss * sn * g);
@@ -159,9 +181,11 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
 [[gnu::always_inline]] inline double SumElevation(const WavePackets& s, double x, double y,
                                                   double t) {
   WavePack eta = {};
+  PointArgs a{};
+  a.x = x, a.y = y, a.t = t;
   for (size_t i = 0; i < s.packets; ++i) {
     WavePack sn, c;
-    SinCos(P(s.kx, i) * x + P(s.ky, i) * y + (P(s.phase, i) - P(s.omega, i) * t), &sn, &c);
+    SinCosF(Phases<false>(s, i, a), &sn, &c);
     eta += P(s.a, i) * c;
   }
   return Sum(eta);
@@ -229,30 +253,35 @@ EnvironmentField::EnvironmentField(const Environment& env) : env_(env) {
   const size_t n = comps.size();
   const size_t packets = (n + kWaveLanes - 1) / kWaveLanes;
   s.packets = packets;
-  for (std::vector<double>* v :
-       {&s.kx, &s.ky, &s.k, &s.omega, &s.phase, &s.a, &s.a_omega, &s.a_omega2, &s.a_omega_k,
-        &s.a_omega2_k, &s.a_omega_k2, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
+  for (std::vector<double>* v : {&s.phase_kx, &s.phase_ky, &s.phase_k, &s.omega, &s.phase})
     v->assign(packets * kWaveLanes, 0.0);
+  for (std::vector<float>* v : {&s.kx, &s.ky, &s.k, &s.a, &s.a_omega, &s.a_omega2, &s.a_omega_k,
+                                &s.a_omega2_k, &s.a_omega_k2, &s.q, &s.inv_1mq, &s.cos_b, &s.sin_b})
+    v->assign(packets * kWaveLanes, 0.0f);
   for (size_t j = 0; j < packets * kWaveLanes; ++j) {
     // the padding repeats the last component with zero amplitude: it adds exactly 0
     const WaveComponent& p = comps[std::min(j, n - 1)];
     const double a = j < n ? p.amplitude : 0.0;
     const double q = std::isfinite(wave_depth_) ? std::exp(-2.0 * p.k * wave_depth_) : 0.0;
-    s.kx[j] = p.k * std::cos(p.direction);
-    s.ky[j] = p.k * std::sin(p.direction);
-    s.k[j] = p.k;
+    s.phase_kx[j] = p.k * std::cos(p.direction);
+    s.phase_ky[j] = p.k * std::sin(p.direction);
+    s.phase_k[j] = p.k;
     s.omega[j] = p.omega;
     s.phase[j] = p.phase;
-    s.a[j] = a;
-    s.a_omega[j] = a * p.omega;
-    s.a_omega2[j] = a * p.omega * p.omega;
-    s.a_omega_k[j] = a * p.omega * p.k;
-    s.a_omega2_k[j] = a * p.omega * p.omega * p.k;
-    s.a_omega_k2[j] = a * p.omega * p.k * p.k;
-    s.q[j] = q;
-    s.inv_1mq[j] = 1.0 / (1.0 - q);
-    s.cos_b[j] = std::cos(p.direction);
-    s.sin_b[j] = std::sin(p.direction);
+    // the rest rounded to float once, from their double values
+    s.kx[j] = static_cast<float>(s.phase_kx[j]);
+    s.ky[j] = static_cast<float>(s.phase_ky[j]);
+    s.k[j] = static_cast<float>(p.k);
+    s.a[j] = static_cast<float>(a);
+    s.a_omega[j] = static_cast<float>(a * p.omega);
+    s.a_omega2[j] = static_cast<float>(a * p.omega * p.omega);
+    s.a_omega_k[j] = static_cast<float>(a * p.omega * p.k);
+    s.a_omega2_k[j] = static_cast<float>(a * p.omega * p.omega * p.k);
+    s.a_omega_k2[j] = static_cast<float>(a * p.omega * p.k * p.k);
+    s.q[j] = static_cast<float>(q);
+    s.inv_1mq[j] = static_cast<float>(1.0 / (1.0 - q));
+    s.cos_b[j] = static_cast<float>(std::cos(p.direction));
+    s.sin_b[j] = static_cast<float>(std::sin(p.direction));
     if (j < n) {
       s.k_scalar.push_back(p.k);
       s.log_inv_1mq.push_back(-std::log1p(-q));

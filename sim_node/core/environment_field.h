@@ -38,17 +38,21 @@
 
 namespace towsim::core {
 
-// The wave components as the sums read them: a structure of arrays of four-component packets
-// (packet_math.h; packet i is the doubles [4 i, 4 i + 4) of each array), sorted by increasing k
+// The wave components as the sums read them: a structure of arrays of eight-component packets
+// (packet_math.h; packet i is the entries [8 i, 8 i + 8) of each array), sorted by increasing k
 // (so that a point at depth can stop at the first component that has decayed, see
-// kDecayCutoff), padded with zero-amplitude copies of the last one to a whole packet
-constexpr int kWaveLanes = 4;
-using WavePack = Pack4;
+// kDecayCutoff), padded with zero-amplitude copies of the last one to a whole packet. The
+// phase k s - w t + f is formed and reduced to [-pi, pi] in double (its constants in double);
+// everything after it, in float (docs/environment.md, "Cost").
+constexpr int kWaveLanes = 8;
+using WavePack = PackF8;
 struct WavePackets {
   size_t packets = 0;
-  std::vector<double> kx, ky, k, omega, phase, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
+  // the phase's constants (double)
+  std::vector<double> phase_kx, phase_ky, phase_k, omega, phase;
+  std::vector<float> kx, ky, k, a, a_omega, a_omega2, q, inv_1mq, cos_b, sin_b;
   // a w k, a w^2 k, a w k^2: the velocity gradient and the sums' derivative along a direction
-  std::vector<double> a_omega_k, a_omega2_k, a_omega_k2;
+  std::vector<float> a_omega_k, a_omega2_k, a_omega_k2;
   // per component (unpadded): k and ln(1 / (1 - q)), for the depth cut-off's search
   std::vector<double> k_scalar, log_inv_1mq;
 };

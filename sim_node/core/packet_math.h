@@ -144,6 +144,114 @@ template <class P>
   return (P)(keep);
 }
 
+// Single precision: eight floats a packet (one AVX register, two SSE2 ones), for the wave
+// sums' polynomials (docs/environment.md, "Cost"). Their phases are formed and reduced to
+// [-pi, pi] in double (ReduceTwoPi) and only then rounded to float, so the float error does not
+// grow with the phase.
+typedef float PackF8 __attribute__((vector_size(32)));
+typedef std::uint32_t PackBitsF8 __attribute__((vector_size(32)));
+typedef float PackF4 __attribute__((vector_size(16)));
+
+// the lanes of a PackF8 added: lane j to lane j + 4 in float, then the four sums in double
+[[gnu::always_inline]] inline double Sum(const PackF8& p) {
+  const PackF4 half = __builtin_shufflevector(p, p, 0, 1, 2, 3) +
+                      __builtin_shufflevector(p, p, 4, 5, 6, 7);
+  return Sum(__builtin_convertvector(half, Pack4));
+}
+
+// the eight floats at p as a packet (no alignment needed)
+[[gnu::always_inline]] inline PackF8 LoadPackF8(const float* p) {
+  PackF8 v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+// x - 2 pi n, n = round(x / (2 pi)), lane by lane: in [-pi, pi] to a few 1e-16 (2 pi in two
+// parts; |x| < 2^51)
+template <class P>
+[[gnu::always_inline]] inline P ReduceTwoPi(const P& x) {
+  using packet_internal::kRoundShift;
+  constexpr double kInvTwoPi = 0.15915494309189535;
+  constexpr double kTwoPiHi = 6.283185307179586, kTwoPiLo = 2.4492935982947064e-16;
+  const P n = (x * kInvTwoPi + kRoundShift) - kRoundShift;
+  return (x - n * kTwoPiHi) - n * kTwoPiLo;
+}
+
+// two four-double packets rounded to one eight-float packet, lo in lanes 0-3
+[[gnu::always_inline]] inline PackF8 ToFloat8(const Pack4& lo, const Pack4& hi) {
+  const PackF4 a = __builtin_convertvector(lo, PackF4);
+  const PackF4 b = __builtin_convertvector(hi, PackF4);
+  return __builtin_shufflevector(a, b, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+
+namespace packet_internal {
+constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
+}  // namespace packet_internal
+
+// *s = sin x, *c = cos x for |x| <= pi (1 + 1e-7), lane by lane, in float: x = n pi/2 + r,
+// |r| <= pi/4 (pi/2 in two float parts, n in -2..2), Taylor of sin r to r^9 and of cos r to
+// r^10 (truncation (pi/4)^11 / 11! = 1.7e-9 and (pi/4)^12 / 12! = 1.1e-10, below float's
+// rounding 6e-8). Absolute error a few 1e-8 (tests/unit/packet_math_test.cc).
+[[gnu::always_inline]] inline void SinCosF(const PackF8& x, PackF8* s, PackF8* c) {
+  using Bits = PackBitsF8;
+  using packet_internal::kRoundShiftF;
+  constexpr float kTwoOverPi = 0.636619772f;
+  constexpr float kPiOver2Hi = 1.5703125f;                // 8 significant bits: n pi/2 exact
+  constexpr float kPiOver2Lo = 4.8382679e-4f;             // pi/2 - kPiOver2Hi
+  const PackF8 m = x * kTwoOverPi + kRoundShiftF;
+  const PackF8 n = m - kRoundShiftF;
+  const Bits quadrant = (Bits)(m);
+  const PackF8 r = (x - n * kPiOver2Hi) - n * kPiOver2Lo;
+  const PackF8 r2 = r * r;
+  // sin r = r + r^3 (-1/3! + r^2/5! - r^4/7! + r^6/9!)
+  PackF8 p = PackF8{} + 2.75573192e-6f;  // 1/9!
+  p = p * r2 - 1.98412698e-4f;           // -1/7!
+  p = p * r2 + 8.33333333e-3f;           // 1/5!
+  p = p * r2 - 1.66666667e-1f;           // -1/3!
+  const PackF8 sin_r = r + (r * r2) * p;
+  // cos r = 1 - r^2/2 + r^4 (1/4! - r^2/6! + r^4/8! - r^6/10!)
+  PackF8 q = PackF8{} - 2.75573192e-7f;  // -1/10!
+  q = q * r2 + 2.48015873e-5f;           // 1/8!
+  q = q * r2 - 1.38888889e-3f;           // -1/6!
+  q = q * r2 + 4.16666667e-2f;           // 1/4!
+  const PackF8 cos_r = (1.0f - 0.5f * r2) + (r2 * r2) * q;
+  // quadrant n mod 4, as in SinCos (the sign bit is bit 31)
+  const Bits swap = -(quadrant & 1);
+  const Bits sb = (Bits)(sin_r);
+  const Bits cb = (Bits)(cos_r);
+  const Bits sin_x = ((sb & ~swap) | (cb & swap)) ^ ((quadrant & 2) << 30);
+  const Bits cos_x = ((cb & ~swap) | (sb & swap)) ^ (((quadrant + 1) & 2) << 30);
+  *s = (PackF8)(sin_x);
+  *c = (PackF8)(cos_x);
+}
+
+// e^y for y <= 0, lane by lane, in float (0 below y = -87, e^-87 = 1.6e-38): y = n ln 2 + r,
+// |r| <= ln 2 / 2, Taylor to r^7 (truncation 0.347^8 / 8! = 5.6e-9), 2^n from its exponent
+// bits. Relative error a few 1e-8.
+[[gnu::always_inline]] inline PackF8 ExpNonPositiveF(const PackF8& y) {
+  using Bits = PackBitsF8;
+  using packet_internal::kRoundShiftF;
+  constexpr float kInvLn2 = 1.44269504f;
+  constexpr float kLn2Hi = 0.693145752f;   // 16 significant bits: n ln2 exact
+  constexpr float kLn2Lo = 1.42860677e-6f;  // ln 2 - kLn2Hi
+  const PackF8 m = y * kInvLn2 + kRoundShiftF;
+  const PackF8 n = m - kRoundShiftF;
+  const PackF8 r = (y - n * kLn2Hi) - n * kLn2Lo;
+  PackF8 p = PackF8{} + 1.98412698e-4f;  // 1/7!
+  p = p * r + 1.38888889e-3f;            // 1/6!
+  p = p * r + 8.33333333e-3f;            // 1/5!
+  p = p * r + 4.16666667e-2f;            // 1/4!
+  p = p * r + 1.66666667e-1f;            // 1/3!
+  p = p * r + 0.5f;
+  p = p * r + 1.0f;
+  p = p * r + 1.0f;
+  // 2^n: the biased exponent n + 127 into bits 23-30 (n >= -126 here)
+  const Bits two_n_bits = ((Bits)(m) + 127) << 23;
+  const PackF8 e = p * (PackF8)(two_n_bits);
+  const Bits keep = (Bits)(e) & ~(Bits)(y < -87.0f);
+  return (PackF8)(keep);
+}
+
 }  // namespace towsim::core
 
 #pragma GCC diagnostic pop

@@ -427,13 +427,19 @@ double Simulation::BodyDepth(int b) const {
   return p.z() + SurfaceElevationAt(b);
 }
 
+// The outputs' sea in double precision, from the wave field itself (WaveField; the loads'
+// sums run in float past the phase: environment_field.h), with the same crest and ramp rules
 double Simulation::SurfaceElevationAt(int b) const {
   const Vec3 p = body_position(b);
-  return impl_->system.sea().Elevation(p.x(), p.y(), time());
+  return impl_->system.model().environment.waves.Elevation(p.x(), p.y(), time());
 }
 
 Vec3 Simulation::WaterVelocityAt(int b) const {
-  return impl_->system.sea().Flow(body_position(b), time()).velocity;
+  const Vec3 p = body_position(b);
+  const WaveField& waves = impl_->system.model().environment.waves;
+  Vec3 u = impl_->system.sea().Current(p, time()).velocity;
+  if (!waves.empty()) u += waves.Kinematics(p, time()).velocity;
+  return u;
 }
 
 }  // namespace towsim::core

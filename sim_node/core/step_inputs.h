@@ -22,6 +22,7 @@
 
 #include <vector>
 
+#include "core/cable_loads.h"
 #include "core/environment_field.h"
 #include "core/state.h"
 #include "core/vehicle_model.h"
@@ -30,9 +31,13 @@ namespace towsim::core {
 
 // The waves at every cable node (the array nodes of every cable, System::NodeIndex; with their
 // derivative along the cable, d = r' at the node) and at every sphere (d = 0).
+// And at the Gauss points of every element whose rest length is the cable's nominal one (not
+// a winch's drum element), element e of cable c at NodeIndex(e, c), interpolated from its nodes'
+// samples once per step (cable_loads.h).
 struct WaveSamples {
   std::vector<WaveSample> nodes;
   std::vector<WaveSample> spheres;
+  std::vector<GaussWaves> elements;
 };
 
 struct StepInputs {

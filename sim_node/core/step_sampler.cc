@@ -4,6 +4,7 @@ namespace towsim::core {
 
 void StepSampler::Resize(StepInputs* in) const {
   in->waves.nodes.assign(system_.total_array_nodes(), WaveSample());
+  in->waves.elements.assign(system_.total_array_nodes(), GaussWaves());
   in->supports.assign(system_.num_ends(), SupportMotion());
   in->waves.spheres.assign(system_.num_spheres(), WaveSample());
   const size_t nv = system_.model().vehicles.size();
@@ -18,6 +19,14 @@ void StepSampler::SampleWaves(const Eigen::VectorXd& q, double t, StepInputs* in
     for (int n = 0; n < system_.num_nodes(c); ++n) {
       const int o = system_.CableDof(n, c);
       in->waves.nodes[system_.NodeIndex(n, c)] = sea.Waves(q.segment<3>(o), q.segment<3>(o + 3), t);
+    }
+  // ... interpolated to the Gauss points of the elements of nominal length (the drum element's
+  // change with its rest length: System interpolates its own)
+  for (int c = 0; c < system_.num_cables(); ++c)
+    for (int e = system_.has_winch(c) ? 1 : 0; e < system_.NumElements(c); ++e) {
+      const int i = system_.NodeIndex(e, c);
+      in->waves.elements[i] = WavesAtGaussPoints(
+          system_.element(c), NodeWaves(in->waves.nodes[i], in->waves.nodes[i + 1]));
     }
   for (int s = 0; s < system_.num_spheres(); ++s)
     in->waves.spheres[s] = sea.Waves(q.segment<3>(system_.SphereDof(s)), Vec3::Zero(), t);

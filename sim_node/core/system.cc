@@ -89,6 +89,7 @@ System::System(const Model& model) : model_(model), sea_(model.environment) {
                               sea_.has_seabed();
     p.weight_load = UniformLoad(p.loads.weight_per_length, p.element.props().length);
     p.load_fields = p.state_dependent_loads ? LoadFields(p.loads, sea_) : 0;
+    p.load_fields_clear = p.state_dependent_loads ? LoadFields(p.loads, sea_, false) : 0;
     p.winch = cp.winch.has_value();  // the scene puts the winched cables first (model.h)
     if (p.winch) num_winches_ = c + 1;
     p.num_nodes = cp.elements + 1;
@@ -336,23 +337,29 @@ void System::AssembleCable(int cable_index, const SystemPoint& x, const StepInpu
   Mat12 k, c, j;
   ElementLoadJacobians lj;
   GaussFields fields;  // r', r_dot, ... interpolated once per element for both laws
-  ElementWaves ew;
+  GaussWaves drum_waves;  // the drum element's waves at its Gauss points
   const auto add_element = [&](int e, const AncfElement& element, const Vec12& qw,
                                double drum_rate) {
     const int o = CableDof(e, ci);
     const Mat12& mass = element.mass();
     const Vec12 ee = q.segment<12>(o), ed = v.segment<12>(o), ea = a.segment<12>(o);
+    // the waves at the Gauss points: the step's (StepSampler::SampleWaves), the drum
+    // element's from its nodes here (its shape functions change with its rest length)
+    const GaussWaves* w = nullptr;
     if (waves) {
-      // [w, dw/dx] at the element's two nodes, in the layout of e (cable_loads.h)
-      for (int k = 0; k < 2; ++k) {
-        const WaveSample& ws = in.waves.nodes[part.node_base + e + k];
-        ew.velocity.segment<3>(6 * k) = ws.velocity;
-        ew.velocity.segment<3>(6 * k + 3) = ws.d_velocity;
-        ew.acceleration.segment<3>(6 * k) = ws.acceleration;
-        ew.acceleration.segment<3>(6 * k + 3) = ws.d_acceleration;
+      const int i = part.node_base + e;
+      if (part.winch && e == 0) {
+        drum_waves = WavesAtGaussPoints(element, NodeWaves(in.waves.nodes[i], in.waves.nodes[i + 1]));
+        w = &drum_waves;
+      } else {
+        w = &in.waves.elements[i];
       }
     }
-    element.InterpolateFields(ee, ed, ea, part.load_fields, &fields);
+    // an element clear of the seabed looks for no contact (exact: cable_loads.h)
+    const bool bed_in_reach =
+        part.state_dependent_loads && !ClearOfSeabed(sea_, ee, element.props().length);
+    element.InterpolateFields(ee, ed, ea, bed_in_reach ? part.load_fields : part.load_fields_clear,
+                              &fields);
     element.InternalForce(fields, &force, jac ? &k : nullptr, jac ? &c : nullptr);
     if (!part.state_dependent_loads) {
       // weight in water only: R_load = -scale Q_w, no Jacobian
@@ -362,9 +369,8 @@ void System::AssembleCable(int cable_index, const SystemPoint& x, const StepInpu
         if (cf.c_v != 0.0) j += cf.c_v * c;
       }
     } else {
-      const ElementWaves* w = waves ? &ew : nullptr;
       const Vec12 rl = ElementLoadResidual(element, part.loads, sea_, x.t, w, fields,
-                                           options.load_scale, jac ? &lj : nullptr);
+                                           options.load_scale, jac ? &lj : nullptr, bed_in_reach);
       residual->segment<12>(o) += element.MassTimes(ea) + force + rl;
       if (jac) {
         // J_e = c_a (M + M_a) + c_q (K + dR_load/de) + c_v (C + dR_load/de_dot)

@@ -197,6 +197,7 @@ class System {
     bool state_dependent_loads = false;
     Vec12 weight_load = Vec12::Zero();  // UniformLoad(weight_per_length, l)
     unsigned load_fields = 0;  // the fields the loads read at the Gauss points (LoadFields)
+    unsigned load_fields_clear = 0;  // ... on an element clear of the seabed (ClearOfSeabed)
     bool winch = false;
     int max_nodes = 0, num_nodes = 0, first_node = 0;
     double drum_length = 0.0;  // element 0's rest length now (winch)

@@ -10,7 +10,6 @@
 #include <gtest/gtest.h>
 
 #include "core/constants.h"
-#include "core/environment_field.h"
 #include "core/script.h"
 #include "core/simulation.h"
 #include "dds/markers.h"
@@ -250,8 +249,9 @@ script:
 
 // Airy elevation of the wave: the scene's H / 2 [m]
 constexpr double kAmplitude = 1.0;
-// the marker's heights against core's EnvironmentField (the loads' own evaluation of the same
-// Airy sum, in another order): rounding of a phase of O(10) rad on a 1 m amplitude, ~1e-14 m
+// the marker's heights against core's WaveField::Elevation (the same Airy sum, per point instead
+// of the grid's separated sines and cosines): rounding of a phase of O(10) rad on a 1 m
+// amplitude, ~1e-14 m
 constexpr double kElevationTol = 1e-12;
 // the seabed's plane d_0 + tan(slope) (x cos c + y sin c), evaluated here: rounding of a
 // depth of O(300) m
@@ -283,7 +283,6 @@ TEST(SceneMarkersTest, SeaSurfaceAndSeabedPatchesAroundTheTowVehicle) {
   EXPECT_EQ(sim.body_name(tow), "tow_vehicle");
   const core::Vec3 p_tow = sim.body_position(tow);
   double x_min = 1e300, x_max = -1e300, y_min = 1e300, y_max = -1e300;
-  const core::EnvironmentField field(model.environment);
   const double t = sim.time();
   const double slope = 2.0 * core::kPi / 180.0, c = 45.0 * core::kPi / 180.0;
   double eta_lo = 1e300, eta_hi = -1e300;
@@ -297,7 +296,7 @@ TEST(SceneMarkersTest, SeaSurfaceAndSeabedPatchesAroundTheTowVehicle) {
     EXPECT_NEAR(p.x / kSeaPatchCellSize, std::round(p.x / kSeaPatchCellSize), 1e-12);
     EXPECT_NEAR(p.y / kSeaPatchCellSize, std::round(p.y / kSeaPatchCellSize), 1e-12);
     // NED: the surface at z = -eta, the bottom at z = d
-    const double eta = field.Elevation(p.x, p.y, t);
+    const double eta = model.environment.waves.Elevation(p.x, p.y, t);
     EXPECT_NEAR(p.z, -eta, kElevationTol) << k;
     EXPECT_NEAR(q.z, 260.0 + std::tan(slope) * (q.x * std::cos(c) + q.y * std::sin(c)), kDepthTol)
         << k;
