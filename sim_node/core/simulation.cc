@@ -216,6 +216,8 @@ void Simulation::CheckStateShape(const State& s) const {
   CheckSize("vehicles", static_cast<long>(s.vehicles.size()), nv, "one per scene vehicle");
   CheckSize("coupling.f_previous", static_cast<long>(s.coupling.f_previous.size()),
             impl_->coupling.num_attachments(), "one per cable end held by a vehicle");
+  CheckSize("coupling.f_second", static_cast<long>(s.coupling.f_second.size()),
+            impl_->coupling.num_attachments(), "one per cable end held by a vehicle");
   CheckSize("supports", static_cast<long>(s.supports.size()), sys.num_ends(),
             "one per cable end");
   CheckSize("coupling.flow_end", static_cast<long>(s.coupling.flow_end.size()), nv,
@@ -247,6 +249,7 @@ void Simulation::StartFrom(const State& state) {
   s.lambda.setZero(impl_->system.num_lambda());
   s.newton = NewtonPoint();
   s.coupling.f_previous.assign(impl_->coupling.num_attachments(), Vec3::Zero());
+  s.coupling.f_second.assign(impl_->coupling.num_attachments(), Vec3::Zero());
   s.supports.resize(impl_->system.num_ends());
   s.coupling.flow_end.assign(num_vehicles(), VehicleFlow());
   CheckStateShape(s);

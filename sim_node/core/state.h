@@ -42,6 +42,12 @@ struct CouplingHistory {
   bool have_previous = false;    // the predictor has a previous step
   double h_previous = 0.0;       // its length [s]
   std::vector<Vec3> f_previous;  // joint force on each vehicle at its start, world frame [N]
+  // the step before that had the same length: f_second, the joint forces at its start, make
+  // the quadratic predictor possible
+  bool have_second = false;
+  std::vector<Vec3> f_second;
+  // each predictor's recent error on the joint forces (halved each step, plus the newest) [N]
+  double error_linear = 0.0, error_quadratic = 0.0;
   // the water at each vehicle sampled at the end of the previous step (at the predicted pose)
   // and its time (< 0: none; the next step then samples its start itself)
   double flow_time = -1.0;

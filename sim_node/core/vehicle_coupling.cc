@@ -49,6 +49,8 @@ VehicleCoupling::VehicleCoupling(const System& system, Integrator* integrator, S
   f0_.resize(na);
   f1_.resize(na);
   residual_.resize(na);
+  linear_.resize(na);
+  quadratic_.resize(na);
   point_compliance_.assign(na, Mat3::Zero());
   end_stiffness_.assign(na, 0.0);
   loads_.resize(na);
@@ -61,6 +63,10 @@ Vec3 VehicleCoupling::AttachmentPoint(const VehicleState& vs, int a) const {
 }
 
 namespace {
+
+// the quadratic predictor is taken when its recent error is below this fraction of the linear
+// one's (see the header)
+constexpr double kQuadraticMargin = 0.5;
 
 // the joint force of cable end `end` (2 c + k) in `state`
 Vec3 EndForce(const System& system, const State& state, int end) {
@@ -75,6 +81,9 @@ void VehicleCoupling::HoldSupports(State* state) {
   history.have_previous = false;
   history.h_previous = 0.0;
   history.f_previous.assign(attachments_.size(), Vec3::Zero());
+  history.have_second = false;
+  history.f_second.assign(attachments_.size(), Vec3::Zero());
+  history.error_linear = history.error_quadratic = 0.0;
   history.flow_time = -1.0;
   history.flow_end.assign(nv, VehicleFlow());
   state->supports.assign(system_.num_ends(), SupportMotion());
@@ -92,10 +101,27 @@ void VehicleCoupling::SizeWorkSpace(const State& state) {
 }
 
 StepStatus VehicleCoupling::Accept(const State& start, double h, State* state, StepStatus* status) {
-  // remember lambda_n for the next step's predictor, and the water at the end of the step
+  // remember lambda_n and lambda_{n-1} for the next step's predictor, and the water at the end
+  // of the step
   CouplingHistory& history = state->coupling;
-  for (int a = 0; a < num_attachments(); ++a)
+  // how far each predictor was from lambda_{n+1} (max over the attachments), kept as
+  // e <- (e + e_new) / 2
+  if (predicted_) {
+    double e_linear = 0.0, e_quadratic = 0.0;
+    for (int a = 0; a < num_attachments(); ++a) {
+      const Vec3 f = EndForce(system_, *state, attachments_[a].end);
+      e_linear = std::max(e_linear, (linear_[a] - f).lpNorm<Eigen::Infinity>());
+      e_quadratic = std::max(e_quadratic, (quadratic_[a] - f).lpNorm<Eigen::Infinity>());
+    }
+    history.error_linear = 0.5 * (history.error_linear + e_linear);
+    history.error_quadratic = 0.5 * (history.error_quadratic + e_quadratic);
+  }
+  // lambda_{n-1}, lambda_n at equal steps before the next one
+  history.have_second = history.have_previous && history.h_previous == h;
+  for (int a = 0; a < num_attachments(); ++a) {
+    history.f_second[a] = history.f_previous[a];
     history.f_previous[a] = EndForce(system_, start, attachments_[a].end);
+  }
   for (size_t v = 0; v < history.flow_end.size(); ++v)
     history.flow_end[v] = inputs_->vehicle_flow_end[v];
   history.h_previous = h;
@@ -146,13 +172,23 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
   std::vector<Vec3>& f0 = f0_;
   std::vector<Vec3>& f1 = f1_;
   std::vector<Vec3>& residual = residual_;
-  // predictor of lambda_{n+1}: linear extrapolation of the last two steps (strong scheme)
+  // predictor of lambda_{n+1} (strong scheme): extrapolation of the last steps, linear or, at
+  // equal steps, quadratic, whichever has lately predicted the joint forces better (see the
+  // header)
   const CouplingHistory& history = start_.coupling;
   const bool predict = strong && history.have_previous && history.h_previous > 0.0;
+  const bool quadratic = predict && history.have_second && history.h_previous == h;
   for (int a = 0; a < na; ++a) {
-    f0[a] = f1[a] = EndForce(system_, start_, attachments_[a].end);
-    if (predict) f1[a] += (h / history.h_previous) * (f0[a] - history.f_previous[a]);
+    f0[a] = EndForce(system_, start_, attachments_[a].end);
+    const Vec3& f_1 = history.f_previous[a];
+    linear_[a] = predict ? Vec3(f0[a] + (h / history.h_previous) * (f0[a] - f_1)) : f0[a];
+    quadratic_[a] =
+        quadratic ? Vec3(3.0 * f0[a] - 3.0 * f_1 + history.f_second[a]) : linear_[a];
+    f1[a] = quadratic && history.error_quadratic < kQuadraticMargin * history.error_linear
+                ? quadratic_[a]
+                : linear_[a];
   }
+  predicted_ = quadratic;
   // the water at each vehicle over the step, sampled once (the end at the pose predicted from
   // the start; the end of one step is the start of the next, State::coupling.flow_end)
   sampler_.SampleVehicleFlows(start_, h, inputs_);

@@ -1,6 +1,8 @@
 #include "core/ancf_element.h"
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
@@ -148,6 +150,37 @@ TEST(AncfElement, ExactCurvatureOfACircularArc) {
   const double expected = 0.5 * p.ei * l / (R * R);
   constexpr double kArcRelTol = 1e-3;  // (l/R)^4 = 1.6e-3 bound on the interpolation error
   EXPECT_NEAR(el.StrainEnergy(e), expected, kArcRelTol * expected);
+}
+
+// DeepestBound: the cubic Hermite segment is the Bezier curve of r_0, r_0 + l/3 r'_0,
+// r_1 - l/3 r'_1, r_1, inside their convex hull, so no point of the element is deeper than the
+// deepest control point; a straight element's control points lie on its chord, so there the
+// bound is the deeper end exactly
+TEST(AncfElement, NoPointIsDeeperThanTheDeepestBound) {
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  double tightest = 1e300;  // the smallest bound - deepest point seen, [m]
+  for (int k = 0; k < 2000; ++k) {
+    ElementProperties p;
+    p.length = 1.0 + 19.0 * 0.5 * (u(rng) + 1.0);
+    const AncfElement el(p);
+    Vec12 e;
+    for (int i = 0; i < 12; ++i) e(i) = (i % 6 < 3 ? 10.0 : 1.0) * u(rng);  // slopes ~1
+    const double bound = DeepestBound(e, p.length);
+    double deepest = -1e300;
+    for (int j = 0; j <= 1000; ++j) {
+      const ShapeAtPoint s = EvaluateShape(j / 1000.0, p.length);
+      deepest = std::max(deepest, Interpolate(s.n, e).z());
+    }
+    ASSERT_LE(deepest, bound + 1e-12 * (std::abs(bound) + p.length)) << "element " << k;
+    tightest = std::min(tightest, bound - deepest);
+  }
+  EXPECT_GE(tightest, -1e-12);
+  Vec12 straight;
+  const Eigen::Vector3d r0(1.0, 2.0, 3.0), r1(8.0, -1.0, 11.0);
+  const Eigen::Vector3d d = (r1 - r0) / 10.0;
+  straight << r0, d, r1, d;
+  EXPECT_NEAR(DeepestBound(straight, 10.0), 11.0, 1e-14);
 }
 
 }  // namespace

@@ -324,5 +324,62 @@ TEST(CableLoads, JacobiansMatchFiniteDifferencesInASea) {
   CheckLoadJacobians(env, &w);
 }
 
+// An element whose control polygon (ancf_element.h, DeepestBound) is above the shallowest bed
+// looks for no contact (ClearOfSeabed): its residual and Jacobians are those of the full test
+// to the bit, without r at the Gauss points; an element whose ends are above the bed but
+// whose middle sags into it is not skipped
+TEST(CableLoads, AnElementClearOfTheSeabedLooksForNoContact) {
+  Environment env;
+  env.seabed = Seabed::Flat(20.0);
+  const EnvironmentField sea(env);
+  ElementProperties p;
+  p.length = 10.0;
+  const AncfElement el(p);
+  CableLoadContext ctx;
+  ctx.diameter = 0.041;
+  ctx.drag = true;
+  ctx.added_mass_per_length = 1.35;
+  ctx.fluid_inertia_per_length = 1.35 + 1.1;
+  ctx.weight_per_length = Eigen::Vector3d(0, 0, 3.5);
+  Vec12 ed, edd;
+  ed << 1.0, -0.5, 2.0, 0.1, 0.0, 0.05, 1.5, 0.2, -1.0, 0.0, 0.1, 0.0;
+  edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
+  // 3 m above the bed at its deepest control point, r_1 - l/3 r'_1: 16 + 10/3 0.3 = 17 m
+  Vec12 above;
+  above << 0.0, 0.0, 15.0, 0.98, 0.0, 0.2, 9.8, 0.0, 16.0, 0.98, 0.0, -0.3;
+  ASSERT_NEAR(DeepestBound(above, 10.0), 17.0, 1e-12);
+  EXPECT_TRUE(ClearOfSeabed(sea, above, 10.0));
+  for (const bool with_jacobians : {false, true}) {
+    GaussFields all, fewer;
+    el.InterpolateFields(above, ed, edd, LoadFields(ctx, sea, true), &all);
+    el.InterpolateFields(above, ed, edd, LoadFields(ctx, sea, false), &fewer);
+    EXPECT_EQ(LoadFields(ctx, sea, false) & kFieldPosition, 0u);
+    ElementLoadJacobians ja, jb;
+    const Vec12 ra = ElementLoadResidual(el, ctx, sea, 0.0, nullptr, all, 1.0,
+                                         with_jacobians ? &ja : nullptr, true);
+    const Vec12 rb = ElementLoadResidual(el, ctx, sea, 0.0, nullptr, fewer, 1.0,
+                                         with_jacobians ? &jb : nullptr, false);
+    EXPECT_EQ(ra, rb);
+    if (with_jacobians) {
+      EXPECT_EQ(ja.d_de, jb.d_de);
+      EXPECT_EQ(ja.d_dedot, jb.d_dedot);
+      EXPECT_EQ(ja.added_mass, jb.added_mass);
+    }
+  }
+  // ends at 19.5 m and 19.8 m, slopes down then up: the middle reaches 21.5 m, under the bed
+  Vec12 sagging;
+  sagging << 0.0, 0.0, 19.5, 0.9, 0.0, 0.5, 9.8, 0.0, 19.8, 0.9, 0.0, -0.5;
+  EXPECT_GT(Interpolate(EvaluateShape(0.5, 10.0).n, sagging).z(), 20.0);
+  EXPECT_FALSE(ClearOfSeabed(sea, sagging, 10.0));
+  Environment no_bed;
+  const EnvironmentField calm(no_bed);
+  EXPECT_FALSE(ClearOfSeabed(calm, sagging, 10.0));  // nothing to be clear of
+  const Vec12 on_bed = ElementLoadResidual(el, ctx, sea, 0.0, nullptr, sagging, ed, edd, 1.0,
+                                           nullptr);
+  const Vec12 free = ElementLoadResidual(el, ctx, calm, 0.0, nullptr, sagging, ed, edd, 1.0,
+                                         nullptr);
+  EXPECT_GT((on_bed - free).norm(), 1.0);  // the contact load is there [N]
+}
+
 }  // namespace
 }  // namespace towsim::core
