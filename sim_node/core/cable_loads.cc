@@ -28,8 +28,8 @@ namespace {
   else
     f = sea.Current(r_p, t, shear);
   if (waves) {
-    f.velocity += waves->velocity[g];
-    f.acceleration += waves->acceleration[g];
+    f.velocity += waves->velocity.col(g);
+    f.acceleration += waves->acceleration.col(g);
   }
   return f;
 }
@@ -204,13 +204,9 @@ ElementWaves NodeWaves(const WaveSample& start, const WaveSample& end) {
 }
 
 GaussWaves WavesAtGaussPoints(const AncfElement& element, const ElementWaves& waves) {
-  GaussWaves g;
-  for (int i = 0; i < 5; ++i) {
-    const ShapeAtPoint& p = element.points()[i];
-    g.velocity[i] = Interpolate(p.n, waves.velocity);
-    g.acceleration[i] = Interpolate(p.n, waves.acceleration);
-  }
-  return g;
+  // W N: the element's shape table at its Gauss points, as for r (ancf_element.h)
+  return {AtGaussPoints(waves.velocity, element.shape_n()),
+          AtGaussPoints(waves.acceleration, element.shape_n())};
 }
 
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,

@@ -25,8 +25,6 @@
 // (ElementWaves; environment_field.h says why). Loads are per unit unstretched length x; the
 // element length comes from the element (it may differ between elements).
 
-#include <array>
-
 #include <Eigen/Core>
 
 #include "core/ancf_element.h"
@@ -60,7 +58,7 @@ ElementWaves NodeWaves(const WaveSample& start, const WaveSample& end);
 // the node samples are held over a step (environment_field.h), so these are formed once per
 // step (StepSampler::SampleWaves), not at every Newton evaluation
 struct GaussWaves {
-  std::array<Vec3, 5> velocity, acceleration;
+  Mat35 velocity, acceleration;  // column g: Gauss point g
 };
 GaussWaves WavesAtGaussPoints(const AncfElement& element, const ElementWaves& waves);
 

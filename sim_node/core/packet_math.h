@@ -189,9 +189,10 @@ constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
 }  // namespace packet_internal
 
 // *s = sin x, *c = cos x for |x| <= pi (1 + 1e-7), lane by lane, in float: x = n pi/2 + r,
-// |r| <= pi/4 (pi/2 in two float parts, n in -2..2), Taylor of sin r to r^9 and of cos r to
-// r^10 (truncation (pi/4)^11 / 11! = 1.7e-9 and (pi/4)^12 / 12! = 1.1e-10, below float's
-// rounding 6e-8). Absolute error a few 1e-8 (tests/unit/packet_math_test.cc).
+// |r| <= pi/4 (pi/2 in two float parts, n in -2..2), sin r = r P(r^2) and cos r = Q(r^2) with
+// P of degree 3 and Q of degree 4, their Chebyshev fits on [0, (pi/4)^2] (mpmath.chebyfit:
+// relative error 3.1e-9 and absolute 4.8e-11, below float's rounding 6e-8). Absolute error a
+// few 1e-8 (tests/unit/packet_math_test.cc).
 [[gnu::always_inline]] inline void SinCosF(const PackF8& x, PackF8* s, PackF8* c) {
   using Bits = PackBitsF8;
   using packet_internal::kRoundShiftF;
@@ -203,18 +204,16 @@ constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
   const Bits quadrant = (Bits)(m);
   const PackF8 r = (x - n * kPiOver2Hi) - n * kPiOver2Lo;
   const PackF8 r2 = r * r;
-  // sin r = r + r^3 (-1/3! + r^2/5! - r^4/7! + r^6/9!)
-  PackF8 p = PackF8{} + 2.75573192e-6f;  // 1/9!
-  p = p * r2 - 1.98412698e-4f;           // -1/7!
-  p = p * r2 + 8.33333333e-3f;           // 1/5!
-  p = p * r2 - 1.66666667e-1f;           // -1/3!
-  const PackF8 sin_r = r + (r * r2) * p;
-  // cos r = 1 - r^2/2 + r^4 (1/4! - r^2/6! + r^4/8! - r^6/10!)
-  PackF8 q = PackF8{} - 2.75573192e-7f;  // -1/10!
-  q = q * r2 + 2.48015873e-5f;           // 1/8!
-  q = q * r2 - 1.38888889e-3f;           // -1/6!
-  q = q * r2 + 4.16666667e-2f;           // 1/4!
-  const PackF8 cos_r = (1.0f - 0.5f * r2) + (r2 * r2) * q;
+  PackF8 p = PackF8{} - 1.95039043e-4f;
+  p = p * r2 + 8.33203578e-3f;
+  p = p * r2 - 1.66666507e-1f;
+  p = p * r2 + 9.99999997e-1f;
+  const PackF8 sin_r = r * p;
+  PackF8 q = PackF8{} + 2.43798313e-5f;
+  q = q * r2 - 1.38866180e-3f;
+  q = q * r2 + 4.16666167e-2f;
+  q = q * r2 - 4.99999996e-1f;
+  const PackF8 cos_r = q * r2 + 1.0f;
   // quadrant n mod 4, as in SinCos (the sign bit is bit 31)
   const Bits swap = -(quadrant & 1);
   const Bits sb = (Bits)(sin_r);
@@ -226,8 +225,8 @@ constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
 }
 
 // e^y for y <= 0, lane by lane, in float (0 below y = -87, e^-87 = 1.6e-38): y = n ln 2 + r,
-// |r| <= ln 2 / 2, Taylor to r^7 (truncation 0.347^8 / 8! = 5.6e-9), 2^n from its exponent
-// bits. Relative error a few 1e-8.
+// |r| <= ln 2 / 2, e^r by its degree-6 Chebyshev fit there (mpmath.chebyfit: error 2e-9),
+// 2^n from its exponent bits. Relative error a few 1e-8.
 [[gnu::always_inline]] inline PackF8 ExpNonPositiveF(const PackF8& y) {
   using Bits = PackBitsF8;
   using packet_internal::kRoundShiftF;
@@ -237,13 +236,12 @@ constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
   const PackF8 m = y * kInvLn2 + kRoundShiftF;
   const PackF8 n = m - kRoundShiftF;
   const PackF8 r = (y - n * kLn2Hi) - n * kLn2Lo;
-  PackF8 p = PackF8{} + 1.98412698e-4f;  // 1/7!
-  p = p * r + 1.38888889e-3f;            // 1/6!
-  p = p * r + 8.33333333e-3f;            // 1/5!
-  p = p * r + 4.16666667e-2f;            // 1/4!
-  p = p * r + 1.66666667e-1f;            // 1/3!
-  p = p * r + 0.5f;
-  p = p * r + 1.0f;
+  PackF8 p = PackF8{} + 1.39411084e-3f;
+  p = p * r + 8.37512640e-3f;
+  p = p * r + 4.16663529e-2f;
+  p = p * r + 1.66664155e-1f;
+  p = p * r + 5.00000005e-1f;
+  p = p * r + 1.00000004f;
   p = p * r + 1.0f;
   // 2^n: the biased exponent n + 127 into bits 23-30 (n >= -126 here)
   const Bits two_n_bits = ((Bits)(m) + 127) << 23;
