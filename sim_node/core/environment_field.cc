@@ -73,6 +73,16 @@ template <bool kLongCrested>
   return ToFloat8(th[0], th[1]);
 }
 
+// the phase changes kx ox + ky oy of packet i over a horizontal offset (ox, oy), reduced to
+// [-pi, pi] in double as Phases
+[[gnu::always_inline]] inline WavePack OffsetPhases(const WavePackets& s, size_t i, double ox,
+                                                    double oy) {
+  Pack4 d[2];
+  for (int j = 0; j < 2; ++j)
+    d[j] = ReduceTwoPi(H(s.phase_kx, i, j) * ox + H(s.phase_ky, i, j) * oy);
+  return ToFloat8(d[0], d[1]);
+}
+
 // the sums of SumWaves over the first a.packets packets (environment_field.h); always
 // inlined into the two targets below, so that each compiles it for its own instruction set
 template <bool kDerivative, bool kLongCrested, bool kDeep>
@@ -191,6 +201,95 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
   return Sum(eta);
 }
 
+// Points about a centre p, p +- o (FlowsAbout, ElevationPairs): the phase and the depth
+// factor of p + o and p - o follow from those of p and of the offset by the angle-addition and
+// exponential rules, cos(th +- d) = cos th cos d -+ sin th sin d, e^{k (zeta +- dz)} =
+// e^{k zeta} e^{+-k dz}: the phases of p and of o in double and their sines and cosines, and
+// two exponentials, instead of three of each.
+
+// a long-crested sea's sums without derivative at one point (SumPackets' kDerivative = false,
+// kLongCrested = true), one packet at a time
+struct LongSums {
+  WavePack eta = {}, uh = {}, ah = {}, uu = {}, au = {}, gq = {}, gp = {};
+  template <bool kDeep>
+  [[gnu::always_inline]] void Add(const WavePackets& s, size_t i, const WavePack& k,
+                                  const WavePack& e, const WavePack& sn, const WavePack& c) {
+    WavePack cc = e, ss = e;
+    if (!kDeep) {
+      const WavePack f = P(s.q, i) / e;
+      const WavePack inv = P(s.inv_1mq, i);
+      cc = (e + f) * inv, ss = (e - f) * inv;
+    }
+    (void)k;
+    eta += P(s.a, i) * c;
+    const WavePack aw = P(s.a_omega, i), aw2 = P(s.a_omega2, i), awk = P(s.a_omega_k, i);
+    const WavePack cc_c = cc * c, cc_sn = cc * sn;
+    const WavePack ss_sn = kDeep ? cc_sn : ss * sn, ss_c = kDeep ? cc_c : ss * c;
+    uh += aw * cc_c;
+    ah += aw2 * cc_sn;
+    uu += aw * ss_sn;
+    au -= aw2 * ss_c;
+    gq += awk * ss_c;
+    gp += awk * cc_sn;
+  }
+  RawSums Raw() const {
+    RawSums r;
+    r.eta = Sum(eta), r.uh = Sum(uh), r.ah = Sum(ah), r.uu = Sum(uu), r.au = Sum(au);
+    r.d_sc = Sum(gq), r.d_cs = Sum(gp);
+    return r;
+  }
+};
+
+// the sums at p - o, p, p + o (out[0], out[1], out[2]) of a long-crested sea: a.x, a.y, a.ze
+// those of p, (ox, oy) and d_ze the offset's (all three points inside the water column)
+template <bool kDeep>
+[[gnu::always_inline]] inline void SumAbout(const WavePackets& s, const PointArgs& a, double ox,
+                                            double oy, double d_ze, RawSums out[3]) {
+  LongSums minus, centre, plus;
+  const float ze = static_cast<float>(a.ze);
+  const float dz = static_cast<float>(std::abs(d_ze));
+  const bool up = d_ze >= 0.0;  // p + o is shallower (zeta larger)
+  for (size_t i = 0; i < a.packets; ++i) {
+    const WavePack k = P(s.k, i);
+    const WavePack e = ExpNonPositiveF(k * ze);
+    const WavePack eo = ExpNonPositiveF(-(k * dz));  // e^{-k |dz|}
+    const WavePack e_deeper = e * eo, e_shallower = e / eo;
+    WavePack sn, c, sd, cd;
+    SinCosF(Phases<true>(s, i, a), &sn, &c);
+    SinCosF(OffsetPhases(s, i, ox, oy), &sd, &cd);
+    const WavePack sc = sn * cd, cs = c * sd, cc = c * cd, ss = sn * sd;
+    centre.Add<kDeep>(s, i, k, e, sn, c);
+    plus.Add<kDeep>(s, i, k, up ? e_shallower : e_deeper, sc + cs, cc - ss);
+    minus.Add<kDeep>(s, i, k, up ? e_deeper : e_shallower, sc - cs, cc + ss);
+  }
+  out[0] = minus.Raw(), out[1] = centre.Raw(), out[2] = plus.Raw();
+}
+
+// eta / r at c + o_j and c - o_j (out[2 j], out[2 j + 1]) for `pairs` offsets whose phase
+// changes are d_j = kx o_jx + ky o_jy per component
+[[gnu::always_inline]] inline void SumElevationPairs(const WavePackets& s, double x, double y,
+                                                     double t, const double (*o)[2], int pairs,
+                                                     double* out) {
+  constexpr int kMax = 4;
+  WavePack eta[2 * kMax] = {};
+  PointArgs a{};
+  a.x = x, a.y = y, a.t = t;
+  for (size_t i = 0; i < s.packets; ++i) {
+    WavePack sn, c;
+    SinCosF(Phases<false>(s, i, a), &sn, &c);
+    const WavePack amp = P(s.a, i);
+    const WavePack ac = amp * c, as = amp * sn;
+    for (int j = 0; j < pairs; ++j) {
+      WavePack sd, cd;
+      SinCosF(OffsetPhases(s, i, o[j][0], o[j][1]), &sd, &cd);
+      // a cos(th +- d) = a cos th cos d -+ a sin th sin d
+      eta[2 * j] += ac * cd - as * sd;
+      eta[2 * j + 1] += ac * cd + as * sd;
+    }
+  }
+  for (int j = 0; j < 2 * pairs; ++j) out[j] = Sum(eta[j]);
+}
+
 // the two instruction sets (packet_math.h): the x86-64 baseline (SSE2), and AVX2 where the
 // processor has it; the same operations on the same lanes, so the same bits
 template <bool kDerivative, bool kLongCrested, bool kDeep>
@@ -200,6 +299,15 @@ RawSums SumBaseline(const WavePackets& s, const PointArgs& a) {
 double ElevationBaseline(const WavePackets& s, double x, double y, double t) {
   return SumElevation(s, x, y, t);
 }
+template <bool kDeep>
+void AboutBaseline(const WavePackets& s, const PointArgs& a, double ox, double oy, double d_ze,
+                   RawSums out[3]) {
+  SumAbout<kDeep>(s, a, ox, oy, d_ze, out);
+}
+void PairsBaseline(const WavePackets& s, double x, double y, double t, const double (*o)[2],
+                   int pairs, double* out) {
+  SumElevationPairs(s, x, y, t, o, pairs, out);
+}
 #if TOWSIM_WAVES_AVX2
 template <bool kDerivative, bool kLongCrested, bool kDeep>
 __attribute__((target("avx2"))) RawSums SumAvx2(const WavePackets& s, const PointArgs& a) {
@@ -208,6 +316,17 @@ __attribute__((target("avx2"))) RawSums SumAvx2(const WavePackets& s, const Poin
 __attribute__((target("avx2"))) double ElevationAvx2(const WavePackets& s, double x, double y,
                                                      double t) {
   return SumElevation(s, x, y, t);
+}
+template <bool kDeep>
+__attribute__((target("avx2"))) void AboutAvx2(const WavePackets& s, const PointArgs& a,
+                                               double ox, double oy, double d_ze,
+                                               RawSums out[3]) {
+  SumAbout<kDeep>(s, a, ox, oy, d_ze, out);
+}
+__attribute__((target("avx2"))) void PairsAvx2(const WavePackets& s, double x, double y,
+                                               double t, const double (*o)[2], int pairs,
+                                               double* out) {
+  SumElevationPairs(s, x, y, t, o, pairs, out);
 }
 bool HaveAvx2() {
   __builtin_cpu_init();
@@ -222,6 +341,31 @@ RawSums Sums(bool avx2, const WavePackets& s, const PointArgs& a) {
 #endif
   (void)avx2;
   return SumBaseline<kDerivative, kLongCrested, kDeep>(s, a);
+}
+
+void About(bool avx2, bool deep, const WavePackets& s, const PointArgs& a, double ox, double oy,
+           double d_ze, RawSums out[3]) {
+#if TOWSIM_WAVES_AVX2
+  if (avx2) {
+    if (deep) return AboutAvx2<true>(s, a, ox, oy, d_ze, out);
+    return AboutAvx2<false>(s, a, ox, oy, d_ze, out);
+  }
+#endif
+  (void)avx2;
+  if (deep) return AboutBaseline<true>(s, a, ox, oy, d_ze, out);
+  AboutBaseline<false>(s, a, ox, oy, d_ze, out);
+}
+
+// a long-crested sea's velocity u, local acceleration du/dt and convective acceleration G u
+// from its sums, before the ramp (wave_field.h: along (cos b, sin b) and up, c_h = -P u_h +
+// Q u_up, c_up = Q u_h + P u_up; vf 0 where the kinematics are clamped: G's last column zero)
+void LongCrestedKinematics(const RawSums& m, double vf, double cos_b, double sin_b, Vec3* u,
+                           Vec3* a, Vec3* c) {
+  *u << m.uh * cos_b, m.uh * sin_b, -m.uu;
+  *a << m.ah * cos_b, m.ah * sin_b, -m.au;
+  const double gp = m.d_cs, gq = m.d_sc;
+  const double ch = -gp * m.uh + vf * gq * m.uu, cu = gq * m.uh + vf * gp * m.uu;
+  *c << ch * cos_b, ch * sin_b, -cu;
 }
 
 }  // namespace
@@ -399,12 +543,8 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   // the kinematics are clamped), and dc/ds = dG/ds u + G du/ds
   Vec3 u, a, du, da, c, dc;
   if (kLongCrested) {
-    u << m.uh * cos_b_, m.uh * sin_b_, -m.uu;
-    a << m.ah * cos_b_, m.ah * sin_b_, -m.au;
-    // along b and upward: c_h = -P u_h + Q u_up, c_up = Q u_h + P u_up
+    LongCrestedKinematics(m, vf, cos_b_, sin_b_, &u, &a, &c);
     const double gp = m.d_cs, gq = m.d_sc;
-    const double ch = -gp * m.uh + vf * gq * m.uu, cu = gq * m.uh + vf * gp * m.uu;
-    c << ch * cos_b_, ch * sin_b_, -cu;
     if (kDerivative) {
       // du_h/ds = dzeta sum awk S c - ds_along sum awk C s, du_up/ds = dzeta sum awk C s +
       // ds_along sum awk S c; da_h/ds = dzeta sum aw2k S s + ds_along sum aw2k C c,
@@ -458,6 +598,70 @@ FlowSample EnvironmentField::Flow(const Vec3& p_W, double t) const {
     f.acceleration += w.acceleration;
   }
   return f;
+}
+
+void EnvironmentField::FlowsAbout(const Vec3& p_W, const Vec3& o_W, double t,
+                                  FlowSample out[3]) const {
+  const Vec3 points[3] = {p_W - o_W, p_W, p_W + o_W};
+  double r_rate = 0.0;
+  const double r = has_waves_ ? Ramp(t, &r_rate) : 0.0;
+  // zeta of p, and of p + o: zeta + dz
+  const double zeta = -p_W.z(), dz = -o_W.z();
+  const double k_max = has_waves_ ? waves_.k_scalar.back() : 0.0;
+  // the shared sums: a long-crested sea, the three points below the mean level and above the
+  // seabed (no clamping: wave_field.h), no depth factor beyond float's range (e^-80; in finite
+  // depth F = q / E then stays finite)
+  const bool shared = has_waves_ && (r != 0.0 || r_rate != 0.0) && long_crested_ &&
+                      zeta + std::abs(dz) <= 0.0 && zeta - std::abs(dz) >= -wave_depth_ &&
+                      k_max * (std::abs(zeta) + std::abs(dz)) <= 80.0;
+  if (!shared) {
+    for (int i = 0; i < 3; ++i) out[i] = Flow(points[i], t);
+    return;
+  }
+  bool always_wet[3], all_wet = true;
+  for (int i = 0; i < 3; ++i) {
+    out[i] = Current(points[i], t);
+    always_wet[i] = -points[i].z() < -r * amplitude_sum_;
+    all_wet = all_wet && always_wet[i];
+  }
+  PointArgs pa{};
+  pa.x = p_W.x(), pa.y = p_W.y(), pa.t = t, pa.ze = zeta;
+  pa.along = pa.x * cos_b_ + pa.y * sin_b_;
+  // the shallowest point decays last: its components are summed for all three
+  pa.packets = PacketsToSum(zeta + std::abs(dz), all_wet);
+  RawSums m[3];
+  About(avx2_, deep_, waves_, pa, o_W.x(), o_W.y(), dz, m);
+  for (int i = 0; i < 3; ++i) {
+    // above the instantaneous surface the water is not there (the current alone, as Flow)
+    if (!always_wet[i] && -points[i].z() > r * m[i].eta) continue;
+    Vec3 u, a, c;
+    LongCrestedKinematics(m[i], 1.0, cos_b_, sin_b_, &u, &a, &c);
+    out[i].velocity += r * u;
+    out[i].acceleration += r * a + r_rate * u + (r * r) * c;
+  }
+}
+
+void EnvironmentField::ElevationPairs(double x, double y, const double (*o)[2], int pairs,
+                                      double t, double* out) const {
+  double rate;
+  const double r = has_waves_ ? Ramp(t, &rate) : 0.0;
+  if (r == 0.0 || pairs > 4) {
+    for (int j = 0; j < pairs; ++j) {
+      out[2 * j] = Elevation(x + o[j][0], y + o[j][1], t);
+      out[2 * j + 1] = Elevation(x - o[j][0], y - o[j][1], t);
+    }
+    return;
+  }
+#if TOWSIM_WAVES_AVX2
+  if (avx2_) {
+    PairsAvx2(waves_, x, y, t, o, pairs, out);
+  } else {
+    PairsBaseline(waves_, x, y, t, o, pairs, out);
+  }
+#else
+  PairsBaseline(waves_, x, y, t, o, pairs, out);
+#endif
+  for (int j = 0; j < 2 * pairs; ++j) out[j] *= r;
 }
 
 }  // namespace towsim::core

@@ -92,8 +92,19 @@ class EnvironmentField {
   WaveSample Waves(const Vec3& p_W, const Vec3& d_W, double t) const;
   // current + waves at p_W, t
   FlowSample Flow(const Vec3& p_W, double t) const;
+  // Flow at p_W - o_W, p_W, p_W + o_W (out[0..2]; a vehicle's hull stations): in a
+  // long-crested sea, with the three points inside the water column, the phases and depth
+  // factors of the outer two by the angle-addition and exponential rules from those of p_W and
+  // o_W (environment_field.cc); else three Flow. Equal to three Flow to float rounding.
+  void FlowsAbout(const Vec3& p_W, const Vec3& o_W, double t, FlowSample out[3]) const;
   // free-surface elevation eta(x, y, t), positive UP [m] (the surface is at z_W = -eta)
   double Elevation(double x, double y, double t) const;
+  // Elevation at (x, y) + o_j and (x, y) - o_j (out[2 j], out[2 j + 1]) for `pairs` horizontal
+  // offsets o_j (a waterline's stations): the phase of (x, y) once, each offset's change by
+  // the angle-addition rule (where |k o_j| <= pi for every component and pairs <= 4, else
+  // point by point). Equal to Elevation to float rounding.
+  void ElevationPairs(double x, double y, const double (*o)[2], int pairs, double t,
+                      double* out) const;
 
   // seabed (has_seabed()): depth of the bottom at (x, y) (its NED z) [m], unit normal into
   // the water (mostly -z) and the contact parameters (seabed_contact.h gives their meaning)

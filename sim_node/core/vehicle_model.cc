@@ -131,22 +131,29 @@ VehicleFlow SampleVehicleFlow(const VehicleParams& p, const EnvironmentField& se
   if (sea.uniform()) return UniformFlow(sea.uniform_current());
   VehicleFlow f;
   const Mat3 r_wb = q_WB.normalized().toRotationMatrix();
-  // hull stations x_B = L (xi - 1/2); the middle one (xi = 1/2) is the origin
+  // hull stations x_B = L (xi - 1/2), symmetric about the origin (xi = 1/2, the middle one):
+  // O -+ R (L (xi_2 - 1/2), 0, 0), sampled together (EnvironmentField::FlowsAbout)
   const GaussRule<VehicleFlow::kHullStations> hull = Gauss3();
-  for (int i = 0; i < VehicleFlow::kHullStations; ++i) {
-    const Vec3 x_W = p_W + r_wb * Vec3(p.length * (hull.xi[i] - 0.5), 0.0, 0.0);
-    const FlowSample fs = sea.Flow(x_W, t);
-    f.hull_acceleration_W[i] = fs.acceleration;
-    if (i == VehicleFlow::kHullStations / 2) f.origin = fs;
-  }
+  static_assert(VehicleFlow::kHullStations == 3);
+  FlowSample fs[3];
+  sea.FlowsAbout(p_W, r_wb * Vec3(p.length * (hull.xi[2] - 0.5), 0.0, 0.0), t, fs);
+  for (int i = 0; i < VehicleFlow::kHullStations; ++i) f.hull_acceleration_W[i] = fs[i].acceleration;
+  f.origin = fs[1];
   f.accelerating = true;
   if (sea.has_waves() && p.waterplane_area > 0.0) {
+    // stations x_B = waterplane point + (lw (xi - 1/2), 0, 0), two pairs symmetric about the
+    // waterplane point (xi_0 = 1 - xi_3, xi_1 = 1 - xi_2; EnvironmentField::ElevationPairs)
     const GaussRule<VehicleFlow::kWaterlineStations> wl = Gauss4();
+    static_assert(VehicleFlow::kWaterlineStations == 4);
     const double lw = WaterlineLength(p);
-    for (int i = 0; i < VehicleFlow::kWaterlineStations; ++i) {
-      const Vec3 x_W = p_W + r_wb * (p.waterplane_point_B + Vec3(lw * (wl.xi[i] - 0.5), 0, 0));
-      f.elevation[i] = sea.Elevation(x_W.x(), x_W.y(), t);
-    }
+    const Vec3 c_W = p_W + r_wb * p.waterplane_point_B;
+    const Vec3 o3 = r_wb * Vec3(lw * (wl.xi[3] - 0.5), 0, 0);
+    const Vec3 o2 = r_wb * Vec3(lw * (wl.xi[2] - 0.5), 0, 0);
+    const double offsets[2][2] = {{o3.x(), o3.y()}, {o2.x(), o2.y()}};
+    double eta[4];
+    sea.ElevationPairs(c_W.x(), c_W.y(), offsets, 2, t, eta);
+    f.elevation[3] = eta[0], f.elevation[0] = eta[1];
+    f.elevation[2] = eta[2], f.elevation[1] = eta[3];
     f.waves = true;
   }
   return f;

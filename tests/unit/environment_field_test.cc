@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -230,9 +231,67 @@ TEST(EnvironmentField, BaselineAndAvx2SumsGiveTheSameBits) {
           EXPECT_EQ(wa.d_acceleration, wb.d_acceleration) << p.transpose();
           EXPECT_EQ(a.Elevation(p.x(), p.y(), t), b.Elevation(p.x(), p.y(), t));
           EXPECT_EQ(a.Flow(p, t).acceleration, b.Flow(p, t).acceleration);
+          FlowSample fa[3], fb[3];
+          a.FlowsAbout(p, Vec3(1.5, 0.5, 0.3), t, fa);
+          b.FlowsAbout(p, Vec3(1.5, 0.5, 0.3), t, fb);
+          for (int i = 0; i < 3; ++i) EXPECT_EQ(fa[i].acceleration, fb[i].acceleration);
+          const double o[2][2] = {{1.7, 0.2}, {0.7, -0.1}};
+          double ea[4], eb[4];
+          a.ElevationPairs(p.x(), p.y(), o, 2, t, ea);
+          b.ElevationPairs(p.x(), p.y(), o, 2, t, eb);
+          for (int i = 0; i < 4; ++i) EXPECT_EQ(ea[i], eb[i]);
         }
       }
     }
+  }
+}
+
+// FlowsAbout and ElevationPairs (a vehicle's hull and waterline stations) share the centre's
+// phase and depth factor among symmetric points: equal to the point-by-point sums to float
+// rounding (KinematicsTol), and to them exactly where they fall back to them (a short-crested
+// sea; a station above the mean level)
+TEST(EnvironmentField, PointsAboutACentreAreThePointByPointFlows) {
+  for (const double depth : {kInf, 60.0}) {
+    Environment env = JonswapSea(depth);
+    env.current = CurrentField::Uniform(Vec3(0.4, -0.1, 0.0));
+    const EnvironmentField sea(env);
+    const double tol = KinematicsTol(env.waves);
+    // an 8.2 m hull 3.5 m down pitched 5 deg, a 3.3 m one 17 m down, a hull reaching deep
+    const Vec3 o1 = 0.387 * 8.2 * Vec3(std::cos(0.09), 0.1, std::sin(0.09));
+    for (const auto& [p, o] : {std::pair{Vec3(3, -2, 3.5), o1},
+                               std::pair{Vec3(-40, 11, 17.0), Vec3(1.2, -0.4, -0.1)},
+                               std::pair{Vec3(5, 5, 30.0), Vec3(2.0, 1.0, 6.0)}}) {
+      for (const double t : {12.0, 55.5}) {
+        FlowSample about[3];
+        sea.FlowsAbout(p, o, t, about);
+        const Vec3 points[3] = {p - o, p, p + o};
+        for (int i = 0; i < 3; ++i) {
+          const FlowSample one = sea.Flow(points[i], t);
+          EXPECT_LT((about[i].velocity - one.velocity).norm(), tol) << p.transpose() << " " << i;
+          EXPECT_LT((about[i].acceleration - one.acceleration).norm(), tol)
+              << p.transpose() << " " << i;
+          const WaveKinematics ref = env.waves.Kinematics(points[i], t);
+          EXPECT_LT((about[i].velocity - Vec3(0.4, -0.1, 0.0) - ref.velocity).norm(), tol);
+        }
+        const double offsets[2][2] = {{o.x(), o.y()}, {0.3 * o.x(), -0.5 * o.y()}};
+        double eta[4];
+        sea.ElevationPairs(p.x(), p.y(), offsets, 2, t, eta);
+        for (int j = 0; j < 2; ++j) {
+          for (const int sign : {1, -1}) {
+            const double x = p.x() + sign * offsets[j][0], y = p.y() + sign * offsets[j][1];
+            const double e = eta[2 * j + (sign > 0 ? 0 : 1)];
+            EXPECT_NEAR(e, sea.Elevation(x, y, t), ElevationTol(env.waves));
+            EXPECT_NEAR(e, env.waves.Elevation(x, y, t), ElevationTol(env.waves));
+          }
+        }
+      }
+    }
+    // a station above the mean level (a crest may reach it): point by point, exactly
+    FlowSample about[3];
+    const Vec3 p(1, 2, 0.5), o(2.0, 0.0, -1.0);
+    sea.FlowsAbout(p, o, 20.0, about);
+    EXPECT_EQ(about[2].velocity, sea.Flow(p + o, 20.0).velocity);
+    EXPECT_EQ(about[0].acceleration, sea.Flow(p - o, 20.0).acceleration);
   }
 }
 
