@@ -58,7 +58,7 @@ ElementWaves NodeWaves(const WaveSample& start, const WaveSample& end);
 // the node samples are held over a step (environment_field.h), so these are formed once per
 // step (StepSampler::SampleWaves), not at every Newton evaluation
 struct GaussWaves {
-  Mat35 velocity, acceleration;  // column g: Gauss point g
+  Mat35 velocity = Mat35::Zero(), acceleration = Mat35::Zero();  // column g: Gauss point g
 };
 GaussWaves WavesAtGaussPoints(const AncfElement& element, const ElementWaves& waves);
 

@@ -472,7 +472,7 @@ double EnvironmentField::Elevation(double x, double y, double t) const {
   double rate;
   const double r = Ramp(t, &rate);
   if (r == 0.0) return 0.0;
-    // eta = r sum a cos th, four components a packet
+    // eta = r sum a cos th, eight components a packet
 #if TOWSIM_WAVES_AVX2
   if (avx2_) return r * ElevationAvx2(waves_, x, y, t);
 #endif
@@ -533,7 +533,7 @@ WaveSample EnvironmentField::SumWaves(const Vec3& p_W, const Vec3& d_W, double t
   // long-crested: th = k s + phase - w t with s = x cos b + y sin b, and dth/ds = k ds along d
   pa.along = pa.x * cos_b_ + pa.y * sin_b_;
   pa.d_along = pa.dx * cos_b_ + pa.dy * sin_b_;
-  // four components a packet; the horizontal parts are summed along the direction of travel
+  // eight components a packet; the horizontal parts are summed along the direction of travel
   // (long-crested) or resolved per component
   const RawSums m = Sums<kDerivative, kLongCrested, kDeep>(avx2_, waves_, pa);
   // above the instantaneous surface (zeta > eta) the water is not there
