@@ -212,15 +212,14 @@ template <bool kDerivative, bool kLongCrested, bool kDeep>
 struct LongSums {
   WavePack eta = {}, uh = {}, ah = {}, uu = {}, au = {}, gq = {}, gp = {};
   template <bool kDeep>
-  [[gnu::always_inline]] void Add(const WavePackets& s, size_t i, const WavePack& k,
-                                  const WavePack& e, const WavePack& sn, const WavePack& c) {
+  [[gnu::always_inline]] void Add(const WavePackets& s, size_t i, const WavePack& e,
+                                  const WavePack& sn, const WavePack& c) {
     WavePack cc = e, ss = e;
     if (!kDeep) {
       const WavePack f = P(s.q, i) / e;
       const WavePack inv = P(s.inv_1mq, i);
       cc = (e + f) * inv, ss = (e - f) * inv;
     }
-    (void)k;
     eta += P(s.a, i) * c;
     const WavePack aw = P(s.a_omega, i), aw2 = P(s.a_omega2, i), awk = P(s.a_omega_k, i);
     const WavePack cc_c = cc * c, cc_sn = cc * sn;
@@ -258,9 +257,9 @@ template <bool kDeep>
     SinCosF(Phases<true>(s, i, a), &sn, &c);
     SinCosF(OffsetPhases(s, i, ox, oy), &sd, &cd);
     const WavePack sc = sn * cd, cs = c * sd, cc = c * cd, ss = sn * sd;
-    centre.Add<kDeep>(s, i, k, e, sn, c);
-    plus.Add<kDeep>(s, i, k, up ? e_shallower : e_deeper, sc + cs, cc - ss);
-    minus.Add<kDeep>(s, i, k, up ? e_deeper : e_shallower, sc - cs, cc + ss);
+    centre.Add<kDeep>(s, i, e, sn, c);
+    plus.Add<kDeep>(s, i, up ? e_shallower : e_deeper, sc + cs, cc - ss);
+    minus.Add<kDeep>(s, i, up ? e_deeper : e_shallower, sc - cs, cc + ss);
   }
   out[0] = minus.Raw(), out[1] = centre.Raw(), out[2] = plus.Raw();
 }
@@ -609,11 +608,12 @@ void EnvironmentField::FlowsAbout(const Vec3& p_W, const Vec3& o_W, double t,
   const double zeta = -p_W.z(), dz = -o_W.z();
   const double k_max = has_waves_ ? waves_.k_scalar.back() : 0.0;
   // the shared sums: a long-crested sea, the three points below the mean level and above the
-  // seabed (no clamping: wave_field.h), no depth factor beyond float's range (e^-80; in finite
-  // depth F = q / E then stays finite)
+  // seabed (no clamping: wave_field.h), the offset's depth factor within float's range (e^-80:
+  // E / e^{-k |dz|} stays finite) and in finite depth every point's (F = q / E stays finite)
   const bool shared = has_waves_ && (r != 0.0 || r_rate != 0.0) && long_crested_ &&
                       zeta + std::abs(dz) <= 0.0 && zeta - std::abs(dz) >= -wave_depth_ &&
-                      k_max * (std::abs(zeta) + std::abs(dz)) <= 80.0;
+                      k_max * std::abs(dz) <= 80.0 &&
+                      (deep_ || k_max * (std::abs(zeta) + std::abs(dz)) <= 80.0);
   if (!shared) {
     for (int i = 0; i < 3; ++i) out[i] = Flow(points[i], t);
     return;

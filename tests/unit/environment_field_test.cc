@@ -256,11 +256,14 @@ TEST(EnvironmentField, PointsAboutACentreAreThePointByPointFlows) {
     env.current = CurrentField::Uniform(Vec3(0.4, -0.1, 0.0));
     const EnvironmentField sea(env);
     const double tol = KinematicsTol(env.waves);
-    // an 8.2 m hull 3.5 m down pitched 5 deg, a 3.3 m one 17 m down, a hull reaching deep
+    // an 8.2 m hull 3.5 m down pitched 5 deg, a 3.3 m one 17 m down, a hull reaching deep, one
+    // 90 m down (deep water: the shortest components' depth factors underflow float; 60 m:
+    // below the bed, point by point)
     const Vec3 o1 = 0.387 * 8.2 * Vec3(std::cos(0.09), 0.1, std::sin(0.09));
     for (const auto& [p, o] : {std::pair{Vec3(3, -2, 3.5), o1},
                                std::pair{Vec3(-40, 11, 17.0), Vec3(1.2, -0.4, -0.1)},
-                               std::pair{Vec3(5, 5, 30.0), Vec3(2.0, 1.0, 6.0)}}) {
+                               std::pair{Vec3(5, 5, 30.0), Vec3(2.0, 1.0, 6.0)},
+                               std::pair{Vec3(0, 0, 90.0), Vec3(1.5, 0.5, 2.0)}}) {
       for (const double t : {12.0, 55.5}) {
         FlowSample about[3];
         sea.FlowsAbout(p, o, t, about);
