@@ -2,11 +2,13 @@
 """The Newton tolerance against the discretisation error, on every shipped scene.
 
     /usr/bin/python3 bench/tolerance_accuracy.py [--build DIR] [--sim-node PATH]
-        [--out DIR] [--table FILE] [--scenes a,b,...] [--duration S]
+        [--out DIR] [--table FILE] [--scenes a,b,...] [--scene-files A.yaml,B.yaml,...]
+        [--duration S]
         [--tolerances 1e-4,1e-5,...] [--truth 1e-12] [--factor 4] [--ref-limit S]
         [--ratio 0.10] [--set KEY=VALUE ...]
 
-For each scene of config/scenes/*.yaml (or --scenes), over the first --duration seconds (default
+For each scene of config/scenes/*.yaml (or --scenes, or the files of --scene-files, e.g.
+bench/reference_scenes/*.yaml: the reference tests' cases, named by their file names), over the first --duration seconds (default
 60, or the scene's own duration if shorter), offline (sim_node --mode offline --csv DIR):
 
   truth       the scene's own elements and step h at integrator.tolerance = --truth (1e-12); if
@@ -234,6 +236,7 @@ def main():
                     help="CSV directories and logs of the runs")
     ap.add_argument("--table", help="Markdown table file (default OUT/table.md)")
     ap.add_argument("--scenes", help="comma-separated scene names (default every shipped scene)")
+    ap.add_argument("--scene-files", help="comma-separated scene file paths (instead of --scenes)")
     ap.add_argument("--duration", type=float, default=60.0, help="simulated seconds per run")
     ap.add_argument("--tolerances", default=DEFAULT_TOLERANCES)
     ap.add_argument("--truth", type=float, default=1e-12, help="tolerance of truth and reference")
@@ -251,7 +254,18 @@ def main():
         fail(f"no sim_node at {sim_node} (build it: cmake --build {a.build} --target sim_node, "
              "or give --sim-node)")
     tolerances = [float(t) for t in a.tolerances.split(",")]
-    if a.scenes:
+    if a.scenes and a.scene_files:
+        fail("give --scenes or --scene-files, not both")
+    if a.scene_files:
+        paths = [os.path.abspath(p) for p in a.scene_files.split(",") if p]
+        for p in paths:
+            if not os.path.isfile(p):
+                fail(f"--scene-files: no scene file {p}")
+        names = [os.path.splitext(os.path.basename(p))[0] for p in paths]
+        if len(set(names)) != len(names):
+            fail("--scene-files: two files with the same name (the runs' directories and the "
+                 "table's rows are named by it)")
+    elif a.scenes:
         paths = [os.path.join(ROOT, "config", "scenes", s + ".yaml") for s in a.scenes.split(",")]
     else:
         paths = sorted(glob.glob(os.path.join(ROOT, "config", "scenes", "*.yaml")))
