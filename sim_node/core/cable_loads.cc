@@ -1,7 +1,5 @@
 #include "core/cable_loads.h"
 
-#include <cmath>
-
 #include "core/cable_drag.h"
 #include "core/seabed_contact.h"
 
@@ -19,9 +17,8 @@ namespace {
 
 // the water at Gauss point g of a sea that varies in space or time, at r_p and t: the current
 // there (and its shear dU/dz where asked) and the waves interpolated from the nodes
-[[gnu::always_inline]] inline FlowSample FlowAt(const EnvironmentField& sea, int g,
-                                                const Vec3& r_p, double t,
-                                                const GaussWaves* waves, Vec3* shear) {
+[[gnu::always_inline]] inline FlowSample FlowAt(const EnvironmentField& sea, int g, const Vec3& r_p,
+                                                double t, const GaussWaves* waves, Vec3* shear) {
   FlowSample f;
   if (sea.steady_uniform_current())
     f.velocity = sea.uniform_current();  // waves only: no look-up per point
@@ -218,14 +215,8 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
   element.InterpolateFields(e, e_dot, e_ddot, LoadFields(ctx, sea, bed_in_reach), &fields);
   GaussWaves at_points;
   if (waves) at_points = WavesAtGaussPoints(element, *waves);
-  return ElementLoadResidual(element, ctx, sea, t, waves ? &at_points : nullptr, fields, scale,
-                             jac, bed_in_reach);
-}
-
-bool ClearOfSeabed(const EnvironmentField& sea, const Vec12& e, double l) {
-  if (!sea.has_seabed()) return false;
-  const double deepest = DeepestBound(e, l);
-  return deepest + 1e-9 * (std::abs(deepest) + l) < sea.SeabedShallowest();
+  return ElementLoadResidual(element, ctx, sea, t, waves ? &at_points : nullptr, fields, scale, jac,
+                             bed_in_reach);
 }
 
 unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea, bool bed_in_reach) {
@@ -245,10 +236,14 @@ Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ct
   const bool sea_code =
       !sea.uniform() || sea.has_seabed() || ctx.tangential_added_mass_per_length > 0.0;
   if (jac)
-    return sea_code ? Residual<true, true>(element, ctx, sea, t, waves, fields, scale, jac, bed_in_reach)
-                    : Residual<false, true>(element, ctx, sea, t, waves, fields, scale, jac, bed_in_reach);
-  return sea_code ? Residual<true, false>(element, ctx, sea, t, waves, fields, scale, nullptr, bed_in_reach)
-                  : Residual<false, false>(element, ctx, sea, t, waves, fields, scale, nullptr, bed_in_reach);
+    return sea_code
+               ? Residual<true, true>(element, ctx, sea, t, waves, fields, scale, jac, bed_in_reach)
+               : Residual<false, true>(element, ctx, sea, t, waves, fields, scale, jac,
+                                       bed_in_reach);
+  return sea_code ? Residual<true, false>(element, ctx, sea, t, waves, fields, scale, nullptr,
+                                          bed_in_reach)
+                  : Residual<false, false>(element, ctx, sea, t, waves, fields, scale, nullptr,
+                                           bed_in_reach);
 }
 
 }  // namespace towsim::core

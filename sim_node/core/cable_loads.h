@@ -25,6 +25,8 @@
 // (ElementWaves; environment_field.h says why). Loads are per unit unstretched length x; the
 // element length comes from the element (it may differ between elements).
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "core/ancf_element.h"
@@ -86,8 +88,13 @@ unsigned LoadFields(const CableLoadContext& ctx, const EnvironmentField& sea,
                     bool bed_in_reach = true);
 // no point of the element (coordinates e, length l) reaches the shallowest seabed: its
 // DeepestBound is above it, by a margin that covers the rounding of r at the Gauss points
-// (false without a seabed: there is nothing to reach)
-bool ClearOfSeabed(const EnvironmentField& sea, const Vec12& e, double l);
+// (false without a seabed: there is nothing to reach; inline, so that a scene without one
+// pays a flag's test per element)
+inline bool ClearOfSeabed(const EnvironmentField& sea, const Vec12& e, double l) {
+  if (!sea.has_seabed()) return false;
+  const double deepest = DeepestBound(e, l);
+  return deepest + 1e-9 * (std::abs(deepest) + l) < sea.SeabedShallowest();
+}
 // the same from the element coordinates and the waves at its nodes (both interpolated here)
 Vec12 ElementLoadResidual(const AncfElement& element, const CableLoadContext& ctx,
                           const EnvironmentField& sea, double t, const ElementWaves* waves,

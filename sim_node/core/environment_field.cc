@@ -269,8 +269,7 @@ template <bool kDeep>
 [[gnu::always_inline]] inline void SumElevationPairs(const WavePackets& s, double x, double y,
                                                      double t, const double (*o)[2], int pairs,
                                                      double* out) {
-  constexpr int kMax = 4;
-  WavePack eta[2 * kMax] = {};
+  WavePack eta[2 * EnvironmentField::kMaxElevationPairs] = {};
   PointArgs a{};
   a.x = x, a.y = y, a.t = t;
   for (size_t i = 0; i < s.packets; ++i) {
@@ -317,14 +316,12 @@ __attribute__((target("avx2"))) double ElevationAvx2(const WavePackets& s, doubl
   return SumElevation(s, x, y, t);
 }
 template <bool kDeep>
-__attribute__((target("avx2"))) void AboutAvx2(const WavePackets& s, const PointArgs& a,
-                                               double ox, double oy, double d_ze,
-                                               RawSums out[3]) {
+__attribute__((target("avx2"))) void AboutAvx2(const WavePackets& s, const PointArgs& a, double ox,
+                                               double oy, double d_ze, RawSums out[3]) {
   SumAbout<kDeep>(s, a, ox, oy, d_ze, out);
 }
-__attribute__((target("avx2"))) void PairsAvx2(const WavePackets& s, double x, double y,
-                                               double t, const double (*o)[2], int pairs,
-                                               double* out) {
+__attribute__((target("avx2"))) void PairsAvx2(const WavePackets& s, double x, double y, double t,
+                                               const double (*o)[2], int pairs, double* out) {
   SumElevationPairs(s, x, y, t, o, pairs, out);
 }
 bool HaveAvx2() {
@@ -641,11 +638,11 @@ void EnvironmentField::FlowsAbout(const Vec3& p_W, const Vec3& o_W, double t,
   }
 }
 
-void EnvironmentField::ElevationPairs(double x, double y, const double (*o)[2], int pairs,
-                                      double t, double* out) const {
+void EnvironmentField::ElevationPairs(double x, double y, const double (*o)[2], int pairs, double t,
+                                      double* out) const {
   double rate;
   const double r = has_waves_ ? Ramp(t, &rate) : 0.0;
-  if (r == 0.0 || pairs > 4) {
+  if (r == 0.0 || pairs > kMaxElevationPairs) {
     for (int j = 0; j < pairs; ++j) {
       out[2 * j] = Elevation(x + o[j][0], y + o[j][1], t);
       out[2 * j + 1] = Elevation(x - o[j][0], y - o[j][1], t);

@@ -101,10 +101,11 @@ class EnvironmentField {
   double Elevation(double x, double y, double t) const;
   // Elevation at (x, y) + o_j and (x, y) - o_j (out[2 j], out[2 j + 1]) for `pairs` horizontal
   // offsets o_j (a waterline's stations): the phase of (x, y) once, each offset's change by
-  // the angle-addition rule (where |k o_j| <= pi for every component and pairs <= 4, else
-  // point by point). Equal to Elevation to float rounding.
+  // the angle-addition rule (at most kMaxElevationPairs pairs, else point by point). Equal to
+  // Elevation to float rounding.
   void ElevationPairs(double x, double y, const double (*o)[2], int pairs, double t,
                       double* out) const;
+  static constexpr int kMaxElevationPairs = 4;  // more: point by point
 
   // seabed (has_seabed()): depth of the bottom at (x, y) (its NED z) [m], unit normal into
   // the water (mostly -z) and the contact parameters (seabed_contact.h gives their meaning)

@@ -58,8 +58,8 @@ typedef float PackF4 __attribute__((vector_size(16)));
 
 // the lanes of a PackF8 added: lane j to lane j + 4 in float, then the four sums in double
 [[gnu::always_inline]] inline double Sum(const PackF8& p) {
-  const PackF4 half = __builtin_shufflevector(p, p, 0, 1, 2, 3) +
-                      __builtin_shufflevector(p, p, 4, 5, 6, 7);
+  const PackF4 half =
+      __builtin_shufflevector(p, p, 0, 1, 2, 3) + __builtin_shufflevector(p, p, 4, 5, 6, 7);
   return Sum(__builtin_convertvector(half, Pack4));
 }
 
@@ -101,8 +101,8 @@ constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
   using Bits = PackBitsF8;
   using packet_internal::kRoundShiftF;
   constexpr float kTwoOverPi = 0.636619772f;
-  constexpr float kPiOver2Hi = 1.5703125f;                // 8 significant bits: n pi/2 exact
-  constexpr float kPiOver2Lo = 4.8382679e-4f;             // pi/2 - kPiOver2Hi
+  constexpr float kPiOver2Hi = 1.5703125f;     // 8 significant bits: n pi/2 exact
+  constexpr float kPiOver2Lo = 4.8382679e-4f;  // pi/2 - kPiOver2Hi
   const PackF8 m = x * kTwoOverPi + kRoundShiftF;
   const PackF8 n = m - kRoundShiftF;
   const Bits quadrant = (Bits)(m);
@@ -135,7 +135,7 @@ constexpr float kRoundShiftF = 12582912.0f;  // 1.5 * 2^23
   using Bits = PackBitsF8;
   using packet_internal::kRoundShiftF;
   constexpr float kInvLn2 = 1.44269504f;
-  constexpr float kLn2Hi = 0.693145752f;   // 16 significant bits: n ln2 exact
+  constexpr float kLn2Hi = 0.693145752f;    // 16 significant bits: n ln2 exact
   constexpr float kLn2Lo = 1.42860677e-6f;  // ln 2 - kLn2Hi
   const PackF8 m = y * kInvLn2 + kRoundShiftF;
   const PackF8 n = m - kRoundShiftF;

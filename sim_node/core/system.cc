@@ -349,7 +349,8 @@ void System::AssembleCable(int cable_index, const SystemPoint& x, const StepInpu
     if (waves) {
       const int i = part.node_base + e;
       if (part.winch && e == 0) {
-        drum_waves = WavesAtGaussPoints(element, NodeWaves(in.waves.nodes[i], in.waves.nodes[i + 1]));
+        drum_waves =
+            WavesAtGaussPoints(element, NodeWaves(in.waves.nodes[i], in.waves.nodes[i + 1]));
         w = &drum_waves;
       } else {
         w = &in.waves.elements[i];
@@ -357,8 +358,7 @@ void System::AssembleCable(int cable_index, const SystemPoint& x, const StepInpu
     }
     // an element clear of the seabed looks for no contact (exact: cable_loads.h)
     const bool bed_in_reach =
-        part.state_dependent_loads &&
-        (!sea_.has_seabed() || !ClearOfSeabed(sea_, ee, element.props().length));
+        part.state_dependent_loads && !ClearOfSeabed(sea_, ee, element.props().length);
     element.InterpolateFields(ee, ed, ea, bed_in_reach ? part.load_fields : part.load_fields_clear,
                               &fields);
     element.InternalForce(fields, &force, jac ? &k : nullptr, jac ? &c : nullptr);

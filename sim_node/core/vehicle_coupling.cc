@@ -182,8 +182,7 @@ StepStatus VehicleCoupling::Step(State* state, const std::vector<VehicleCommand>
     f0[a] = EndForce(system_, start_, attachments_[a].end);
     const Vec3& f_1 = history.f_previous[a];
     linear_[a] = predict ? Vec3(f0[a] + (h / history.h_previous) * (f0[a] - f_1)) : f0[a];
-    quadratic_[a] =
-        quadratic ? Vec3(3.0 * f0[a] - 3.0 * f_1 + history.f_second[a]) : linear_[a];
+    quadratic_[a] = quadratic ? Vec3(3.0 * f0[a] - 3.0 * f_1 + history.f_second[a]) : linear_[a];
     f1[a] = quadratic && history.error_quadratic < kQuadraticMargin * history.error_linear
                 ? quadratic_[a]
                 : linear_[a];

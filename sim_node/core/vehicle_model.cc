@@ -137,7 +137,8 @@ VehicleFlow SampleVehicleFlow(const VehicleParams& p, const EnvironmentField& se
   static_assert(VehicleFlow::kHullStations == 3);
   FlowSample fs[3];
   sea.FlowsAbout(p_W, r_wb * Vec3(p.length * (hull.xi[2] - 0.5), 0.0, 0.0), t, fs);
-  for (int i = 0; i < VehicleFlow::kHullStations; ++i) f.hull_acceleration_W[i] = fs[i].acceleration;
+  for (int i = 0; i < VehicleFlow::kHullStations; ++i)
+    f.hull_acceleration_W[i] = fs[i].acceleration;
   f.origin = fs[1];
   f.accelerating = true;
   if (sea.has_waves() && p.waterplane_area > 0.0) {

@@ -52,7 +52,8 @@ constexpr double kFloatRounding = 5.960464477539063e-8;  // 2^-24
 constexpr double kFloatRoundings = 8.0;
 double KinematicsTol(const WaveField& waves) {
   double s = 0.0;
-  for (const WaveComponent& c : waves.components()) s += c.amplitude * (c.omega + c.omega * c.omega);
+  for (const WaveComponent& c : waves.components())
+    s += c.amplitude * (c.omega + c.omega * c.omega);
   return kFloatRoundings * kFloatRounding * s;  // [m/s], [m/s^2]
 }
 double ElevationTol(const WaveField& waves) {
@@ -73,8 +74,8 @@ void ExpectDerivativesAreTheFiniteDifferences(const WaveField& reference, const 
   const WaveKinematics wm = reference.Kinematics(p - kStep * d, t);
   EXPECT_LT((w.d_velocity - (wp.velocity - wm.velocity) / (2 * kStep)).norm(), kDerivativeAbsTol)
       << p.transpose();
-  EXPECT_LT((w.d_acceleration - (wp.material_acceleration - wm.material_acceleration) /
-                                    (2 * kStep)).norm(),
+  EXPECT_LT((w.d_acceleration - (wp.material_acceleration - wm.material_acceleration) / (2 * kStep))
+                .norm(),
             kDerivativeAbsTol)
       << p.transpose();
 }
@@ -103,8 +104,10 @@ TEST(EnvironmentField, WavesAreTheWaveFieldsKinematics) {
       }
     }
   }
-  std::printf("float sums against the double reference: largest difference %.2e m/s (m/s^2), "
-              "bound %.2e\n", worst, KinematicsTol(JonswapSea(kInf).waves));
+  std::printf(
+      "float sums against the double reference: largest difference %.2e m/s (m/s^2), "
+      "bound %.2e\n",
+      worst, KinematicsTol(JonswapSea(kInf).waves));
 }
 
 TEST(EnvironmentField, WaveDerivativeAlongADirectionIsTheFiniteDifference) {
@@ -260,10 +263,10 @@ TEST(EnvironmentField, PointsAboutACentreAreThePointByPointFlows) {
     // 90 m down (deep water: the shortest components' depth factors underflow float; 60 m:
     // below the bed, point by point)
     const Vec3 o1 = 0.387 * 8.2 * Vec3(std::cos(0.09), 0.1, std::sin(0.09));
-    for (const auto& [p, o] : {std::pair{Vec3(3, -2, 3.5), o1},
-                               std::pair{Vec3(-40, 11, 17.0), Vec3(1.2, -0.4, -0.1)},
-                               std::pair{Vec3(5, 5, 30.0), Vec3(2.0, 1.0, 6.0)},
-                               std::pair{Vec3(0, 0, 90.0), Vec3(1.5, 0.5, 2.0)}}) {
+    for (const auto& [p, o] :
+         {std::pair{Vec3(3, -2, 3.5), o1}, std::pair{Vec3(-40, 11, 17.0), Vec3(1.2, -0.4, -0.1)},
+          std::pair{Vec3(5, 5, 30.0), Vec3(2.0, 1.0, 6.0)},
+          std::pair{Vec3(0, 0, 90.0), Vec3(1.5, 0.5, 2.0)}}) {
       for (const double t : {12.0, 55.5}) {
         FlowSample about[3];
         sea.FlowsAbout(p, o, t, about);

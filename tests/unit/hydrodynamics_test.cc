@@ -195,11 +195,9 @@ TEST(CableLoads, TangentialAddedMassActsAlongTheCable) {
   EXPECT_LT(r.norm(), 1e-12);
 }
 
-void CheckLoadJacobians(const Environment& env, const ElementWaves* waves,
-                        const CableDragLaw& law = {}, double tangential_added_mass = 0.0) {
-  ElementProperties p;
-  p.length = 10.0;
-  const AncfElement el(p);
+// the paper cable's loads (drag, added mass, fluid inertia, weight in water) with a drag law
+// and a tangential added mass
+CableLoadContext PaperCableLoads(const CableDragLaw& law = {}, double tangential_added_mass = 0.0) {
   CableLoadContext ctx;
   ctx.diameter = 0.041;
   ctx.drag = true;
@@ -207,12 +205,26 @@ void CheckLoadJacobians(const Environment& env, const ElementWaves* waves,
   ctx.tangential_added_mass_per_length = tangential_added_mass;
   ctx.added_mass_per_length = 1.35;
   ctx.fluid_inertia_per_length = 1.35 + 1.1;
-  const EnvironmentField sea(env);
   ctx.weight_per_length = Eigen::Vector3d(0, 0, 3.5);
+  return ctx;
+}
+
+// element velocities and accelerations of no special symmetry
+void SomeRates(Vec12* ed, Vec12* edd) {
+  *ed << 1.0, -0.5, 2.0, 0.1, 0.0, 0.05, 1.5, 0.2, -1.0, 0.0, 0.1, 0.0;
+  *edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
+}
+
+void CheckLoadJacobians(const Environment& env, const ElementWaves* waves,
+                        const CableDragLaw& law = {}, double tangential_added_mass = 0.0) {
+  ElementProperties p;
+  p.length = 10.0;
+  const AncfElement el(p);
+  const CableLoadContext ctx = PaperCableLoads(law, tangential_added_mass);
+  const EnvironmentField sea(env);
   Vec12 e, ed, edd;
   e << 0.1, -0.2, 0.3, 0.95, 0.2, -0.1, 9.7, 1.1, -0.8, 0.9, 0.05, -0.25;
-  ed << 1.0, -0.5, 2.0, 0.1, 0.0, 0.05, 1.5, 0.2, -1.0, 0.0, 0.1, 0.0;
-  edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
+  SomeRates(&ed, &edd);
   ElementLoadJacobians jac;
   const Vec12 r0 = ElementLoadResidual(el, ctx, sea, 0.3, waves, e, ed, edd, 1.0, &jac);
   // one load law with and without the Jacobians (cable_loads.cc): the same residual to the bit
@@ -335,15 +347,9 @@ TEST(CableLoads, AnElementClearOfTheSeabedLooksForNoContact) {
   ElementProperties p;
   p.length = 10.0;
   const AncfElement el(p);
-  CableLoadContext ctx;
-  ctx.diameter = 0.041;
-  ctx.drag = true;
-  ctx.added_mass_per_length = 1.35;
-  ctx.fluid_inertia_per_length = 1.35 + 1.1;
-  ctx.weight_per_length = Eigen::Vector3d(0, 0, 3.5);
+  const CableLoadContext ctx = PaperCableLoads();
   Vec12 ed, edd;
-  ed << 1.0, -0.5, 2.0, 0.1, 0.0, 0.05, 1.5, 0.2, -1.0, 0.0, 0.1, 0.0;
-  edd << 0.2, 0.1, -0.3, 0.0, 0.01, 0.0, 0.5, -0.2, 0.1, 0.02, 0.0, 0.01;
+  SomeRates(&ed, &edd);
   // 3 m above the bed at its deepest control point, r_1 - l/3 r'_1: 16 + 10/3 0.3 = 17 m
   Vec12 above;
   above << 0.0, 0.0, 15.0, 0.98, 0.0, 0.2, 9.8, 0.0, 16.0, 0.98, 0.0, -0.3;
@@ -374,10 +380,10 @@ TEST(CableLoads, AnElementClearOfTheSeabedLooksForNoContact) {
   Environment no_bed;
   const EnvironmentField calm(no_bed);
   EXPECT_FALSE(ClearOfSeabed(calm, sagging, 10.0));  // nothing to be clear of
-  const Vec12 on_bed = ElementLoadResidual(el, ctx, sea, 0.0, nullptr, sagging, ed, edd, 1.0,
-                                           nullptr);
-  const Vec12 free = ElementLoadResidual(el, ctx, calm, 0.0, nullptr, sagging, ed, edd, 1.0,
-                                         nullptr);
+  const Vec12 on_bed =
+      ElementLoadResidual(el, ctx, sea, 0.0, nullptr, sagging, ed, edd, 1.0, nullptr);
+  const Vec12 free =
+      ElementLoadResidual(el, ctx, calm, 0.0, nullptr, sagging, ed, edd, 1.0, nullptr);
   EXPECT_GT((on_bed - free).norm(), 1.0);  // the contact load is there [N]
 }
 

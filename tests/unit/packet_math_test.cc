@@ -31,7 +31,8 @@ TEST(PacketMath, PhasesReducedInDoubleThenFloatSinCosMatchTheLibrary) {
   for (const double range : {1.0, 10.0, 1e3, 1e5}) {
     for (int i = 0; i < 5000; ++i) {
       Pack4 lo, hi;
-      for (int l = 0; l < 4; ++l) lo[l] = Draw(&rng, -range, range), hi[l] = Draw(&rng, -range, range);
+      for (int l = 0; l < 4; ++l)
+        lo[l] = Draw(&rng, -range, range), hi[l] = Draw(&rng, -range, range);
       const Pack4 rlo = ReduceTwoPi(lo), rhi = ReduceTwoPi(hi);
       for (int l = 0; l < 4; ++l) {
         for (const auto& [x, r] : {std::pair{lo[l], rlo[l]}, std::pair{hi[l], rhi[l]}}) {
@@ -53,8 +54,8 @@ TEST(PacketMath, PhasesReducedInDoubleThenFloatSinCosMatchTheLibrary) {
   }
   std::printf("ReduceTwoPi + SinCosF: largest |error| %.2e\n", worst);
   // exact values at the quadrant boundaries of [-pi, pi]
-  const PackF8 q = {0.0f, 1.5707964f, -1.5707964f, 3.1415927f, -3.1415927f, 0.7853982f,
-                    -2.3561945f, 2.3561945f};
+  const PackF8 q = {0.0f,        1.5707964f, -1.5707964f, 3.1415927f,
+                    -3.1415927f, 0.7853982f, -2.3561945f, 2.3561945f};
   PackF8 s, c;
   SinCosF(q, &s, &c);
   for (int l = 0; l < 8; ++l) {
@@ -81,7 +82,8 @@ TEST(PacketMath, ExpNonPositiveFMatchesTheLibrary) {
     }
   }
   std::printf("ExpNonPositiveF: largest relative error %.2e\n", worst);
-  const PackF8 e = ExpNonPositiveF(PackF8{0.0f, -88.0f, -1e30f, -0.6931472f, -87.0f, -1.0f, -2.0f, -3.0f});
+  const PackF8 e =
+      ExpNonPositiveF(PackF8{0.0f, -88.0f, -1e30f, -0.6931472f, -87.0f, -1.0f, -2.0f, -3.0f});
   EXPECT_EQ(e[0], 1.0f);
   EXPECT_EQ(e[1], 0.0f);  // below -87: zero
   EXPECT_EQ(e[2], 0.0f);
