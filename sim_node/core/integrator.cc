@@ -39,6 +39,8 @@ Integrator::Integrator(const System& system, StepInputs* inputs)
   rhs_.setZero(n + m);
   dq_.setZero(n);
   dl_.setZero(m);
+  dq_last_.setZero(n);
+  dl_last_.setZero(m);
   backup_.resize(system.model().integrator.max_substep_level + 1);
   sampler_.Resize(inputs_);
   waves_ = system.sea().has_waves();
@@ -115,6 +117,8 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
   // a re-measurement: the first increment alone may not be accepted, its rate is too old
   bool remeasure = kept.theta_age > rate_age_limit;
   double dq_prev = 0.0;
+  double residual_prev = 0.0;  // |r|_inf where the last increment was taken
+  int formed_at = 0;  // the iteration this step formed the kept matrix at (0: none)
   for (int it = 1; it <= settings.max_iterations; ++it) {
     at.iterations = it;
     // residual always; the Newton matrix only when it is refreshed
@@ -157,6 +161,7 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       kept.theta_age = 0;
       kept.theta_steady = false;
       remeasure = false;
+      formed_at = it;
       ++tangent_refreshes_;
     } else {
       at.reused = true;
@@ -169,17 +174,37 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
       return at;
     }
     system_.FromBlocks(rhs_, &dq_, &dl_);
+    // contraction rate of a kept matrix (a fresh one converges quadratically: theta = 0)
+    const double dq_norm = dq_.lpNorm<Eigen::Infinity>();
+    // measured: the same matrix gave this increment and the one before
+    const bool measured = !refresh && it > 1;
+    const double theta_now = measured && dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
+    // uphill: the last increment raised the residual and the kept matrix's next one is no
+    // smaller: the matrix no longer describes the residual between the two iterates (a contact
+    // switching on), and its increments lead away from the solution. Both are taken back and
+    // the next iteration forms a fresh matrix where the last one started (see the header)
+    if (measured && theta_now >= 1.0 && at.residual > residual_prev && formed_at != it - 1) {
+      st.q -= dq_last_;
+      st.lambda -= dl_last_;
+      a_hat -= dq_last_ / (p.beta * h2);
+      st.v = v_star + (p.gamma * h) * a_hat;
+      st.a = a_const + a_fac * a_hat;
+      kept.theta = theta_now;
+      kept.theta_age = 0;
+      kept.theta_steady = false;
+      refresh = true;
+      continue;
+    }
+    residual_prev = at.residual;
     st.q += dq_;
     st.lambda += dl_;
     a_hat += dq_ / (p.beta * h2);
     st.v = v_star + (p.gamma * h) * a_hat;
     st.a = a_const + a_fac * a_hat;
-    // contraction rate of a kept matrix (a fresh one converges quadratically: theta = 0)
-    const double dq_norm = dq_.lpNorm<Eigen::Infinity>();
-    // measured: the same matrix gave this increment and the one before
-    const bool measured = !refresh && it > 1;
+    dq_last_.swap(dq_);  // the increment just taken, for the uphill test (no copy)
+    dl_last_.swap(dl_);
     if (measured) {
-      kept.theta = dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
+      kept.theta = theta_now;
       kept.theta_age = 0;
       // a re-measurement that finds the rate small lengthens the interval to the next one; any
       // measurement that finds it not small shortens it again
@@ -222,6 +247,11 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     // evaluation: such a matrix would most likely not converge in that one (see the header)
     const bool stale = it == 1 && !refresh && kept.theta_age > kMaxKeepAge &&
                        !(theta < 1.0 && theta / (1.0 - theta) * dq_norm <= tol);
+    // a matrix formed at the previous iterate that already fails to contract: the residual is
+    // too nonlinear between two iterates for a kept matrix (a contact switching on), and one
+    // formed again at the next iterate would lead back to this one (docs/physics.md, "Newton
+    // convergence"): fresh matrices for the rest of the step
+    if (measured && formed_at == it - 1 && kept.theta > kMaxContraction) full = true;
     refresh = full || kept.theta > kMaxContraction || stale;
   }
   return at;

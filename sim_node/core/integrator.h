@@ -38,6 +38,13 @@
 // would be replaced within the step anyway, and replacing it now saves the third evaluation).
 // A first iteration is accepted on a rate measured at most kMaxThetaAge steps ago, or
 // kMaxThetaAgeSteady after a re-measurement found it below kSteadyRate.
+// Where the residual changes sharply between iterates (a contact switching on), a kept matrix
+// can lead away: a matrix formed at the previous iterate whose first reuse shows theta >
+// kMaxContraction is replaced at every iterate for the rest of the step (formed again where its
+// increment led, it would send the iterate back where it was: a cycle), and an older one whose
+// increment is no smaller than the last (theta >= 1) after an increment that raised |r|_inf
+// has both increments taken back and a fresh matrix formed where the last one started
+// (docs/physics.md, "Newton convergence").
 // A step that fails with a kept matrix is retried with full Newton (a fresh matrix at every
 // iteration) before it is halved.
 // The measurements behind each rule and constant, and what was tried instead:
@@ -145,6 +152,7 @@ class Integrator {
   bool slopes_at_most_inf_;
   NetworkMatrix jac_;
   Eigen::VectorXd r_, phi_, rhs_, dq_, dl_;
+  Eigen::VectorXd dq_last_, dl_last_;  // Newton: the increment last taken (swapped with dq_, dl_)
   Eigen::VectorXd q_star_, v_star_, a_const_, a_hat_;  // Newton: predictor parts
   std::vector<State> backup_;                          // one saved state per sub-stepping level
   // the waves in inputs_, sampled once per (sub)step at t_{n+1} at the predicted positions (and

@@ -336,7 +336,7 @@ BalanceResult SolveStaticWithVehicles(const System& sys, const Vec3& frame_veloc
                                       const std::function<bool()>& stop) {
   BalanceResult res;
   Balance b(sys, frame_velocity, commands);
-  const double tol = std::max(kBalanceTolerance, 10.0 * sys.model().integrator.tolerance);
+  const double tol = kBalanceTolerance;
   std::vector<VehiclePose> poses, trial;
   b.Read(*s, &poses);
   b.SetPivots(*s);

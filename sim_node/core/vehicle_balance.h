@@ -34,7 +34,10 @@
 
 namespace towsim::core {
 
-// relative residual at which the balance is converged (of the vehicle's force scale)
+// relative residual at which the balance is converged (of the vehicle's force scale), whatever
+// integrator.tolerance: a run that starts in its balance has almost no discretisation error,
+// so the balance's own must be smaller still (docs/physics.md "Static equilibrium with
+// vehicles")
 constexpr double kBalanceTolerance = 1e-7;
 
 struct BalanceResult {

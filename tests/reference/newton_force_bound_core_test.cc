@@ -13,7 +13,10 @@
 // of the top tension, so 0.07 m and 1.08 %.
 //
 // The negative control: with the force bound opened to 0.9 of the joint force (about no bound)
-// the E x100 run at 1e-4 ends more than 1 m off: the force bound is what keeps it right.
+// the E x100 run at 1e-4 does not reach the converged answer: after 20 s it is more than 1 m
+// off (measured: 132 m) or it has failed already (through sim_node, the same settings fail at
+// 16.5 s with 33 % strain: such a run's garbage depends on its last bits); the force bound is
+// what keeps it right.
 // And a bound below the round-off of the residual fails with the diagnosis naming it.
 
 #include <algorithm>
@@ -49,7 +52,7 @@ struct Outcome {
 };
 
 Outcome RunScene(const std::string& scene, double e_factor, double tolerance,
-            double force_tolerance = 0.0) {
+                 double force_tolerance = 0.0, double duration = kDuration) {
   const double e = 7.0e8 * e_factor;  // the scenes' cable: E 7e8 Pa
   std::vector<std::string> sets = {"cable.youngs_modulus=" + Number(e),
                                    "integrator.tolerance=" + Number(tolerance)};
@@ -58,7 +61,7 @@ Outcome RunScene(const std::string& scene, double e_factor, double tolerance,
   const core::Model model = scene::LoadScene(kScenes + scene, sets);
   core::Simulation sim(model);
   Outcome out;
-  while (sim.time() < kDuration - 1e-9) {
+  while (sim.time() < duration - 1e-9) {
     const core::StepStatus s = sim.Step();
     if (!s.ok()) {
       out.ok = false;
@@ -110,10 +113,14 @@ TEST(NewtonForceBound, StiffCableBetweenTwoVehiclesEndsConvergedOrFails) {
 }
 
 TEST(NewtonForceBound, WithoutTheBoundTheStiffCableEndsElsewhere) {
-  const Outcome converged = RunScene("steady_tow.yaml", 100.0, 1e-10);
-  const Outcome loose = RunScene("steady_tow.yaml", 100.0, 1e-4, 0.9);
+  constexpr double kControlDuration = 20.0;  // [s]
+  const Outcome converged = RunScene("steady_tow.yaml", 100.0, 1e-10, 0.0, kControlDuration);
+  const Outcome loose = RunScene("steady_tow.yaml", 100.0, 1e-4, 0.9, kControlDuration);
   ASSERT_TRUE(converged.ok) << converged.message;
-  ASSERT_TRUE(loose.ok) << loose.message;
+  if (!loose.ok) {
+    std::printf("force_tolerance 0.9: failed: %s\n", loose.message.c_str());
+    return;
+  }
   double track, tension;
   Compare(loose, converged, &track, &tension);
   std::printf("force_tolerance 0.9: track %.3g m, top tension %.3g\n", track, tension);
