@@ -33,6 +33,12 @@ constexpr int kChordIterations = 8;
 // plain Newton iterations a warm start may take (quadratic convergence from a nearby root
 // takes 2-4) before the solve starts again from the pseudo-transient's first step
 constexpr int kWarmIterations = 8;
+// iterations whose increments are within their bound while the residual, above its own, does
+// not halve: the residual has reached the round-off of the cable's forces (a long stiff cable
+// on the seabed: its elastic and contact forces, 1e5-1e6 N, leave residuals of 1e-8 N however
+// far Newton goes, while its increments are 1e-13 m), and the solve stops with that diagnosis
+// instead of iterating on to kMaxIterations
+constexpr int kRoundOffIterations = 10;
 
 // force scale for the convergence test: weight of cable and spheres plus a drag scale on the
 // largest speed relative to the water at the initial node positions
@@ -204,6 +210,8 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
   double delta = warm ? kPlainNewton : 1.0e-2;  // pseudo time step squared [s^2]
   double prev_norm = -1.0;
   double prev_step = std::numeric_limits<double>::infinity();  // |dq| of the last iteration
+  int at_round_off = 0;     // iterations in a row with the increment met, the residual not
+  double round_off = 0.0;   // ... and the residual when they began
   for (int it = 1; it <= (warm ? kWarmIterations : kMaxIterations); ++it) {
     if (stop && stop()) {
       res.stopped = true;
@@ -249,6 +257,20 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     }
     // limit the step to a tenth of the cable length per iteration
     const double step = dq.lpNorm<Eigen::Infinity>();
+    // the increments within their bound but the residual not: once it no longer halves, it
+    // is the round-off of the forces (kRoundOffIterations)
+    if (!warm && norm > f_tol && step <= tol * q_scale) {
+      if (at_round_off == 0 || norm <= 0.5 * round_off) {
+        at_round_off = 0;
+        round_off = norm;
+      }
+      if (++at_round_off > kRoundOffIterations) {
+        res.round_off = true;
+        break;
+      }
+    } else {
+      at_round_off = 0;
+    }
     // plain Newton near a root shrinks its increment at every iteration (the first is the
     // supports' move: the residual alone does not see a moved support); one that does not is
     // not near enough (the caller solves again from the start)
@@ -275,6 +297,14 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
   msg << "static equilibrium not found after " << res.iterations << " iterations: residual "
       << res.residual << " N (tolerance " << f_tol << " N), largest at "
       << sys.DescribeDof(worst, s->q);
+  if (res.round_off) {
+    // the tolerance the residual would meet: the next power of ten above twice its floor
+    const double floor = 2.0 * res.residual / (f_tol / tol);
+    const double met = std::pow(10.0, std::ceil(std::log10(floor)));
+    msg << "; the increments met their bound but the residual stopped falling: it is the "
+           "round-off of the forces, and integrator.tolerance "
+        << tol << " asks for less (about " << met << " would be met)";
+  }
   res.message = msg.str();
   return res;
 }
