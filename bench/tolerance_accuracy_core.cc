@@ -589,6 +589,15 @@ void Compare(const Case& c, const core::Simulation& a, const core::Simulation& b
 
 using Clock = std::chrono::steady_clock;
 
+// a failure's message for the tables: the static solve's first "residual R N (tolerance T N)"
+// (its full message names both guesses and the worst node: on stderr only)
+std::string Short(const std::string& why) {
+  const size_t at = why.find("residual ");
+  if (why.rfind("static equilibrium not found", 0) != 0 || at == std::string::npos) return why;
+  const size_t end = why.find(')', at);
+  return "static solve: " + why.substr(at, end == std::string::npos ? end : end + 1 - at);
+}
+
 Run Make(const Case& c, double tolerance, int factor, double h) {
   Run r;
   r.tolerance = tolerance;
@@ -785,7 +794,7 @@ int Main(int argc, char** argv) {
     std::string truth_note;
     Pass p = RunPass(*c, truth_tol, factor, truth_tol, tolerances);
     while (!p.truth.ok && truth_tol < loosest_truth / 1.001) {
-      truth_note = " (truth at " + Fmt("%g", truth_tol) + ": " + p.truth.why + ")";
+      truth_note = " (truth at " + Fmt("%g", truth_tol) + ": " + Short(p.truth.why) + ")";
       truth_tol *= 10;
       p = RunPass(*c, truth_tol, factor, truth_tol, tolerances);
     }
@@ -805,7 +814,7 @@ int Main(int argc, char** argv) {
         if (factor > 2)
           for (double t = truth_tol; t < 1e-8 * 1.001; t *= 10) tries.push_back({2, t});
       }
-      std::string why = ref_text(factor) + " at " + Fmt("%g", truth_tol) + ": " + p.ref.why;
+      std::string why = ref_text(factor) + " at " + Fmt("%g", truth_tol) + ": " + Short(p.ref.why);
       bool found = false;
       for (const auto& [f, t] : tries) {
         fallback = RunPass(*c, truth_tol, f, t, {});
@@ -814,7 +823,7 @@ int Main(int argc, char** argv) {
           ref_note = ref_text(f) + " at " + Fmt("%g", t) + " (" + why + ")";
           break;
         }
-        why += "; " + ref_text(f) + " at " + Fmt("%g", t) + ": " + fallback.ref.why;
+        why += "; " + ref_text(f) + " at " + Fmt("%g", t) + ": " + Short(fallback.ref.why);
       }
       if (!tries.empty()) {
         disc = fallback.disc;
@@ -854,7 +863,7 @@ int Main(int argc, char** argv) {
       const Run& r = p.runs[i];
       row.tolerance = tolerances[i];
       row.run_ok = r.ok;
-      row.why = r.why;
+      row.why = Short(r.why);
       row.newton = r.newton();
       row.wall = r.wall;
       if (r.ok && p.truth.ok) {
