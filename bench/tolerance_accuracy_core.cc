@@ -357,6 +357,28 @@ std::string SplitCatenaryYaml(bool split, int factor) {
          ", initial: static, start: {body: junction}, end: {fixed: [100, 0, 20]}}\n";
 }
 
+// NetworkWithoutDragConservesEnergy: the split catenary without drag and added mass, a 50 kg
+// clump at the junction, trapezoidal, h 0.01 s (its StepBy), kicked sideways by StartFrom
+core::Model KickedNetwork(int factor) {
+  core::Model m = scene::LoadSceneFromString(SplitCatenaryYaml(true, factor), "network.yaml", ".");
+  for (core::CableParams& c : m.cables) {
+    c.loads.drag = false;
+    c.loads.added_mass = false;
+  }
+  m.spheres[0].mass = 50.0;
+  m.integrator.scheme = core::Scheme::kTrapezoidal;
+  m.integrator.rho_inf = 1.0;
+  m.integrator.tolerance = 1e-10;  // the test's (overridden by every run here)
+  m.time.step = 0.01;
+  return m;
+}
+
+void KickTheClump(core::Simulation* sim) {
+  core::State s = sim->state();
+  s.v.segment<3>(sim->sphere_dof(0)) = Vec3(0.0, 2.0, 0.0);
+  sim->StartFrom(s);
+}
+
 std::string TwoPartTowYaml(double speed, int factor) {
   const std::string v = std::to_string(speed);
   const std::string els = std::to_string(20 * factor);
@@ -452,6 +474,10 @@ std::vector<Case> AllCases() {
   // the cable dragged along the bed: 400 steps of 0.05 s
   dynamic("seabed_dragged", "SeabedCore.DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight", 20.0,
           Dragged, LaidOnTheBed);
+
+  // the kicked split catenary: 20 s of 0.01 s
+  dynamic("network_kicked", "NetworkCore.NetworkWithoutDragConservesEnergy", 20.0, KickedNetwork,
+          KickTheClump);
 
   // statics
   auto cantilever = [&](std::string name, std::string test, int elements, double alpha) {
