@@ -283,10 +283,12 @@ core::Model RopeCatenary(int factor) {
       "cable:\n"
       "  line_type: rope\n"
       "  length: 200\n"
-      "  elements: " + std::to_string(20 * factor) + "\n"
-      "  initial: static\n"
-      "  start: {fixed: [0, 0, 10]}\n"
-      "  end: {fixed: [150, 0, 10]}\n",
+      "  elements: " +
+          std::to_string(20 * factor) +
+          "\n"
+          "  initial: static\n"
+          "  start: {fixed: [0, 0, 10]}\n"
+          "  end: {fixed: [150, 0, 10]}\n",
       "line_types_core_test.yaml");
 }
 
@@ -324,11 +326,13 @@ core::Model Jumper(int elements, const std::vector<std::string>& overrides = {})
       "cable:\n"
       "  line_type: lowe_langley_jumper\n"
       "  length: 170\n"
-      "  elements: " + std::to_string(elements) + "\n"
-      "  loads: [gravity, buoyancy, bending]\n"
-      "  initial: static\n"
-      "  start: {fixed: [-100, 0, 55]}\n"
-      "  end: {fixed: [0, 0, 5]}\n",
+      "  elements: " +
+          std::to_string(elements) +
+          "\n"
+          "  loads: [gravity, buoyancy, bending]\n"
+          "  initial: static\n"
+          "  start: {fixed: [-100, 0, 55]}\n"
+          "  end: {fixed: [0, 0, 5]}\n",
       "line_types_core_test.yaml", overrides);
 }
 
@@ -351,9 +355,11 @@ std::string SplitCatenaryYaml(bool split, int factor) {
   return head +
          "bodies: {junction: {type: sphere, mass: 0, volume: 0, position: [50, 0, 40]}}\n"
          "cables:\n"
-         "  upper: {length: 60, elements: " + els + ", " + kNetworkLine +
+         "  upper: {length: 60, elements: " +
+         els + ", " + kNetworkLine +
          ", initial: static, start: {fixed: [0, 0, 0]}, end: {body: junction}}\n"
-         "  lower: {length: 60, elements: " + els + ", " + kNetworkLine +
+         "  lower: {length: 60, elements: " +
+         els + ", " + kNetworkLine +
          ", initial: static, start: {body: junction}, end: {fixed: [100, 0, 20]}}\n";
 }
 
@@ -391,16 +397,26 @@ std::string TwoPartTowYaml(double speed, int factor) {
          "  towfish: {type: sphere, mass: 400, volume: 0.3, drag_coefficient: 0.5,\n"
          "            added_mass_coefficient: 0.5, position: [0, 0, 360]}\n"
          "cables:\n"
-         "  main: {length: 300, elements: " + els + ", diameter: 0.035, mass_per_length: 4.5,\n"
+         "  main: {length: 300, elements: " +
+         els +
+         ", diameter: 0.035, mass_per_length: 4.5,\n"
          "         axial_stiffness: 1.0e8, bending_stiffness: 300,\n"
          "         loads: [gravity, buoyancy, drag, added_mass, bending], initial: static,\n"
-         "         initial_velocity: [" + v + ", 0, 0],\n"
-         "         start: {driven: {position: [0, 0, 0], velocity: [" + v + ", 0, 0]}},\n"
+         "         initial_velocity: [" +
+         v +
+         ", 0, 0],\n"
+         "         start: {driven: {position: [0, 0, 0], velocity: [" +
+         v +
+         ", 0, 0]}},\n"
          "         end: {body: depressor}}\n"
-         "  tether: {length: 60, elements: " + els + ", diameter: 0.03, mass_per_length: 0.8,\n"
+         "  tether: {length: 60, elements: " +
+         els +
+         ", diameter: 0.03, mass_per_length: 0.8,\n"
          "           axial_stiffness: 2.0e6, bending_stiffness: 5,\n"
          "           loads: [gravity, buoyancy, drag, added_mass, bending], initial: static,\n"
-         "           initial_velocity: [" + v + ", 0, 0],\n"
+         "           initial_velocity: [" +
+         v +
+         ", 0, 0],\n"
          "           start: {body: depressor}, end: {body: towfish}}\n";
 }
 
@@ -411,10 +427,14 @@ std::string BridleYaml(int factor) {
          "environment: {current: [0, 0, 0]}\n"
          "bodies: {ring: {type: sphere, mass: 2000, volume: 0.2, position: [0, 0, 15]}}\n"
          "cables:\n"
-         "  port: {length: 25, elements: " + els + ", diameter: 0.03, mass_per_length: 0.72452,\n"
+         "  port: {length: 25, elements: " +
+         els +
+         ", diameter: 0.03, mass_per_length: 0.72452,\n"
          "         axial_stiffness: 2.0e6, bending_stiffness: 0, loads: [gravity, buoyancy],\n"
          "         initial: static, start: {fixed: [0, -20, 0]}, end: {body: ring}}\n"
-         "  starboard: {length: 25, elements: " + els + ", diameter: 0.03, mass_per_length: 0.72452,\n"
+         "  starboard: {length: 25, elements: " +
+         els +
+         ", diameter: 0.03, mass_per_length: 0.72452,\n"
          "              axial_stiffness: 2.0e6, bending_stiffness: 0, loads: [gravity, buoyancy],\n"
          "              initial: static, start: {fixed: [0, 20, 0]}, end: {body: ring}}\n";
 }
@@ -453,20 +473,21 @@ std::vector<Case> AllCases() {
 
   // swinging cable: the energy tests (20 s) and the order tests (1 s) at their coarsest and
   // finest steps
-  dynamic("swinging_trapezoidal_h1e-4", "SwingingCableCore.TrapezoidalConservesEnergy", 20.0,
-          [](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, f); }, Released);
-  dynamic("swinging_ga06_h1e-3", "SwingingCableCore.GeneralizedAlphaDissipates", 20.0,
-          [](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, f); },
-          Released);
+  dynamic(
+      "swinging_trapezoidal_h1e-4", "SwingingCableCore.TrapezoidalConservesEnergy", 20.0,
+      [](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, f); }, Released);
+  dynamic(
+      "swinging_ga06_h1e-3", "SwingingCableCore.GeneralizedAlphaDissipates", 20.0,
+      [](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, f); }, Released);
   for (const double h : {1e-3, 1.25e-4}) {
-    dynamic("swinging_order_trapezoidal_h" + Num(h), "SwingingCableCore.TrapezoidalIsSecondOrder",
-            1.0, [h](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, h, f); },
-            Released);
+    dynamic(
+        "swinging_order_trapezoidal_h" + Num(h), "SwingingCableCore.TrapezoidalIsSecondOrder", 1.0,
+        [h](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, h, f); }, Released);
   }
   for (const double h : {1e-3, 1.25e-4}) {
-    dynamic("swinging_order_ga08_h" + Num(h), "SwingingCableCore.GeneralizedAlphaIsSecondOrder",
-            1.0, [h](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.8, h, f); },
-            Released);
+    dynamic(
+        "swinging_order_ga08_h" + Num(h), "SwingingCableCore.GeneralizedAlphaIsSecondOrder", 1.0,
+        [h](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.8, h, f); }, Released);
   }
   // taut string: a bit over 5 periods
   dynamic("taut_string", "TautStringCore.FirstFrequency", 5.2 / StringFirstFrequency(), String,
@@ -548,10 +569,10 @@ std::vector<Case> AllCases() {
             });
   }
   statics("tow_without_cable_drag", "StaticSolveCore.ATowWithoutCableDragIsFound", [](int f) {
-    return scene::LoadScene(kSteadyTowScene,
-                            {"cable.initial=static",
-                             "cable.loads=[gravity, buoyancy, added_mass, bending]",
-                             "cable.elements=" + std::to_string(20 * f)});
+    return scene::LoadScene(
+        kSteadyTowScene,
+        {"cable.initial=static", "cable.loads=[gravity, buoyancy, added_mass, bending]",
+         "cable.elements=" + std::to_string(20 * f)});
   });
 
   statics("split_catenary_one", "NetworkCore.SplitCatenaryReproducesTheOneCable (one cable)",
@@ -591,7 +612,9 @@ struct Pair {
   double track = 0.0;
   double diff = 0.0;   // max |q_a - q_b|
   double scale = 0.0;  // max |q_b|
-  double tension() const { return scale > 0.0 ? diff / scale : diff > 0.0 ? 1.0 / 0.0 : 0.0; }
+  double tension() const {
+    return scale > 0.0 ? diff / scale : diff > 0.0 ? std::numeric_limits<double>::infinity() : 0.0;
+  }
 };
 
 double Quantity(const Case& c, const core::Simulation& sim) {
@@ -876,8 +899,10 @@ int Main(int argc, char** argv) {
       res.disc_text += ", static";
     }
     res.disc_ok = p.truth.ok && ref->ok;
-    if (!p.truth.ok) res.disc_fail = "truth failed";
-    else if (!ref->ok) res.disc_fail = "reference failed";
+    if (!p.truth.ok)
+      res.disc_fail = "truth failed";
+    else if (!ref->ok)
+      res.disc_fail = "reference failed";
     res.disc_track = disc.track;
     res.disc_tension = disc.tension();
     res.truth_newton = p.truth.newton();
@@ -897,27 +922,33 @@ int Main(int argc, char** argv) {
         row.track = p.solver[i].track;
         row.tension = p.solver[i].tension();
         if (res.disc_ok) {
-          auto div = [](double s, double d) { return d > 0 ? s / d : 1.0 / 0.0; };
+          auto div = [](double s, double d) {
+            return d > 0 ? s / d : std::numeric_limits<double>::infinity();
+          };
           row.has_ratio = true;
           row.r_track = div(row.track, res.disc_track);
           row.r_tension = div(row.tension, res.disc_tension);
           row.ok = row.r_track <= ratio_limit && row.r_tension <= ratio_limit;
         }
       }
-      if (!row.ok) passing[i] = false;
-      else if (res.loosest == 0.0) res.loosest = row.tolerance;
+      if (!row.ok)
+        passing[i] = false;
+      else if (res.loosest == 0.0)
+        res.loosest = row.tolerance;
       res.rows.push_back(row);
     }
     results.push_back(std::move(res));
   }
 
-  std::printf("tolerance_accuracy_core; truth and reference at tolerance %g; ratio limit %g; "
-              "force_tolerance the model's (%g)\n\n",
-              truth, ratio_limit, core::IntegratorSettings{}.force_tolerance);
-  std::printf("| case | test | duration [s] | discretisation | reference | track [m] | second "
-              "measure | Newton/step truth, ref | wall [s] truth, ref | loosest T with both ratios "
-              "<= %g |\n",
-              ratio_limit);
+  std::printf(
+      "tolerance_accuracy_core; truth and reference at tolerance %g; ratio limit %g; "
+      "force_tolerance the model's (%g)\n\n",
+      truth, ratio_limit, core::IntegratorSettings{}.force_tolerance);
+  std::printf(
+      "| case | test | duration [s] | discretisation | reference | track [m] | second "
+      "measure | Newton/step truth, ref | wall [s] truth, ref | loosest T with both ratios "
+      "<= %g |\n",
+      ratio_limit);
   std::printf("|---|---|---|---|---|---|---|---|---|---|\n");
   for (const Result& r : results) {
     const std::string measure =
@@ -928,13 +959,13 @@ int Main(int argc, char** argv) {
         r.c->dynamic ? Fmt("%.2f", r.truth_newton) + ", " + Fmt("%.2f", r.ref_newton) : "-";
     std::printf("| `%s` | `%s` | %s | %s | %s | %s | %s | %s | %.2f, %.2f | %s |\n",
                 r.c->name.c_str(), r.c->test.c_str(),
-                r.c->dynamic ? Fmt("%.4g", r.c->duration).c_str() : "static",
-                r.disc_text.c_str(), r.ref_note.c_str(), track.c_str(), tension.c_str(),
-                newton.c_str(), r.truth_wall, r.ref_wall,
-                r.loosest > 0 ? Fmt("%.0e", r.loosest).c_str() : "none");
+                r.c->dynamic ? Fmt("%.4g", r.c->duration).c_str() : "static", r.disc_text.c_str(),
+                r.ref_note.c_str(), track.c_str(), tension.c_str(), newton.c_str(), r.truth_wall,
+                r.ref_wall, r.loosest > 0 ? Fmt("%.0e", r.loosest).c_str() : "none");
   }
-  std::printf("\n| case | tolerance | solver track [m] | solver tension | ratio track | ratio "
-              "tension | Newton/step | wall [s] |\n");
+  std::printf(
+      "\n| case | tolerance | solver track [m] | solver tension | ratio track | ratio "
+      "tension | Newton/step | wall [s] |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   auto mark = [&](double x) {
     return x > ratio_limit ? "**" + Fmt("%.3f", x) + "**" : Fmt("%.3f", x);
@@ -964,8 +995,10 @@ int Main(int argc, char** argv) {
     std::printf("| `%s` |", r.c->name.c_str());
     for (const Result::Row& row : r.rows) {
       std::string cell;
-      if (!row.run_ok) cell = "failed";
-      else if (!row.has_ratio) cell = "-";
+      if (!row.run_ok)
+        cell = "failed";
+      else if (!row.has_ratio)
+        cell = "-";
       else {
         cell = Fmt("%.2g", row.r_track) + " / " + Fmt("%.2g", row.r_tension);
         if (!row.ok) cell = "**" + cell + "**";
@@ -985,7 +1018,8 @@ int Main(int argc, char** argv) {
       if (tolerances[i] < loosest && !passing[i])
         tighter += (tighter.empty() ? "" : ", ") + Fmt("%g", tolerances[i]);
     std::printf("Loosest tolerance with every case's ratio <= %g on both measures: **%g**%s\n",
-                ratio_limit, loosest, tighter.empty() ? "" : (" (but not at " + tighter + ")").c_str());
+                ratio_limit, loosest,
+                tighter.empty() ? "" : (" (but not at " + tighter + ")").c_str());
   } else {
     std::printf("No tolerance of the list keeps every case's ratio <= %g.\n", ratio_limit);
   }
