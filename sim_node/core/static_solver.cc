@@ -177,6 +177,10 @@ StaticResult SolveChord(const System& sys, const Eigen::Vector3d& frame_velocity
       if (!(theta < kChordMaxRate)) return res;
     }
     if (residual_met && step / (1.0 - theta) <= tol * q_scale) {
+      // the increment already solved for is taken too: it costs nothing and removes all but
+      // about theta of the error left
+      s->q += dq;
+      s->lambda += dl;
       res.ok = true;
       return res;
     }
@@ -247,6 +251,11 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
     }
     sys.FromBlocks(rhs, &dq, &dl);
     if (residual_met && dq.lpNorm<Eigen::Infinity>() <= tol * q_scale) {
+      // the increment already solved for is taken too: near the root Newton's error after it
+      // is of the order of |dq|^2 (for a plain Newton matrix), against |dq| before; it costs
+      // no evaluation, and the acceptance is unchanged (docs/physics.md, "Initial shapes")
+      s->q += dq;
+      s->lambda += dl;
       res.ok = true;
       if (factors_out) {
         // the factors of the last matrix, formed at this iterate: a chord for nearby solves
