@@ -7,9 +7,9 @@
 //   tolerance_accuracy_core [--cases a,b,...] [--tolerances 1e-4,1e-5,1e-6,1e-7,1e-8]
 //                           [--truth 1e-12] [--factor 4] [--ratio 0.1] [--list]
 //
-// Each case builds its model exactly as the test named beside it does (the small
-// model-building functions are copied from tests/reference/), with every cable's elements
-// multiplied by `factor`:
+// Each case builds its model exactly as the test named beside it does (with the
+// model-building functions the tests call, tests/reference/*_model.h and *_models.h), with
+// every cable's elements multiplied by `factor`:
 //
 //   truth       the test's own elements (and step h) at integrator.tolerance = --truth (1e-12);
 //               if it fails (a static solve that cannot reach it in double precision, a step
@@ -55,13 +55,34 @@
 #include "core/model.h"
 #include "core/simulation.h"
 #include "core/state.h"
+#include "cantilever_model.h"
+#include "hanging_cable_model.h"
+#include "jumper_model.h"
+#include "line_types_models.h"
+#include "network_models.h"
 #include "scene/scene_loader.h"
+#include "swinging_cable_model.h"
 #include "taut_string.h"
+#include "taut_string_model.h"
 
 namespace towsim::bench {
 namespace {
 
 using core::Vec3;
+using reference::BridleYaml;
+using reference::Cantilever;
+using reference::ConstantDragTow;
+using reference::HangingCable;
+using reference::Jumper;
+using reference::KickTheClump;
+using reference::NetworkModel;
+using reference::OwnBendingCantilever;
+using reference::ReleaseStraight;
+using reference::RopeCatenary;
+using reference::SplitCatenaryYaml;
+using reference::String;
+using reference::SwingingCable;
+using reference::TwoPartTowYaml;
 
 const std::string kScenesDir = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes";
 const std::string kCatenaryScene = kScenesDir + "/catenary.yaml";
@@ -84,95 +105,16 @@ struct Case {
   std::string quantity_name = "top tension";
 };
 
-// --- tests/reference/swinging_cable_core_test.cc --------------------------------------------
-constexpr double kSwingLength = 10.0;
+// The tests' models (tests/reference/*_model.h, *_models.h), built by the functions the tests
+// themselves call; `factor` (or elements x factor) scales every cable's elements
 
-core::Model SwingingCable(core::Scheme scheme, double rho_inf, double step, int factor) {
-  core::Model m;
-  m.name = "swinging_cable";
-  core::CableParams& c = m.cables[0];
-  c.length = kSwingLength;
-  c.elements = 10 * factor;
-  c.diameter = 0.01;
-  c.SetSolidSection(2000.0, 1.0e8);
-  c.loads.gravity = true;
-  c.loads.buoyancy = false;  // vacuum
-  c.loads.drag = false;
-  c.loads.added_mass = false;
-  c.loads.bending = true;
-  c.initial = core::InitialShape::kStraight;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.start.clamped = false;
-  c.end.kind = core::EndKind::kFree;
-  c.end.position = Vec3(kSwingLength, 0.0, 0.0);
-  m.integrator.scheme = scheme;
-  m.integrator.rho_inf = rho_inf;
-  m.integrator.tolerance = 1e-8;  // the test's (overridden by every run here)
-  m.time.step = step;
-  return m;
-}
-
-// Released: straight along +x, at rest
-void Released(core::Simulation* sim) {
-  core::State s = sim->state();
-  const int nodes = sim->num_nodes();
-  for (int i = 0; i < nodes; ++i) {
-    const int k = sim->cable_dof(i);
-    s.q.segment<3>(k) = Vec3(kSwingLength * i / (nodes - 1), 0.0, 0.0);
-    s.q.segment<3>(k + 3) = Vec3::UnitX();
-  }
-  s.v.setZero();
-  s.t = 0.0;
-  sim->StartFrom(s);
-}
-
-// --- tests/reference/taut_string_core_test.cc -----------------------------------------------
-constexpr double kStringLength = 10.0, kStringSpan = 10.1, kStringEA = 1.0e4, kStringRhoA = 0.1;
-
-core::Model String(int factor) {
-  core::Model m;
-  m.name = "taut_string";
-  core::CableParams& c = m.cables[0];
-  c.length = kStringLength;
-  c.elements = 10 * factor;
-  c.diameter = 0.01;
-  c.SetSolidSection(kStringRhoA / c.area(), kStringEA / c.area());
-  c.loads = {false, false, false, false, false};
-  c.initial = core::InitialShape::kStraight;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.end.kind = core::EndKind::kFixed;
-  c.end.position = Vec3(kStringSpan, 0.0, 0.0);
-  m.integrator.scheme = core::Scheme::kTrapezoidal;
-  m.integrator.rho_inf = 1.0;
-  m.time.step = 1e-3;
-  return m;
-}
-
-// the test's reference frequency f1 (taut_string.h)
+// the taut string's reference frequency f1 (taut_string.h)
 double StringFirstFrequency() {
-  reference::TautString s;
-  s.length = kStringLength;
-  s.span = kStringSpan;
-  s.ea = kStringEA;
-  s.rho_a = kStringRhoA;
-  return reference::TautStringFirstFrequency(s);
+  return reference::TautStringFirstFrequency(reference::StringReference());
 }
 
 void HalfSineVelocity(core::Simulation* sim) {
-  const double omega = 2.0 * core::kPi * StringFirstFrequency();
-  const double v0 = 1e-3 * omega;
-  const int nodes = sim->num_nodes();
-  core::State s = sim->state();
-  for (int i = 0; i < nodes; ++i) {
-    const double x = kStringLength * i / (nodes - 1);
-    const int k = sim->cable_dof(i);
-    s.v.segment<3>(k) = v0 * std::sin(core::kPi * x / kStringLength) * Vec3::UnitZ();
-    s.v.segment<3>(k + 3) =
-        v0 * (core::kPi / kStringLength) * std::cos(core::kPi * x / kStringLength) * Vec3::UnitZ();
-  }
-  sim->StartFrom(s);
+  reference::StartHalfSine(sim, StringFirstFrequency());
 }
 
 // --- tests/reference/seabed_core_test.cc, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight ---
@@ -200,249 +142,15 @@ void LaidOnTheBed(core::Simulation* sim) {
   sim->StartFrom(laid);
 }
 
-// --- tests/reference/cantilever_core_test.cc ------------------------------------------------
-constexpr double kCantileverLength = 2.0;
-
-core::Model Cantilever(int elements, double alpha) {
-  core::Model m;
-  m.name = "cantilever";
-  core::CableParams& c = m.cables[0];
-  c.length = kCantileverLength;
-  c.elements = elements;
-  c.diameter = 0.02;
-  c.SetSolidSection(7850.0, 2.0e11);  // steel
-  c.loads.gravity = false;
-  c.loads.buoyancy = false;
-  c.loads.drag = false;
-  c.loads.added_mass = false;
-  c.loads.bending = true;
-  c.initial = core::InitialShape::kStatic;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.start.clamped = true;
-  c.start.slope = Vec3::UnitX();
-  c.end.kind = core::EndKind::kSphere;
-  c.end.body = 0;
-  c.end.at_B = Vec3::Zero();
-  core::SphereBody tip;
-  tip.name = "tip_mass";
-  const double ei = c.bending_stiffness;
-  tip.mass = alpha * ei / (kCantileverLength * kCantileverLength) / m.environment.gravity;
-  tip.volume = 0.0;
-  tip.position = Vec3(kCantileverLength, 0.0, 0.0);
-  m.spheres.push_back(tip);
-  return m;
-}
-
 double TipDeflection(const core::Simulation& sim) {  // z of the last node [m]
   return sim.node_position(sim.num_nodes() - 1).z();
 }
 
-// --- tests/reference/catenary_core_test.cc --------------------------------------------------
-core::Model HangingCable(int elements, bool bending) {
-  core::Model m;
-  m.name = "catenary";
-  core::CableParams& c = m.cables[0];
-  c.length = 200.0;
-  c.elements = elements;
-  c.diameter = 0.041;
-  c.SetSolidSection(1300.0, 7.0e8);
-  c.loads.gravity = true;
-  c.loads.buoyancy = true;
-  c.loads.drag = false;
-  c.loads.added_mass = false;
-  c.loads.bending = bending;
-  c.initial = core::InitialShape::kStatic;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.end.kind = core::EndKind::kFixed;
-  c.end.position = Vec3(150.0, 0.0, 0.0);
-  return m;
-}
-
-// --- tests/reference/line_types_core_test.cc ------------------------------------------------
-core::Model LoadString(const std::string& yaml, const std::string& file,
-                       const std::vector<std::string>& overrides = {}) {
-  return scene::LoadSceneFromString(yaml, file, kScenesDir, overrides);
-}
-
-core::Model ConstantDragTow(double speed, int factor) {
-  const std::string v = "[" + std::to_string(speed) + ", 0, 0]";
-  return scene::LoadScene(
-      kSteadyTowScene,
-      {"cable.initial=static", "cable.drag={normal: 1.5, tangential: 0.01}",
-       "cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
-       "bodies.towfish.velocity=" + v, "cable.elements=" + std::to_string(20 * factor)});
-}
-
-core::Model RopeCatenary(int factor) {
-  return LoadString(
-      "name: rope_catenary\n"
-      "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-      "line_types:\n"
-      "  rope: {diameter: 0.03, mass_per_length: 2.5, axial_stiffness: 2.0e5,\n"
-      "         bending_stiffness: 0, drag: {normal: 1.2, tangential: 0.01}}\n"
-      "cable:\n"
-      "  line_type: rope\n"
-      "  length: 200\n"
-      "  elements: " +
-          std::to_string(20 * factor) +
-          "\n"
-          "  initial: static\n"
-          "  start: {fixed: [0, 0, 10]}\n"
-          "  end: {fixed: [150, 0, 10]}\n",
-      "line_types_core_test.yaml");
-}
-
-core::Model OwnBendingCantilever(int factor) {
-  constexpr double kLength = 10.0, kMass = 1.0, kGravity = 9.81;
-  const double ei = kMass * kGravity * kLength * kLength * kLength / (8.0 * 1e-3);
-  char yaml[1024];
-  std::snprintf(yaml, sizeof yaml,
-                "name: cantilever\n"
-                "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-                "environment: {gravity: %g}\n"
-                "line_types:\n"
-                "  beam: {diameter: 0.2, mass_per_length: %g, axial_stiffness: 1.0e10,\n"
-                "         bending_stiffness: %.17g}\n"
-                "cable:\n"
-                "  line_type: beam\n"
-                "  length: %g\n"
-                "  elements: %d\n"
-                "  loads: [gravity, bending]\n"
-                "  initial: static\n"
-                "  start: {fixed: [0, 0, 0], slope: [1, 0, 0]}\n"
-                "  end: {body: tip}\n"
-                "bodies:\n"
-                "  tip: {type: sphere, mass: 1.0e-9, volume: 0, position: [%g, 0, 0]}\n",
-                kGravity, kMass, ei, kLength, 10 * factor, kLength);
-  return LoadString(yaml, "line_types_core_test.yaml");
-}
-
-// the jumper of line_types_core_test.cc and static_solve_core_test.cc (the same YAML)
-core::Model Jumper(int elements, const std::vector<std::string>& overrides = {}) {
-  return LoadString(
-      "name: jumper\n"
-      "time: {step: 0.01, duration: 1, output_rate: 10}\n"
-      "environment: {water_density: 1000, gravity: 9.807}\n"
-      "cable:\n"
-      "  line_type: lowe_langley_jumper\n"
-      "  length: 170\n"
-      "  elements: " +
-          std::to_string(elements) +
-          "\n"
-          "  loads: [gravity, buoyancy, bending]\n"
-          "  initial: static\n"
-          "  start: {fixed: [-100, 0, 55]}\n"
-          "  end: {fixed: [0, 0, 5]}\n",
-      "line_types_core_test.yaml", overrides);
-}
-
-// --- tests/reference/network_core_test.cc ---------------------------------------------------
-const char kNetworkLine[] =
-    "diameter: 0.041, density: 1300, youngs_modulus: 7.0e8, "
-    "loads: [gravity, buoyancy, drag, added_mass]";
-
-std::string SplitCatenaryYaml(bool split, int factor) {
-  const std::string head =
-      "name: catenary\n"
-      "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-      "environment: {current: [0, 0, 0]}\n";
-  if (!split) {
-    return head + "cable: {length: 120, elements: " + std::to_string(20 * factor) + ", " +
-           kNetworkLine +
-           ", initial: static, start: {fixed: [0, 0, 0]}, end: {fixed: [100, 0, 20]}}\n";
-  }
-  const std::string els = std::to_string(10 * factor);
-  return head +
-         "bodies: {junction: {type: sphere, mass: 0, volume: 0, position: [50, 0, 40]}}\n"
-         "cables:\n"
-         "  upper: {length: 60, elements: " +
-         els + ", " + kNetworkLine +
-         ", initial: static, start: {fixed: [0, 0, 0]}, end: {body: junction}}\n"
-         "  lower: {length: 60, elements: " +
-         els + ", " + kNetworkLine +
-         ", initial: static, start: {body: junction}, end: {fixed: [100, 0, 20]}}\n";
-}
-
-// NetworkWithoutDragConservesEnergy: the split catenary without drag and added mass, a 50 kg
-// clump at the junction, trapezoidal, h 0.01 s (its StepBy), kicked sideways by StartFrom
+// NetworkWithoutDragConservesEnergy steps by 0.01 s (its StepBy): the runs' step
 core::Model KickedNetwork(int factor) {
-  core::Model m = scene::LoadSceneFromString(SplitCatenaryYaml(true, factor), "network.yaml", ".");
-  for (core::CableParams& c : m.cables) {
-    c.loads.drag = false;
-    c.loads.added_mass = false;
-  }
-  m.spheres[0].mass = 50.0;
-  m.integrator.scheme = core::Scheme::kTrapezoidal;
-  m.integrator.rho_inf = 1.0;
-  m.integrator.tolerance = 1e-10;  // the test's (overridden by every run here)
+  core::Model m = reference::KickedNetwork(factor);
   m.time.step = 0.01;
   return m;
-}
-
-void KickTheClump(core::Simulation* sim) {
-  core::State s = sim->state();
-  s.v.segment<3>(sim->sphere_dof(0)) = Vec3(0.0, 2.0, 0.0);
-  sim->StartFrom(s);
-}
-
-std::string TwoPartTowYaml(double speed, int factor) {
-  const std::string v = std::to_string(speed);
-  const std::string els = std::to_string(20 * factor);
-  return "name: two_part_tow\n"
-         "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-         "environment: {current: [0, 0, 0]}\n"
-         "bodies:\n"
-         "  depressor: {type: sphere, mass: 1500, volume: 0.25, drag_coefficient: 0.8,\n"
-         "              added_mass_coefficient: 0.5, position: [0, 0, 300]}\n"
-         "  towfish: {type: sphere, mass: 400, volume: 0.3, drag_coefficient: 0.5,\n"
-         "            added_mass_coefficient: 0.5, position: [0, 0, 360]}\n"
-         "cables:\n"
-         "  main: {length: 300, elements: " +
-         els +
-         ", diameter: 0.035, mass_per_length: 4.5,\n"
-         "         axial_stiffness: 1.0e8, bending_stiffness: 300,\n"
-         "         loads: [gravity, buoyancy, drag, added_mass, bending], initial: static,\n"
-         "         initial_velocity: [" +
-         v +
-         ", 0, 0],\n"
-         "         start: {driven: {position: [0, 0, 0], velocity: [" +
-         v +
-         ", 0, 0]}},\n"
-         "         end: {body: depressor}}\n"
-         "  tether: {length: 60, elements: " +
-         els +
-         ", diameter: 0.03, mass_per_length: 0.8,\n"
-         "           axial_stiffness: 2.0e6, bending_stiffness: 5,\n"
-         "           loads: [gravity, buoyancy, drag, added_mass, bending], initial: static,\n"
-         "           initial_velocity: [" +
-         v +
-         ", 0, 0],\n"
-         "           start: {body: depressor}, end: {body: towfish}}\n";
-}
-
-std::string BridleYaml(int factor) {
-  const std::string els = std::to_string(10 * factor);
-  return "name: bridle\n"
-         "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-         "environment: {current: [0, 0, 0]}\n"
-         "bodies: {ring: {type: sphere, mass: 2000, volume: 0.2, position: [0, 0, 15]}}\n"
-         "cables:\n"
-         "  port: {length: 25, elements: " +
-         els +
-         ", diameter: 0.03, mass_per_length: 0.72452,\n"
-         "         axial_stiffness: 2.0e6, bending_stiffness: 0, loads: [gravity, buoyancy],\n"
-         "         initial: static, start: {fixed: [0, -20, 0]}, end: {body: ring}}\n"
-         "  starboard: {length: 25, elements: " +
-         els +
-         ", diameter: 0.03, mass_per_length: 0.72452,\n"
-         "              axial_stiffness: 2.0e6, bending_stiffness: 0, loads: [gravity, buoyancy],\n"
-         "              initial: static, start: {fixed: [0, 20, 0]}, end: {body: ring}}\n";
-}
-
-core::Model Network(const std::string& yaml) {
-  return scene::LoadSceneFromString(yaml, "network.yaml", kScenesDir);
 }
 
 std::string Num(double x) {
@@ -477,19 +185,19 @@ std::vector<Case> AllCases() {
   // finest steps
   dynamic(
       "swinging_trapezoidal_h1e-4", "SwingingCableCore.TrapezoidalConservesEnergy", 20.0,
-      [](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, f); }, Released);
+      [](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, f); }, ReleaseStraight);
   dynamic(
       "swinging_ga06_h1e-3", "SwingingCableCore.GeneralizedAlphaDissipates", 20.0,
-      [](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, f); }, Released);
+      [](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, f); }, ReleaseStraight);
   for (const double h : {1e-3, 1.25e-4}) {
     dynamic(
         "swinging_order_trapezoidal_h" + Num(h), "SwingingCableCore.TrapezoidalIsSecondOrder", 1.0,
-        [h](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, h, f); }, Released);
+        [h](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, h, f); }, ReleaseStraight);
   }
   for (const double h : {1e-3, 1.25e-4}) {
     dynamic(
         "swinging_order_ga08_h" + Num(h), "SwingingCableCore.GeneralizedAlphaIsSecondOrder", 1.0,
-        [h](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.8, h, f); }, Released);
+        [h](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.8, h, f); }, ReleaseStraight);
   }
   // taut string: a bit over 5 periods
   dynamic("taut_string", "TautStringCore.FirstFrequency", 5.2 / StringFirstFrequency(), String,
@@ -578,16 +286,16 @@ std::vector<Case> AllCases() {
   });
 
   statics("split_catenary_one", "NetworkCore.SplitCatenaryReproducesTheOneCable (one cable)",
-          [](int f) { return Network(SplitCatenaryYaml(false, f)); });
+          [](int f) { return NetworkModel(SplitCatenaryYaml(false, f)); });
   statics("split_catenary_split", "NetworkCore.SplitCatenaryReproducesTheOneCable (split)",
-          [](int f) { return Network(SplitCatenaryYaml(true, f)); });
+          [](int f) { return NetworkModel(SplitCatenaryYaml(true, f)); });
   for (const double speed : {2.5, 5.0}) {
     statics("two_part_tow_static_" + Num(speed) + "ms",
             "NetworkCore.TwoPartTowSteadyStateMatchesTheChainedReference",
-            [speed](int f) { return Network(TwoPartTowYaml(speed, f)); });
+            [speed](int f) { return NetworkModel(TwoPartTowYaml(speed, f)); });
   }
   statics("bridle", "NetworkCore.BridleMatchesTheStaticSolution",
-          [](int f) { return Network(BridleYaml(f)); });
+          [](int f) { return NetworkModel(BridleYaml(f)); });
   return cases;
 }
 

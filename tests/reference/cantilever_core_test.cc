@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cantilever_model.h"
 #include "core/model.h"
 #include "core/simulation.h"
 #include "elastica_cantilever.h"
@@ -20,39 +21,6 @@ namespace {
 
 using core::Vec3;
 
-constexpr double kLength = 2.0;  // [m]
-
-core::Model Cantilever(int elements, double alpha) {
-  core::Model m;
-  m.name = "cantilever";
-  core::CableParams& c = m.cables[0];
-  c.length = kLength;
-  c.elements = elements;
-  c.diameter = 0.02;
-  c.SetSolidSection(7850.0, 2.0e11);  // steel
-  c.loads.gravity = false;
-  c.loads.buoyancy = false;
-  c.loads.drag = false;
-  c.loads.added_mass = false;
-  c.loads.bending = true;
-  c.initial = core::InitialShape::kStatic;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.start.clamped = true;
-  c.start.slope = Vec3::UnitX();
-  c.end.kind = core::EndKind::kSphere;
-  c.end.body = 0;
-  c.end.at_B = Vec3::Zero();
-  core::SphereBody tip;
-  tip.name = "tip_mass";
-  const double ei = c.bending_stiffness;
-  tip.mass = alpha * ei / (kLength * kLength) / m.environment.gravity;  // P = m g
-  tip.volume = 0.0;
-  tip.position = Vec3(kLength, 0.0, 0.0);
-  m.spheres.push_back(tip);
-  return m;
-}
-
 struct Tip {
   double deflection;  // v / L
   double shortening;  // u / L = 1 - x_tip / L
@@ -61,7 +29,7 @@ struct Tip {
 Tip Solve(int elements, double alpha) {
   const core::Simulation sim(Cantilever(elements, alpha));
   const Vec3 tip = sim.node_position(sim.num_nodes() - 1);
-  return {tip.z() / kLength, 1.0 - tip.x() / kLength};
+  return {tip.z() / kCantileverLength, 1.0 - tip.x() / kCantileverLength};
 }
 
 TEST(CantileverCore, SmallLoadIsEulerBernoulli) {

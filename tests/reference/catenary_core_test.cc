@@ -23,43 +23,22 @@
 #include "core/model.h"
 #include "core/simulation.h"
 #include "elastic_catenary.h"
+#include "hanging_cable_model.h"
 
 namespace towsim::reference {
 namespace {
 
 using core::Vec3;
 
-constexpr double kSpan = 150.0;  // [m]
 // issue requirement for 20 elements: mid-span sag, horizontal tension and end tension
 constexpr double kRelTol = 2e-3;
-
-core::Model HangingCable(int elements, bool bending) {
-  core::Model m;
-  m.name = "catenary";
-  core::CableParams& c = m.cables[0];
-  c.length = 200.0;
-  c.elements = elements;
-  c.diameter = 0.041;
-  c.SetSolidSection(1300.0, 7.0e8);
-  c.loads.gravity = true;
-  c.loads.buoyancy = true;
-  c.loads.drag = false;        // static: no velocity
-  c.loads.added_mass = false;  // static: no acceleration
-  c.loads.bending = bending;
-  c.initial = core::InitialShape::kStatic;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.end.kind = core::EndKind::kFixed;
-  c.end.position = Vec3(kSpan, 0.0, 0.0);
-  return m;
-}
 
 CatenaryProblem ReferenceProblem(const core::Model& m) {
   const core::CableParams& c = m.cables[0];
   const core::Environment& env = m.environment;
   CatenaryProblem p;
   p.length = c.length;
-  p.span = kSpan;
+  p.span = kHangingCableSpan;
   p.height = 0.0;
   p.weight = (c.mass_per_length - env.water_density * c.area()) * env.gravity;  // (m - rho_w A) g
   p.ea = c.axial_stiffness;

@@ -17,6 +17,8 @@
 #include "core/model.h"
 #include "core/simulation.h"
 #include "elastic_catenary.h"
+#include "jumper_model.h"
+#include "line_types_models.h"
 #include "scene/scene_loader.h"
 #include "towed_cable_steady_core.h"
 
@@ -27,24 +29,15 @@ using core::Vec3;
 
 const std::string kScenesDir = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes";
 
-core::Model Load(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
-  return scene::LoadSceneFromString(yaml, "line_types_core_test.yaml", kScenesDir, overrides);
-}
-
 // ---------------------------------------------------------------------------------------------
-// The steady tow (config/scenes/steady_tow.yaml) with a bare armoured tow cable's constant
-// coefficients, C_n = 1.5 on d and C_t = 0.01 on pi d, solved statically in the frame moving
-// with the tow point (static_solver.h), against the reference integrated with the same
-// coefficients (cable_drag.h). 20 elements: the shipped discretization.
+// The steady tow with a bare armoured tow cable's constant coefficients (ConstantDragTow,
+// line_types_models.h), solved statically in the frame moving with the tow point
+// (static_solver.h), against the reference integrated with the same coefficients
+// (cable_drag.h).
 constexpr double kTowRelTol = 5e-3;  // the 0.5 %
 
 void CheckConstantDragTow(double speed) {
-  const std::string v = "[" + std::to_string(speed) + ", 0, 0]";
-  const core::Model model =
-      scene::LoadScene(kScenesDir + "/steady_tow.yaml",
-                       {"cable.initial=static", "cable.drag={normal: 1.5, tangential: 0.01}",
-                        "cable.start.driven.velocity=" + v, "cable.initial_velocity=" + v,
-                        "bodies.towfish.velocity=" + v});
+  const core::Model model = ConstantDragTow(speed, 1);
   ASSERT_EQ(model.cables[0].drag.kind, core::CableDragLaw::kConstant);
   const TowedCableProblem p = SteadyTowProblem(model);
   ASSERT_TRUE(p.drag_coefficients.has_value());
@@ -89,19 +82,7 @@ TEST(LineTypesCore, ConstantDragIsNotTheDefaultLaw) {
 // A line type without bending stiffness (EI = 0) and with EA and m of its own, pinned at both
 // ends 150 m apart: the elastic catenary (elastic_catenary.h, Irvine 1981).
 TEST(LineTypesCore, NoBendingStiffnessIsTheElasticCatenary) {
-  const core::Model m = Load(
-      "name: rope_catenary\n"
-      "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-      "line_types:\n"
-      "  rope: {diameter: 0.03, mass_per_length: 2.5, axial_stiffness: 2.0e5,\n"
-      "         bending_stiffness: 0, drag: {normal: 1.2, tangential: 0.01}}\n"
-      "cable:\n"
-      "  line_type: rope\n"
-      "  length: 200\n"
-      "  elements: 20\n"
-      "  initial: static\n"
-      "  start: {fixed: [0, 0, 10]}\n"
-      "  end: {fixed: [150, 0, 10]}\n");
+  const core::Model m = RopeCatenary(1);
   ASSERT_EQ(m.cables[0].bending_stiffness, 0.0);
   CatenaryProblem p;
   p.length = 200.0;
@@ -131,30 +112,10 @@ TEST(LineTypesCore, NoBendingStiffnessIsTheElasticCatenary) {
 // end, free at the other, under its own weight in air w = m g. Small deflection (v / L = 1e-3),
 // Euler-Bernoulli: v = w L^4 / (8 EI); the elastica's correction is O((v/L)^2).
 TEST(LineTypesCore, OwnBendingStiffnessCantileverUnderItsOwnWeight) {
-  constexpr double kLength = 10.0, kMass = 1.0, kGravity = 9.81;
-  const double ei = kMass * kGravity * kLength * kLength * kLength / (8.0 * 1e-3);  // 1.226e6
-  char yaml[1024];
-  std::snprintf(yaml, sizeof yaml,
-                "name: cantilever\n"
-                "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-                "environment: {gravity: %g}\n"
-                "line_types:\n"
-                "  beam: {diameter: 0.2, mass_per_length: %g, axial_stiffness: 1.0e10,\n"
-                "         bending_stiffness: %.17g}\n"
-                "cable:\n"
-                "  line_type: beam\n"
-                "  length: %g\n"
-                "  elements: 10\n"
-                "  loads: [gravity, bending]\n"
-                "  initial: static\n"
-                "  start: {fixed: [0, 0, 0], slope: [1, 0, 0]}\n"
-                "  end: {body: tip}\n"
-                // a weightless marker at the tip: the static solve starts from the straight
-                // line to it (a free end starts hanging, cantilever_core_test does the same)
-                "bodies:\n"
-                "  tip: {type: sphere, mass: 1.0e-9, volume: 0, position: [%g, 0, 0]}\n",
-                kGravity, kMass, ei, kLength, kLength);
-  const core::Model m = Load(yaml);
+  constexpr double kLength = kOwnWeightLength, kMass = kOwnWeightMass;
+  constexpr double kGravity = kOwnWeightGravity;
+  const double ei = OwnBendingStiffness();  // 1.226e6
+  const core::Model m = OwnBendingCantilever(1);
   // not the solid section's: E = EA / A = 3.2e11, E I = 2.5e7
   ASSERT_LT(m.cables[0].bending_stiffness, 0.1 * (1.0e10 / m.cables[0].area()) * m.cables[0].second_moment());
   const core::Simulation sim(m);
@@ -173,24 +134,10 @@ TEST(LineTypesCore, OwnBendingStiffnessCantileverUnderItsOwnWeight) {
 // static end forces, as MoorDyn v2.7.1 holds itself to them (tests/lowe_and_langley_2006.cpp,
 // "Stationary"): at the fairlead horizontal 11.40 kN, vertical 45.71 kN; at the anchor
 // horizontal 11.40 kN, vertical 24.04 kN.
-core::Model Jumper(const std::vector<std::string>& overrides = {}) {
-  return Load(
-      "name: jumper\n"
-      "time: {step: 0.01, duration: 1, output_rate: 10}\n"
-      "environment: {water_density: 1000, gravity: 9.807}\n"
-      "cable:\n"
-      "  line_type: lowe_langley_jumper\n"
-      "  length: 170\n"
-      "  elements: 68\n"
-      "  loads: [gravity, buoyancy, bending]\n"
-      "  initial: static\n"
-      "  start: {fixed: [-100, 0, 55]}\n"
-      "  end: {fixed: [0, 0, 5]}\n",
-      overrides);
-}
+// (Jumper, jumper_model.h: 68 elements)
 
 TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
-  const core::Model m = Jumper();
+  const core::Model m = Jumper(68);
   ASSERT_EQ(m.cables[0].bending_stiffness, 120.8e3);
   const core::Simulation sim(m);
   const Vec3 anchor = sim.end_force(0), fairlead = sim.end_force(1);
@@ -209,7 +156,7 @@ TEST(LineTypesCore, LoweLangleyJumperStaticEndForces) {
   // the jumper's EI matters at this tolerance: without it (a chain of the same EA and weight)
   // the horizontal force is off by more than the tolerance
   const double h0 =
-      std::abs(core::Simulation(Jumper({"cable.bending_stiffness=0"})).end_force(1).x());
+      std::abs(core::Simulation(Jumper(68, {"cable.bending_stiffness=0"})).end_force(1).x());
   std::printf("jumper without EI: H %.1f N (%+.2e)\n", h0, h0 / kH - 1);
   EXPECT_GT(std::abs(h0 / kH - 1), kJumperRelTol);
 }

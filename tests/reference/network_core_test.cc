@@ -23,6 +23,7 @@
 #include "core/simulation.h"
 #include "core/state.h"
 #include "elastic_catenary.h"
+#include "network_models.h"
 #include "scene/scene_loader.h"
 #include "towed_cable_steady.h"
 
@@ -30,35 +31,6 @@ namespace towsim::reference {
 namespace {
 
 using core::Vec3;
-
-core::Model Load(const std::string& yaml) {
-  return scene::LoadSceneFromString(yaml, "network.yaml", ".");
-}
-
-// the paper's cable without bending (a massless junction is a pin: the one-cable solution
-// bends through it, which a cable without bending stiffness does not resist either)
-const char kLine[] =
-    "diameter: 0.041, density: 1300, youngs_modulus: 7.0e8, "
-    "loads: [gravity, buoyancy, drag, added_mass]";
-
-std::string Catenary(bool split) {
-  const std::string head =
-      "name: catenary\n"
-      "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-      "environment: {current: [0, 0, 0]}\n";
-  if (!split) {
-    return head + "cable: {length: 120, elements: 20, " + kLine +
-           ", initial: static, start: {fixed: [0, 0, 0]}, end: {fixed: [100, 0, 20]}}\n";
-  }
-  return head +
-         "bodies: {junction: {type: sphere, mass: 0, volume: 0, position: [50, 0, 40]}}\n"
-         "cables:\n"
-         "  upper: {length: 60, elements: 10, " +
-         kLine +
-         ", initial: static, start: {fixed: [0, 0, 0]}, end: {body: junction}}\n"
-         "  lower: {length: 60, elements: 10, " +
-         kLine + ", initial: static, start: {body: junction}, end: {fixed: [100, 0, 20]}}\n";
-}
 
 // The split catenary: the junction sits where the one cable's middle node sits and the
 // tensions at the supports agree. The one cable's slope is continuous through its middle
@@ -68,8 +40,8 @@ std::string Catenary(bool split) {
 // at the middle one cable vs exact 5.9e-5 m, split vs exact 3.0e-6 m (its pin sits at the
 // middle), split vs one cable 6.1e-5 m.
 TEST(NetworkCore, SplitCatenaryReproducesTheOneCable) {
-  const core::Simulation one(Load(Catenary(false)));
-  const core::Simulation split(Load(Catenary(true)));
+  const core::Simulation one(NetworkModel(SplitCatenaryYaml(false, 1)));
+  const core::Simulation split(NetworkModel(SplitCatenaryYaml(true, 1)));
   ASSERT_EQ(split.num_cables(), 2);
   const Vec3 middle = one.node_position(10);
   const Vec3 junction = split.body_position(0);
@@ -169,31 +141,6 @@ TEST(NetworkCore, SplitSteadyTowReproducesTheOneCable) {
   }
 }
 
-// The two-part tow: tow point -> main cable -> depressor -> tether -> towfish
-std::string TwoPartTow(double speed) {
-  const std::string v = std::to_string(speed);
-  return "name: two_part_tow\n"
-         "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-         "environment: {current: [0, 0, 0]}\n"
-         "bodies:\n"
-         "  depressor: {type: sphere, mass: 1500, volume: 0.25, drag_coefficient: 0.8,\n"
-         "              added_mass_coefficient: 0.5, position: [0, 0, 300]}\n"
-         "  towfish: {type: sphere, mass: 400, volume: 0.3, drag_coefficient: 0.5,\n"
-         "            added_mass_coefficient: 0.5, position: [0, 0, 360]}\n"
-         "cables:\n"
-         "  main: {length: 300, elements: 20, diameter: 0.035, mass_per_length: 4.5,\n"
-         "         axial_stiffness: 1.0e8, bending_stiffness: 300,\n"
-         "         loads: [gravity, buoyancy, drag, added_mass, bending], initial: static,\n"
-         "         initial_velocity: [" + v + ", 0, 0],\n"
-         "         start: {driven: {position: [0, 0, 0], velocity: [" + v + ", 0, 0]}},\n"
-         "         end: {body: depressor}}\n"
-         "  tether: {length: 60, elements: 20, diameter: 0.03, mass_per_length: 0.8,\n"
-         "           axial_stiffness: 2.0e6, bending_stiffness: 5,\n"
-         "           loads: [gravity, buoyancy, drag, added_mass, bending], initial: static,\n"
-         "           initial_velocity: [" + v + ", 0, 0],\n"
-         "           start: {body: depressor}, end: {body: towfish}}\n";
-}
-
 // the towed-cable problem of cable k of the model, with sphere `body` at its lower end
 TowedCableProblem ChainLink(const core::Model& m, int k, int body, double speed) {
   TowedCableProblem p;
@@ -222,7 +169,7 @@ TowedCableProblem ChainLink(const core::Model& m, int k, int body, double speed)
 // static start, 1e-3).
 TEST(NetworkCore, TwoPartTowSteadyStateMatchesTheChainedReference) {
   for (double speed : {2.5, 5.0}) {
-    const core::Simulation sim(Load(TwoPartTow(speed)));
+    const core::Simulation sim(NetworkModel(TwoPartTowYaml(speed, 1)));
     const core::Model& m = sim.model();
     ASSERT_EQ(m.cables[0].name, "main");
     const int depressor = 0, towfish = 1;
@@ -260,18 +207,7 @@ TEST(NetworkCore, TwoPartTowSteadyStateMatchesTheChainedReference) {
 // lambda = 1 + e, solved exactly below), and vertical balance 2 T z / sqrt(20^2 + z^2) = W.
 // One equation in z, solved by bisection: the tensions and the depth the network must find.
 TEST(NetworkCore, BridleMatchesTheStaticSolution) {
-  const core::Model m = Load(
-      "name: bridle\n"
-      "time: {step: 0.05, duration: 1, output_rate: 10}\n"
-      "environment: {current: [0, 0, 0]}\n"
-      "bodies: {ring: {type: sphere, mass: 2000, volume: 0.2, position: [0, 0, 15]}}\n"
-      "cables:\n"
-      "  port: {length: 25, elements: 10, diameter: 0.03, mass_per_length: 0.72452,\n"
-      "         axial_stiffness: 2.0e6, bending_stiffness: 0, loads: [gravity, buoyancy],\n"
-      "         initial: static, start: {fixed: [0, -20, 0]}, end: {body: ring}}\n"
-      "  starboard: {length: 25, elements: 10, diameter: 0.03, mass_per_length: 0.72452,\n"
-      "              axial_stiffness: 2.0e6, bending_stiffness: 0, loads: [gravity, buoyancy],\n"
-      "              initial: static, start: {fixed: [0, 20, 0]}, end: {body: ring}}\n");
+  const core::Model m = NetworkModel(BridleYaml(1));
   const core::Simulation sim(m);
   const core::CableParams& c = m.cables[0];
   // neutrally buoyant: m = rho_w A
@@ -311,20 +247,8 @@ TEST(NetworkCore, BridleMatchesTheStaticSolution) {
 // off, on the trapezoidal rule: kinetic + potential + strain energy stay constant to the rule's
 // truncation error (swinging_cable_core_test: 1e-3 of the energy swing at a resolving step)
 TEST(NetworkCore, NetworkWithoutDragConservesEnergy) {
-  core::Model m = Load(Catenary(true));
-  for (core::CableParams& c : m.cables) {
-    c.loads.drag = false;
-    c.loads.added_mass = false;
-  }
-  m.spheres[0].mass = 50.0;  // a clump weight at the junction
-  m.integrator.scheme = core::Scheme::kTrapezoidal;
-  m.integrator.rho_inf = 1.0;
-  m.integrator.tolerance = 1e-10;
-  core::Simulation sim(m);
-  core::State s = sim.state();
-  // a sideways kick of the clump and the cables near it
-  s.v.segment<3>(sim.sphere_dof(0)) = Vec3(0.0, 2.0, 0.0);
-  sim.StartFrom(s);
+  core::Simulation sim(KickedNetwork(1));
+  KickTheClump(&sim);
   auto energy = [&] { return sim.KineticEnergy() + sim.PotentialEnergy() + sim.StrainEnergy(); };
   const double e0 = energy(), ke0 = sim.KineticEnergy();
   double max_dev = 0.0;

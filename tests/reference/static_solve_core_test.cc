@@ -35,6 +35,7 @@
 #include "core/system.h"
 #include "elastic_catenary.h"
 #include "grounded_catenary.h"
+#include "jumper_model.h"
 #include "scene/scene_loader.h"
 #include "towed_cable_steady_core.h"
 
@@ -48,23 +49,8 @@ const std::string kSteadyTow = std::string(TOWSIM_SOURCE_DIR) + "/config/scenes/
 const std::vector<int> kElementCounts = {5, 10, 20, 30, 50, 80, 120, 160, 200};
 
 // ---------------------------------------------------------------------------------------------
-// the jumper (line_types_core_test.cc): 170 m pinned at an anchor 55 m deep and a fairlead 5 m
-// deep, 100 m apart; published static end forces (MoorDyn v2.7.1's test of Lowe & Langley)
-core::Model Jumper(int elements) {
-  return scene::LoadSceneFromString(
-      "name: jumper\n"
-      "time: {step: 0.01, duration: 1, output_rate: 10}\n"
-      "environment: {water_density: 1000, gravity: 9.807}\n"
-      "cable:\n"
-      "  line_type: lowe_langley_jumper\n"
-      "  length: 170\n"
-      "  elements: " + std::to_string(elements) + "\n"
-      "  loads: [gravity, buoyancy, bending]\n"
-      "  initial: static\n"
-      "  start: {fixed: [-100, 0, 55]}\n"
-      "  end: {fixed: [0, 0, 5]}\n",
-      "static_solve_core_test.yaml", std::string(TOWSIM_SOURCE_DIR) + "/config/scenes", {});
-}
+// the jumper (Jumper, jumper_model.h; line_types_core_test.cc): published static end forces
+// (MoorDyn v2.7.1's test of Lowe & Langley)
 
 TEST(StaticSolveCore, StiffHangingLineOneAnswerAtEveryElementCount) {
   constexpr double kH = 11.40e3, kV = 45.71e3;  // fairlead horizontal and vertical [N]

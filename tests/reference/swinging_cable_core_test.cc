@@ -28,43 +28,12 @@
 #include "core/simulation.h"
 #include "core/state.h"
 #include "signal_analysis.h"
+#include "swinging_cable_model.h"
 
 namespace towsim::reference {
 namespace {
 
 using core::Vec3;
-
-constexpr double kLength = 10.0;
-
-core::Model SwingingCable(core::Scheme scheme, double rho_inf, double step) {
-  core::Model m;
-  m.name = "swinging_cable";
-  core::CableParams& c = m.cables[0];
-  c.length = kLength;
-  c.elements = 10;
-  c.diameter = 0.01;
-  c.SetSolidSection(2000.0, 1.0e8);
-  c.loads.gravity = true;
-  c.loads.buoyancy = false;  // vacuum
-  c.loads.drag = false;
-  c.loads.added_mass = false;
-  c.loads.bending = true;
-  c.initial = core::InitialShape::kStraight;
-  c.start.kind = core::EndKind::kFixed;
-  c.start.position = Vec3::Zero();
-  c.start.clamped = false;
-  c.end.kind = core::EndKind::kFree;
-  c.end.position = Vec3(kLength, 0.0, 0.0);
-  m.integrator.scheme = scheme;
-  m.integrator.rho_inf = rho_inf;
-  // these tests measure the scheme (energy to 1e-3 and 1e-9 of dPE over 2e4-2e5 steps, the
-  // order of convergence), so the Newton error must be far below what they measure: the
-  // increment bound ten times below the default (docs/physics.md, "Newton convergence"; the
-  // default is chosen against the shipped scenes' discretisation errors, not these)
-  m.integrator.tolerance = 1e-8;
-  m.time.step = step;
-  return m;
-}
 
 double PotentialSwing(const core::Model& m) {
   const core::CableParams& c = m.cables[0];
@@ -74,16 +43,7 @@ double PotentialSwing(const core::Model& m) {
 // the simulation, released from rest straight along +x
 core::Simulation Released(const core::Model& m) {
   core::Simulation sim(m);
-  core::State s = sim.state();
-  const int nodes = sim.num_nodes();
-  for (int i = 0; i < nodes; ++i) {
-    const int k = sim.cable_dof(i);
-    s.q.segment<3>(k) = Vec3(kLength * i / (nodes - 1), 0.0, 0.0);
-    s.q.segment<3>(k + 3) = Vec3::UnitX();
-  }
-  s.v.setZero();
-  s.t = 0.0;
-  sim.StartFrom(s);
+  ReleaseStraight(&sim);
   return sim;
 }
 
@@ -96,7 +56,7 @@ double Energy(const core::Simulation& sim) {
 // (fraction of dPE): h 1e-3: 2.7e-2, 5e-4: ~1e-2, 2.5e-4: ~4e-3, 1.25e-4: 7.1e-4, 1e-4: 5.0e-4
 // (second order once omega_max h < 1), so h = 1e-4 is the step that resolves this motion.
 TEST(SwingingCableCore, TrapezoidalConservesEnergy) {
-  const core::Model m = SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4);
+  const core::Model m = SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, 1);
   core::Simulation sim = Released(m);
   const double swing = PotentialSwing(m);
   const double e0 = Energy(sim);
@@ -128,7 +88,7 @@ TEST(SwingingCableCore, TrapezoidalConservesEnergy) {
 // truncation error of the energy (see the trapezoidal test) is of the same order. The
 // one-step rises are therefore printed, not asserted.
 TEST(SwingingCableCore, GeneralizedAlphaDissipates) {
-  const core::Model m = SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3);
+  const core::Model m = SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, 1);
   core::Simulation sim = Released(m);
   const double swing = PotentialSwing(m);
   const double e0 = Energy(sim);
@@ -169,7 +129,7 @@ TEST(SwingingCableCore, GeneralizedAlphaDissipates) {
 void ConvergenceOrder(core::Scheme scheme, double rho_inf, const char* label) {
   const double h0 = 1e-3;
   auto tip_at_1s = [&](double h) {
-    core::Simulation sim = Released(SwingingCable(scheme, rho_inf, h));
+    core::Simulation sim = Released(SwingingCable(scheme, rho_inf, h, 1));
     const int n = static_cast<int>(std::lround(1.0 / h));
     for (int i = 0; i < n; ++i) {
       const core::StepStatus st = sim.StepBy(h);
