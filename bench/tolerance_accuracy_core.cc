@@ -51,11 +51,11 @@
 #include <string>
 #include <vector>
 
+#include "cantilever_model.h"
 #include "core/constants.h"
 #include "core/model.h"
 #include "core/simulation.h"
 #include "core/state.h"
-#include "cantilever_model.h"
 #include "hanging_cable_model.h"
 #include "jumper_model.h"
 #include "line_types_models.h"
@@ -185,19 +185,23 @@ std::vector<Case> AllCases() {
   // finest steps
   dynamic(
       "swinging_trapezoidal_h1e-4", "SwingingCableCore.TrapezoidalConservesEnergy", 20.0,
-      [](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, f); }, ReleaseStraight);
+      [](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, 1e-4, f); },
+      ReleaseStraight);
   dynamic(
       "swinging_ga06_h1e-3", "SwingingCableCore.GeneralizedAlphaDissipates", 20.0,
-      [](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, f); }, ReleaseStraight);
+      [](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.6, 1e-3, f); },
+      ReleaseStraight);
   for (const double h : {1e-3, 1.25e-4}) {
     dynamic(
         "swinging_order_trapezoidal_h" + Num(h), "SwingingCableCore.TrapezoidalIsSecondOrder", 1.0,
-        [h](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, h, f); }, ReleaseStraight);
+        [h](int f) { return SwingingCable(core::Scheme::kTrapezoidal, 1.0, h, f); },
+        ReleaseStraight);
   }
   for (const double h : {1e-3, 1.25e-4}) {
     dynamic(
         "swinging_order_ga08_h" + Num(h), "SwingingCableCore.GeneralizedAlphaIsSecondOrder", 1.0,
-        [h](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.8, h, f); }, ReleaseStraight);
+        [h](int f) { return SwingingCable(core::Scheme::kGeneralizedAlpha, 0.8, h, f); },
+        ReleaseStraight);
   }
   // taut string: a bit over 5 periods
   dynamic("taut_string", "TautStringCore.FirstFrequency", 5.2 / StringFirstFrequency(), String,
