@@ -36,7 +36,8 @@ reference 400 segments at dtM = 0.2 s / (8 n_100) (0.55 of its transit time), ch
 towsim: a grid of elements x steps x Newton tolerances (GA 0.8 as the scene; the scene's
 integrator.tolerance 1e-7 and the looser 1e-6 and 1e-5 a user may choose, the errors measured
 the same way against the same reference, itself at 1e-9); for each MoorDyn row the cheapest
-grid run (CPU time, min of 3; the candidates within 1.5 times the least timed again, min of 9)
+grid run (CPU time, min of 3; the candidates within 1.5 times the least measured again by
+callgrind's instruction count, which repeats exactly, or without valgrind timed again, min of 9)
 with an error at most MoorDyn's (for the impulse error only the
 steps that write every 0.2 s, as the driver does, so that both maxima are over the same
 times). Each pair is then timed as whole processes by hyperfine (-N, --warmup 1, --runs R),
@@ -49,6 +50,7 @@ import json
 import math
 import os
 import shlex
+import shutil
 import statistics
 import subprocess
 import sys
@@ -91,8 +93,11 @@ SCENE_TOLERANCE = 1e-7   # config/scenes/steady_tow.yaml's integrator.tolerance
 TOWSIM_REF = (80, 0.0125)
 REF_TOLERANCE = 1e-9     # the reference and its checks: Newton's error far below theirs
 # the grid's cheapest candidates (CPU time within PICK_WINDOW of the least, at most PICK_COUNT
-# of them) are timed again, PICK_REPEATS runs each (min), before one is picked: a single
-# min-of-3 of a 30-60 ms process moves by tens of per cent on a shared machine
+# of them) are measured again before one is picked: a single min-of-3 of a 30-60 ms process
+# moves by tens of per cent on a shared machine, and so did a min-of-9 (run G picked 12
+# elements at h 0.1 s over 12 at 0.2 s, 3810 Newton evaluations against 2205). The pick is by
+# the whole process's instruction count (valgrind --tool=callgrind, which repeats exactly),
+# or, without valgrind, by CPU time, PICK_REPEATS runs each (min)
 PICK_WINDOW = 1.5
 PICK_COUNT = 6
 PICK_REPEATS = 9
@@ -305,6 +310,20 @@ def cpu_seconds(argv, repeats=3):
     return best
 
 
+def instructions(argv):
+    """The whole process's instruction count under callgrind (None without valgrind)."""
+    if not shutil.which("valgrind"):
+        return None
+    done = subprocess.run(["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null"] +
+                          argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    if done.returncode != 0:
+        raise SystemExit(f"{' '.join(argv)}: exit status {done.returncode} under callgrind")
+    for line in done.stderr.splitlines():
+        if "refs:" in line:
+            return int(line.split()[-1].replace(",", ""))
+    return None
+
+
 def hyperfine_pair(cmd_a, cmd_b, runs, rounds, work, tag):
     """Mean wall time of each command per round and the ratio a / b per round."""
     ratios, cpu_ratios, means_a, means_b = [], [], [], []
@@ -422,7 +441,10 @@ def main():
         best = None
         for _, e, h, tol, err in near:
             if (e, h, tol) not in retimed:
-                retimed[(e, h, tol)] = cpu_seconds(towsim.command(e, h, tol)[0], PICK_REPEATS)
+                argv = towsim.command(e, h, tol)[0]
+                count = instructions(argv)
+                retimed[(e, h, tol)] = (count if count is not None
+                                        else cpu_seconds(argv, PICK_REPEATS))
             c = (retimed[(e, h, tol)], e, h, tol, err)
             best = c if best is None or c < best else best
         return best
