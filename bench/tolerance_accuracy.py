@@ -168,6 +168,19 @@ def run_sim(sim_node, scene, out_dir, duration, tolerance, factor, log, extra=()
     return Run(p.returncode, out_dir, newton, wall)
 
 
+def run_loosening(sim_node, scene, out, name, duration, tolerance, factor, log):
+    """run_sim at `tolerance`, else 10x looser up to 1e-10 (a static solve whose residual
+    cannot reach it in double precision): (run, its tolerance, a note of the failed ones)."""
+    run = run_sim(sim_node, scene, os.path.join(out, name), duration, tolerance, factor, log)
+    note = ""
+    while not run.ok and tolerance < 1e-10 * 1.001:
+        note = f" ({tolerance:g}: exit {run.code})"
+        tolerance *= 10
+        run = run_sim(sim_node, scene, os.path.join(out, f"{name}_{tolerance:g}"), duration,
+                      tolerance, factor, log)
+    return run, tolerance, note
+
+
 # ---------------------------------------------------------------------------------------------
 # Measures
 
@@ -281,27 +294,14 @@ def main():
         print(f"{scene.name} ({duration:g} s):", file=log, flush=True)
         # truth: --truth, else 10x looser up to 1e-10 (a static solve may not reach the
         # tightest residual in double precision); the reference at the same tolerance
-        truth_tol = a.truth
-        truth = run_sim(sim_node, scene, os.path.join(out, "truth"), duration, truth_tol, 1, log)
-        truth_note = ""
-        while not truth.ok and truth_tol < 1e-10 * 1.001:
-            truth_note = f" ({truth_tol:g}: exit {truth.code})"
-            truth_tol *= 10
-            truth = run_sim(sim_node, scene, os.path.join(out, f"truth{truth_tol:g}"), duration,
-                            truth_tol, 1, log)
+        truth, truth_tol, truth_note = run_loosening(sim_node, scene, out, "truth", duration,
+                                                     a.truth, 1, log)
         factor = a.factor
         # the reference at truth's tolerance, else 10x looser up to 1e-10 (its finer elements
         # carry more round-off: the static start of a cable on the seabed stalls at a residual
         # of about 1e-8 N), else at half the refinement
-        ref_tol = truth_tol
-        ref = run_sim(sim_node, scene, os.path.join(out, f"ref{factor}x"), duration, ref_tol,
-                      factor, log)
-        ref_tol_note = ""
-        while not ref.ok and ref_tol < 1e-10 * 1.001:
-            ref_tol_note = f" ({ref_tol:g}: exit {ref.code})"
-            ref_tol *= 10
-            ref = run_sim(sim_node, scene, os.path.join(out, f"ref{factor}x_{ref_tol:g}"),
-                          duration, ref_tol, factor, log)
+        ref, ref_tol, ref_tol_note = run_loosening(sim_node, scene, out, f"ref{factor}x",
+                                                   duration, truth_tol, factor, log)
         ref_note = f"{factor}x el., h/{factor}"
         if (not ref.ok or ref.wall > a.ref_limit) and factor > 2:
             why = f"exit {ref.code}" if not ref.ok else f"{ref.wall:.0f} s"

@@ -178,20 +178,27 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     const double dq_norm = dq_.lpNorm<Eigen::Infinity>();
     // measured: the same matrix gave this increment and the one before
     const bool measured = !refresh && it > 1;
-    const double theta_now = measured && dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
+    if (measured) {
+      kept.theta = dq_prev > 0.0 ? dq_norm / dq_prev : 0.0;
+      kept.theta_age = 0;
+      // a re-measurement that finds the rate small lengthens the interval to the next one; any
+      // measurement that finds it not small shortens it again
+      if (kept.theta >= kSteadyRate) {
+        kept.theta_steady = false;
+      } else if (remeasure) {
+        kept.theta_steady = true;
+      }
+    }
     // uphill: the last increment raised the residual and the kept matrix's next one is no
     // smaller: the matrix no longer describes the residual between the two iterates (a contact
     // switching on), and its increments lead away from the solution. Both are taken back and
     // the next iteration forms a fresh matrix where the last one started (see the header)
-    if (measured && theta_now >= 1.0 && at.residual > residual_prev && formed_at != it - 1) {
+    if (measured && kept.theta >= 1.0 && at.residual > residual_prev && formed_at != it - 1) {
       st.q -= dq_last_;
       st.lambda -= dl_last_;
       a_hat -= dq_last_ / (p.beta * h2);
       st.v = v_star + (p.gamma * h) * a_hat;
       st.a = a_const + a_fac * a_hat;
-      kept.theta = theta_now;
-      kept.theta_age = 0;
-      kept.theta_steady = false;
       refresh = true;
       continue;
     }
@@ -203,17 +210,6 @@ Integrator::Attempt Integrator::Newton(State* s, double h, bool full, const Stat
     st.a = a_const + a_fac * a_hat;
     dq_last_.swap(dq_);  // the increment just taken, for the uphill test (no copy)
     dl_last_.swap(dl_);
-    if (measured) {
-      kept.theta = theta_now;
-      kept.theta_age = 0;
-      // a re-measurement that finds the rate small lengthens the interval to the next one; any
-      // measurement that finds it not small shortens it again
-      if (kept.theta >= kSteadyRate) {
-        kept.theta_steady = false;
-      } else if (remeasure) {
-        kept.theta_steady = true;
-      }
-    }
     dq_prev = dq_norm;
     // the error left after the increment, theta / (1 - theta) |dq|, within the tolerance,
     // with theta at least kMaxContraction (a rate measured on large increments understates the

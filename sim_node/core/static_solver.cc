@@ -202,7 +202,8 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
                    bool warm = false, StaticFactors* factors_out = nullptr) {
   StaticResult res;
   const int m = sys.num_lambda();
-  const double f_tol = tol * ForceScale(sys, frame_velocity, *s);
+  const double force_scale = ForceScale(sys, frame_velocity, *s);
+  const double f_tol = tol * force_scale;
   const double q_scale = IncrementScale(sys.model());
   SetFrameMotion(sys, frame_velocity, s);
   if (!warm || s->lambda.size() != m) s->lambda.setZero(m);
@@ -216,6 +217,7 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
   double prev_step = std::numeric_limits<double>::infinity();  // |dq| of the last iteration
   int at_round_off = 0;     // iterations in a row with the increment met, the residual not
   double round_off = 0.0;   // ... and the residual when they began
+  bool stalled = false;     // ended there: the residual is the round-off of the forces
   for (int it = 1; it <= (warm ? kWarmIterations : kMaxIterations); ++it) {
     if (stop && stop()) {
       res.stopped = true;
@@ -274,7 +276,7 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
         round_off = norm;
       }
       if (++at_round_off > kRoundOffIterations) {
-        res.round_off = true;
+        stalled = true;
         break;
       }
     } else {
@@ -306,9 +308,9 @@ StaticResult Solve(const System& sys, const Eigen::Vector3d& frame_velocity, Sta
   msg << "static equilibrium not found after " << res.iterations << " iterations: residual "
       << res.residual << " N (tolerance " << f_tol << " N), largest at "
       << sys.DescribeDof(worst, s->q);
-  if (res.round_off) {
+  if (stalled) {
     // the tolerance the residual would meet: the next power of ten above twice its floor
-    const double floor = 2.0 * res.residual / (f_tol / tol);
+    const double floor = 2.0 * res.residual / force_scale;
     const double met = std::pow(10.0, std::ceil(std::log10(floor)));
     msg << "; the increments met their bound but the residual stopped falling: it is the "
            "round-off of the forces, and integrator.tolerance "

@@ -36,9 +36,6 @@ struct StaticResult {
   double residual = 0.0;  // inf-norm of R [N]
   std::string message;
   int attempts = 0;  // 1, or 2 when the first shape failed the check (restarted: guess)
-  // not ok because the residual stalled at the round-off of the forces, above the bound the
-  // tolerance sets, with the increments within theirs (message: the tolerance that would do)
-  bool round_off = false;
   std::string rejected;  // why the first attempt's shape was rejected (empty if it was not)
 };
 
