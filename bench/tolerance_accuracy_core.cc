@@ -61,6 +61,7 @@
 #include "line_types_models.h"
 #include "network_models.h"
 #include "scene/scene_loader.h"
+#include "seabed_drag_model.h"
 #include "swinging_cable_model.h"
 #include "taut_string.h"
 #include "taut_string_model.h"
@@ -115,31 +116,6 @@ double StringFirstFrequency() {
 
 void HalfSineVelocity(core::Simulation* sim) {
   reference::StartHalfSine(sim, StringFirstFrequency());
-}
-
-// --- tests/reference/seabed_core_test.cc, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight ---
-core::Model Dragged(int factor) {
-  return scene::LoadScene(
-      kCatenaryScene,
-      {"cable.length=100", "cable.elements=" + std::to_string(20 * factor),
-       "cable.loads=[gravity, buoyancy]", "cable.initial=vertical", "cable.axial_damping=0.01",
-       "cable.start={driven: {position: [0, 0, 60], velocity: [0.1, 0, 0]}}",
-       "cable.end={free: true}", "cable.initial_velocity=[0.1, 0, 0]",
-       "environment.seabed={depth: 60, stiffness: 3.0e6, damping: 3.0e4, friction: 0.5}"});
-}
-
-void LaidOnTheBed(core::Simulation* sim) {
-  constexpr double kSpeed = 0.1;
-  const core::Model& m = sim->model();
-  core::State laid = sim->state();
-  const double l = m.cables[0].length / m.cables[0].elements;
-  for (int n = 0; n < sim->num_nodes(); ++n) {
-    laid.q.segment<3>(sim->cable_dof(n)) = Vec3(-n * l, 0.0, 60.0);
-    laid.q.segment<3>(sim->cable_dof(n) + 3) = Vec3(-1.0, 0.0, 0.0);
-    laid.v.segment<3>(sim->cable_dof(n)) = Vec3(kSpeed, 0.0, 0.0);
-    laid.v.segment<3>(sim->cable_dof(n) + 3).setZero();
-  }
-  sim->StartFrom(laid);
 }
 
 double TipDeflection(const core::Simulation& sim) {  // z of the last node [m]
@@ -208,7 +184,7 @@ std::vector<Case> AllCases() {
           HalfSineVelocity);
   // the cable dragged along the bed: 400 steps of 0.05 s
   dynamic("seabed_dragged", "SeabedCore.DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight", 20.0,
-          Dragged, LaidOnTheBed);
+          reference::DraggedOnTheBed, reference::LayOnTheBed);
 
   // the kicked split catenary: 20 s of 0.01 s
   dynamic("network_kicked", "NetworkCore.NetworkWithoutDragConservesEnergy", 20.0, KickedNetwork,

@@ -23,6 +23,7 @@
 #include "core/state.h"
 #include "grounded_catenary.h"
 #include "scene/scene_loader.h"
+#include "seabed_drag_model.h"
 
 namespace towsim::core {
 namespace {
@@ -90,26 +91,12 @@ TEST(SeabedCore, GroundedCatenaryOnAFlatFrictionlessSeabed) {
 }
 
 TEST(SeabedCore, DraggedAlongTheBedItFeelsMuTimesItsGroundedWeight) {
-  constexpr double kMu = 0.5, kSpeed = 0.1;  // 10 x the friction's slip speed: tanh(10) = 1
-  const Model m = scene::LoadScene(
-      kCatenary,
-      {"cable.length=100", "cable.elements=20", "cable.loads=[gravity, buoyancy]",
-       "cable.initial=vertical", "cable.axial_damping=0.01",
-       "cable.start={driven: {position: [0, 0, 60], velocity: [0.1, 0, 0]}}",
-       "cable.end={free: true}", "cable.initial_velocity=[0.1, 0, 0]",
-       "environment.seabed={depth: 60, stiffness: 3.0e6, damping: 3.0e4, friction: 0.5}"});
+  constexpr double kMu = reference::kDragFriction;
+  const Model m = reference::DraggedOnTheBed(1);
   // a free end starts hanging vertically (into the bed): lay the cable along -x on the bed
   // instead, every node sliding at the tow speed
   Simulation sim(m);
-  State laid = sim.state();
-  const double l = m.cables[0].length / m.cables[0].elements;
-  for (int n = 0; n < sim.num_nodes(); ++n) {
-    laid.q.segment<3>(sim.cable_dof(n)) = Vec3(-n * l, 0.0, 60.0);
-    laid.q.segment<3>(sim.cable_dof(n) + 3) = Vec3(-1.0, 0.0, 0.0);
-    laid.v.segment<3>(sim.cable_dof(n)) = Vec3(kSpeed, 0.0, 0.0);
-    laid.v.segment<3>(sim.cable_dof(n) + 3).setZero();
-  }
-  sim.StartFrom(laid);
+  reference::LayOnTheBed(&sim);
   for (int i = 0; i < 400; ++i) ASSERT_TRUE(sim.Step().ok());  // 20 s: the start-up's
   // elastic waves have died out (the pull settles to 1e-5 by then)
   const double pull = -sim.end_force(0).x();  // the force on the cable from its driven end
